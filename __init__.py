@@ -1,0 +1,22 @@
+"""acausal: object-oriented, port-based modelling and simulation of physical systems.
+
+Write a model as components with ports, connect them like a schematic, and simulate::
+
+    import acausal as ac
+    res = ac.simulate(MyModel(), t_end=1.0)
+    res["C1.v"]
+
+See the README for the modelling language and the design.
+"""
+from .components import (Across, Component, Connection, Eq, Equation, ModelError, Parameter,
+                         Port, Signal, Through, Variable, connect, der, if_else, ref, sign,
+                         time)
+from .compiler.model import CompiledModel
+from .result import Result
+from .simulation import compile, initial_values, simulate
+from .solvers.base import SimulationError
+
+__all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
+           "Eq", "Equation", "der", "connect", "ref", "Connection", "if_else", "sign", "time",
+           "compile", "simulate", "initial_values", "Result", "CompiledModel",
+           "ModelError", "SimulationError"]

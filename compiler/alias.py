@@ -1,0 +1,199 @@
+"""Alias elimination: equations a = b, a = -b and a = constant leave the system.
+
+Connections alone produce most of a flat model's equations, and almost all of them are
+trivial.  Removing them before structural analysis keeps the later passes small.  Every
+eliminated variable stays in the alias table, so results, reports and errors still show
+it under its own name.
+
+Alias sets are kept in a union-find with signs (x = s * root).  The representative of a
+set is chosen canonically: the strongest state_select hint, then a variable that appears
+differentiated, then one with a fixed start value, then declaration order.  Attributes
+are merged onto the representative (start and fixed carried across with the sign).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import sympy as sp
+
+from ..components.component import ModelError
+from .flatten import FlatEquation, FlatModel
+from .graph import STATE_SELECT
+
+__all__ = ["AliasTable", "eliminate_aliases"]
+
+
+@dataclass
+class AliasTable:
+    """name -> (sign, representative name) or (None, constant expression)."""
+
+    aliases: dict = field(default_factory=dict)
+    constants: dict = field(default_factory=dict)
+    equations_before: int = 0
+    equations_after: int = 0
+    removed: list = field(default_factory=list)   # the FlatEquations that were removed
+
+    def resolve(self, name: str):
+        """(sign, name) of the variable that stands for ``name`` in the reduced system."""
+        return self.aliases.get(name, (1, name))
+
+
+def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
+    """Return a new FlatModel without trivial equations, and the alias table."""
+    order = {v.symbol: k for k, v in enumerate(flat.variables)}
+    info = {v.symbol: v for v in flat.variables}
+    differentiated = set(flat.derivatives)
+    parent = {}          # symbol -> (sign, parent symbol)
+    constants = {}       # root symbol -> constant expression
+    removed = []
+
+    def find(s):
+        sign = 1
+        while s in parent:
+            k, s = parent[s]
+            sign *= k
+        return sign, s
+
+    def rank(s):
+        a = info[s].attrs
+        return (-STATE_SELECT[a.state_select], s not in differentiated,
+                not a.fixed, order[s])
+
+    pending = list(flat.equations)
+    while True:
+        # Substituting aliases can turn a kept equation into a trivial one (a node's
+        # current sum that collapses to gnd.p.i = 0), so repeat until nothing changes.
+        n_removed = len(removed)
+        kept = []
+        for eq in pending:
+            if _classify(eq, info, find, rank, parent, constants):
+                removed.append(eq)
+            else:
+                kept.append(eq)
+        if len(removed) == n_removed:
+            break
+        subs = _substitutions(flat, find, constants)
+        pending = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in kept]
+
+    table = AliasTable(equations_before=len(flat.equations), removed=removed)
+    subs = _substitutions(flat, find, constants)
+    for v in flat.variables:
+        sign, root = find(v.symbol)
+        if root in constants:
+            table.constants[v.name] = sign * constants[root]
+        elif root != v.symbol:
+            table.aliases[v.name] = (sign, root.name)
+    return _rebuild(flat, kept, subs, table, find, constants), table
+
+
+def _substitutions(flat, find, constants) -> dict:
+    subs = {}
+    for v in flat.variables:
+        sign, root = find(v.symbol)
+        if root in constants:
+            subs[v.symbol] = sign * constants[root]
+        elif root != v.symbol:
+            subs[v.symbol] = sign * root
+    return subs
+
+
+def _classify(eq, info, find, rank, parent, constants) -> bool:
+    """Record eq in the union-find if it is trivial; True when it was removed."""
+    pattern = _alias_pattern(eq.residual, info)
+    if pattern is None:
+        return False
+    kind, a, b, k = pattern
+    if kind == "const":
+        sa, ra = find(a)
+        if ra in constants:
+            return False          # a second value for the same variable: left for diagnosis
+        constants[ra] = sa * k
+        return True
+    (sa, ra), (sb, rb) = find(a), find(b)
+    if ra == rb or (ra in constants and rb in constants):
+        return False              # a redundant or contradictory loop: left for diagnosis
+    # a = k*b  =>  sa*ra = k*sb*rb  (all signs are +-1, so each is its own inverse)
+    if rank(ra) <= rank(rb):
+        child, root, sign = rb, ra, sa * k * sb
+    else:
+        child, root, sign = ra, rb, sb * k * sa
+    parent[child] = (sign, root)
+    if child in constants:
+        constants[root] = sign * constants.pop(child)
+    return True
+
+
+def _alias_pattern(residual: sp.Expr, info: dict):
+    """Classify residual: ('alias', a, b, k) for a = k*b with k = +-1; ('const', a, None, c)
+    for a = c with c a number.  None otherwise."""
+    syms = [s for s in residual.free_symbols if s in info]
+    if residual.free_symbols - set(syms):
+        return None        # parameters, der() or time: not a trivial equation
+    if len(syms) == 1:
+        a = syms[0]
+        ca = residual.coeff(a)
+        rest = sp.expand(residual - ca * a)
+        if ca.is_number and ca != 0 and rest.is_number and not rest.has(a):
+            return "const", a, None, sp.nsimplify(-rest / ca) if rest.is_Rational else -rest / ca
+        return None
+    if len(syms) != 2 or not residual.is_Add or len(residual.args) != 2:
+        return None
+    a, b = sorted(syms, key=lambda s: s.name)
+    ca, cb = residual.coeff(a), residual.coeff(b)
+    if ca in (1, -1) and cb in (1, -1):
+        return "alias", a, b, -cb / ca
+    return None
+
+
+def _rebuild(flat, kept, subs, table, find, constants):
+    variables = []
+    for v in flat.variables:
+        sign, root = find(v.symbol)
+        if root == v.symbol and root not in constants:
+            variables.append(v)
+    merged = _merge_attributes(flat, variables, find)
+    derivatives = {}
+    for x, dx in flat.derivatives.items():
+        sign, root = find(x)
+        if root in constants:
+            subs[dx] = sp.Integer(0)
+        elif root != x:
+            rd = flat.derivatives.get(root) or sp.Symbol(f"der({root.name})", real=True)
+            subs[dx] = sign * rd
+            derivatives[root] = rd
+        else:
+            derivatives[x] = dx
+    equations = []
+    for eq in kept:
+        r = eq.residual.xreplace(subs)
+        if r == 0:
+            raise ModelError(f"equation '{eq.text}' in {eq.where} is redundant: after "
+                             "resolving aliases it reads 0 = 0 (over-determined model)")
+        equations.append(replace(eq, residual=r))
+    initial = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in flat.initial_equations]
+    table.equations_after = len(equations)
+    return replace(flat, variables=merged, equations=equations, initial_equations=initial,
+                   derivatives=derivatives)
+
+
+def _merge_attributes(flat, variables, find):
+    """Carry start/fixed/nominal/state_select from aliases onto their representative."""
+    by_root = {v.symbol: v for v in variables}
+    out = {v.symbol: v.attrs for v in variables}
+    for v in flat.variables:
+        sign, root = find(v.symbol)
+        if root not in by_root or root == v.symbol:
+            continue
+        a, r = v.attrs, out[root]
+        new = r
+        if a.start is not None and (r.start is None or (a.fixed and not r.fixed)):
+            new = replace(new, start=sign * a.start, fixed=a.fixed or r.fixed)
+        elif a.fixed and r.start is not None and r.fixed and sign * a.start != r.start:
+            raise ModelError(f"'{v.name}' and '{root.name}' are the same variable "
+                             f"(alias) but have different fixed start values")
+        if a.nominal and (not r.nominal or a.nominal > r.nominal):
+            new = replace(new, nominal=a.nominal)
+        if STATE_SELECT[a.state_select] > STATE_SELECT[new.state_select]:
+            new = replace(new, state_select=a.state_select)
+        out[root] = new
+    return [replace(v, attrs=out[v.symbol]) for v in variables]

@@ -1,0 +1,118 @@
+"""The index report: what the compiler did to the user's equations, in their names.
+
+``compiled.report`` prints as text (``print(report)``), converts to a dict / JSON
+(``report.as_dict()``) and draws the incidence with its BLT ordering as Graphviz DOT
+text (``report.to_dot()``) or with matplotlib (``report.plot()``).
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+
+__all__ = ["IndexReport"]
+
+
+@dataclass
+class IndexReport:
+    model_name: str
+    timings: dict = field(default_factory=dict)
+    counts: dict = field(default_factory=dict)
+    aliases: object = None
+    reduction: object = None
+    differential_index: int = 0
+    equations: list = field(default_factory=list)      # per equation of the reduced system
+    states: list = field(default_factory=list)
+    dummy_derivatives: list = field(default_factory=list)
+    state_sets: list = field(default_factory=list)
+    blocks: list = field(default_factory=list)
+    sigma: dict = field(default_factory=dict)
+    notes: list = field(default_factory=list)
+
+    def count(self, stage: str, **numbers) -> None:
+        self.counts[stage] = numbers
+
+    def fill(self, system, reduction, compiled) -> None:
+        """Collect the per-equation and per-variable facts after all passes ran."""
+        s = reduction.structure
+        names = [sym.name for sym in system.symbols]
+        self.differential_index = reduction.index
+        self.equations = [{
+            "index": k, "text": eq.name(system), "component": eq.component,
+            "kind": eq.kind, "order": eq.order,
+            "derivative_of": eq.derivative_of,
+            "differentiated": _times_differentiated(s, k),
+        } for k, eq in enumerate(system.equations)]
+        self.states = [names[v] for v in reduction.states]
+        self.dummy_derivatives = [names[v] for v in reduction.dummies]
+        self.state_sets = [{"level": ss.level,
+                            "candidates": [names[c] for c in ss.candidates],
+                            "n_dummies": ss.n_dummies,
+                            "constraints": [self.equations[r]["text"] for r in ss.equations]}
+                           for ss in reduction.selection.state_sets]
+        if self.state_sets:
+            self.notes.append(
+                "the choice of dummy derivatives is only valid locally (coefficients that "
+                "depend on the variables, listed as dynamic state sets): the states are "
+                "re-chosen at run time where the constraint Jacobian calls for it")
+        self.counts["solver"] = {"unknowns": compiled.n, "states": len(compiled.link_s),
+                                 "zero_crossings": compiled.n_roots}
+
+    # -- output --------------------------------------------------------------------------
+    def as_dict(self) -> dict:
+        return {
+            "model": self.model_name,
+            "differential_index": self.differential_index,
+            "counts": self.counts,
+            "aliases_removed": (self.aliases.equations_before - self.aliases.equations_after)
+            if self.aliases else 0,
+            "equations": self.equations,
+            "states": self.states,
+            "dummy_derivatives": self.dummy_derivatives,
+            "state_sets": self.state_sets,
+            "blocks": self.blocks,
+            "sigma": self.sigma,
+            "timings_s": self.timings,
+            "notes": self.notes,
+        }
+
+    def to_json(self, **kw) -> str:
+        return json.dumps(self.as_dict(), default=str, **kw)
+
+    def __str__(self) -> str:
+        lines = [f"Index report for {self.model_name}",
+                 f"  differential index: {self.differential_index}"]
+        lines.append("  equations / variables after each pass:")
+        for stage, c in self.counts.items():
+            lines.append("    " + f"{stage:<16}" + ", ".join(f"{k} {v}" for k, v in c.items()))
+        diffed = [e for e in self.equations if e["differentiated"] and e["order"] == 0]
+        if diffed:
+            lines.append("  differentiated equations (Pantelides):")
+            for e in diffed:
+                lines.append(f"    {e['differentiated']}x  {e['text']}")
+        lines.append("  states: " + (", ".join(self.states) or "(none)"))
+        if self.dummy_derivatives:
+            lines.append("  dummy derivatives: " + ", ".join(self.dummy_derivatives))
+        for ss in self.state_sets:
+            lines.append(f"  dynamic state set (level {ss['level']}): {ss['n_dummies']} dummy "
+                         f"derivative(s) chosen at run time among {', '.join(ss['candidates'])}")
+        if self.blocks:
+            sizes = [b["size"] for b in self.blocks]
+            torn = sum(1 for b in self.blocks if b.get("torn"))
+            lines.append(f"  BLT: {len(sizes)} blocks, largest {max(sizes)}, {torn} torn")
+        if self.sigma:
+            lines.append(f"  Pryce Sigma-method: index {self.sigma.get('index')}, "
+                         f"agrees with Pantelides: {self.sigma.get('agrees')}")
+        for note in self.notes:
+            lines.append(f"  note: {note}")
+        total = sum(self.timings.values())
+        lines.append(f"  compile time: {total:.3f} s")
+        return "\n".join(lines)
+
+
+def _times_differentiated(s, e) -> int:
+    from .graph import UNASSIGNED
+    k = 0
+    while e < len(s.eq_to_diff) and s.eq_to_diff[e] is not UNASSIGNED:
+        e = s.eq_to_diff[e]
+        k += 1
+    return k

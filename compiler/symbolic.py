@@ -1,0 +1,161 @@
+"""The symbolic side of the structural passes: expressions <-> the integer Structure.
+
+``SymbolicSystem`` holds the equations of the model (sympy residuals, with provenance)
+and the variable symbols, including derivative symbols ``der(x)``, indexed as in the
+:class:`~acausal.compiler.graph.Structure` it produces.  The structural passes work on
+that Structure alone; when Pantelides asks for an equation to be differentiated, the
+callback here differentiates the residual symbolically,
+
+    d/dt r(x, der(x), t) = sum_v  dr/dv * der(v)  +  dr/dt,
+
+creating the derivative symbols it needs, and reports the exact incidence back.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from ..components.symbols import time
+from .flatten import derivative_symbol
+from .graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, STATE_SELECT,
+                    UNASSIGNED, Structure)
+
+__all__ = ["SymbolicEquation", "SymbolicSystem", "coefficient_kind"]
+
+
+@dataclass
+class SymbolicEquation:
+    residual: sp.Expr
+    text: str                 # as the user wrote it (for the original equations)
+    component: str
+    component_class: str
+    kind: str = "equation"
+    derivative_of: int | None = None     # index of the equation this is d/dt of
+    order: int = 0                       # how many times differentiated from the source
+
+    @property
+    def where(self) -> str:
+        return f"{self.component or '(model)'} ({self.component_class})"
+
+    def name(self, system: "SymbolicSystem") -> str:
+        base = self
+        while base.derivative_of is not None:
+            base = system.equations[base.derivative_of]
+        text = base.text if len(base.text) <= 60 else base.text[:57] + "..."
+        core = f"{text}  [{base.where}]"
+        return f"d{'^%d' % self.order if self.order > 1 else ''}/dt{'^%d' % self.order if self.order > 1 else ''}({core})" if self.order else core
+
+
+@dataclass
+class SymbolicSystem:
+    """Equations and variables of the flat model after alias elimination."""
+
+    equations: list
+    symbols: list                                 # index -> sympy Symbol
+    parameters: set
+    var_info: dict = field(default_factory=dict)  # base symbol -> FlatVariable
+    derivatives: dict = field(default_factory=dict)  # symbol -> der symbol
+    index: dict = field(default_factory=dict)     # symbol -> index
+
+    @classmethod
+    def from_flat(cls, flat) -> "SymbolicSystem":
+        eqs = [SymbolicEquation(e.residual, e.text, e.component, e.component_class, e.kind)
+               for e in flat.equations]
+        system = cls(eqs, [], {p.symbol for p in flat.parameters},
+                     {v.symbol: v for v in flat.variables}, dict(flat.derivatives))
+        for v in flat.variables:
+            system._add_symbol(v.symbol)
+        # derivative chains in order: der(x) after x, der(der(x)) after der(x)
+        for v in flat.variables:
+            s = v.symbol
+            while s in system.derivatives:
+                s = system.derivatives[s]
+                system._add_symbol(s)
+        return system
+
+    def _add_symbol(self, s: sp.Symbol) -> int:
+        if s not in self.index:
+            self.index[s] = len(self.symbols)
+            self.symbols.append(s)
+        return self.index[s]
+
+    def base_info(self, k: int):
+        """The FlatVariable a (possibly derivative) variable k belongs to."""
+        s = self.symbols[k]
+        while s not in self.var_info:
+            s = self._antiderivative[s]
+        return self.var_info[s]
+
+    @property
+    def _antiderivative(self) -> dict:
+        return {d: x for x, d in self.derivatives.items()}
+
+    # -- Structure ---------------------------------------------------------------------
+    def incidence(self, r: sp.Expr) -> tuple[list, dict]:
+        vars_ = sorted(self.index[s] for s in r.free_symbols if s in self.index)
+        coeff = {v: coefficient_kind(r, self.symbols[v], self.index, self.parameters)
+                 for v in vars_}
+        return vars_, coeff
+
+    def structure(self) -> Structure:
+        graph, coeff = [], []
+        for eq in self.equations:
+            vs, cs = self.incidence(eq.residual)
+            graph.append(vs)
+            coeff.append(cs)
+        var_to_diff = [UNASSIGNED] * len(self.symbols)
+        for x, d in self.derivatives.items():
+            if x in self.index and d in self.index:
+                var_to_diff[self.index[x]] = self.index[d]
+        names = [s.name for s in self.symbols]
+        priority = [STATE_SELECT[self.base_info(k).attrs.state_select]
+                    for k in range(len(self.symbols))]
+        return Structure(graph=graph, var_to_diff=var_to_diff,
+                         eq_to_diff=[UNASSIGNED] * len(graph), coeff=coeff,
+                         var_names=names, eq_names=[e.name(self) for e in self.equations],
+                         state_priority=priority)
+
+    # -- differentiation (the Pantelides callback) --------------------------------------
+    def differentiate(self, s: Structure, e: int):
+        """Append d/dt of equation e; return its incidence (vars, coeff) in s's indices.
+
+        Pantelides has already created der(v) in ``s`` for every v in e; we mirror
+        those variables here so the indices agree.
+        """
+        self._sync_variables(s)
+        eq = self.equations[e]
+        r = eq.residual
+        dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
+        for sym in sorted((r.free_symbols & set(self.index)), key=lambda q: self.index[q]):
+            dr += sp.diff(r, sym) * derivative_symbol(sym, self.derivatives)
+            self._add_symbol(self.derivatives[sym])
+        self.equations.append(SymbolicEquation(dr, f"d/dt({eq.text})", eq.component,
+                                               eq.component_class, eq.kind,
+                                               derivative_of=e, order=eq.order + 1))
+        self._sync_variables(s)
+        return self.incidence(dr)
+
+    def _sync_variables(self, s: Structure) -> None:
+        """Make symbol indices follow the Structure's variable numbering."""
+        for k in range(len(self.symbols), s.n_vars):
+            base = s.diff_to_var[k]
+            parent = self.symbols[base]
+            self._add_symbol(derivative_symbol(parent, self.derivatives))
+        for k, sym in enumerate(self.symbols):
+            if k < s.n_vars and s.var_to_diff[k] is not UNASSIGNED:
+                d = self.symbols[s.var_to_diff[k]] if s.var_to_diff[k] < len(self.symbols) else None
+                if d is not None:
+                    self.derivatives[sym] = d
+
+
+def coefficient_kind(r: sp.Expr, s: sp.Symbol, index: dict, parameters: set) -> int:
+    """How symbol s enters residual r (graph.LINEAR_CONST ... NONLINEAR)."""
+    c = sp.diff(r, s)
+    if c.has(s):
+        return NONLINEAR
+    if c.is_number:
+        return LINEAR_CONST if c != 0 else NONLINEAR
+    if c.free_symbols <= parameters:
+        return LINEAR_PARAM
+    return LINEAR_VAR

@@ -1,0 +1,1 @@
+"""The component library, by domain (shaped like the Modelica Standard Library)."""

@@ -1,0 +1,63 @@
+"""DC motor with constant field, built by composition (Egeland & Gravdahl 3.3)."""
+import acausal as ac
+from acausal.ports import NegativePin, PositivePin, RotationalFlange
+
+from ..electrical import Inductor, Resistor
+from ..rotational import Inertia
+
+__all__ = ["EMF", "DCMotor"]
+
+
+class EMF(ac.Component):
+    """Ideal electromechanical converter (Egeland & Gravdahl 3.3.2, (3.27)-(3.28)):
+
+        v = k w,   tau = k i,   so  v i = tau w  (power in = power out),
+        w = der(flange.phi),  flange.tau = -tau
+    """
+
+    k = ac.Parameter(1.0, unit="N.m/A", description="torque (= back-EMF) constant")
+    p = PositivePin()
+    n = NegativePin()
+    flange = RotationalFlange()
+    v = ac.Variable(unit="V", description="back EMF")
+    i = ac.Variable(unit="A", description="armature current")
+    w = ac.Variable(unit="rad/s", description="shaft speed")
+    tau = ac.Variable(unit="N.m", description="motor torque")
+
+    def equations(self):
+        return [ac.Eq(self.v, self.p.v - self.n.v),
+                ac.Eq(0, self.p.i + self.n.i),
+                ac.Eq(self.i, self.p.i),
+                ac.Eq(self.w, ac.der(self.flange.phi)),
+                ac.Eq(self.v, self.k * self.w),
+                ac.Eq(self.tau, self.k * self.i),
+                ac.Eq(self.flange.tau, -self.tau)]
+
+
+class DCMotor(ac.Component):
+    """DC motor with constant field (Egeland & Gravdahl (3.29)-(3.31)):
+
+        L_a di_a/dt = u_a - R_a i_a - k w,    J dw/dt = k i_a - T_L
+
+    made of an armature resistor and inductor, an EMF and the rotor inertia.
+    """
+
+    R = ac.Parameter(1.0, unit="Ohm", description="armature resistance R_a")
+    L = ac.Parameter(1e-3, unit="H", description="armature inductance L_a")
+    k = ac.Parameter(0.05, unit="N.m/A", description="motor constant K_T = K_E")
+    J = ac.Parameter(1e-4, unit="kg.m2", description="rotor inertia J_m")
+    p = PositivePin()
+    n = NegativePin()
+    flange = RotationalFlange()
+    Ra = Resistor(R=ac.ref("R"))
+    La = Inductor(L=ac.ref("L"))
+    emf = EMF(k=ac.ref("k"))
+    rotor = Inertia(J=ac.ref("J"))
+
+    def equations(self):
+        return [ac.connect(self.p, self.Ra.p),
+                ac.connect(self.Ra.n, self.La.p),
+                ac.connect(self.La.n, self.emf.p),
+                ac.connect(self.emf.n, self.n),
+                ac.connect(self.emf.flange, self.rotor.flange_a),
+                ac.connect(self.rotor.flange_b, self.flange)]

@@ -1,0 +1,1 @@
+"""Whole systems: runnable models with a fixed stop time (each doubles as a test)."""

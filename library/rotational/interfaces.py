@@ -1,0 +1,37 @@
+"""Partial models of 1-D rotational mechanics (Modelica.Mechanics.Rotational.Interfaces).
+
+Flanges carry the absolute angle phi and the cut torque tau (positive into the
+component), so rigid couplings are position constraints.
+"""
+import acausal as ac
+from acausal.ports import RotationalFlange
+
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"]
+
+
+class PartialTwoFlanges(ac.Component):
+    """Two flanges, flange_a and flange_b."""
+
+    flange_a = RotationalFlange()
+    flange_b = RotationalFlange()
+
+
+class PartialCompliant(PartialTwoFlanges):
+    """A compliant connection (spring, damper):
+
+        phi_rel = flange_b.phi - flange_a.phi,   flange_b.tau = tau,   flange_a.tau = -tau
+    """
+
+    phi_rel = ac.Variable(start=0.0, unit="rad", description="relative rotation angle")
+    tau = ac.Variable(unit="N.m", description="torque between the flanges")
+
+    def equations(self):
+        return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
+                ac.Eq(self.flange_b.tau, self.tau),
+                ac.Eq(self.flange_a.tau, -self.tau)]
+
+
+class PartialElementaryOneFlange(ac.Component):
+    """One flange, named flange."""
+
+    flange = RotationalFlange()

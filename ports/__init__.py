@@ -1,0 +1,10 @@
+"""Connectors of every domain: what a port carries and how ports connect."""
+from .base import Port, SignalPort
+from .electrical import Pin, PositivePin, NegativePin
+from .mechanical import RotationalFlange, TranslationalFlange
+from .fluid import FluidPort
+from .thermal import HeatPort
+from .signal import RealInput, RealOutput
+
+__all__ = ["Port", "SignalPort", "Pin", "PositivePin", "NegativePin", "RotationalFlange",
+           "TranslationalFlange", "FluidPort", "HeatPort", "RealInput", "RealOutput"]

@@ -1,0 +1,150 @@
+"""The contract between a compiled model and the DAE integrators.
+
+A model reaches the solvers as a :class:`DAEProblem`: a fully implicit, index-1 system
+
+    F(t, y, y') = 0,        y(t0) = y0,  y'(t0) = yp0,
+
+with the parameters already bound.  The solvers never see names; ``problem.names`` is
+used only to word error messages in the user's terms.
+
+What a problem provides (numbered, so integrators can cite it)
+---------------------------------------------------------------
+1. ``n``: the size of y.
+2. ``residual(t, y, yp) -> ndarray(n)``: F.
+3. ``jacobian(t, y, yp, cj) -> ndarray | scipy.sparse matrix``: the iteration matrix
+   dF/dy + cj dF/dy'.  It is linear in cj, so dF/dy' = jacobian(.., 1) - jacobian(.., 0).
+4. ``jac_pattern``: a ``(rows, cols)`` pair of int arrays, the structural non-zeros of
+   the iteration matrix (for sparse LU), or None for dense.
+5. ``algebraic``: bool mask, True where y'_i appears in no equation.
+6. ``nominal``: positive array; error weights use ``rtol*|y_i| + atol*nominal_i``.
+7. ``names``: the user's name of each y_i (for messages).
+8. Events (optional, ``n_roots > 0``): ``roots(t, y, yp) -> ndarray(n_roots)`` are the
+   zero-crossing functions; while integrating, the discrete state (modes, relations) is
+   frozen.  At a located crossing the driver calls
+   ``handle_event(t, y, yp, crossed) -> EventAction`` (``crossed`` is a bool mask of
+   the functions that changed sign; the problem updates its discrete state, may reinit
+   y, and says whether to stop).  ``time_events`` lists known times of discontinuity
+   (steps, pulses) where the integrator must stop and restart.
+9. Initialization (optional): ``init_residual(t, y, yp)`` / ``init_jacobian(t, y, yp)``
+   supply the equations that fix the free initial values (see
+   :mod:`acausal.solvers.initialization`).
+
+What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
+evaluations, LU factorizations, Newton iterations, error-test failures, Newton
+(convergence) failures, and the orders used.
+
+What a solver returns (``SolverOutput``): accepted times ``t``, values ``y`` and
+derivatives ``yp`` (rows = time), ``success``, ``message``, ``stats``, and the event
+times.  A failing run returns what it computed up to the failure, with the reason.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Sequence
+
+import numpy as np
+
+__all__ = ["DAEProblem", "EventAction", "SolverStats", "SolverOutput", "SimulationError"]
+
+
+class DAEProblem:
+    """Base class of everything a DAE integrator can solve (see the module docstring)."""
+
+    n: int = 0
+    n_roots: int = 0
+    jac_pattern: tuple[np.ndarray, np.ndarray] | None = None
+    time_events: Sequence[float] = ()
+
+    def __init__(self, n: int, names: Sequence[str] | None = None):
+        self.n = int(n)
+        self.names = list(names) if names is not None else [f"y[{i}]" for i in range(n)]
+        self.algebraic = np.zeros(self.n, dtype=bool)
+        self.nominal = np.ones(self.n)
+
+    def residual(self, t: float, y: np.ndarray, yp: np.ndarray) -> np.ndarray:
+        raise NotImplementedError
+
+    def jacobian(self, t: float, y: np.ndarray, yp: np.ndarray, cj: float):
+        """dF/dy + cj*dF/dy'; the default differences the residual (dense)."""
+        return numerical_jacobian(self, t, y, yp, cj)
+
+    def roots(self, t: float, y: np.ndarray, yp: np.ndarray) -> np.ndarray:
+        return np.empty(0)
+
+    def handle_event(self, t: float, y: np.ndarray, yp: np.ndarray,
+                     crossed: np.ndarray) -> "EventAction":
+        return EventAction()
+
+
+@dataclass
+class EventAction:
+    """What a problem asks of the driver after an event.
+
+    ``y``: new values (None: unchanged; the driver re-initializes the algebraic part and
+    y' consistently either way).  ``stop``: end the simulation here (terminate()).
+    ``changed``: whether any discrete state or value changed (False ends event iteration).
+    """
+
+    y: np.ndarray | None = None
+    stop: bool = False
+    changed: bool = True
+    message: str = ""
+
+
+@dataclass
+class SolverStats:
+    steps: int = 0
+    residual_evaluations: int = 0
+    jacobian_evaluations: int = 0
+    lu_factorizations: int = 0
+    newton_iterations: int = 0
+    error_test_failures: int = 0
+    newton_failures: int = 0
+    events: int = 0
+    orders: dict = field(default_factory=dict)
+
+    def as_dict(self) -> dict:
+        return dict(self.__dict__)
+
+
+@dataclass
+class SolverOutput:
+    t: np.ndarray
+    y: np.ndarray
+    yp: np.ndarray
+    success: bool
+    message: str
+    stats: SolverStats
+    event_times: list = field(default_factory=list)
+
+
+class SimulationError(RuntimeError):
+    """A simulation stopped before t_end.
+
+    Carries ``t`` (where it stopped), ``reason``, ``variables`` (the names that dominated
+    the error or the singular block, a best guess when so said) and ``partial`` (what
+    was computed so far: a SolverOutput, or a Result once the model layer wraps it).
+    """
+
+    def __init__(self, message: str, t: float | None = None,
+                 variables: Sequence[str] = (), partial=None):
+        super().__init__(message)
+        self.t = t
+        self.reason = message
+        self.variables = list(variables)
+        self.partial = partial
+
+
+def numerical_jacobian(problem: DAEProblem, t, y, yp, cj):
+    """Forward-difference iteration matrix, column by column (fallback only)."""
+    f0 = problem.residual(t, y, yp)
+    n = problem.n
+    J = np.empty((n, n))
+    for j in range(n):
+        h = 1e-7 * max(abs(y[j]), problem.nominal[j])
+        y1 = y.copy()
+        yp1 = yp.copy()
+        y1[j] += h
+        yp1[j] += cj * h
+        J[:, j] = (problem.residual(t, y1, yp1) - f0) / h
+    return J

@@ -1,0 +1,494 @@
+"""Variable-order (1-5), variable-step BDF for fully implicit DAEs F(t, y, y') = 0.
+
+Method
+------
+This is the fixed-leading-coefficient BDF of DASSL and IDA (Brenan, Campbell & Petzold
+1996, ch. 5 -- "BCP" below; Hindmarsh et al. 2005, sec. 2.1 and the IDA user guide,
+"Mathematical considerations").  The solution history is kept as *modified divided
+differences* ``phi[j]`` (BCP eq. 5.2.6), from which the predictor, the corrector
+coefficients, the local error estimates of orders k-1, k, k+1 and the dense output are
+all obtained cheaply.
+
+Why the fixed-leading-coefficient form: the corrector is written as
+``y' = y'_pred + cj (y - y_pred)`` with ``cj = -alpha_s / h`` and
+``alpha_s = -sum_{j=1..k} 1/j`` (BCP eq. 5.2.10).  ``cj`` then depends only on the
+current step and order, not on the spacing of past steps, so the iteration matrix
+``dF/dy + cj dF/dy'`` stays valid over a sequence of steps whose size changes a little;
+DASSL and IDA re-factor only when ``cj`` moves outside ``[0.6, 1.67]`` of the value it
+was factored with (and on a convergence failure), which is what makes BDF cheap on
+large systems.  The price -- a slightly weaker stability for rapidly changing steps
+than the variable-coefficient form -- is handled by the step-ratio limits below.
+
+Error control and order/step selection follow IDA (``IDATestError``,
+``IDAHandleNFlag``, ``IDACompleteStep``): the error at order k is
+``sigma_k ||e||`` with the test ``C_k ||e|| <= 1`` (BCP eqs. 5.2.19-5.2.22); the order
+is lowered when the estimates of orders k-1 (and k-2) decrease, raised only after
+``k+1`` steps of constant size; the step is doubled when the estimated ratio exceeds 2,
+kept when it lies in (1, 2), and cut to a factor in [0.5, 0.9] otherwise.  An initial
+phase doubles the step and raises the order each step until the first failure or order
+reduction (BCP sec. 5.4.3).
+
+Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``; with
+``suppress_alg`` the algebraic components are left out of the error test (but not of
+the Newton convergence test), as IDA's ``suppressalg``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .base import DAEProblem, SolverStats
+from .linalg import LinearSolver, SingularMatrixError, make_linear_solver
+
+__all__ = ["BDF", "StepFailure", "MAX_ORDER"]
+
+MAX_ORDER = 5
+_EPS = np.finfo(float).eps
+_EPCON = 0.33        # Newton tolerance relative to the error test (IDA's epcon)
+_MAXCOR = 4          # Newton iterations per attempt (IDA's maxcor)
+_RATEMAX = 0.9       # a Newton rate above this is divergence
+_XRATE = 0.25        # cj may change by (1-XRATE)/(1+XRATE) .. inverse before re-factoring
+_MAXNEF = 10         # error-test failures per step before giving up (IDA maxnef)
+_MAXNCF = 10         # Newton failures per step before giving up (IDA maxncf)
+
+
+class StepFailure(RuntimeError):
+    """A step could not be completed.
+
+    Attributes
+    ----------
+    kind : str
+        ``"error_test"``, ``"newton"``, ``"step_size"``, ``"singular"`` or ``"residual"``.
+    t, h : float
+        Where it happened and the last step size tried.
+    weighted : ndarray or None
+        Weighted error (or Newton correction) components, to name the culprits.
+    rows, cols : list of int
+        Equations/variables of a singular iteration matrix.
+    """
+
+    def __init__(self, kind, message, t, h, weighted=None, rows=(), cols=()):
+        super().__init__(message)
+        self.kind, self.t, self.h = kind, t, h
+        self.weighted = weighted
+        self.rows, self.cols = list(rows), list(cols)
+
+
+class BDF:
+    """One-step-at-a-time BDF integrator (orders 1-5) for F(t, y, y') = 0.
+
+    Parameters
+    ----------
+    problem : DAEProblem
+        The system; ``residual`` and ``jacobian`` are called.
+    t0 : float
+        Initial time.
+    y0, yp0 : array_like
+        Consistent initial values (see :mod:`acausal.solvers.initialization`).
+    rtol : float
+        Relative tolerance.
+    atol : float or array_like
+        Absolute tolerance, multiplied by ``problem.nominal``.
+    max_step : float
+        Upper bound on the step size.
+    first_step : float or None
+        Initial step; None uses IDA's ``min(0.001 |t_stop - t0|, 0.5/||y'0||)``.
+    suppress_alg : bool
+        Exclude algebraic variables from the local error test.
+    max_order : int
+        Highest order used (1-5).
+    t_stop : float
+        Steps never pass this time and land on it exactly.
+    stats : SolverStats or None
+        Counters to accumulate into (shared across restarts by the driver).
+
+    Notes
+    -----
+    Integration is forward in time.  After :meth:`step`, ``t``, ``y`` and ``yp`` hold the
+    new point and :meth:`interpolate` gives the order-k interpolant on
+    ``[t_prev, t]`` (BCP sec. 5.2.3; IDA's ``IDAGetSolution``).
+    """
+
+    def __init__(self, problem: DAEProblem, t0: float, y0, yp0, *, rtol: float = 1e-6,
+                 atol=1e-8, max_step: float = np.inf, first_step: float | None = None,
+                 suppress_alg: bool = False, max_order: int = MAX_ORDER,
+                 t_stop: float = np.inf, stats: SolverStats | None = None,
+                 linear_solver: LinearSolver | None = None):
+        n = problem.n
+        self.problem = problem
+        self.n = n
+        self.rtol = float(rtol)
+        self.atol = np.broadcast_to(np.asarray(atol, float), (n,)) * np.asarray(
+            problem.nominal, float)
+        self.max_step = float(max_step)
+        self.max_order = int(min(max(max_order, 1), MAX_ORDER))
+        self.err_mask = (~np.asarray(problem.algebraic, bool)).astype(float) \
+            if suppress_alg else np.ones(n)
+        self.stats = stats if stats is not None else SolverStats()
+        self.lin = linear_solver if linear_solver is not None else make_linear_solver(problem)
+        self.phi = np.zeros((MAX_ORDER + 2, n))
+        self.psi = np.zeros(MAX_ORDER + 2)
+        self.alpha = np.zeros(MAX_ORDER + 2)
+        self.beta = np.zeros(MAX_ORDER + 2)
+        self.sigma = np.zeros(MAX_ORDER + 2)
+        self.gamma = np.zeros(MAX_ORDER + 2)
+        self.t_stop = float(t_stop)
+        self.restart(t0, y0, yp0, first_step)
+
+    # ------------------------------------------------------------------ set-up
+    def restart(self, t0: float, y0, yp0, first_step: float | None = None,
+                t_stop: float | None = None) -> None:
+        """Start afresh at order 1 from a consistent point (after events)."""
+        if t_stop is not None:
+            self.t_stop = float(t_stop)
+        self.tn = float(t0)
+        self.t_prev = self.tn
+        self.y = np.array(y0, dtype=float)
+        self.yp = np.array(yp0, dtype=float)
+        self.phi[:] = 0.0
+        self.phi[0] = self.y
+        self._update_weights()
+        h = self._initial_step() if first_step is None else float(first_step)
+        h = min(h, self.max_step, max(self.t_stop - self.tn, 0.0) or h)
+        self.phi[1] = h * self.yp
+        self.hh, self.kk, self.kused, self.hused = h, 1, 0, 0.0
+        self.psi[0] = h
+        self.cj = self.cjold = self.cjlast = 1.0 / h
+        self.cjratio = 1.0
+        self.phase, self.ns, self.nst = 0, 0, 0
+        self.ss = 20.0
+        self.force_setup = True
+
+    def _initial_step(self) -> float:
+        """IDA's first step: 0.001 of the interval, and at most 0.5/||y'0||_wrms."""
+        span = self.t_stop - self.tn if np.isfinite(self.t_stop) else 1.0
+        h = 1e-3 * abs(span) if span > 0 else 1e-6
+        ypnorm = self._wrms(self.yp, self.ewt_err)
+        if ypnorm > 0.5 / h:
+            h = 0.5 / ypnorm
+        return h
+
+    def _update_weights(self) -> None:
+        self.ewt = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
+        self.ewt_err = self.ewt * self.err_mask
+
+    @staticmethod
+    def _wrms(v: np.ndarray, w: np.ndarray) -> float:
+        x = v * w
+        return float(np.sqrt(np.dot(x, x) / x.size))
+
+    @property
+    def t(self) -> float:
+        return self.tn
+
+    @property
+    def order(self) -> int:
+        return self.kused
+
+    def set_stop(self, t_stop: float) -> None:
+        """Move the time that steps must not pass (a time event or t_end)."""
+        self.t_stop = float(t_stop)
+
+    # ------------------------------------------------------------------ coefficients
+    def _set_coeffs(self) -> float:
+        """IDASetCoeffs: psi, alpha, beta, sigma, gamma, cj and phi -> phi* (BCP 5.2.7)."""
+        kk, hh = self.kk, self.hh
+        if hh != self.hused or kk != self.kused:
+            self.ns = 0
+        self.ns = min(self.ns + 1, self.kused + 2)
+        psi, alpha, beta, sigma, gamma = self.psi, self.alpha, self.beta, self.sigma, \
+            self.gamma
+        if kk + 1 >= self.ns:
+            beta[0] = alpha[0] = sigma[0] = 1.0
+            gamma[0] = 0.0
+            temp1 = hh
+            for i in range(1, kk + 1):
+                temp2 = psi[i - 1]
+                psi[i - 1] = temp1
+                beta[i] = beta[i - 1] * psi[i - 1] / temp2
+                temp1 = temp2 + hh
+                alpha[i] = hh / temp1
+                sigma[i] = i * sigma[i - 1] * alpha[i]
+                gamma[i] = gamma[i - 1] + alpha[i - 1] / hh
+            psi[kk] = temp1
+        # alpha_s (fixed leading coefficient) and alpha_0 for the error constant
+        alphas = -sum(1.0 / j for j in range(1, kk + 1))
+        alpha0 = -float(np.sum(alpha[:kk]))
+        self.cjlast = self.cj
+        self.cj = -alphas / hh
+        ck = max(abs(alpha[kk] + alphas - alpha0), alpha[kk])
+        if self.ns <= kk:
+            self.phi[self.ns:kk + 1] *= beta[self.ns:kk + 1, None]
+        return ck
+
+    def _restore(self, saved_t: float) -> None:
+        """IDARestore: undo phi* and psi after a failed attempt."""
+        self.tn = saved_t
+        kk = self.kk
+        for j in range(1, kk + 1):
+            self.psi[j - 1] = self.psi[j] - self.hh
+        if self.ns <= kk:
+            self.phi[self.ns:kk + 1] /= self.beta[self.ns:kk + 1, None]
+
+    # ------------------------------------------------------------------ Newton
+    def _setup(self, t, y, yp) -> None:
+        """Evaluate and factor the iteration matrix at the predicted point."""
+        st = self.stats
+        st.jacobian_evaluations += 1
+        J = self.problem.jacobian(t, y, yp, self.cj)
+        st.lu_factorizations += 1
+        self.lin.factor(J)
+        self.cjold = self.cj
+        self.cjratio = 1.0
+        self.ss = 20.0
+        self.force_setup = False
+
+    def _newton(self, tnew, ypred, yppred):
+        """Simplified Newton on the corrector (BCP 5.2.12-5.2.16; IDA's IDANls).
+
+        Returns the correction ``e`` (``y = y_pred + e``, ``y' = y'_pred + cj e``) or
+        raises ``_NewtonFail`` carrying the last weighted correction.
+        """
+        cj = self.cj
+        self.cjratio = cj / self.cjold
+        lo = (1.0 - _XRATE) / (1.0 + _XRATE)
+        call_setup = self.force_setup or not (lo <= self.cjratio <= 1.0 / lo)
+        if cj != self.cjlast:
+            self.ss = 100.0
+        fresh = False
+        while True:
+            if call_setup:
+                self._setup(tnew, ypred, yppred)
+                fresh = True
+            ok, ee, last = self._corrector_loop(tnew, ypred, yppred, cj)
+            if ok:
+                return ee
+            if fresh:
+                raise _NewtonFail(last)
+            call_setup = True   # a stale matrix may be the cause: retry with a new one
+
+    def _corrector_loop(self, tnew, ypred, yppred, cj):
+        st = self.stats
+        F = self.problem.residual
+        ewt = self.ewt
+        scale = 2.0 / (1.0 + self.cjratio) if self.cjratio != 1.0 else 1.0
+        ee = np.zeros(self.n)
+        oldnrm = 0.0
+        tol = _EPCON
+        for m in range(_MAXCOR):
+            r = F(tnew, ypred + ee, yppred + cj * ee)
+            st.residual_evaluations += 1
+            st.newton_iterations += 1
+            if not np.all(np.isfinite(r)):
+                return False, ee, None
+            delta = self.lin.solve(-r)
+            if scale != 1.0:
+                delta *= scale   # J was factored with cjold (IDA's scalesol)
+            ee += delta
+            delnrm = self._wrms(delta, ewt)
+            if not np.isfinite(delnrm):
+                return False, ee, None
+            if m == 0:
+                oldnrm = delnrm
+                if delnrm <= 1e-4 * tol:
+                    return True, ee, None
+            else:
+                rate = (delnrm / oldnrm) ** (1.0 / m) if oldnrm > 0 else 0.0
+                if rate > _RATEMAX:
+                    return False, ee, delta * ewt
+                self.ss = rate / (1.0 - rate)
+            if self.ss * delnrm <= tol:
+                return True, ee, None
+        return False, ee, delta * ewt
+
+    # ------------------------------------------------------------------ error test
+    def _test_error(self, ck, ee):
+        """IDATestError: estimates at orders k, k-1, k-2 and the order to keep."""
+        w, kk, phi, sigma = self.ewt_err, self.kk, self.phi, self.sigma
+        enorm_k = self._wrms(ee, w)
+        err_k = sigma[kk] * enorm_k
+        terr_k = (kk + 1) * err_k
+        err_km1 = 0.0
+        knew = kk
+        if kk > 1:
+            delta = phi[kk] + ee
+            err_km1 = sigma[kk - 1] * self._wrms(delta, w)
+            terr_km1 = kk * err_km1
+            if kk > 2:
+                delta = delta + phi[kk - 1]
+                terr_km2 = (kk - 1) * sigma[kk - 2] * self._wrms(delta, w)
+                if max(terr_km1, terr_km2) <= terr_k:
+                    knew = kk - 1
+            elif terr_km1 <= 0.5 * terr_k:
+                knew = kk - 1
+        return ck * enorm_k <= 1.0, err_k, err_km1, knew
+
+    # ------------------------------------------------------------------ step
+    def _hmin(self) -> float:
+        return 16.0 * _EPS * max(abs(self.tn), abs(self.hused), 1e-300)
+
+    def step(self) -> None:
+        """Take one accepted step (IDAStep); raise :class:`StepFailure` if impossible."""
+        st = self.stats
+        ncf = nef = 0
+        saved_t = self.tn
+        self._update_weights()
+        while True:
+            # limit the step by max_step and the stop time (land on it exactly)
+            self.hh = min(self.hh, self.max_step)
+            remaining = self.t_stop - saved_t
+            landing = self.hh >= remaining * (1.0 - 4 * _EPS)
+            if landing:
+                self.hh = remaining
+            if self.hh < self._hmin():
+                raise StepFailure("step_size", f"step size {self.hh:.3g} underflow "
+                                  f"at t={saved_t:.17g}", saved_t, self.hh,
+                                  self._last_weighted())
+            ck = self._set_coeffs()
+            tnew = self.t_stop if landing else saved_t + self.hh
+            self.tn = tnew
+            # predictor from the interpolating polynomial (BCP 5.2.8-5.2.9)
+            kk = self.kk
+            ypred = self.phi[:kk + 1].sum(axis=0)
+            yppred = self.gamma[1:kk + 1] @ self.phi[1:kk + 1]
+            try:
+                ee = self._newton(tnew, ypred, yppred)
+            except SingularMatrixError as exc:
+                self._restore(saved_t)
+                raise StepFailure("singular", str(exc), saved_t, self.hh,
+                                  rows=exc.rows, cols=exc.cols) from None
+            except _NewtonFail as exc:
+                # IDAHandleNFlag, convergence failure: quarter the step, predict again
+                self._restore(saved_t)
+                st.newton_failures += 1
+                ncf += 1
+                self._last_fail = exc.weighted
+                self.phase = 1
+                if ncf >= _MAXNCF:
+                    raise StepFailure("newton", f"corrector failed to converge {ncf} "
+                                      f"times at t={saved_t:.17g} (h={self.hh:.3g})",
+                                      saved_t, self.hh, exc.weighted) from None
+                self._shrink(0.25)
+                self.force_setup = True
+                continue
+            ok, err_k, err_km1, knew = self._test_error(ck, ee)
+            if ok:
+                break
+            # IDAHandleNFlag, error-test failure (BCP sec. 5.4.2)
+            self._restore(saved_t)
+            st.error_test_failures += 1
+            nef += 1
+            self._last_fail = ee * self.ewt_err
+            self.phase = 1
+            if nef >= _MAXNEF:
+                raise StepFailure("error_test", f"error test failed {nef} times at "
+                                  f"t={saved_t:.17g} (h={self.hh:.3g})", saved_t,
+                                  self.hh, self._last_fail)
+            if nef == 1:
+                self.kk = knew
+                err_knew = err_k if knew == kk else err_km1
+                rr = 0.9 * (2.0 * err_knew + 1e-4) ** (-1.0 / (self.kk + 1))
+                self._shrink(max(0.25, min(0.9, rr)))
+            else:
+                self.kk = knew if nef == 2 else 1
+                self._shrink(0.25)
+        self._complete_step(ee, err_k, err_km1, knew, yppred)
+
+    def _shrink(self, rr: float) -> None:
+        self.hh *= rr
+        if self.nst == 0:
+            # IDAReset: before the first step phi[1] is h*y'0, rescale it with h
+            self.psi[0] = self.hh
+            self.phi[1] *= rr
+
+    def _last_weighted(self):
+        return getattr(self, "_last_fail", None)
+
+    def _complete_step(self, ee, err_k, err_km1, knew, yppred) -> None:
+        """IDACompleteStep: order/step selection (BCP sec. 5.4.3) and phi update."""
+        st = self.stats
+        kk = self.kk
+        self.nst += 1
+        st.steps += 1
+        st.orders[kk] = st.orders.get(kk, 0) + 1
+        kdiff = kk - self.kused
+        self.kused = kk
+        self.hused = self.hh
+        if knew == kk - 1 or kk == self.max_order:
+            self.phase = 1
+        if self.phase == 0:
+            if self.nst > 1:
+                self.kk = kk + 1
+                self.hh = min(2.0 * self.hh, self.max_step)
+        else:
+            self._select_order_step(ee, err_k, err_km1, knew, kdiff)
+        if self.kused < self.max_order:
+            self.phi[self.kused + 1] = ee
+        # phi update: phi[ku] += e; phi[j] += phi[j+1], j = ku-1..0 (BCP 5.2.6)
+        ku = self.kused
+        self.phi[ku] += ee
+        for j in range(ku - 1, -1, -1):
+            self.phi[j] += self.phi[j + 1]
+        self.t_prev = self.tn - self.hused
+        self.y = self.phi[0].copy()
+        self.yp = yppred + self.cj * ee
+
+    def _select_order_step(self, ee, err_k, err_km1, knew, kdiff) -> None:
+        kk = self.kk
+        action = "maintain"
+        err_kp1 = 0.0
+        if knew == kk - 1:
+            action = "lower"
+        elif kk == self.max_order or kk + 1 >= self.ns or kdiff == 1:
+            action = "maintain"
+        else:
+            # error estimate at order k+1 from the last two corrections (BCP 5.2.24)
+            err_kp1 = self._wrms(ee - self.phi[kk + 1], self.ewt_err) / (kk + 2)
+            terr_k = (kk + 1) * err_k
+            terr_kp1 = (kk + 2) * err_kp1
+            if kk == 1:
+                action = "maintain" if terr_kp1 >= 0.5 * terr_k else "raise"
+            elif kk * err_km1 <= min(terr_k, terr_kp1):
+                action = "lower"
+            elif terr_kp1 >= terr_k:
+                action = "maintain"
+            else:
+                action = "raise"
+        if action == "raise":
+            self.kk = kk + 1
+            err_knew = err_kp1
+        elif action == "lower":
+            self.kk = kk - 1
+            err_knew = err_km1
+        else:
+            err_knew = err_k
+        rr = (2.0 * err_knew + 1e-4) ** (-1.0 / (self.kk + 1))
+        if rr >= 2.0:
+            self.hh = min(2.0 * self.hh, self.max_step)
+        elif rr <= 1.0:
+            self.hh *= max(0.5, min(0.9, rr))
+
+    # ------------------------------------------------------------------ output
+    def interpolate(self, t: float):
+        """y and y' at ``t`` from the interpolant of the order last used (IDAGetSolution).
+
+        Accurate on ``[t_prev, t]``; the driver uses it for output and root finding.
+        """
+        kord = max(self.kused, 1)
+        delt = t - self.tn
+        psi, phi = self.psi, self.phi
+        c, d = 1.0, 0.0
+        gam = delt / psi[0]
+        cs = np.empty(kord)
+        ds = np.empty(kord)
+        for j in range(1, kord + 1):
+            d = d * gam + c / psi[j - 1]
+            c = c * gam
+            gam = (delt + psi[j - 1]) / psi[j]
+            cs[j - 1], ds[j - 1] = c, d
+        return phi[0] + cs @ phi[1:kord + 1], ds @ phi[1:kord + 1]
+
+
+class _NewtonFail(Exception):
+    def __init__(self, weighted):
+        super().__init__("corrector did not converge")
+        self.weighted = weighted
