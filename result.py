@@ -19,7 +19,8 @@ class Result:
     def __init__(self, compiled, t, y, stats=None, events=(), success=True, message=""):
         self.compiled = compiled
         self.t = np.asarray(t, dtype=float)
-        self._y = np.asarray(y, dtype=float).reshape(len(self.t), -1)
+        self._z = np.asarray(y, dtype=float).reshape(len(self.t), -1)
+        self._y = None
         self.stats = stats.as_dict() if hasattr(stats, "as_dict") else (stats or {})
         self.events = list(events)
         self.success = success
@@ -41,6 +42,8 @@ class Result:
                            + (f"; similar: {', '.join(close)}" if close else "")) from None
         if sign is None:
             return np.full(len(self.t), k)
+        if self._y is None:
+            self._y = _expand(self.compiled, self.t, self._z)
         return sign * self._y[:, k]
 
     def at(self, name: str, t: float) -> float:
@@ -79,3 +82,20 @@ class Result:
         status = "ok" if self.success else f"FAILED: {self.message}"
         return (f"<Result {len(self.t)} points, t = {self.t[0]:g} .. {self.t[-1]:g}, "
                 f"{len(self.compiled.outputs)} variables, {status}>")
+
+
+def _expand(compiled, t, z) -> np.ndarray:
+    """Every variable at every output time, from the solver vector z.
+
+    Relations are evaluated afresh at each point (not frozen), so values computed from
+    if-expressions are those of the branch that holds at that time.
+    """
+    saved = compiled.m.copy()
+    try:
+        rows = []
+        for tk, zk in zip(t, z):
+            compiled.init_modes(tk, zk)
+            rows.append(compiled.expand(tk, zk))
+        return np.array(rows).reshape(len(t), -1)
+    finally:
+        compiled.m[:] = saved

@@ -51,8 +51,12 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     if n_points is not None and t_eval is None:
         t_eval = np.linspace(t_start, t_end, n_points)
     y0 = initial_values(compiled, t_start)
+    if compiled.n == 0:   # nothing to integrate: every variable is an explicit function of time
+        t = np.asarray(t_eval if t_eval is not None else np.linspace(t_start, t_end, 501))
+        return Result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], True,
+                      "no states: evaluated explicitly")
     yp0 = np.zeros_like(y0)
-    yp0[compiled.link_s] = y0[compiled.link_d]
+    yp0[compiled.state_index] = compiled.state_derivatives(t_start, y0)
     atol = rtol if atol is None else atol
     from .solvers import integrate
     try:

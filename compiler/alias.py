@@ -12,6 +12,7 @@ are merged onto the representative (start and fixed carried across with the sign
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
 
 import sympy as sp
@@ -164,11 +165,16 @@ def _rebuild(flat, kept, subs, table, find, constants):
         else:
             derivatives[x] = dx
     equations = []
+    info = {v.symbol: v for v in flat.variables}
     for eq in kept:
         r = eq.residual.xreplace(subs)
         if r == 0:
+            by_name = {v.name: v.hint for v in flat.variables if v.hint}
+            hints = sorted({by_name[w] for w in re.findall(r"[\w.\[\]]+", eq.text)
+                            if w in by_name})
             raise ModelError(f"equation '{eq.text}' in {eq.where} is redundant: after "
-                             "resolving aliases it reads 0 = 0 (over-determined model)")
+                             "resolving aliases it reads 0 = 0 (over-determined model)"
+                             + (": " + "; ".join(hints) if hints else ""))
         equations.append(replace(eq, residual=r))
     initial = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in flat.initial_equations]
     table.equations_after = len(equations)

@@ -16,9 +16,9 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.sparse as sps
-import scipy.sparse.linalg as spla
 
 from ..solvers.base import SimulationError
+from ..solvers.newton import damped_newton, homotopy
 
 __all__ = ["InitialConditions", "InitializationFailed", "solve_initial"]
 
@@ -28,54 +28,50 @@ class InitializationFailed(SimulationError):
 
 
 class InitialConditions:
-    """Initial-condition rows: generated code for user initial equations + fixed values."""
+    """The initial-condition rows as generated code over the solver vector z."""
 
-    def __init__(self, code, fixed_index, fixed_value, descriptions):
-        self.code = code                      # GeneratedCode of the user initial equations
-        self.fixed_index = np.asarray(fixed_index, dtype=np.int64)
-        self.fixed_value = np.asarray(fixed_value, dtype=float)
+    def __init__(self, code, descriptions):
+        self.code = code
         self.descriptions = descriptions      # one text per row, for messages
 
     @property
     def n(self) -> int:
-        return self.code.n_rows + len(self.fixed_index)
+        return self.code.n_rows
 
-    def residual(self, t, y, p, m):
-        r = self.code.residual(t, y, p, m, np.empty(self.code.n_rows))
-        return np.concatenate([r, y[self.fixed_index] - self.fixed_value])
+    def residual(self, t, z, p, m):
+        return self.code.residual(t, z, p, m, np.empty(self.code.n_rows))
 
-    def jacobian(self, t, y, p, m, n):
+    def jacobian(self, t, z, p, m, n):
         c = self.code
-        vals = c.jacobian(t, y, p, m, np.empty(len(c.jac_rows)))
-        k = len(self.fixed_index)
-        rows = np.concatenate([c.jac_rows, c.n_rows + np.arange(k)])
-        cols = np.concatenate([c.jac_cols, self.fixed_index])
-        data = np.concatenate([vals, np.ones(k)])
-        return sps.csr_matrix((data, (rows, cols)), shape=(self.n, n))
+        vals = c.jacobian(t, z, p, m, np.empty(len(c.jac_rows)))
+        return sps.csr_matrix((vals, (c.jac_rows, c.jac_cols)), shape=(self.n, n))
 
 
-def solve_initial(model, init: InitialConditions, t0: float, y_guess: np.ndarray,
+def solve_initial(model, init: InitialConditions, t0: float, z_guess: np.ndarray,
                   tol: float = 1e-10, max_iter: int = 60) -> np.ndarray:
-    """Damped Newton on [G; I](y) = 0, then a homotopy from the guess if that fails."""
-    def F(y):
-        return np.concatenate([model.G(t0, y), init.residual(t0, y, model.p, model.m)])
+    """Damped Newton on [G; I](z) = 0, then a homotopy from the guess if that fails."""
+    if model.n == 0:
+        return z_guess
 
-    def J(y):
-        return sps.vstack([model.dG_dy(t0, y), init.jacobian(t0, y, model.p, model.m, model.n)]).tocsc()
+    def F(z):
+        return np.concatenate([model.G(t0, z), init.residual(t0, z, model.p, model.m)])
 
-    scale = np.maximum(np.abs(y_guess), model.nominal)
-    y, ok, why = _damped_newton(F, J, y_guess.copy(), scale, tol, max_iter)
-    if not ok:
-        y, ok, why2 = _homotopy(F, J, y_guess.copy(), scale, tol)
-        why = why2 or why
-    if not ok:
-        r = F(y)
-        worst = np.argsort(-np.abs(r))[:5]
-        names = [_row_name(model, init, k) for k in worst if abs(r[k]) > tol]
+    def J(z):
+        return sps.vstack([model.dG_dy(t0, z),
+                           init.jacobian(t0, z, model.p, model.m, model.n)]).tocsc()
+
+    weights = 1.0 / (1e-10 * np.abs(z_guess) + 1e-10 * model.nominal)
+    out = damped_newton(F, J, z_guess.copy(), weights=weights, tol=1.0, max_iter=max_iter)
+    if not out.converged:
+        out = homotopy(F, J, z_guess.copy(), weights=weights, tol=1.0)
+    if not out.converged or np.max(np.abs(out.residual), initial=0) > 1e-6:
+        r = F(out.x)
+        worst = [k for k in np.argsort(-np.abs(r))[:5] if abs(r[k]) > tol]
+        names = [_row_name(model, init, k) for k in worst]
         raise InitializationFailed(
-            f"initialization failed at t = {t0}: {why}; largest residuals in: "
-            + "; ".join(names), t=t0, variables=names)
-    return y
+            f"initialization failed at t = {t0}: {out.message or 'no convergence'}; "
+            "largest residuals in: " + "; ".join(names), t=t0, variables=names)
+    return out.x
 
 
 def _row_name(model, init, k):
@@ -83,48 +79,3 @@ def _row_name(model, init, k):
     if k < model.n_g:
         return g_names[k] if k < len(g_names) else f"equation {k}"
     return init.descriptions[k - model.n_g]
-
-
-def _solve(Jm, r):
-    try:
-        with np.errstate(all="ignore"):
-            lu = spla.splu(Jm)
-            dx = lu.solve(r)
-        if np.all(np.isfinite(dx)):
-            return dx
-    except RuntimeError:
-        pass
-    # singular: least squares, so Newton can still make progress on a rank-deficient step
-    return spla.lsqr(Jm, r, atol=1e-14, btol=1e-14)[0]
-
-
-def _damped_newton(F, J, y, scale, tol, max_iter):
-    r = F(y)
-    for _ in range(max_iter):
-        if np.max(np.abs(r)) < tol:
-            return y, True, ""
-        dx = _solve(J(y), r)
-        lam, norm0 = 1.0, np.linalg.norm(r)
-        while lam > 1e-4:
-            y_new = y - lam * dx
-            r_new = F(y_new)
-            if np.all(np.isfinite(r_new)) and np.linalg.norm(r_new) < (1 - 1e-4 * lam) * norm0:
-                break
-            lam *= 0.5
-        else:
-            return y, False, "damped Newton made no progress (singular or no solution)"
-        y, r = y_new, r_new
-        if np.max(np.abs(dx * lam) / scale) < 1e-14 and np.max(np.abs(r)) < 1e3 * tol:
-            return y, True, ""
-    return y, np.max(np.abs(r)) < tol, "Newton did not converge"
-
-
-def _homotopy(F, J, y0, scale, tol, steps=20):
-    """Fixed-point homotopy H(y, l) = F(y) - (1 - l) F(y0), followed from l = 0 to 1."""
-    r0 = F(y0)
-    y = y0
-    for lam in np.linspace(0, 1, steps + 1)[1:]:
-        y, ok, why = _damped_newton(lambda q: F(q) - (1 - lam) * r0, J, y, scale, tol, 40)
-        if not ok:
-            return y, False, f"homotopy stopped at lambda = {lam:.2f}: {why}"
-    return y, True, ""

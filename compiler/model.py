@@ -75,94 +75,136 @@ def _well_enough(block, keep, best, hysteresis):
     return cur >= hysteresis * new
 
 
-class CompiledModel(DAEProblem):
-    """F(t, y, y') = [G(t, y, p); y'[S] - y[D]] with names, parameters and modes."""
+# A relation lhs OP rhs holds when g = lhs - rhs satisfies OP 0.
+_RELATION = {"StrictGreaterThan": lambda g: g > 0, "GreaterThan": lambda g: g >= 0,
+             "StrictLessThan": lambda g: g < 0, "LessThan": lambda g: g <= 0}
 
-    def __init__(self, code, y_names, params, param_values, pairs, dummies,
-                 dynamic=None, nominal=None, report=None, meta=None):
-        super().__init__(len(y_names), y_names)
+
+class CompiledModel(DAEProblem):
+    """F(t, z, z') for the solver, with the user's names, parameters and modes.
+
+    The generated code returns ``n_res`` residual rows R(t, z) followed by the values of
+    der(s) for the code-linked states s (``state_z``).  Then
+
+        F = [ R(t, z);  z'[state_z] - D(t, z);  z'[link_s] - z[link_d] ]
+
+    The middle block is the causal form (der(s) computed by the BLT's assignments); the
+    last block is the full form, where derivative variables are part of z and dynamic
+    state selection switches which links are active.
+    """
+
+    def __init__(self, code, z_names, params, param_values, n_res, state_z=(),
+                 pairs=(), dummies=(), dynamic=None, nominal=None, report=None, meta=None):
+        super().__init__(len(z_names), z_names)
         self.code = code
         self.param_names = list(params)
         self.p = np.asarray(param_values, dtype=float)
-        # every derivative link v -> der(v); a link is a linking row unless der(v) is a dummy
+        self.n_res = int(n_res)
+        self.state_z = np.asarray(state_z, dtype=np.int64)
         self.pair_s = np.asarray([a for a, _ in pairs], dtype=np.int64)
         self.pair_d = np.asarray([b for _, b in pairs], dtype=np.int64)
         self.dummies = set(dummies)
         self.dynamic = dynamic
         self.m = np.zeros(code.n_roots, dtype=bool)
         self.n_roots = code.n_roots
-        self.n_g = code.n_rows
+        self.n_g = self.n_res     # rows of the model equations proper (for initialization)
         if nominal is not None:
             self.nominal = np.asarray(nominal, dtype=float)
         self.outputs = {}
         self.report = report
         self.meta = meta or {}
+        self._jac_split()
         self._update_links()
+
+    def _jac_split(self):
+        c = self.code
+        self._res_entries = c.jac_rows < self.n_res
+        self._der_entries = ~self._res_entries
 
     # -- the linking rows ----------------------------------------------------------------
     def _update_links(self):
         active = np.array([d not in self.dummies for d in self.pair_d], dtype=bool)
         self.link_s = self.pair_s[active] if len(active) else self.pair_s
         self.link_d = self.pair_d[active] if len(active) else self.pair_d
+        self.state_index = np.concatenate([self.state_z, self.link_s]).astype(np.int64)
         self.algebraic = np.ones(self.n, dtype=bool)
-        self.algebraic[self.link_s] = False
+        self.algebraic[self.state_index] = False
+        r0 = self.n_res + len(self.state_z)
+        rows_link = r0 + np.arange(len(self.link_s))
         c = self.code
-        rows_link = self.n_g + np.arange(len(self.link_s))
-        self.jac_pattern = (np.concatenate([c.jac_rows, rows_link, rows_link]),
-                            np.concatenate([c.jac_cols, self.link_s, self.link_d]))
+        self.jac_pattern = (
+            np.concatenate([c.jac_rows, self.n_res + np.arange(len(self.state_z)), rows_link,
+                            rows_link]),
+            np.concatenate([c.jac_cols, self.state_z, self.link_s, self.link_d]))
 
     @property
     def states(self) -> list:
-        return [self.names[k] for k in self.link_s]
+        return [self.names[k] for k in self.state_index]
+
+    def state_derivatives(self, t, z) -> np.ndarray:
+        """der(s) of every state, in the order of ``state_index`` (consistent z')."""
+        out = self.code.residual(t, z, self.p, self.m, np.empty(self.code.n_rows))
+        return np.concatenate([out[self.n_res:], z[self.link_d]])
 
     # -- DAEProblem ----------------------------------------------------------------------
-    def G(self, t, y):
-        return self.code.residual(t, y, self.p, self.m, np.empty(self.n_g))
+    def G(self, t, z):
+        out = self.code.residual(t, z, self.p, self.m, np.empty(self.code.n_rows))
+        return out[: self.n_res]
 
-    def residual(self, t, y, yp):
-        out = np.empty(self.n)
-        self.code.residual(t, y, self.p, self.m, out)
-        out[self.n_g:] = yp[self.link_s] - y[self.link_d]
-        return out
-
-    def jacobian(self, t, y, yp, cj):
+    def residual(self, t, z, zp):
         c = self.code
-        vals = c.jacobian(t, y, self.p, self.m, np.empty(len(c.jac_rows)))
-        k = len(self.link_s)
-        rows_link = self.n_g + np.arange(k)
-        rows = np.concatenate([c.jac_rows, rows_link, rows_link])
-        cols = np.concatenate([c.jac_cols, self.link_s, self.link_d])
-        data = np.concatenate([vals, np.full(k, cj), -np.ones(k)])
+        out = c.residual(t, z, self.p, self.m, np.empty(c.n_rows))
+        F = np.empty(self.n)
+        F[: self.n_res] = out[: self.n_res]
+        k = self.n_res + len(self.state_z)
+        F[self.n_res:k] = zp[self.state_z] - out[self.n_res:]
+        F[k:] = zp[self.link_s] - z[self.link_d]
+        return F
+
+    def jacobian(self, t, z, zp, cj):
+        c = self.code
+        vals = c.jacobian(t, z, self.p, self.m, np.empty(len(c.jac_rows)))
+        vals[self._der_entries] *= -1.0
+        n_sz, n_l = len(self.state_z), len(self.link_s)
+        k = self.n_res + n_sz
+        rows_link = k + np.arange(n_l)
+        rows = np.concatenate([c.jac_rows, self.n_res + np.arange(n_sz), rows_link, rows_link])
+        cols = np.concatenate([c.jac_cols, self.state_z, self.link_s, self.link_d])
+        data = np.concatenate([vals, np.full(n_sz, cj), np.full(n_l, cj), -np.ones(n_l)])
         return sps.csc_matrix((data, (rows, cols)), shape=(self.n, self.n))
 
-    def dG_dy(self, t, y):
+    def dG_dy(self, t, z):
         c = self.code
-        vals = c.jacobian(t, y, self.p, self.m, np.empty(len(c.jac_rows)))
-        return sps.csr_matrix((vals, (c.jac_rows, c.jac_cols)), shape=(self.n_g, self.n))
+        vals = c.jacobian(t, z, self.p, self.m, np.empty(len(c.jac_rows)))
+        keep = self._res_entries
+        return sps.csr_matrix((vals[keep], (c.jac_rows[keep], c.jac_cols[keep])),
+                              shape=(self.n_res, self.n))
 
-    def roots(self, t, y, yp):
-        return self.code.roots(t, y, self.p, self.m, np.empty(self.n_roots))
+    def roots(self, t, z, zp):
+        return self.code.roots(t, z, self.p, self.m, np.empty(self.n_roots))
 
-    def init_modes(self, t, y):
+    def expand(self, t, z) -> np.ndarray:
+        """All variables of the reduced system (states, assigned and torn) from z."""
+        if self.code.expand is None:
+            return z
+        return self.code.expand(t, z, self.p, self.m, np.empty(self.meta["n_all"]))
+
+    def init_modes(self, t, z):
         """Relations take the values they have at the initial point."""
         if self.n_roots:
-            g = self.roots(t, y, None)
-            self.m[:] = self.code_relation_values(g)
+            g = self.roots(t, z, None)
+            self.m[:] = [_RELATION[op](x) for op, x in zip(self.meta["relations"], g)]
 
-    def code_relation_values(self, g):
-        strict = self.meta.get("relation_greater", np.ones(self.n_roots, dtype=bool))
-        return np.where(strict, g > 0, g < 0)
-
-    def handle_event(self, t, y, yp, crossed):
+    def handle_event(self, t, z, zp, crossed):
         self.m[crossed] = ~self.m[crossed]
         return EventAction(changed=True)
 
     # -- dynamic state selection ----------------------------------------------------------
-    def reselect_states(self, t, y, hysteresis=0.5) -> bool:
+    def reselect_states(self, t, z, hysteresis=0.5) -> bool:
         """Re-choose the dummy derivatives; True when the choice (and so F) changed."""
         if self.dynamic is None:
             return False
-        new = self.dynamic.choose(self.dG_dy(t, y).tocsr(), self.dummies, hysteresis)
+        new = self.dynamic.choose(self.dG_dy(t, z).tocsr(), self.dummies, hysteresis)
         if new == self.dummies:
             return False
         self.dummies = new
@@ -170,9 +212,9 @@ class CompiledModel(DAEProblem):
         self._update_links()
         return True
 
-    def after_step(self, t, y, yp) -> bool:
+    def after_step(self, t, z, zp) -> bool:
         """Called by the driver after each accepted step (dynamic state selection)."""
-        return self.reselect_states(t, y)
+        return self.reselect_states(t, z)
 
     def set_parameters(self, values: dict) -> None:
         for name, value in values.items():

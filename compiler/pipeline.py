@@ -20,8 +20,9 @@ from .codegen import extract_relations, generate
 from .graph import UNASSIGNED
 from .flatten import flatten
 from .initial import InitialConditions
+from .causalize import causalize, full_form
 from .model import CompiledModel, DynamicStateSelection
-from .reduction import reduce_index
+from .reduction import as_written, reduce_index
 from .report import IndexReport
 from .symbolic import SymbolicSystem
 
@@ -44,6 +45,7 @@ def compile_model(model: Component) -> CompiledModel:
     structure = system.structure()
     clock("balance", check_balance, system, structure, reduced, aliases,
           (len(flat.equations), len(flat.variables)))
+    report.sigma = clock("index_as_written", as_written, flat)
     reduction = clock("index_reduction", reduce_index, system, structure)
     report.reduction = reduction
     report.count("index_reduction", equations=len(system.equations),
@@ -65,26 +67,51 @@ class _Clock:
 
 
 def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledModel:
-    y_syms = list(system.symbols)
-    index = {s: k for k, s in enumerate(y_syms)}
+    syms = system.symbols
+    caus = full_form(reduction, len(syms), len(system.equations)) if reduction.dynamic \
+        else causalize(reduction)
+    report.blocks = caus.blocks
+    z_syms = [syms[v] for v in caus.z]
+    assigned = [(syms[v], solve_linear(system.equations[e].residual, syms[v]))
+                for v, e in caus.assignments]
+    rows = [system.equations[e].residual for e in caus.residual_eqs]
+    n_res = len(rows)
+    s = reduction.structure
+    if caus.causal:   # der(s) of every state, computed by the assignments
+        rows += [syms[s.var_to_diff[v]] for v in caus.z[: caus.n_states]]
+        state_z, pairs, dummies = list(range(caus.n_states)), [], []
+    else:
+        state_z, pairs, dummies = [], reduction.pairs, reduction.dummies
+    init_rows, init_text = _initial_rows(system, reduced, reduction, caus)
+    exprs, crossings, modes = extract_relations([e for _, e in assigned] + rows + init_rows)
+    assigned = [(a, e) for (a, _), e in zip(assigned, exprs[: len(assigned)])]
+    rows = exprs[len(assigned): len(assigned) + len(rows)]
+    init_rows = exprs[len(assigned) + len(rows):]
+    relation_ops = [type(r).__name__ for r in modes.values()]
     params = [p for p in reduced.parameters if _is_number(p.value)]
-    residuals = [eq.residual for eq in system.equations]
-    residuals, crossings, modes = extract_relations(residuals)
-    greater = np.array([isinstance(r, (sp.StrictGreaterThan, sp.GreaterThan))
-                        for r in modes.values()], dtype=bool)
-    code = generate(residuals, y_syms, [p.symbol for p in params], len(modes), crossings)
-    nominal = [_nominal(system, k) for k in range(len(y_syms))]
-    cm = CompiledModel(code, [s.name for s in y_syms], [p.name for p in params],
-                       [float(p.value) for p in params], reduction.pairs, reduction.dummies,
+    psyms = [p.symbol for p in params]
+    code = generate(rows, z_syms, psyms, len(modes), crossings, assigned, outputs=syms)
+    init_code = generate(init_rows, z_syms, psyms, len(modes), None, assigned)
+    nominal = [_nominal(system, v) for v in caus.z]
+    cm = CompiledModel(code, [q.name for q in z_syms], [p.name for p in params],
+                       [float(p.value) for p in params], n_res, state_z, pairs, dummies,
                        _dynamic(reduction) if reduction.dynamic else None, nominal,
                        report=report,
-                       meta={"relation_greater": greater,
-                             "equation_names": [e.name(system) for e in system.equations],
-                             "modes": modes})
-    cm.outputs = _output_map(flat, aliases, index)
-    cm.start = np.array([_start(system, k) for k in range(len(y_syms))])
-    cm.initial_conditions = _initial_conditions(system, reduced, reduction, y_syms, params, cm)
+                       meta={"relations": relation_ops, "n_all": len(syms),
+                             "equation_names": [system.equations[e].name(system)
+                                                for e in caus.residual_eqs],
+                             "modes": modes, "causal": caus.causal})
+    cm.outputs = _output_map(flat, aliases, {q: k for k, q in enumerate(syms)})
+    cm.start = np.array([_start(system, v) for v in caus.z])
+    cm.initial_conditions = InitialConditions(init_code, init_text)
     return cm
+
+
+def solve_linear(residual, x):
+    """x from residual(x) = 0 when x enters linearly:  x = -r(x=0) / (dr/dx)."""
+    c = sp.diff(residual, x)
+    return sp.simplify(-residual.xreplace({x: 0}) / c) if not c.is_number \
+        else -residual.xreplace({x: 0}) / c
 
 
 def _dynamic(reduction) -> DynamicStateSelection:
@@ -140,38 +167,32 @@ def _output_map(flat, aliases, index) -> dict:
     return out
 
 
-def _initial_conditions(system, reduced, reduction, y_syms, params, cm):
+def _initial_rows(system, reduced, reduction, caus):
     """Initial equations, fixed starts, then free states' starts (see compiler.initial)."""
-    init_res = [e.residual for e in reduced.initial_equations]
-    descriptions = [f"initial equation {e.text} [{e.where}]" for e in reduced.initial_equations]
-    init_res, _, _ = extract_relations(init_res)
-    code = generate(init_res, y_syms, [p.symbol for p in params])
-    n_needed = len(cm.link_s)
-    fixed_idx, fixed_val = [], []
-    for k, s in enumerate(y_syms):
-        info = system.var_info.get(s)
+    rows = [e.residual for e in reduced.initial_equations]
+    text = [f"initial equation {e.text} [{e.where}]" for e in reduced.initial_equations]
+    needed = reduction.n_states
+    fixed = set()
+    for k, sym in enumerate(system.symbols):
+        info = system.var_info.get(sym)
         if info is not None and info.attrs.fixed and info.attrs.start is not None:
-            fixed_idx.append(k)
-            fixed_val.append(float(info.attrs.start))
-            descriptions.append(f"{s.name} = {info.attrs.start} (fixed start value)")
-    free = n_needed - len(init_res) - len(fixed_idx)
+            rows.append(sym - info.attrs.start)
+            text.append(f"{sym.name} = {info.attrs.start} (fixed start value) [{info.where}]")
+            fixed.add(k)
+    free = needed - len(rows)
     if free < 0:
         from .initial import InitializationFailed
         raise InitializationFailed(
-            f"the initial problem is over-specified: {len(init_res) + len(fixed_idx)} "
-            f"initial conditions for {n_needed} states ({', '.join(y_syms[k].name for k in cm.link_s)}); "
-            "conditions: " + "; ".join(descriptions))
-    for k in _free_state_order(cm, system, fixed_idx):
+            f"the initial problem is over-specified: {len(rows)} initial conditions for "
+            f"{needed} states ({', '.join(system.symbols[v].name for v in reduction.states)}); "
+            "conditions: " + "; ".join(text))
+    for v in reduction.states:
         if free == 0:
             break
-        fixed_idx.append(k)
-        fixed_val.append(cm.start[k])
-        descriptions.append(f"{y_syms[k].name} = {cm.start[k]} (start value of a state)")
+        if v in fixed:
+            continue
+        start = _start(system, v)
+        rows.append(system.symbols[v] - start)
+        text.append(f"{system.symbols[v].name} = {start} (start value of a state)")
         free -= 1
-    return InitialConditions(code, fixed_idx, fixed_val, descriptions)
-
-
-def _free_state_order(cm, system, fixed_idx):
-    """The selected states, in order: their start values fill the free initial conditions."""
-    taken = set(fixed_idx)
-    return [k for k in cm.link_s if k not in taken]
+    return rows, text

@@ -27,6 +27,7 @@ class IndexReduction:
     dynamic: bool = False             # some dummy choice is only locally valid
     index: int = 0
     selection: object = None
+    pantelides: object = None
 
     @property
     def n_states(self) -> int:
@@ -50,7 +51,7 @@ def reduce_index(system, s: Structure) -> IndexReduction:
     has_algebraic = sr.n_vars - len(pairs) - n_states > 0
     index = (max(counts) + 1) if counts and max(counts) > 0 else int(has_algebraic)
     red = IndexReduction(sr, counts, pairs, sorted(selection.dummies),
-                         bool(selection.state_sets), index, selection)
+                         bool(selection.state_sets), index, selection, result)
     _check_square(system, red)
     return red
 
@@ -62,3 +63,54 @@ def _check_square(system, red: IndexReduction) -> None:
         raise IndexReductionFailed(
             f"after index reduction the system is not square: {n_eq} equations + "
             f"{red.n_states} states for {n_var} variables", [], [])
+
+
+def as_written(flat) -> dict:
+    """The structural index of the model as the user wrote it (before alias elimination),
+    by Pantelides and, independently, by Pryce's Sigma-method; they must agree.
+
+    Alias elimination can resolve a constraint before index reduction sees it (two
+    capacitors in parallel share one voltage variable), so the index the user's equations
+    have is measured here, on integers only.
+    """
+    from .sigma import signature_matrix, sigma_method
+    from .structure import StructuralError
+    s = _flat_structure(flat)
+    try:
+        counts = pantelides(s).diff_counts[: s.n_eqs]
+        sig = sigma_method(signature_matrix(s, sparse=True)[0])
+    except StructuralError as err:   # report only: the balance pass has the diagnosis
+        return {"error": str(err).splitlines()[0]}
+    index_p = _index_from_counts(counts, sig.d)
+    disagree = [k for k, (a, b) in enumerate(zip(counts, sig.c)) if a != b]
+    return {"index_pantelides": index_p, "index_sigma": sig.index,
+            "counts": counts, "c": sig.c, "d": sig.d, "dof": sig.dof,
+            "agrees": index_p == sig.index and not disagree,
+            "disagreements": [s.eq_names[k] for k in disagree][:20]}
+
+
+def _index_from_counts(counts, d) -> int:
+    """Pryce's convention: max differentiations, plus one if some variable is algebraic."""
+    return (max(counts, default=0)) + (1 if any(x == 0 for x in d) else 0)
+
+
+def _flat_structure(flat) -> Structure:
+    """Incidence of the flat equations (der(x) as its own variable), no coefficients."""
+    index, var_to_diff = {}, []
+
+    def add(sym):
+        if sym not in index:
+            index[sym] = len(var_to_diff)
+            var_to_diff.append(UNASSIGNED)
+        return index[sym]
+
+    for v in flat.variables:
+        add(v.symbol)
+    for x, dx in list(flat.derivatives.items()):
+        var_to_diff[add(x)] = add(dx)
+    graph = [sorted(index[q] for q in e.residual.free_symbols if q in index)
+             for e in flat.equations]
+    return Structure(graph=graph, var_to_diff=var_to_diff,
+                     eq_to_diff=[UNASSIGNED] * len(graph),
+                     eq_names=[e.text for e in flat.equations],
+                     var_names=[q.name for q in index])

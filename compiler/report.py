@@ -19,7 +19,8 @@ class IndexReport:
     counts: dict = field(default_factory=dict)
     aliases: object = None
     reduction: object = None
-    differential_index: int = 0
+    differential_index: int = 0     # of the model as written (before alias elimination)
+    index_after_alias: int = 0
     equations: list = field(default_factory=list)      # per equation of the reduced system
     states: list = field(default_factory=list)
     dummy_derivatives: list = field(default_factory=list)
@@ -35,7 +36,8 @@ class IndexReport:
         """Collect the per-equation and per-variable facts after all passes ran."""
         s = reduction.structure
         names = [sym.name for sym in system.symbols]
-        self.differential_index = reduction.index
+        self.index_after_alias = reduction.index
+        self.differential_index = self.sigma.get("index_pantelides", reduction.index)
         self.equations = [{
             "index": k, "text": eq.name(system), "component": eq.component,
             "kind": eq.kind, "order": eq.order,
@@ -54,7 +56,7 @@ class IndexReport:
                 "the choice of dummy derivatives is only valid locally (coefficients that "
                 "depend on the variables, listed as dynamic state sets): the states are "
                 "re-chosen at run time where the constraint Jacobian calls for it")
-        self.counts["solver"] = {"unknowns": compiled.n, "states": len(compiled.link_s),
+        self.counts["solver"] = {"unknowns": compiled.n, "states": len(compiled.state_index),
                                  "zero_crossings": compiled.n_roots}
 
     # -- output --------------------------------------------------------------------------
@@ -62,6 +64,7 @@ class IndexReport:
         return {
             "model": self.model_name,
             "differential_index": self.differential_index,
+            "index_after_alias": self.index_after_alias,
             "counts": self.counts,
             "aliases_removed": (self.aliases.equations_before - self.aliases.equations_after)
             if self.aliases else 0,
@@ -80,7 +83,9 @@ class IndexReport:
 
     def __str__(self) -> str:
         lines = [f"Index report for {self.model_name}",
-                 f"  differential index: {self.differential_index}"]
+                 f"  differential index: {self.differential_index}"
+                 + (f" (after alias elimination: {self.index_after_alias})"
+                    if self.index_after_alias != self.differential_index else "")]
         lines.append("  equations / variables after each pass:")
         for stage, c in self.counts.items():
             lines.append("    " + f"{stage:<16}" + ", ".join(f"{k} {v}" for k, v in c.items()))
@@ -99,9 +104,15 @@ class IndexReport:
             sizes = [b["size"] for b in self.blocks]
             torn = sum(1 for b in self.blocks if b.get("torn"))
             lines.append(f"  BLT: {len(sizes)} blocks, largest {max(sizes)}, {torn} torn")
-        if self.sigma:
-            lines.append(f"  Pryce Sigma-method: index {self.sigma.get('index')}, "
-                         f"agrees with Pantelides: {self.sigma.get('agrees')}")
+        if self.sigma.get("error"):
+            lines.append(f"  cross-check of the model as written failed: {self.sigma['error']}")
+        elif self.sigma:
+            lines.append(f"  cross-check, Pryce's Sigma-method: index {self.sigma['index_sigma']}, "
+                         f"{self.sigma['dof']} degrees of freedom; "
+                         + ("agrees with Pantelides" if self.sigma["agrees"] else
+                            "DISAGREES with Pantelides on: "
+                            + ", ".join(self.sigma["disagreements"]) +
+                            " (hidden cancellation or a structural singularity?)"))
         for note in self.notes:
             lines.append(f"  note: {note}")
         total = sum(self.timings.values())

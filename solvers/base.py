@@ -25,9 +25,24 @@ What a problem provides (numbered, so integrators can cite it)
    the functions that changed sign; the problem updates its discrete state, may reinit
    y, and says whether to stop).  ``time_events`` lists known times of discontinuity
    (steps, pulses) where the integrator must stop and restart.
-9. Initialization (optional): ``init_residual(t, y, yp)`` / ``init_jacobian(t, y, yp)``
-   supply the equations that fix the free initial values (see
-   :mod:`acausal.solvers.initialization`).
+9. Initialization (optional).  Without it, the differential components of y0 are
+   trusted and the algebraic components of y plus all of y' are computed (IDA's
+   ``YA_YDP_INIT``).  A problem whose initial state is fixed otherwise (steady state,
+   start values on algebraic variables, ...) defines
+
+   * ``init_residual(t, y, yp) -> ndarray(m)``: extra equations G = 0 that hold at the
+     initial time only.  The unknowns are then *all* of y plus y' of the differential
+     components (``n + n_d`` of them), the equations F = 0 and G = 0; normally
+     ``m = n_d`` (e.g. ``y_i - start_i`` for a fixed state, ``yp_i`` for a steady
+     state).  A non-square system is solved in the least-squares sense (Gauss-Newton,
+     minimum-norm steps from y0) and accepted only if all residuals vanish.
+   * ``init_jacobian(t, y, yp) -> (dG/dy, dG/dyp)`` (optional; two (m, n) matrices,
+     dense or sparse); without it G is differenced.
+
+   ``y0``/``yp0`` given to the integrator are the start guesses.  Failure raises
+   :class:`InitializationFailed`.
+10. ``equation_names`` (optional): a label per residual, used in messages about
+   singular iteration matrices and failed initialization.
 
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
@@ -44,7 +59,8 @@ from typing import Sequence
 
 import numpy as np
 
-__all__ = ["DAEProblem", "EventAction", "SolverStats", "SolverOutput", "SimulationError"]
+__all__ = ["DAEProblem", "EventAction", "SolverStats", "SolverOutput", "SimulationError",
+           "InitializationFailed"]
 
 
 class DAEProblem:
@@ -102,6 +118,7 @@ class SolverStats:
     newton_failures: int = 0
     events: int = 0
     orders: dict = field(default_factory=dict)
+    linear_solver: str = ""      # "dense" or "sparse" LU, as chosen for the problem
 
     def as_dict(self) -> dict:
         return dict(self.__dict__)
@@ -133,6 +150,33 @@ class SimulationError(RuntimeError):
         self.reason = message
         self.variables = list(variables)
         self.partial = partial
+
+
+class InitializationFailed(RuntimeError):
+    """No consistent initial values could be computed.
+
+    Carries ``t``, ``variables`` (names of the unknowns whose Newton corrections stayed
+    largest; derivatives are written ``der(x)``), ``equations`` (labels of the largest
+    remaining residuals, from ``problem.equation_names`` or ``"residual i"``) and
+    ``residual`` (the final residual vector).
+    """
+
+    def __init__(self, message: str, t: float | None = None,
+                 variables: Sequence[str] = (), equations: Sequence[str] = (),
+                 residual=None):
+        super().__init__(message)
+        self.t = t
+        self.variables = list(variables)
+        self.equations = list(equations)
+        self.residual = residual
+
+
+def equation_label(problem: DAEProblem, i: int) -> str:
+    """The user's label of residual ``i`` (``problem.equation_names`` if present)."""
+    names = getattr(problem, "equation_names", None)
+    if names is not None and 0 <= i < len(names):
+        return str(names[i])
+    return f"residual {i}"
 
 
 def numerical_jacobian(problem: DAEProblem, t, y, yp, cj):

@@ -157,6 +157,7 @@ class BDF:
         self.phase, self.ns, self.nst = 0, 0, 0
         self.ss = 20.0
         self.force_setup = True
+        self._last_fail = self._last_err = None
 
     def _initial_step(self) -> float:
         """IDA's first step: 0.001 of the interval, and at most 0.5/||y'0||_wrms."""
@@ -331,6 +332,7 @@ class BDF:
         st = self.stats
         ncf = nef = 0
         saved_t = self.tn
+        self._last_fail = None
         self._update_weights()
         while True:
             # limit the step by max_step and the stop time (land on it exactly)
@@ -401,7 +403,10 @@ class BDF:
             self.phi[1] *= rr
 
     def _last_weighted(self):
-        return getattr(self, "_last_fail", None)
+        """Weighted error of the last failure in this step, else of the last step."""
+        if self._last_fail is not None:
+            return self._last_fail
+        return self._last_err
 
     def _complete_step(self, ee, err_k, err_km1, knew, yppred) -> None:
         """IDACompleteStep: order/step selection (BCP sec. 5.4.3) and phi update."""
@@ -429,6 +434,7 @@ class BDF:
         for j in range(ku - 1, -1, -1):
             self.phi[j] += self.phi[j + 1]
         self.t_prev = self.tn - self.hused
+        self._last_err = ee * self.ewt_err
         self.y = self.phi[0].copy()
         self.yp = yppred + self.cj * ee
 

@@ -1,10 +1,11 @@
 """Basic electrical components (Modelica.Electrical.Analog.Basic)."""
 import acausal as ac
-from acausal.ports import Pin
+from acausal.ports import HeatPort, Pin
 
-from .interfaces import OnePort
+from .interfaces import OnePort, TwoPort
 
-__all__ = ["Ground", "Resistor", "Capacitor", "Inductor"]
+__all__ = ["Ground", "Resistor", "Capacitor", "Inductor", "HeatingResistor",
+           "IdealTransformer", "IdealOpAmp"]
 
 
 class Ground(ac.Component):
@@ -43,3 +44,55 @@ class Inductor(OnePort):
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.L * ac.der(self.i), self.v)]
+
+
+class HeatingResistor(OnePort):
+    """Temperature-dependent resistor whose losses leave through a heat port:
+
+        R = R_ref (1 + alpha (T - T_ref)),   v = R i,   heatPort.Q_flow = -v i
+
+    (heatPort.Q_flow is positive into the resistor, so the dissipated power v i flows
+    out into whatever the port is connected to; Modelica.Electrical.Analog.Basic.)
+    """
+
+    R_ref = ac.Parameter(1.0, unit="Ohm", min=0, description="resistance at T_ref")
+    T_ref = ac.Parameter(300.15, unit="K", description="reference temperature")
+    alpha = ac.Parameter(0.0, unit="1/K", description="temperature coefficient of R")
+    heatPort = HeatPort()
+    R = ac.Variable(unit="Ohm", description="resistance at the port temperature")
+
+    def equations(self):
+        return [*super().equations(),
+                ac.Eq(self.R, self.R_ref * (1 + self.alpha * (self.heatPort.T - self.T_ref))),
+                ac.Eq(self.v, self.R * self.i),
+                ac.Eq(self.heatPort.Q_flow, -self.v * self.i)]
+
+
+class IdealTransformer(TwoPort):
+    """Ideal transformer with turns ratio n = N1/N2:
+
+        v1 = n v2,   i2 = -n i1   (so v1 i1 + v2 i2 = 0: lossless)
+    """
+
+    n = ac.Parameter(1.0, description="turns ratio N1/N2")
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.v1, self.n * self.v2),
+                ac.Eq(self.i2, -self.n * self.i1)]
+
+
+class IdealOpAmp(ac.Component):
+    """Ideal operational amplifier as a nullor (Modelica IdealOpAmp3Pin):
+
+        in_p.v = in_n.v,   in_p.i = 0,   in_n.i = 0
+
+    The output current out.i is whatever the circuit demands (a norator); the output
+    voltage is set by the feedback network, which must exist for the model to be regular.
+    """
+
+    in_p = Pin()
+    in_n = Pin()
+    out = Pin()
+
+    def equations(self):
+        return [ac.Eq(self.in_p.v, self.in_n.v), ac.Eq(self.in_p.i, 0), ac.Eq(self.in_n.i, 0)]

@@ -2,7 +2,7 @@
 import acausal as ac
 from acausal.ports import NegativePin, PositivePin
 
-__all__ = ["OnePort", "TwoPin"]
+__all__ = ["OnePort", "TwoPin", "TwoPort"]
 
 
 class TwoPin(ac.Component):
@@ -28,3 +28,28 @@ class OnePort(TwoPin):
         return [*super().equations(),
                 ac.Eq(0, self.p.i + self.n.i),
                 ac.Eq(self.i, self.p.i)]
+
+
+class TwoPort(ac.Component):
+    """Two one-ports, primary (p1, n1) and secondary (p2, n2):
+
+        v1 = p1.v - n1.v,  0 = p1.i + n1.i,  i1 = p1.i   (and the same for 2)
+
+    Both currents are positive into the positive pins, so v1 i1 + v2 i2 is the power
+    into the two-port.
+    """
+
+    p1 = PositivePin()
+    n1 = NegativePin()
+    p2 = PositivePin()
+    n2 = NegativePin()
+    v1 = ac.Variable(unit="V", description="primary voltage p1.v - n1.v")
+    v2 = ac.Variable(unit="V", description="secondary voltage p2.v - n2.v")
+    i1 = ac.Variable(unit="A", description="current into p1")
+    i2 = ac.Variable(unit="A", description="current into p2")
+
+    def equations(self):
+        return [ac.Eq(self.v1, self.p1.v - self.n1.v), ac.Eq(0, self.p1.i + self.n1.i),
+                ac.Eq(self.i1, self.p1.i),
+                ac.Eq(self.v2, self.p2.v - self.n2.v), ac.Eq(0, self.p2.i + self.n2.i),
+                ac.Eq(self.i2, self.p2.i)]

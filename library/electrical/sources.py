@@ -1,11 +1,19 @@
-"""Voltage and current sources (Modelica.Electrical.Analog.Sources)."""
+"""Voltage and current sources (Modelica.Electrical.Analog.Sources).
+
+A source's v (or i) follows the OnePort convention: v = p.v - n.v, and i flows from p
+to n *through the source*, so a source delivering power has v i < 0.
+"""
 import sympy as sp
 
 import acausal as ac
+from acausal.ports import RealInput
 
+from ..blocks import signals
 from .interfaces import OnePort
 
-__all__ = ["ConstantVoltage", "StepVoltage", "SineVoltage", "ConstantCurrent"]
+__all__ = ["ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "PulseVoltage",
+           "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
+           "PulseCurrent", "SignalCurrent"]
 
 
 class ConstantVoltage(OnePort):
@@ -17,20 +25,53 @@ class ConstantVoltage(OnePort):
         return [*super().equations(), ac.Eq(self.v, self.V)]
 
 
-class StepVoltage(OnePort):
+class _VoltageSource(OnePort):
+    """v = offset + signal(time), the signal starting at startTime."""
+
+    offset = ac.Parameter(0.0, unit="V", description="voltage before startTime")
+    startTime = ac.Parameter(0.0, unit="s", description="time the signal starts")
+
+    def signal(self):
+        raise NotImplementedError
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.v, self.offset + self.signal())]
+
+
+class _CurrentSource(OnePort):
+    """i = offset + signal(time), the signal starting at startTime."""
+
+    offset = ac.Parameter(0.0, unit="A", description="current before startTime")
+    startTime = ac.Parameter(0.0, unit="s", description="time the signal starts")
+
+    def signal(self):
+        raise NotImplementedError
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.i, self.offset + self.signal())]
+
+
+class StepVoltage(_VoltageSource):
     """Voltage step:  v = offset + (V if time >= startTime else 0)  (an event at startTime)."""
 
     V = ac.Parameter(1.0, unit="V", description="height of the step")
-    offset = ac.Parameter(0.0, unit="V", description="voltage before the step")
-    startTime = ac.Parameter(0.0, unit="s", description="time of the step")
 
-    def equations(self):
-        step = ac.if_else(ac.time >= self.startTime, self.V, 0)
-        return [*super().equations(), ac.Eq(self.v, self.offset + step)]
+    def signal(self):
+        return signals.step(self.V, self.startTime)
+
+
+class RampVoltage(_VoltageSource):
+    """Voltage ramp from offset to offset + V between startTime and startTime + duration."""
+
+    V = ac.Parameter(1.0, unit="V", description="height of the ramp")
+    duration = ac.Parameter(1.0, unit="s", min=0, description="duration of the ramp")
+
+    def signal(self):
+        return signals.ramp(self.V, self.duration, self.startTime)
 
 
 class SineVoltage(OnePort):
-    """Sine voltage:  v = offset + V sin(2 pi f (time - startTime) + phase)."""
+    """Sine voltage:  v = offset + V sin(2 pi f time + phase)."""
 
     V = ac.Parameter(1.0, unit="V", description="amplitude")
     f = ac.Parameter(1.0, unit="Hz", description="frequency")
@@ -38,8 +79,28 @@ class SineVoltage(OnePort):
     offset = ac.Parameter(0.0, unit="V", description="offset")
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.v, self.offset + self.V * sp.sin(2 * sp.pi * self.f * ac.time + self.phase))]
+        wave = self.V * sp.sin(2 * sp.pi * self.f * ac.time + self.phase)
+        return [*super().equations(), ac.Eq(self.v, self.offset + wave)]
+
+
+class PulseVoltage(_VoltageSource):
+    """Pulse train:  v = offset + V during the first fraction ``width`` of each period."""
+
+    V = ac.Parameter(1.0, unit="V", description="pulse height")
+    width = ac.Parameter(0.5, min=0, max=1, description="fraction of the period that is high")
+    period = ac.Parameter(1.0, unit="s", min=0, description="period")
+
+    def signal(self):
+        return signals.pulse(self.V, self.width, self.period, self.startTime)
+
+
+class SignalVoltage(OnePort):
+    """Voltage set by a signal:  v = v_ref."""
+
+    v_ref = RealInput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.v, self.v_ref)]
 
 
 class ConstantCurrent(OnePort):
@@ -49,3 +110,53 @@ class ConstantCurrent(OnePort):
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.i, self.I)]
+
+
+class StepCurrent(_CurrentSource):
+    """Current step:  i = offset + (I if time >= startTime else 0)."""
+
+    I = ac.Parameter(1.0, unit="A", description="height of the step")
+
+    def signal(self):
+        return signals.step(self.I, self.startTime)
+
+
+class RampCurrent(_CurrentSource):
+    """Current ramp from offset to offset + I between startTime and startTime + duration."""
+
+    I = ac.Parameter(1.0, unit="A", description="height of the ramp")
+    duration = ac.Parameter(1.0, unit="s", min=0, description="duration of the ramp")
+
+    def signal(self):
+        return signals.ramp(self.I, self.duration, self.startTime)
+
+
+class SineCurrent(_CurrentSource):
+    """Sine current:  i = offset + I sin(2 pi f (time - startTime) + phase) after startTime."""
+
+    I = ac.Parameter(1.0, unit="A", description="amplitude")
+    f = ac.Parameter(1.0, unit="Hz", description="frequency")
+    phase = ac.Parameter(0.0, unit="rad", description="phase at startTime")
+
+    def signal(self):
+        return signals.sine(self.I, self.f, self.phase, self.startTime)
+
+
+class PulseCurrent(_CurrentSource):
+    """Pulse train:  i = offset + I during the first fraction ``width`` of each period."""
+
+    I = ac.Parameter(1.0, unit="A", description="pulse height")
+    width = ac.Parameter(0.5, min=0, max=1, description="fraction of the period that is high")
+    period = ac.Parameter(1.0, unit="s", min=0, description="period")
+
+    def signal(self):
+        return signals.pulse(self.I, self.width, self.period, self.startTime)
+
+
+class SignalCurrent(OnePort):
+    """Current set by a signal:  i = i_ref (flowing from p to n through the source)."""
+
+    i_ref = RealInput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.i, self.i_ref)]

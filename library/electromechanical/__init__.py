@@ -1,4 +1,4 @@
 """Electromechanical converters and motors (Egeland & Gravdahl ch. 3)."""
-from .motors import EMF, DCMotor
+from .motors import EMF, CurrentControlledDCMotor, DCMotor
 
-__all__ = ["EMF", "DCMotor"]
+__all__ = ["EMF", "DCMotor", "CurrentControlledDCMotor"]

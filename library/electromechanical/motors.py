@@ -2,10 +2,12 @@
 import acausal as ac
 from acausal.ports import NegativePin, PositivePin, RotationalFlange
 
-from ..electrical import Inductor, Resistor
+from acausal.ports import RealInput
+
+from ..electrical import Ground, Inductor, Resistor, SignalCurrent
 from ..rotational import Inertia
 
-__all__ = ["EMF", "DCMotor"]
+__all__ = ["EMF", "DCMotor", "CurrentControlledDCMotor"]
 
 
 class EMF(ac.Component):
@@ -61,3 +63,34 @@ class DCMotor(ac.Component):
                 ac.connect(self.emf.n, self.n),
                 ac.connect(self.emf.flange, self.rotor.flange_a),
                 ac.connect(self.rotor.flange_b, self.flange)]
+
+
+class CurrentControlledDCMotor(ac.Component):
+    """DC motor whose armature current is imposed by an ideal current loop (Egeland &
+    Gravdahl 3.4.2, (3.58)-(3.59): with K_i -> infinity, i_a = i_d), so
+
+        J dw/dt = k i_d - T_L
+
+    The armature circuit is kept (a DCMotor fed by a current source), so the armature
+    voltage the drive must deliver, u_a = R i_d + L di_d/dt + k w, is in the result as
+    ``u_a``; L > 0 differentiates i_d, which must then be a differentiable signal.
+    """
+
+    R = ac.Parameter(1.0, unit="Ohm", description="armature resistance R_a")
+    L = ac.Parameter(1e-3, unit="H", description="armature inductance L_a")
+    k = ac.Parameter(0.05, unit="N.m/A", description="motor constant K_T = K_E")
+    J = ac.Parameter(1e-4, unit="kg.m2", description="rotor inertia J_m")
+    i_d = RealInput()
+    flange = RotationalFlange()
+    u_a = ac.Variable(unit="V", description="armature voltage delivered by the drive")
+    drive = SignalCurrent()
+    motor = DCMotor(R=ac.ref("R"), L=ac.ref("L"), k=ac.ref("k"), J=ac.ref("J"))
+    ground = Ground()
+
+    def equations(self):
+        # the source's current flows from p to n inside it, i.e. into motor.n: reverse it
+        return [ac.connect(self.i_d, self.drive.i_ref),
+                ac.connect(self.drive.n, self.motor.p),
+                ac.connect(self.drive.p, self.motor.n, self.ground.p),
+                ac.connect(self.motor.flange, self.flange),
+                ac.Eq(self.u_a, self.motor.p.v - self.motor.n.v)]

@@ -4,9 +4,11 @@ Flanges carry the absolute angle phi and the cut torque tau (positive into the
 component), so rigid couplings are position constraints.
 """
 import acausal as ac
-from acausal.ports import RotationalFlange
+from acausal.ports import RotationalFlange, TranslationalFlange
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"]
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
+           "PartialAbsoluteSensor", "PartialRelativeSensor",
+           "PartialElementaryRotationalToTranslational"]
 
 
 class PartialTwoFlanges(ac.Component):
@@ -35,3 +37,28 @@ class PartialElementaryOneFlange(ac.Component):
     """One flange, named flange."""
 
     flange = RotationalFlange()
+
+
+class PartialAbsoluteSensor(PartialElementaryOneFlange):
+    """Measures an absolute quantity of one flange and exerts no torque:  flange.tau = 0."""
+
+    def equations(self):
+        return [ac.Eq(self.flange.tau, 0)]
+
+
+class PartialRelativeSensor(PartialTwoFlanges):
+    """Measures between two flanges and is torque-free as a whole:
+
+        0 = flange_a.tau + flange_b.tau
+    """
+
+    def equations(self):
+        return [ac.Eq(0, self.flange_a.tau + self.flange_b.tau)]
+
+
+class PartialElementaryRotationalToTranslational(ac.Component):
+    """A rotational flange flangeR and a translational flange flangeT (an ideal,
+    massless converter between the two domains)."""
+
+    flangeR = RotationalFlange()
+    flangeT = TranslationalFlange()

@@ -2,7 +2,8 @@
 import acausal as ac
 from acausal.ports import TranslationalFlange
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"]
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
+           "PartialAbsoluteSensor", "PartialRelativeSensor"]
 
 
 class PartialTwoFlanges(ac.Component):
@@ -31,3 +32,17 @@ class PartialElementaryOneFlange(ac.Component):
     """One flange, named flange."""
 
     flange = TranslationalFlange()
+
+
+class PartialAbsoluteSensor(PartialElementaryOneFlange):
+    """Measures an absolute quantity of one flange and exerts no force:  flange.f = 0."""
+
+    def equations(self):
+        return [ac.Eq(self.flange.f, 0)]
+
+
+class PartialRelativeSensor(PartialTwoFlanges):
+    """Measures between two flanges and is force-free as a whole:  0 = flange_a.f + flange_b.f."""
+
+    def equations(self):
+        return [ac.Eq(0, self.flange_a.f + self.flange_b.f)]

@@ -1,9 +1,15 @@
-"""Force sources (Modelica.Mechanics.Translational.Sources)."""
-import acausal as ac
+"""Force, speed and position sources (Modelica.Mechanics.Translational.Sources).
 
+A force source pushes its flange in +s with ``flange.f = -f``; speed and position
+sources impose the motion of their flange and take whatever force that needs.
+"""
+import acausal as ac
+from acausal.ports import RealInput
+
+from ..blocks import signals
 from .interfaces import PartialElementaryOneFlange
 
-__all__ = ["ConstantForce"]
+__all__ = ["ConstantForce", "StepForce", "Force", "ConstantSpeed", "Speed", "Position"]
 
 
 class ConstantForce(PartialElementaryOneFlange):
@@ -13,3 +19,65 @@ class ConstantForce(PartialElementaryOneFlange):
 
     def equations(self):
         return [ac.Eq(self.flange.f, -self.f_constant)]
+
+
+class StepForce(PartialElementaryOneFlange):
+    """Force step:  flange.f = -(offsetForce + (stepForce if time >= startTime else 0))."""
+
+    stepForce = ac.Parameter(1.0, unit="N", description="height of the step")
+    offsetForce = ac.Parameter(0.0, unit="N", description="force before the step")
+    startTime = ac.Parameter(0.0, unit="s", description="time of the step")
+
+    def equations(self):
+        f = self.offsetForce + signals.step(self.stepForce, self.startTime)
+        return [ac.Eq(self.flange.f, -f)]
+
+
+class Force(PartialElementaryOneFlange):
+    """Force set by a signal:  flange.f = -f."""
+
+    f = RealInput()
+
+    def equations(self):
+        return [ac.Eq(self.flange.f, -self.f)]
+
+
+class _SpeedSource(PartialElementaryOneFlange):
+    """The flange's position s (a state) and speed v = der(s)."""
+
+    s = ac.Variable(start=0.0, unit="m", description="position of the flange")
+    v = ac.Variable(unit="m/s", description="speed of the flange")
+
+    def equations(self):
+        return [ac.Eq(self.s, self.flange.s), ac.Eq(self.v, ac.der(self.s))]
+
+
+class ConstantSpeed(_SpeedSource):
+    """Flange moving at constant speed:  der(flange.s) = v_fixed."""
+
+    v_fixed = ac.Parameter(1.0, unit="m/s", description="imposed speed")
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.v, self.v_fixed)]
+
+
+class Speed(_SpeedSource):
+    """Flange speed set by a signal:  der(flange.s) = v_ref."""
+
+    v_ref = RealInput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.v, self.v_ref)]
+
+
+class Position(PartialElementaryOneFlange):
+    """Flange position set by a signal:  flange.s = s_ref.
+
+    Driving a mass, this differentiates s_ref twice (index reduction): the signal must
+    be twice differentiable in the model.
+    """
+
+    s_ref = RealInput()
+
+    def equations(self):
+        return [ac.Eq(self.flange.s, self.s_ref)]

@@ -1,0 +1,171 @@
+"""Linear dynamic blocks and controllers (Modelica.Blocks.Continuous).
+
+Every block with dynamics keeps its state in a variable ``x`` (a list of cells for
+``TransferFunction``); its start value, 0 by default, is the initial state unless the
+model fixes the state otherwise: ``FirstOrder(x=1.0)``.
+"""
+import sympy as sp
+
+import acausal as ac
+
+from .interfaces import SISO
+from .nonlinear import clip
+
+__all__ = ["Integrator", "Derivative", "FirstOrder", "SecondOrder", "TransferFunction",
+           "PI", "PID"]
+
+
+class Integrator(SISO):
+    """y = x,  der(x) = k u."""
+
+    k = ac.Parameter(1.0, description="integrator gain")
+    x = ac.Variable(start=0.0, description="state (the integral)")
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), self.k * self.u), ac.Eq(self.y, self.x)]
+
+
+class Derivative(SISO):
+    """Filtered derivative  y = k s / (T s + 1) u:
+
+        T der(x) = u - x,   y = (k / T) (u - x)
+    """
+
+    k = ac.Parameter(1.0, description="gain")
+    T = ac.Parameter(0.01, unit="s", min=0, description="filter time constant")
+    x = ac.Variable(start=0.0, description="filter state")
+
+    def equations(self):
+        return [ac.Eq(self.T * ac.der(self.x), self.u - self.x),
+                ac.Eq(self.y, self.k / self.T * (self.u - self.x))]
+
+
+class FirstOrder(SISO):
+    """First-order lag  y = k / (T s + 1) u:   T der(x) = k u - x,  y = x."""
+
+    k = ac.Parameter(1.0, description="gain")
+    T = ac.Parameter(1.0, unit="s", min=0, description="time constant")
+    x = ac.Variable(start=0.0, description="state (the output)")
+
+    def equations(self):
+        return [ac.Eq(self.T * ac.der(self.x), self.k * self.u - self.x), ac.Eq(self.y, self.x)]
+
+
+class SecondOrder(SISO):
+    """Second-order system  y = k w^2 / (s^2 + 2 D w s + w^2) u:
+
+        der(x) = xd,   der(xd) = w^2 (k u - x) - 2 D w xd,   y = x
+    """
+
+    k = ac.Parameter(1.0, description="gain")
+    w = ac.Parameter(1.0, unit="rad/s", min=0, description="natural frequency")
+    D = ac.Parameter(1.0, min=0, description="damping ratio")
+    x = ac.Variable(start=0.0, description="state (the output)")
+    xd = ac.Variable(start=0.0, description="state (der of the output)")
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), self.xd),
+                ac.Eq(ac.der(self.xd), self.w**2 * (self.k * self.u - self.x)
+                      - 2 * self.D * self.w * self.xd),
+                ac.Eq(self.y, self.x)]
+
+
+class _State(ac.Component):
+    """One state of a TransferFunction (a cell of its state vector)."""
+
+    x = ac.Variable(start=0.0, description="state")
+
+
+class TransferFunction(SISO):
+    """y = num(s)/den(s) u, coefficients highest power first, in controllable canonical
+    form.  With den = a0 s^n + ... + an (divided through by a0 to alpha_k = a_k/a0) and
+    num padded to n + 1 coefficients beta_j (also divided by a0):
+
+        der(x[i]) = x[i+1]  (i < n),   der(x[n]) = u - sum_k alpha_k x[n-k+1],
+        y = beta_0 der(x[n]) + sum_{j>=1} beta_j x[n-j+1]
+
+    ``num`` and ``den`` are structural (they set the number of states), so they are
+    plain numbers fixed when the block is created, not parameters.
+
+    Examples
+    --------
+    >>> tf = TransferFunction(num=[1.0], den=[0.5, 1.0])   # 1 / (0.5 s + 1)
+    >>> len(tf.state)
+    1
+    """
+
+    def __init__(self, num=(1.0,), den=(1.0, 1.0), **mods):
+        super().__init__(**mods)
+        num, den = [float(c) for c in num], [float(c) for c in den]
+        if not den or den[0] == 0:
+            raise ac.ModelError("TransferFunction: the leading coefficient of den must not be 0")
+        if len(num) > len(den):
+            raise ac.ModelError("TransferFunction: num has a higher degree than den (improper)")
+        n = len(den) - 1
+        self.alpha = [a / den[0] for a in den[1:]]
+        self.beta = [0.0] * (n + 1 - len(num)) + [b / den[0] for b in num]
+        self.state = [_State() for _ in range(n)]
+
+    def equations(self):
+        x = [cell.x for cell in self.state]
+        n = len(x)
+        if n == 0:
+            return [ac.Eq(self.y, self.beta[0] * self.u)]
+        top = self.u.signal - sum(a * x[n - k] for k, a in enumerate(self.alpha, start=1))
+        eqs = [ac.Eq(ac.der(x[i]), x[i + 1]) for i in range(n - 1)]
+        eqs.append(ac.Eq(ac.der(x[-1]), top))
+        y = self.beta[0] * top + sum(b * x[n - j] for j, b in enumerate(self.beta[1:], start=1))
+        return eqs + [ac.Eq(self.y, y)]
+
+
+class _LimitedController(SISO):
+    """Output limits and back-calculation anti-windup shared by PI and PID.
+
+    v is the unlimited controller output, y = clip(v, yMin, yMax); the integral state
+    x_i (in output units) is driven by k/Ti u + (y - v)/Tt, so while the output is
+    limited x_i tracks the limit with time constant Tt instead of winding up.
+    """
+
+    k = ac.Parameter(1.0, description="proportional gain")
+    Ti = ac.Parameter(1.0, unit="s", min=0, description="integral time")
+    yMax = ac.Parameter(float("inf"), description="upper output limit")
+    yMin = ac.Parameter(float("-inf"), description="lower output limit")
+    Tt = ac.Parameter(lambda c: c.Ti, unit="s", min=0,
+                      description="anti-windup tracking time constant (default Ti)")
+    v = ac.Variable(description="unlimited controller output")
+    x_i = ac.Variable(start=0.0, description="integral state, in output units")
+
+    def equations(self):
+        return [ac.Eq(self.y, clip(self.v, self.yMax, self.yMin)),
+                ac.Eq(ac.der(self.x_i), self.k / self.Ti * self.u + (self.y - self.v) / self.Tt)]
+
+
+class PI(_LimitedController):
+    """PI controller  y = clip(k (1 + 1/(Ti s)) u, yMin, yMax), with anti-windup:
+
+        v = k u + x_i,   der(x_i) = (k/Ti) u + (y - v)/Tt,   y = clip(v, yMin, yMax)
+    """
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.v, self.k * self.u + self.x_i)]
+
+
+class PID(_LimitedController):
+    """PID controller with a filtered derivative, output limits and anti-windup:
+
+        v = k u + x_i + k Nd (u - x_d),   (Td/Nd) der(x_d) = u - x_d,
+        der(x_i) = (k/Ti) u + (y - v)/Tt,   y = clip(v, yMin, yMax)
+
+    so that, unlimited, y = k (1 + 1/(Ti s) + Td s/(1 + Td s/Nd)) u.  ``Ti = inf``
+    gives a PD controller.
+    """
+
+    Td = ac.Parameter(0.1, unit="s", min=0, description="derivative time")
+    Nd = ac.Parameter(10.0, min=0, description="derivative filter: high-frequency gain")
+    x_d = ac.Variable(start=0.0, description="derivative filter state")
+
+    def equations(self):
+        d = self.k * self.Nd * (self.u - self.x_d)
+        return [*super().equations(),
+                ac.Eq(self.v, self.k * self.u + self.x_i + d),
+                ac.Eq(self.Td / self.Nd * ac.der(self.x_d), self.u - self.x_d)]

@@ -1,0 +1,61 @@
+"""Signal sources (Modelica.Blocks.Sources)."""
+import acausal as ac
+
+from . import signals
+from .interfaces import SO, SignalSource
+
+__all__ = ["Constant", "Step", "Ramp", "Sine", "Pulse"]
+
+
+class Constant(SO):
+    """Constant output:  y = k."""
+
+    k = ac.Parameter(1.0, description="constant output value")
+
+    def equations(self):
+        return [ac.Eq(self.y, self.k)]
+
+
+class Step(SignalSource):
+    """Step:  y = offset + (height if time >= startTime else 0)."""
+
+    height = ac.Parameter(1.0, description="height of the step")
+
+    def equations(self):
+        return [ac.Eq(self.y, self.offset + signals.step(self.height, self.startTime))]
+
+
+class Ramp(SignalSource):
+    """Ramp from offset to offset + height between startTime and startTime + duration."""
+
+    height = ac.Parameter(1.0, description="height of the ramp")
+    duration = ac.Parameter(1.0, unit="s", min=0, description="duration of the ramp")
+
+    def equations(self):
+        r = signals.ramp(self.height, self.duration, self.startTime)
+        return [ac.Eq(self.y, self.offset + r)]
+
+
+class Sine(SignalSource):
+    """Sine:  y = offset + amplitude sin(2 pi f (time - startTime) + phase) after startTime."""
+
+    amplitude = ac.Parameter(1.0, description="amplitude")
+    f = ac.Parameter(1.0, unit="Hz", description="frequency")
+    phase = ac.Parameter(0.0, unit="rad", description="phase at startTime")
+
+    def equations(self):
+        s = signals.sine(self.amplitude, self.f, self.phase, self.startTime)
+        return [ac.Eq(self.y, self.offset + s)]
+
+
+class Pulse(SignalSource):
+    """Rectangular pulse train:  y = offset + amplitude during the first fraction
+    ``width`` of each ``period`` after startTime, y = offset otherwise."""
+
+    amplitude = ac.Parameter(1.0, description="pulse height")
+    width = ac.Parameter(0.5, min=0, max=1, description="fraction of the period that is high")
+    period = ac.Parameter(1.0, unit="s", min=0, description="period")
+
+    def equations(self):
+        p = signals.pulse(self.amplitude, self.width, self.period, self.startTime)
+        return [ac.Eq(self.y, self.offset + p)]

@@ -1,0 +1,72 @@
+"""Rotational sensors (Modelica.Mechanics.Rotational.Sensors): ideal, they do no work."""
+import acausal as ac
+from acausal.ports import RealOutput
+
+from .interfaces import PartialAbsoluteSensor, PartialRelativeSensor
+
+__all__ = ["AngleSensor", "SpeedSensor", "RelAngleSensor", "RelSpeedSensor",
+           "TorqueSensor", "PowerSensor"]
+
+
+class AngleSensor(PartialAbsoluteSensor):
+    """phi = flange.phi."""
+
+    phi = RealOutput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.phi, self.flange.phi)]
+
+
+class SpeedSensor(PartialAbsoluteSensor):
+    """w = der(flange.phi)."""
+
+    w = RealOutput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.w, ac.der(self.flange.phi))]
+
+
+class RelAngleSensor(PartialRelativeSensor):
+    """phi_rel = flange_b.phi - flange_a.phi, with no torque:  flange_a.tau = 0."""
+
+    phi_rel = RealOutput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.flange_a.tau, 0),
+                ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi)]
+
+
+class RelSpeedSensor(PartialRelativeSensor):
+    """w_rel = der(flange_b.phi - flange_a.phi), with no torque:  flange_a.tau = 0."""
+
+    w_rel = RealOutput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.flange_a.tau, 0),
+                ac.Eq(self.w_rel, ac.der(self.flange_b.phi - self.flange_a.phi))]
+
+
+class TorqueSensor(PartialRelativeSensor):
+    """Torque transmitted from flange_a to flange_b (put in series, rigid):
+
+        flange_a.phi = flange_b.phi,   tau = flange_a.tau
+    """
+
+    tau = RealOutput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.flange_a.phi, self.flange_b.phi),
+                ac.Eq(self.tau, self.flange_a.tau)]
+
+
+class PowerSensor(PartialRelativeSensor):
+    """Power transmitted from flange_a to flange_b (put in series, rigid):
+
+        flange_a.phi = flange_b.phi,   power = flange_a.tau der(flange_a.phi)
+    """
+
+    power = RealOutput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.flange_a.phi, self.flange_b.phi),
+                ac.Eq(self.power, self.flange_a.tau * ac.der(self.flange_a.phi))]

@@ -1,0 +1,387 @@
+"""The public simulation driver: BDF steps, events, output and failure reports.
+
+:func:`integrate` owns everything that is not a BDF step:
+
+* consistent initialization (:mod:`acausal.solvers.initialization`);
+* state events: after each accepted step the zero-crossing functions are compared with
+  their signs at the previous point; a change is located on the BDF interpolant by the
+  Illinois variant of regula falsi over all crossing functions at once, as IDA's
+  ``IDARootfind`` (Hindmarsh et al. 2005, sec. 2.3), to a time tolerance of about
+  1e-12 relative.  The event is then handled by ``problem.handle_event``, iterated
+  while the discrete state changes and new crossings appear, the algebraic variables
+  and y' are re-initialized, and the BDF restarts at order 1 (Brenan, Campbell &
+  Petzold 1996, sec. 5.4.4, on restarting after discontinuities);
+* time events (``problem.time_events``): steps land exactly on them, then they are
+  handled like state events with no crossing flagged;
+* chattering (Zeno) detection: event sequences whose spacing shrinks geometrically
+  towards an accumulation point before ``t_end``, or very many events in a tiny
+  window, stop the run with an explanation instead of creeping towards the
+  accumulation point;
+* output: every accepted step (plus the event points before and after), or the
+  ``t_eval`` points by dense output;
+* failures: a :class:`SimulationError` naming the time, the variables that dominated
+  the weighted error (or the singular block) and carrying the partial output.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .base import (DAEProblem, EventAction, InitializationFailed, SimulationError,
+                   SolverOutput, SolverStats, equation_label)
+from .bdf import BDF, StepFailure
+from .initialization import consistent_initial, reinitialize
+
+__all__ = ["integrate"]
+
+_ROOT_RTOL = 1e-12       # event-time tolerance, relative to max(|t|, t_end - t0)
+_ZENO_INTERVALS = 10     # geometric shrinking over this many event intervals ...
+_ZENO_RATIO = 0.95       # ... each at most this ratio of the one before ...
+_ZENO_SPREAD = 1.15      # ... and nearly constant (max/min ratio) means Zeno
+_BURST_EVENTS = 50       # this many state events ...
+_BURST_WINDOW = 1e-6     # ... within this fraction of the span means chattering
+_N_NAMED = 3
+
+
+def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
+              atol=1e-8, t_eval=None, max_step: float = np.inf,
+              first_step: float | None = None, suppress_alg: bool = False,
+              max_steps: int = 500000, initialize: bool = True,
+              max_event_iterations: int = 20) -> SolverOutput:
+    """Integrate the DAE ``problem`` over ``t_span`` with the variable-order BDF.
+
+    Parameters
+    ----------
+    problem : DAEProblem
+        The system (see :mod:`acausal.solvers.base`).
+    t_span : (float, float)
+        Start and end time, ``t_end > t0``.
+    y0, yp0 : array_like
+        Initial values and derivatives (``yp0=None``: zeros, to be computed).
+    rtol : float
+        Relative tolerance.
+    atol : float or array_like
+        Absolute tolerance (scaled by ``problem.nominal``).
+    t_eval : array_like or None
+        Output times (sorted, within ``t_span``); None gives every accepted step and
+        the points just before and after each event.
+    max_step : float
+        Largest step size.
+    first_step : float or None
+        Initial step (None: IDA's heuristic).
+    suppress_alg : bool
+        Leave algebraic variables out of the local error test.
+    max_steps : int
+        Limit on accepted steps.
+    initialize : bool
+        Compute consistent initial values first (else y0, yp0 must be consistent).
+    max_event_iterations : int
+        Limit on event iterations at one time instant.
+
+    Returns
+    -------
+    SolverOutput
+        ``success`` is False only when the problem asked to stop (``EventAction.stop``);
+        the message then says why.
+
+    Raises
+    ------
+    SimulationError
+        On step-size underflow, repeated error-test or corrector failures, a singular
+        iteration matrix, chattering, ``max_steps`` or a failed re-initialization;
+        ``partial`` holds the output up to the failure.
+    InitializationFailed
+        If no consistent initial values are found.
+    """
+    run = _Run(problem, t_span, t_eval, rtol, atol, max_step, suppress_alg, max_steps,
+               max_event_iterations)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        return run.go(y0, yp0, first_step, initialize)
+
+
+class _Run:
+    """State of one integration (kept out of :func:`integrate` to keep functions short)."""
+
+    def __init__(self, problem, t_span, t_eval, rtol, atol, max_step, suppress_alg,
+                 max_steps, max_event_iterations):
+        self.problem = problem
+        self.t0, self.tf = float(t_span[0]), float(t_span[1])
+        if not self.tf > self.t0:
+            raise ValueError("t_span must be increasing: (t0, t_end) with t_end > t0")
+        self.span = self.tf - self.t0
+        self.rtol, self.atol = rtol, atol
+        self.max_step, self.suppress_alg = max_step, suppress_alg
+        self.max_steps, self.max_event_iterations = max_steps, max_event_iterations
+        self.t_eval = None if t_eval is None else np.asarray(t_eval, float)
+        self.i_eval = 0
+        self.stats = SolverStats()
+        self.ts, self.ys, self.yps, self.event_times = [], [], [], []
+        self.state_event_times = []
+        te = sorted({float(x) for x in getattr(problem, "time_events", ()) or ()})
+        self.time_events = [x for x in te if self.t0 < x < self.tf]
+        self.n_roots = int(getattr(problem, "n_roots", 0) or 0)
+
+    # ------------------------------------------------------------------ main loop
+    def go(self, y0, yp0, first_step, initialize) -> SolverOutput:
+        p = self.problem
+        y = np.array(y0, dtype=float)
+        yp = np.zeros(p.n) if yp0 is None else np.array(yp0, dtype=float)
+        if initialize:
+            y, yp = consistent_initial(p, self.t0, y, yp, rtol=self.rtol, atol=self.atol)
+        self._emit_point(self.t0, y, yp)
+        self.solver = BDF(p, self.t0, y, yp, rtol=self.rtol, atol=self.atol,
+                          max_step=self.max_step, first_step=first_step,
+                          suppress_alg=self.suppress_alg, t_stop=self._next_stop(self.t0),
+                          stats=self.stats)
+        self._arm_roots(self.t0, y, yp, np.zeros(self.n_roots, bool))
+        while self.solver.t < self.tf:
+            stop = self._advance()
+            if stop is not None:
+                return self._output(False, stop)
+        self._emit_eval_rest()
+        return self._output(True, "reached t_end")
+
+    def _next_stop(self, t: float) -> float:
+        for te in self.time_events:
+            if te > t:
+                return te
+        return self.tf
+
+    def _advance(self):
+        """One accepted step and whatever happens in it; a message if the run stops."""
+        s = self.solver
+        if self.stats.steps >= self.max_steps:
+            raise self._error(f"maximum number of steps ({self.max_steps}) reached at "
+                              f"t={s.t:.10g} before t_end={self.tf:.10g}", s.t, ())
+        try:
+            s.step()
+        except StepFailure as exc:
+            raise self._step_failure(exc) from None
+        if self.n_roots:
+            hit = self._find_crossing()
+            if hit is not None:
+                return self._state_event(*hit)
+        self._emit_step(s.t_prev, s.t, s.y, s.yp)
+        if s.t < self.tf and s.t == s.t_stop:
+            return self._time_event(s.t)
+        return None
+
+    # ------------------------------------------------------------------ output
+    def _emit_point(self, t, y, yp) -> None:
+        if self.t_eval is None:
+            self._append(t, y, yp)
+        else:
+            ev = self.t_eval
+            while self.i_eval < ev.size and ev[self.i_eval] <= t:
+                if ev[self.i_eval] == t:
+                    self._append(t, y, yp)
+                self.i_eval += 1
+
+    def _emit_step(self, t_lo, t_hi, y_hi, yp_hi) -> None:
+        """Output for the accepted interval (t_lo, t_hi]."""
+        if self.t_eval is None:
+            self._append(t_hi, y_hi, yp_hi)
+            return
+        ev, s = self.t_eval, self.solver
+        while self.i_eval < ev.size and ev[self.i_eval] <= t_hi:
+            if ev[self.i_eval] >= t_lo:
+                self._append(ev[self.i_eval], *s.interpolate(ev[self.i_eval]))
+            self.i_eval += 1
+
+    def _emit_eval_rest(self) -> None:
+        """t_eval points equal to t_end after rounding."""
+        if self.t_eval is not None:
+            while self.i_eval < self.t_eval.size and self.t_eval[self.i_eval] <= self.tf:
+                self._append(self.t_eval[self.i_eval], self.solver.y, self.solver.yp)
+                self.i_eval += 1
+
+    def _append(self, t, y, yp) -> None:
+        self.ts.append(float(t))
+        self.ys.append(np.array(y, dtype=float))
+        self.yps.append(np.array(yp, dtype=float))
+
+    def _output(self, success: bool, message: str) -> SolverOutput:
+        n = self.problem.n
+        lin = getattr(getattr(self, "solver", None), "lin", None)
+        if lin is not None and lin.sparse is not None:
+            self.stats.linear_solver = "sparse" if lin.sparse else "dense"
+        y = np.array(self.ys) if self.ys else np.empty((0, n))
+        yp = np.array(self.yps) if self.yps else np.empty((0, n))
+        return SolverOutput(np.array(self.ts), y, yp, success, message, self.stats,
+                            list(self.event_times))
+
+    # ------------------------------------------------------------------ failures
+    def _error(self, message, t, variables) -> SimulationError:
+        partial = self._output(False, message)
+        return SimulationError(message, t=t, variables=list(variables), partial=partial)
+
+    def _step_failure(self, exc: StepFailure) -> SimulationError:
+        names = self.problem.names
+        if exc.kind == "singular":
+            variables = [names[c] for c in exc.cols]
+            equations = [equation_label(self.problem, r) for r in exc.rows]
+            msg = (f"singular iteration matrix at t={exc.t:.10g}: variables {variables}, "
+                   f"equations {equations} (a higher-index or structurally singular "
+                   f"model, or a singular configuration of it)")
+            return self._error(msg, exc.t, variables)
+        variables = self._dominant(exc.weighted)
+        what = {"step_size": "step size too small",
+                "error_test": "repeated local error test failures",
+                "newton": "repeated corrector (Newton) convergence failures"}.get(
+                    exc.kind, exc.kind)
+        msg = (f"{what} at t={exc.t:.10g} (h={exc.h:.3g}); the largest weighted errors "
+               f"are in {variables}. The solution may blow up, be non-smooth, or the "
+               f"model may switch without an event there")
+        return self._error(msg, exc.t, variables)
+
+    def _dominant(self, weighted):
+        if weighted is None:
+            return []
+        v = np.nan_to_num(np.abs(weighted), nan=np.inf)
+        order = np.argsort(-v, kind="stable")[:_N_NAMED]
+        return [self.problem.names[i] for i in order if v[i] > 0]
+
+    # ------------------------------------------------------------------ roots
+    def _signed_roots(self, t, y, yp) -> np.ndarray:
+        return np.asarray(self.problem.roots(t, y, yp), float)
+
+    def _arm_roots(self, t, y, yp, crossed) -> None:
+        """Reference signs after a (re)start; functions sitting on zero are resolved.
+
+        A function that has just crossed (or is exactly zero) sits within the location
+        tolerance of zero, on either side.  Its sign is taken a little later along
+        y + delta*y'; if that is not conclusive it stays unarmed until the next step.
+        """
+        if not self.n_roots:
+            return
+        g0 = self._signed_roots(t, y, yp)
+        delta = 100.0 * self._ttol(t)
+        g1 = self._signed_roots(t + delta, y + delta * yp, yp)
+        ref = np.sign(g0)
+        near = crossed | (g0 == 0)
+        moved = np.abs(g1 - g0) > 2.0 * np.abs(g0)
+        ref[near] = np.where(moved[near], np.sign(g1[near]), 0.0)
+        self.sign_ref = ref
+        # a function armed from the later point starts the next search from there
+        self.g_prev = np.where(near & moved, g1, g0)
+
+    def _ttol(self, t: float) -> float:
+        return max(_ROOT_RTOL * max(abs(t), self.span), 4 * np.finfo(float).eps * abs(t))
+
+    def _find_crossing(self):
+        """(t_event, crossed mask) of the first crossing in the last step, or None."""
+        s = self.solver
+        g = self._signed_roots(s.t, s.y, s.yp)
+        armed = self.sign_ref != 0
+        shi = g * self.sign_ref
+        if not np.any(armed & (shi <= 0)):
+            self._rearm(g)
+            return None
+        slo = np.where(armed, np.maximum(self.g_prev * self.sign_ref, 0.0), 1.0)
+        return self._illinois(s.t_prev, slo, s.t, shi, armed)
+
+    def _rearm(self, g) -> None:
+        unarmed = self.sign_ref == 0
+        if np.any(unarmed):
+            self.sign_ref[unarmed] = np.sign(g[unarmed])
+        self.g_prev = g
+
+    def _illinois(self, tlo, slo, thi, shi, armed):
+        """Multi-function Illinois on the interpolant (IDA's IDARootfind)."""
+        s, ref = self.solver, self.sign_ref
+        ttol = self._ttol(thi)
+        alph, side, sideprev = 1.0, 0, -1
+        while thi - tlo > ttol:
+            crossed = armed & (shi <= 0)
+            frac = np.where(crossed, -shi / np.maximum(alph * slo - shi, 1e-300), -1.0)
+            tmid = thi - (thi - tlo) * frac.max()
+            tmid = min(max(tmid, tlo + 0.5 * ttol), thi - 0.5 * ttol)
+            smid = self._signed_roots(tmid, *s.interpolate(tmid)) * ref
+            sideprev = side
+            if np.any(armed & (smid <= 0)):
+                thi, shi, side = tmid, smid, 1
+            else:
+                tlo, slo, side = tmid, np.where(armed, smid, 1.0), 2
+            alph = (alph * (0.5 if side == 1 else 2.0)) if side == sideprev else 1.0
+        return thi, armed & (shi <= 0)
+
+    # ------------------------------------------------------------------ events
+    def _state_event(self, t_e, crossed):
+        s = self.solver
+        y, yp = s.interpolate(t_e)
+        self._emit_step(s.t_prev, t_e, y, yp)
+        self.state_event_times.append(t_e)
+        self._check_zeno(t_e)
+        return self._event(t_e, y, yp, crossed)
+
+    def _time_event(self, t_e):
+        return self._event(t_e, self.solver.y, self.solver.yp,
+                           np.zeros(self.n_roots, bool))
+
+    def _event(self, t_e, y, yp, crossed):
+        """Event iteration, re-initialization and restart; a message if stopping."""
+        self.stats.events += 1
+        self.event_times.append(t_e)
+        y_new, yp_new, action = self._iterate_event(t_e, y, yp, crossed)
+        if self.t_eval is None:
+            self._append(t_e, y_new, yp_new)
+        if action.stop:
+            return action.message or f"stopped by the model at t={t_e:.10g}"
+        self.solver.restart(t_e, y_new, yp_new, t_stop=self._next_stop(t_e))
+        self._arm_roots(t_e, y_new, yp_new, crossed)
+        return None
+
+    def _iterate_event(self, t, y, yp, crossed):
+        p = self.problem
+        g_before = self._signed_roots(t, y, yp) if self.n_roots else None
+        for _ in range(self.max_event_iterations):
+            action = p.handle_event(t, y, yp, crossed) or EventAction()
+            changed = action.changed or action.y is not None
+            if action.y is not None:
+                y = np.array(action.y, dtype=float)
+            if changed:
+                y, yp = self._reinit(t, y, yp)
+            if action.stop or not changed or not self.n_roots:
+                return y, yp, action
+            g_after = self._signed_roots(t, y, yp)
+            crossed = (np.sign(g_after) != np.sign(g_before)) & (g_before != 0)
+            if not crossed.any():
+                return y, yp, action
+            g_before = g_after
+        raise self._error(f"event iteration at t={t:.10g} did not settle after "
+                          f"{self.max_event_iterations} iterations (the discrete "
+                          f"state keeps changing)", t, ())
+
+    def _reinit(self, t, y, yp):
+        try:
+            return reinitialize(self.problem, t, y, yp, rtol=self.rtol, atol=self.atol)
+        except InitializationFailed as exc:
+            raise self._error(f"re-initialization after the event at t={t:.10g} "
+                              f"failed: {exc}", t, exc.variables) from None
+
+    def _check_zeno(self, t_e) -> None:
+        """Stop on chattering: a burst of events, or a geometric accumulation."""
+        times = self.state_event_times
+        if len(times) >= _BURST_EVENTS and \
+                times[-1] - times[-_BURST_EVENTS] <= _BURST_WINDOW * self.span:
+            raise self._error(
+                f"chattering: {_BURST_EVENTS} state events within "
+                f"{times[-1] - times[-_BURST_EVENTS]:.3g} s at t={t_e:.10g}; the model "
+                f"switches back and forth (a sliding mode); add hysteresis or a "
+                f"sliding-mode formulation", t_e, ())
+        m = _ZENO_INTERVALS
+        if len(times) < m + 1:
+            return
+        d = np.diff(times[-(m + 1):])
+        if np.any(d <= 0):
+            return
+        r = d[1:] / d[:-1]
+        if r.max() > _ZENO_RATIO or r.max() > _ZENO_SPREAD * r.min():
+            return
+        ratio = float(np.exp(np.mean(np.log(r))))
+        t_acc = t_e + d[-1] * ratio / (1.0 - ratio)
+        if t_acc < self.tf:
+            raise self._error(
+                f"chattering (Zeno behaviour): the last {m + 1} state events are "
+                f"spaced ever closer (ratio {ratio:.3f}) and accumulate at "
+                f"t≈{t_acc:.6g}, before t_end={self.tf:.6g}; the model needs a "
+                f"regularization there (e.g. a resting mode or hysteresis)", t_e, ())

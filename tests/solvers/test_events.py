@@ -1,0 +1,135 @@
+"""Events, chattering detection and failure reports of the driver."""
+import re
+
+import numpy as np
+import pytest
+
+from acausal.solvers import DAEProblem, EventAction, SimulationError, integrate
+
+from .problems import BlowUp, BouncingBall
+
+
+def test_bounce_times_match_closed_form():
+    ball = BouncingBall(e=0.8)
+    out = integrate(ball, (0.0, 8.0), [10.0, 0.0], rtol=1e-10, atol=1e-10)
+    assert out.success
+    t_exact = ball.bounce_times(10.0, 4)
+    assert len(out.event_times) == 4
+    np.testing.assert_allclose(out.event_times, t_exact, rtol=0, atol=1e-8)
+    # each event appears before and after: same time, velocity reversed and damped
+    for te in out.event_times:
+        k = np.flatnonzero(out.t == te)
+        assert k.size == 2
+        v_before, v_after = out.y[k[0], 1], out.y[k[1], 1]
+        assert v_before < 0 and v_after == pytest.approx(-0.8 * v_before, rel=1e-12)
+    assert out.y[:, 0].min() > -1e-8        # the ball never goes through the floor
+    assert out.stats.events == 4
+
+
+def test_bouncing_ball_t_eval_output():
+    ball = BouncingBall(e=0.8)
+    ts = np.linspace(0.0, 4.0, 41)
+    out = integrate(ball, (0.0, 4.0), [10.0, 0.0], rtol=1e-10, atol=1e-10, t_eval=ts)
+    np.testing.assert_array_equal(out.t, ts)
+    t1 = ball.bounce_times(10.0, 1)[0]
+    before = ts <= t1
+    np.testing.assert_allclose(out.y[before, 0], 10.0 - 0.5 * 9.81 * ts[before] ** 2,
+                               atol=1e-8)
+    v1 = 0.8 * 9.81 * t1
+    after = (ts > t1) & (ts < ball.bounce_times(10.0, 2)[1])
+    dt = ts[after] - t1
+    np.testing.assert_allclose(out.y[after, 0], v1 * dt - 0.5 * 9.81 * dt ** 2, atol=1e-8)
+
+
+def test_zeno_ball_stops_with_chattering_error():
+    ball = BouncingBall(e=0.8)
+    t_zeno = ball.bounce_times(10.0, 1)[0] + 2 * 0.8 * np.sqrt(2 * 9.81 * 10.0) / 9.81 / 0.2
+    with pytest.raises(SimulationError) as info:
+        integrate(ball, (0.0, 20.0), [10.0, 0.0], rtol=1e-8, atol=1e-8)
+    err = info.value
+    assert "chattering" in str(err) and "Zeno" in str(err)
+    assert err.t < t_zeno
+    predicted = float(re.search(r"accumulate at t≈([0-9.]+)", str(err)).group(1))
+    assert predicted == pytest.approx(t_zeno, rel=1e-4)
+    partial = err.partial
+    assert partial is not None and not partial.success
+    assert partial.t[-1] == pytest.approx(err.t)
+    assert len(partial.event_times) >= 10
+    np.testing.assert_allclose(partial.event_times,
+                               ball.bounce_times(10.0, len(partial.event_times)),
+                               atol=1e-6)
+
+
+def test_blow_up_reports_time_and_partial_output():
+    with pytest.raises(SimulationError) as info:
+        integrate(BlowUp(), (0.0, 2.0), [1.0])
+    err = info.value
+    assert abs(err.t - 1.0) < 1e-3
+    assert err.variables == ["y"]
+    assert "step size" in err.reason or "error test" in err.reason
+    partial = err.partial
+    assert partial.t.size > 10 and partial.t[-1] <= 1.0
+    # the partial output is the solution 1/(1-t) where it is resolvable
+    ok = partial.t < 0.99
+    np.testing.assert_allclose(partial.y[ok, 0], 1.0 / (1.0 - partial.t[ok]), rtol=1e-3)
+
+
+class StepInput(DAEProblem):
+    """y' = u with u switching 0 -> 1 at the time event t = 1 (frozen discrete state)."""
+
+    time_events = (1.0,)
+
+    def __init__(self):
+        super().__init__(1, ["y"])
+        self.u = 0.0
+
+    def residual(self, t, y, yp):
+        return yp - self.u
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj]])
+
+    def handle_event(self, t, y, yp, crossed):
+        self.u = 1.0 if t >= 1.0 else 0.0
+        return EventAction()
+
+
+def test_time_event_stops_exactly_and_restarts():
+    out = integrate(StepInput(), (0.0, 3.0), [0.0], rtol=1e-8, atol=1e-10)
+    assert out.event_times == [1.0]
+    k = np.flatnonzero(out.t == 1.0)
+    assert k.size == 2 and out.yp[k[0], 0] == 0.0 and out.yp[k[1], 0] == 1.0
+    np.testing.assert_allclose(out.y[:, 0], np.maximum(out.t - 1.0, 0.0), atol=1e-9)
+
+
+class Terminating(BouncingBall):
+    def handle_event(self, t, y, yp, crossed):
+        return EventAction(stop=True, message="ball reached the floor")
+
+
+def test_event_can_stop_the_simulation():
+    out = integrate(Terminating(), (0.0, 5.0), [10.0, 0.0], rtol=1e-10, atol=1e-10)
+    assert not out.success and out.message == "ball reached the floor"
+    assert out.t[-1] == pytest.approx(np.sqrt(2 * 10.0 / 9.81), abs=1e-8)
+
+
+class Singular(DAEProblem):
+    """x' = -x and x = 1 - z^0 ... : z appears nowhere, the iteration matrix is singular."""
+
+    def __init__(self):
+        super().__init__(2, ["x", "z"])
+        self.algebraic[1] = True
+
+    def residual(self, t, y, yp):
+        return np.array([yp[0] + y[0], y[0] - np.exp(-t)])
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj + 1.0, 0.0], [1.0, 0.0]])
+
+
+def test_singular_iteration_matrix_names_variable():
+    with pytest.raises(SimulationError) as info:
+        integrate(Singular(), (0.0, 1.0), [1.0, 0.0], [-1.0, 0.0], initialize=False)
+    err = info.value
+    assert "singular" in err.reason and err.variables == ["z"]
+    assert err.t == 0.0 and err.partial.t.size == 1
