@@ -34,6 +34,8 @@ the Newton convergence test), as IDA's ``suppressalg``.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .base import DAEProblem, SolverStats
@@ -49,6 +51,8 @@ _RATEMAX = 0.9       # a Newton rate above this is divergence
 _XRATE = 0.25        # cj may change by (1-XRATE)/(1+XRATE) .. inverse before re-factoring
 _MAXNEF = 10         # error-test failures per step before giving up (IDA maxnef)
 _MAXNCF = 10         # Newton failures per step before giving up (IDA maxncf)
+# alpha_s = -sum_{j=1..k} 1/j, the fixed leading coefficient (BCP eq. 5.2.10)
+_ALPHAS = [0.0] + [-sum(1.0 / j for j in range(1, k + 1)) for k in range(1, MAX_ORDER + 2)]
 
 
 class StepFailure(RuntimeError):
@@ -126,11 +130,13 @@ class BDF:
         self.stats = stats if stats is not None else SolverStats()
         self.lin = linear_solver if linear_solver is not None else make_linear_solver(problem)
         self.phi = np.zeros((MAX_ORDER + 2, n))
-        self.psi = np.zeros(MAX_ORDER + 2)
-        self.alpha = np.zeros(MAX_ORDER + 2)
-        self.beta = np.zeros(MAX_ORDER + 2)
-        self.sigma = np.zeros(MAX_ORDER + 2)
-        self.gamma = np.zeros(MAX_ORDER + 2)
+        # scalar coefficients as Python lists: indexing them is several times cheaper
+        # than indexing small numpy arrays, and they are used one at a time
+        self.psi = [0.0] * (MAX_ORDER + 2)
+        self.alpha = [0.0] * (MAX_ORDER + 2)
+        self.beta = [0.0] * (MAX_ORDER + 2)
+        self.sigma = [0.0] * (MAX_ORDER + 2)
+        self.gamma = [0.0] * (MAX_ORDER + 2)
         self.t_stop = float(t_stop)
         self.restart(t0, y0, yp0, first_step)
 
@@ -175,7 +181,7 @@ class BDF:
     @staticmethod
     def _wrms(v: np.ndarray, w: np.ndarray) -> float:
         x = v * w
-        return float(np.sqrt(np.dot(x, x) / x.size))
+        return math.sqrt(x.dot(x) / x.size)
 
     @property
     def t(self) -> float:
@@ -212,13 +218,14 @@ class BDF:
                 gamma[i] = gamma[i - 1] + alpha[i - 1] / hh
             psi[kk] = temp1
         # alpha_s (fixed leading coefficient) and alpha_0 for the error constant
-        alphas = -sum(1.0 / j for j in range(1, kk + 1))
-        alpha0 = -float(np.sum(alpha[:kk]))
+        alphas = _ALPHAS[kk]
+        alpha0 = -sum(alpha[:kk])
         self.cjlast = self.cj
         self.cj = -alphas / hh
         ck = max(abs(alpha[kk] + alphas - alpha0), alpha[kk])
-        if self.ns <= kk:
-            self.phi[self.ns:kk + 1] *= beta[self.ns:kk + 1, None]
+        phi = self.phi
+        for i in range(self.ns, kk + 1):
+            phi[i] *= beta[i]
         return ck
 
     def _restore(self, saved_t: float) -> None:
@@ -227,8 +234,8 @@ class BDF:
         kk = self.kk
         for j in range(1, kk + 1):
             self.psi[j - 1] = self.psi[j] - self.hh
-        if self.ns <= kk:
-            self.phi[self.ns:kk + 1] /= self.beta[self.ns:kk + 1, None]
+        for i in range(self.ns, kk + 1):
+            self.phi[i] /= self.beta[i]
 
     # ------------------------------------------------------------------ Newton
     def _setup(self, t, y, yp) -> None:
@@ -279,8 +286,6 @@ class BDF:
             r = F(tnew, ypred + ee, yppred + cj * ee)
             st.residual_evaluations += 1
             st.newton_iterations += 1
-            if not np.all(np.isfinite(r)):
-                return False, ee, None
             delta = self.lin.solve(-r)
             if scale != 1.0:
                 delta *= scale   # J was factored with cjold (IDA's scalesol)
@@ -351,7 +356,7 @@ class BDF:
             # predictor from the interpolating polynomial (BCP 5.2.8-5.2.9)
             kk = self.kk
             ypred = self.phi[:kk + 1].sum(axis=0)
-            yppred = self.gamma[1:kk + 1] @ self.phi[1:kk + 1]
+            yppred = np.dot(self.gamma[1:kk + 1], self.phi[1:kk + 1])
             try:
                 ee = self._newton(tnew, ypred, yppred)
             except SingularMatrixError as exc:

@@ -163,7 +163,16 @@ class _Run:
         self._emit_step(s.t_prev, s.t, s.y, s.yp)
         if s.t < self.tf and s.t == s.t_stop:
             return self._time_event(s.t)
+        self._after_step(s)
         return None
+
+    def _after_step(self, s) -> None:
+        """Let the problem change its formulation after an accepted step (dynamic state
+        selection: a different choice of states); then re-initialize and restart."""
+        hook = getattr(self.problem, "after_step", None)
+        if hook is not None and hook(s.t, s.y, s.yp):
+            y, yp = self._reinit(s.t, s.y, s.yp)
+            s.restart(s.t, y, yp, t_stop=s.t_stop)
 
     # ------------------------------------------------------------------ output
     def _emit_point(self, t, y, yp) -> None:

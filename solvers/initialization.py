@@ -63,17 +63,19 @@ def _weights(x, rtol, atol):
 
 def _top(values, k=_N_NAMED):
     v = np.nan_to_num(np.abs(np.asarray(values, float)), nan=np.inf)
+    if not v.size or v.max() <= 0:
+        return []
     order = np.argsort(-v, kind="stable")
-    return [int(i) for i in order[:k] if v[i] > 0]
+    return [int(i) for i in order[:k] if v[i] >= 0.01 * v.max()]
 
 
 def _solve(fun, jac, x0, weights, what, labels, eq_labels, t):
     """Damped Newton, then homotopy; raise InitializationFailed naming the culprits."""
-    singular = None
+    singular = newton = res = None
     try:
-        res = damped_newton(fun, jac, x0, weights=weights, tol=_NEWTON_TOL)
-        if res.converged:
-            return res.x
+        newton = damped_newton(fun, jac, x0, weights=weights, tol=_NEWTON_TOL)
+        if newton.converged:
+            return newton.x
     except SingularMatrixError as exc:
         singular = exc
     try:
@@ -82,6 +84,8 @@ def _solve(fun, jac, x0, weights, what, labels, eq_labels, t):
             return res.x
     except SingularMatrixError as exc:
         singular = exc
+    if newton is not None and (res is None or not np.any(res.step)):
+        res = newton     # its last Newton step says which unknowns would not settle
     if singular is not None and not singular.cols and not singular.rows:
         singular = None
     if singular is not None:
