@@ -43,15 +43,25 @@ class DynamicStateSelection:
         self.weights = np.asarray(weights, dtype=float)
         self.names = names
         self.switches = []                    # (time, new dummies)
+        self.entry = {}                       # (row, col) -> index into Jacobian values
+        self._reference = []                  # block quality at the last pivoting search
 
-    def choose(self, J, current: set, hysteresis: float) -> set:
+    def bind(self, jac_rows, jac_cols) -> None:
+        """Locate the level blocks in the generated Jacobian's value array (once)."""
+        wanted = {r for rows in self.levels for r in rows}
+        self.entry = {(int(r), int(c)): k for k, (r, c) in enumerate(zip(jac_rows, jac_cols))
+                      if r in wanted}
+
+    def choose(self, vals, current: set, hysteresis: float) -> set:
+        """The dummies for the Jacobian values ``vals``: ``current`` unless clearly worse."""
+        ratios = [_hadamard_ratio(block[:, keep]) for block, _, keep in self._blocks(vals, current)]
+        if current and len(ratios) == len(self._reference) and all(
+                r >= _DEGRADED * r0 for r, r0 in zip(ratios, self._reference)):
+            return current   # the current blocks have not degraded since the last search
         dummies, allowed = set(), None
         for rows in self.levels:
-            # level 1: the highest derivatives; below: antiderivatives of the last dummies
-            cols = sorted({v for r in rows for v in self.row_vars[r]
-                           if (v in allowed if allowed is not None
-                               else self.var_to_diff[v] is UNASSIGNED)})
-            block = J[rows][:, cols].toarray() * self.weights[cols]
+            cols = self._columns(rows, allowed)
+            block = self._block(vals, rows, cols)
             pick = _pivot_columns(block, len(rows))
             keep = [k for k, c in enumerate(cols) if c in current]
             if len(keep) == len(rows) and _well_enough(block, keep, pick, hysteresis):
@@ -59,7 +69,46 @@ class DynamicStateSelection:
             chosen = [cols[k] for k in pick]
             dummies.update(chosen)
             allowed = {self.diff_to_var[c] for c in chosen}
+        self._reference = [_hadamard_ratio(block[:, keep])
+                           for block, _, keep in self._blocks(vals, dummies)]
         return dummies
+
+    def _columns(self, rows, allowed):
+        """Level 1: the highest derivatives; below: antiderivatives of the last dummies."""
+        return sorted({v for r in rows for v in self.row_vars[r]
+                       if (v in allowed if allowed is not None
+                           else self.var_to_diff[v] is UNASSIGNED)})
+
+    def _block(self, vals, rows, cols):
+        block = np.zeros((len(rows), len(cols)))
+        for i, r in enumerate(rows):
+            for j, c in enumerate(cols):
+                k = self.entry.get((r, c))
+                if k is not None:
+                    block[i, j] = vals[k] * self.weights[c]
+        return block
+
+    def _blocks(self, vals, dummies):
+        allowed = None
+        for rows in self.levels:
+            cols = self._columns(rows, allowed)
+            keep = [k for k, c in enumerate(cols) if c in dummies]
+            if len(keep) != len(rows):
+                yield np.zeros((len(rows), len(rows))), cols, list(range(len(rows)))
+                return
+            yield self._block(vals, rows, cols), cols, keep
+            allowed = {self.diff_to_var[cols[k]] for k in keep}
+
+
+# The pivoting search runs again only once a dummy block's Hadamard ratio
+# |det B| / prod ||b_i|| has fallen below this fraction of its value at the last search:
+# a block that has not degraded cannot have become (near) singular.
+_DEGRADED = 0.5
+
+
+def _hadamard_ratio(B) -> float:
+    norms = np.prod(np.linalg.norm(B, axis=1))
+    return abs(np.linalg.det(B)) / norms if norms > 0 else 0.0
 
 
 def _pivot_columns(block, k):
@@ -114,6 +163,8 @@ class CompiledModel(DAEProblem):
         self.report = report
         self.meta = meta or {}
         self._jac_split()
+        if dynamic is not None:
+            dynamic.bind(code.jac_rows, code.jac_cols)
         self._update_links()
 
     def _jac_split(self):
@@ -204,7 +255,9 @@ class CompiledModel(DAEProblem):
         """Re-choose the dummy derivatives; True when the choice (and so F) changed."""
         if self.dynamic is None:
             return False
-        new = self.dynamic.choose(self.dG_dy(t, z).tocsr(), self.dummies, hysteresis)
+        c = self.code
+        vals = c.jacobian(t, z, self.p, self.m, np.empty(len(c.jac_rows)))
+        new = self.dynamic.choose(vals, self.dummies, hysteresis)
         if new == self.dummies:
             return False
         self.dummies = new

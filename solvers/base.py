@@ -24,7 +24,11 @@ What a problem provides (numbered, so integrators can cite it)
    ``handle_event(t, y, yp, crossed) -> EventAction`` (``crossed`` is a bool mask of
    the functions that changed sign; the problem updates its discrete state, may reinit
    y, and says whether to stop).  ``time_events`` lists known times of discontinuity
-   (steps, pulses) where the integrator must stop and restart.
+   (steps, pulses) where the integrator must stop and restart; there
+   ``handle_event`` is called with ``crossed`` all False, so that relations on time
+   can be kept frozen like the others and switched there.  After any event the
+   driver re-initializes the algebraic part of y and y' (differential y as left by
+   the event) and restarts the BDF at order 1.
 9. Initialization (optional).  Without it, the differential components of y0 are
    trusted and the algebraic components of y plus all of y' are computed (IDA's
    ``YA_YDP_INIT``).  A problem whose initial state is fixed otherwise (steady state,

@@ -51,6 +51,7 @@ _RATEMAX = 0.9       # a Newton rate above this is divergence
 _XRATE = 0.25        # cj may change by (1-XRATE)/(1+XRATE) .. inverse before re-factoring
 _MAXNEF = 10         # error-test failures per step before giving up (IDA maxnef)
 _MAXNCF = 10         # Newton failures per step before giving up (IDA maxncf)
+_MAXSING = 3         # singular iteration matrices per step before giving up
 # alpha_s = -sum_{j=1..k} 1/j, the fixed leading coefficient (BCP eq. 5.2.10)
 _ALPHAS = [0.0] + [-sum(1.0 / j for j in range(1, k + 1)) for k in range(1, MAX_ORDER + 2)]
 
@@ -335,7 +336,7 @@ class BDF:
     def step(self) -> None:
         """Take one accepted step (IDAStep); raise :class:`StepFailure` if impossible."""
         st = self.stats
-        ncf = nef = 0
+        ncf = nef = nsing = 0
         saved_t = self.tn
         self._last_fail = None
         self._update_weights()
@@ -360,9 +361,17 @@ class BDF:
             try:
                 ee = self._newton(tnew, ypred, yppred)
             except SingularMatrixError as exc:
+                # recoverable like a Newton failure (IDA: lsetup failure), since a
+                # smaller step changes cj and may regularize dF/dy + cj dF/dy'; an
+                # algebraic singularity does not depend on cj and fails again quickly
                 self._restore(saved_t)
-                raise StepFailure("singular", str(exc), saved_t, self.hh,
-                                  rows=exc.rows, cols=exc.cols) from None
+                nsing += 1
+                if nsing >= _MAXSING:
+                    raise StepFailure("singular", str(exc), saved_t, self.hh,
+                                      rows=exc.rows, cols=exc.cols) from None
+                self._shrink(0.25)
+                self.force_setup = True
+                continue
             except _NewtonFail as exc:
                 # IDAHandleNFlag, convergence failure: quarter the step, predict again
                 self._restore(saved_t)

@@ -40,6 +40,7 @@ _ZENO_SPREAD = 1.15      # ... and nearly constant (max/min ratio) means Zeno
 _BURST_EVENTS = 50       # this many state events ...
 _BURST_WINDOW = 1e-6     # ... within this fraction of the span means chattering
 _N_NAMED = 3
+_ECHO_TTOLS = 1e3        # an unchanged event this close (in ttol) to the last is the same
 
 
 def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
@@ -132,7 +133,7 @@ class _Run:
                           max_step=self.max_step, first_step=first_step,
                           suppress_alg=self.suppress_alg, t_stop=self._next_stop(self.t0),
                           stats=self.stats)
-        self._arm_roots(self.t0, y, yp, np.zeros(self.n_roots, bool))
+        self._arm_roots(self.t0, y, yp)
         while self.solver.t < self.tf:
             stop = self._advance()
             if stop is not None:
@@ -204,9 +205,10 @@ class _Run:
                 self.i_eval += 1
 
     def _append(self, t, y, yp) -> None:
+        # the solver hands out fresh arrays for every point, so no copies are needed
         self.ts.append(float(t))
-        self.ys.append(np.array(y, dtype=float))
-        self.yps.append(np.array(yp, dtype=float))
+        self.ys.append(y)
+        self.yps.append(yp)
 
     def _output(self, success: bool, message: str) -> SolverOutput:
         n = self.problem.n
@@ -253,25 +255,20 @@ class _Run:
     def _signed_roots(self, t, y, yp) -> np.ndarray:
         return np.asarray(self.problem.roots(t, y, yp), float)
 
-    def _arm_roots(self, t, y, yp, crossed) -> None:
-        """Reference signs after a (re)start; functions sitting on zero are resolved.
+    def _arm_roots(self, t, y, yp) -> None:
+        """Reference signs after a (re)start.
 
-        A function that has just crossed (or is exactly zero) sits within the location
-        tolerance of zero, on either side.  Its sign is taken a little later along
-        y + delta*y'; if that is not conclusive it stays unarmed until the next step.
+        A function that is exactly zero stays unarmed until a step ends where it is
+        not.  A function that has just crossed sits a little beyond zero (the event is
+        placed at the far end of the final bracket), so if the new dynamics take it
+        straight back, that is a genuine crossing and is reported as such, as a
+        relation changing back would be in Modelica semantics.
         """
         if not self.n_roots:
             return
         g0 = self._signed_roots(t, y, yp)
-        delta = 100.0 * self._ttol(t)
-        g1 = self._signed_roots(t + delta, y + delta * yp, yp)
-        ref = np.sign(g0)
-        near = crossed | (g0 == 0)
-        moved = np.abs(g1 - g0) > 2.0 * np.abs(g0)
-        ref[near] = np.where(moved[near], np.sign(g1[near]), 0.0)
-        self.sign_ref = ref
-        # a function armed from the later point starts the next search from there
-        self.g_prev = np.where(near & moved, g1, g0)
+        self.sign_ref = np.sign(g0)
+        self.g_prev = g0
 
     def _ttol(self, t: float) -> float:
         return max(_ROOT_RTOL * max(abs(t), self.span), 4 * np.finfo(float).eps * abs(t))
@@ -317,44 +314,57 @@ class _Run:
     def _state_event(self, t_e, crossed):
         s = self.solver
         y, yp = s.interpolate(t_e)
-        self._emit_step(s.t_prev, t_e, y, yp)
-        self.state_event_times.append(t_e)
-        self._check_zeno(t_e)
-        return self._event(t_e, y, yp, crossed)
+        t_prev = s.t_prev
+        y_new, yp_new, action, changed = self._iterate_event(t_e, y, yp, crossed)
+        # A relation flipping straight back after the previous event (a ball leaving
+        # the floor, a heater's threshold left behind) changes nothing: it is the same
+        # instant, handled, but not reported as another event.
+        echo = (not changed and not action.stop and bool(self.event_times)
+                and t_e - self.event_times[-1] <= _ECHO_TTOLS * self._ttol(t_e))
+        if not (echo and self.t_eval is None):
+            self._emit_step(t_prev, t_e, y, yp)
+        if changed:
+            # only events that change something can chatter
+            self.state_event_times.append(t_e)
+            self._check_zeno(t_e)
+        return self._finish_event(t_e, y_new, yp_new, action, record=not echo)
 
     def _time_event(self, t_e):
-        return self._event(t_e, self.solver.y, self.solver.yp,
-                           np.zeros(self.n_roots, bool))
+        y, yp, action, _ = self._iterate_event(t_e, self.solver.y, self.solver.yp,
+                                               np.zeros(self.n_roots, bool))
+        return self._finish_event(t_e, y, yp, action)
 
-    def _event(self, t_e, y, yp, crossed):
-        """Event iteration, re-initialization and restart; a message if stopping."""
-        self.stats.events += 1
-        self.event_times.append(t_e)
-        y_new, yp_new, action = self._iterate_event(t_e, y, yp, crossed)
-        if self.t_eval is None:
-            self._append(t_e, y_new, yp_new)
+    def _finish_event(self, t_e, y, yp, action, record=True):
+        """Record the event, then stop or restart the BDF at order 1."""
+        if record:
+            self.stats.events += 1
+            self.event_times.append(t_e)
+            if self.t_eval is None:
+                self._append(t_e, y, yp)
         if action.stop:
             return action.message or f"stopped by the model at t={t_e:.10g}"
-        self.solver.restart(t_e, y_new, yp_new, t_stop=self._next_stop(t_e))
-        self._arm_roots(t_e, y_new, yp_new, crossed)
+        self.solver.restart(t_e, y, yp, t_stop=self._next_stop(t_e))
+        self._arm_roots(t_e, y, yp)
         return None
 
     def _iterate_event(self, t, y, yp, crossed):
         p = self.problem
         g_before = self._signed_roots(t, y, yp) if self.n_roots else None
+        any_change = False
         for _ in range(self.max_event_iterations):
             action = p.handle_event(t, y, yp, crossed) or EventAction()
             changed = action.changed or action.y is not None
+            any_change |= changed
             if action.y is not None:
                 y = np.array(action.y, dtype=float)
             if changed:
                 y, yp = self._reinit(t, y, yp)
             if action.stop or not changed or not self.n_roots:
-                return y, yp, action
+                return y, yp, action, any_change
             g_after = self._signed_roots(t, y, yp)
             crossed = (np.sign(g_after) != np.sign(g_before)) & (g_before != 0)
             if not crossed.any():
-                return y, yp, action
+                return y, yp, action, any_change
             g_before = g_after
         raise self._error(f"event iteration at t={t:.10g} did not settle after "
                           f"{self.max_event_iterations} iterations (the discrete "

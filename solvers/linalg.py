@@ -44,10 +44,27 @@ class SingularMatrixError(np.linalg.LinAlgError):
         Equations and variables of the singular block (a best guess when numerical).
     """
 
-    def __init__(self, message: str, rows=(), cols=()):
+    def __init__(self, message: str, rows=(), cols=(), matrix=None):
         super().__init__(message)
-        self.rows = [int(r) for r in rows]
-        self.cols = [int(c) for c in cols]
+        self._rows = [int(r) for r in rows]
+        self._cols = [int(c) for c in cols]
+        self._matrix = matrix    # analysed on first access: a caller may just retry
+
+    def _analyse(self) -> None:
+        if self._matrix is not None:
+            rows, cols = singular_block(self._matrix)
+            self._rows, self._cols = [int(r) for r in rows], [int(c) for c in cols]
+            self._matrix = None
+
+    @property
+    def rows(self) -> list:
+        self._analyse()
+        return self._rows
+
+    @property
+    def cols(self) -> list:
+        self._analyse()
+        return self._cols
 
 
 def _structural_defect(S: sp.csr_matrix):
@@ -137,8 +154,7 @@ class LinearSolver:
         lu, piv, info = self._getrf(A, overwrite_a=True)
         d = np.abs(np.diagonal(lu))
         if info > 0 or d.min() <= _PIVOT_RTOL * d.max():
-            rows, cols = singular_block(J)
-            raise SingularMatrixError("iteration matrix is singular", rows, cols)
+            raise SingularMatrixError("iteration matrix is singular", matrix=J)
         self._lu, self._piv = lu, piv
 
     def _factor_sparse(self, J) -> None:
@@ -155,8 +171,7 @@ class LinearSolver:
             if d.size and d.min() > _PIVOT_RTOL * d.max():
                 self._lu = lu
                 return
-        rows, cols = singular_block(A)
-        raise SingularMatrixError("iteration matrix is singular", rows, cols)
+        raise SingularMatrixError("iteration matrix is singular", matrix=A)
 
     @staticmethod
     def _nonfinite(A: np.ndarray):

@@ -84,7 +84,10 @@ class CurrentControlledDCMotor(ac.Component):
     flange = RotationalFlange()
     u_a = ac.Variable(unit="V", description="armature voltage delivered by the drive")
     drive = SignalCurrent()
-    motor = DCMotor(R=ac.ref("R"), L=ac.ref("L"), k=ac.ref("k"), J=ac.ref("J"))
+    # the imposed current is not a state: the rotor's angle and speed are
+    motor = DCMotor(R=ac.ref("R"), L=ac.ref("L"), k=ac.ref("k"), J=ac.ref("J"),
+                    La={"i": {"state_select": "avoid"}},
+                    rotor={"phi": {"state_select": "prefer"}, "w": {"state_select": "prefer"}})
     ground = Ground()
 
     def equations(self):

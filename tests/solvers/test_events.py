@@ -133,3 +133,78 @@ def test_singular_iteration_matrix_names_variable():
     err = info.value
     assert "singular" in err.reason and err.variables == ["z"]
     assert err.t == 0.0 and err.partial.t.size == 1
+
+
+class Thermostat(DAEProblem):
+    """T' = -(T - Ta)/tau + u P with a two-point controller switching u.
+
+    The switching functions are algebraic variables (d_lo = T - 18, d_hi = T - 22),
+    so the event logic must cope with roots whose y' is not available.
+    """
+
+    n_roots = 2
+
+    def __init__(self):
+        super().__init__(3, ["T", "d_lo", "d_hi"])
+        self.algebraic[1:] = True
+        self.u = 0.0
+
+    def residual(self, t, y, yp):
+        return np.array([yp[0] + (y[0] - 10.0) - 20.0 * self.u,
+                         y[1] - (y[0] - 18.0), y[2] - (y[0] - 22.0)])
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj + 1.0, 0.0, 0.0], [-1.0, 1.0, 0.0], [-1.0, 0.0, 1.0]])
+
+    def roots(self, t, y, yp):
+        return y[1:]
+
+    def handle_event(self, t, y, yp, crossed):
+        new = 1.0 if (crossed[0] and self.u == 0.0) else \
+            0.0 if (crossed[1] and self.u == 1.0) else self.u
+        changed = new != self.u
+        self.u = new
+        return EventAction(changed=changed)
+
+
+def test_thermostat_switching_times_on_algebraic_roots():
+    out = integrate(Thermostat(), (0.0, 3.0), [20.0, 0.0, 0.0], rtol=1e-10, atol=1e-10)
+    first = np.log(10.0 / 8.0)            # cool 20 -> 18
+    period = np.log(1.5)                  # heat 18 -> 22, cool 22 -> 18
+    expected = first + period * np.arange(7)
+    np.testing.assert_allclose(out.event_times, expected, atol=1e-8)
+    assert out.y[:, 0].min() > 18.0 - 1e-7 and out.y[-1, 0] < 22.0 + 1e-7
+
+
+class Relay(DAEProblem):
+    """x' = u, u = -sign(x) as a frozen mode: an ideal relay slides at x = 0."""
+
+    n_roots = 1
+
+    def __init__(self):
+        super().__init__(1, ["x"])
+        self.u = -1.0
+
+    def residual(self, t, y, yp):
+        return yp - self.u
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj]])
+
+    def roots(self, t, y, yp):
+        return y.copy()
+
+    def handle_event(self, t, y, yp, crossed):
+        new = -self.u if crossed[0] else self.u
+        changed = new != self.u
+        self.u = new
+        return EventAction(changed=changed)
+
+
+def test_sliding_mode_chattering_is_reported():
+    with pytest.raises(SimulationError) as info:
+        integrate(Relay(), (0.0, 3.0), [1.0], rtol=1e-8, atol=1e-10)
+    err = info.value
+    assert "chattering" in err.reason and "sliding" in err.reason
+    assert err.t == pytest.approx(1.0, abs=1e-6)
+    assert len(err.partial.event_times) >= 40

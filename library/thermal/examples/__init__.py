@@ -1,0 +1,4 @@
+"""Thermal examples."""
+from .heated_resistor import HeatedResistor
+
+__all__ = ["HeatedResistor"]
