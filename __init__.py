@@ -9,14 +9,14 @@ Write a model as components with ports, connect them like a schematic, and simul
 See the README for the modelling language and the design.
 """
 from .components import (Across, Component, Connection, Eq, Equation, ModelError, Parameter,
-                         Port, Signal, Through, Variable, connect, der, if_else, ref, sign,
-                         time)
+                         Port, Signal, Through, Variable, When, connect, der, if_else, pre,
+                         ref, reinit, sign, time, when)
 from .compiler.model import CompiledModel
 from .result import Result
 from .simulation import compile, initial_values, simulate
 from .solvers.base import SimulationError
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
-           "Eq", "Equation", "der", "connect", "ref", "Connection", "if_else", "sign", "time",
+           "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre", "Connection", "if_else", "sign", "time",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
            "ModelError", "SimulationError"]

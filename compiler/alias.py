@@ -178,8 +178,24 @@ def _rebuild(flat, kept, subs, table, find, constants):
         equations.append(replace(eq, residual=r))
     initial = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in flat.initial_equations]
     table.equations_after = len(equations)
+    whens = [_when_after_aliases(w, subs, find, constants) for w in flat.whens]
     return replace(flat, variables=merged, equations=equations, initial_equations=initial,
-                   derivatives=derivatives)
+                   derivatives=derivatives, whens=whens)
+
+
+def _when_after_aliases(w, subs, find, constants):
+    """A when-clause in representative variables: reinit(a, e) with a = s*r is reinit(r, s*e)."""
+    from ..components.symbols import Reinit, When
+    actions = []
+    for act in w.actions:
+        sign, root = find(act.variable)
+        if root in constants:
+            raise ModelError(f"reinit({act.variable}) in {w.origin or '(model)'}: the variable "
+                             "is fixed by an equation (a constant), it cannot be re-initialized")
+        actions.append(Reinit(root, sign * act.value.xreplace(subs)))
+    out = When(w.condition.xreplace(subs), *actions)
+    out.origin, out.origin_class = w.origin, w.origin_class
+    return out
 
 
 def _merge_attributes(flat, variables, find):

@@ -17,7 +17,7 @@ import sympy as sp
 from ..components.component import (Component, Connection, ModelError, Port,
                                      flatten_equation_list)
 from ..components.declarations import Parameter, VariableAttributes
-from ..components.symbols import Equation, der, time
+from ..components.symbols import Equation, When, der, pre, time
 
 __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
 
@@ -72,6 +72,7 @@ class FlatModel:
     equations: list
     initial_equations: list = field(default_factory=list)
     derivatives: dict = field(default_factory=dict)   # variable symbol -> der symbol
+    whens: list = field(default_factory=list)         # When clauses (condition, reinits)
     ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
     components: dict = field(default_factory=dict)    # path -> class name
 
@@ -100,6 +101,9 @@ def flatten(model: Component) -> FlatModel:
             if isinstance(item, Connection):
                 item.owner = comp
                 connections.append(item)
+            elif isinstance(item, When):
+                item.origin, item.origin_class = comp.path, type(comp).__name__
+                flat.whens.append(item)
             else:
                 flat.equations.append(_flat_equation(item, comp, "equation"))
         for item in _read(comp, "initial_equations"):
@@ -127,9 +131,9 @@ def _read(comp: Component, method: str) -> list:
         raise ModelError(f"while reading the {method.replace('_', ' ')} of "
                          f"{comp._describe()}: {type(err).__name__}: {err}") from err
     for item in items:
-        if not isinstance(item, (Equation, Connection)):
+        if not isinstance(item, (Equation, Connection, When)):
             raise ModelError(f"{comp._describe()}.{method}() returned {item!r}; expected "
-                             "ac.Eq(lhs, rhs) or ac.connect(a, b)")
+                             "ac.Eq(lhs, rhs), ac.connect(a, b) or ac.when(...)")
     return items
 
 

@@ -246,9 +246,57 @@ class CompiledModel(DAEProblem):
             g = self.roots(t, z, None)
             self.m[:] = [_RELATION[op](x) for op, x in zip(self.meta["relations"], g)]
 
+    def set_whens(self, code, n_when, targets, owners) -> None:
+        """When-clauses: rows 0..n_when-1 of ``code`` are the conditions (1/0), then one
+        reinit value per action, applied to z[targets[k]] when its clause owners[k] fires."""
+        self.when_code = code
+        self.n_when = n_when
+        self.when_targets = np.asarray(targets, dtype=np.int64)
+        self.when_owners = np.asarray(owners, dtype=np.int64)
+        self.when_log = []
+
+    def _when_values(self, t, z, m):
+        c = self.when_code
+        return c.residual(t, z, self.p, m, np.empty(c.n_rows))
+
     def handle_event(self, t, z, zp, crossed):
-        self.m[crossed] = ~self.m[crossed]
-        return EventAction(changed=True)
+        """Switch the relations that crossed; fire when-clauses whose condition became true."""
+        m_old = self.m.copy()
+        self._settle_modes(t, z, crossed)
+        if getattr(self, "when_code", None) is None:
+            return EventAction(changed=not np.array_equal(m_old, self.m))
+        before = self._when_values(t, z, m_old)
+        after = self._when_values(t, z, self.m)
+        fired = (before[: self.n_when] < 0.5) & (after[: self.n_when] > 0.5)
+        if not fired.any():
+            return EventAction(changed=not np.array_equal(m_old, self.m))
+        new = z.copy()
+        act = fired[self.when_owners]
+        new[self.when_targets[act]] = before[self.n_when:][act]   # values before the event
+        self.when_log.append((t, np.flatnonzero(fired).tolist()))
+        self._settle_modes(t, new, np.ones(self.n_roots, dtype=bool))
+        return EventAction(y=new, changed=True)
+
+    def _settle_modes(self, t, z, which):
+        """Relations in ``which`` take the value they have just after t.
+
+        Where g is clearly non-zero that is its sign; where it sits at zero (the event
+        point itself, or a ball reinitialized at h = 0 with v > 0) it is the sign a
+        short step along z' gives.
+        """
+        g = self.roots(t, z, None)
+        ops = self.meta["relations"]
+        at_zero = which & (np.abs(g) <= 1e-9 * (1.0 + np.abs(g).max(initial=0.0)))
+        for k in np.flatnonzero(which & ~at_zero):
+            self.m[k] = _RELATION[ops[k]](g[k])
+        if not at_zero.any():
+            return
+        zp = np.zeros_like(z)
+        zp[self.state_index] = self.state_derivatives(t, z)
+        dt = 1e-7 * (1.0 + abs(t))
+        g_next = self.roots(t + dt, z + dt * zp, None)
+        for k in np.flatnonzero(at_zero):
+            self.m[k] = _RELATION[ops[k]](g_next[k])
 
     # -- dynamic state selection ----------------------------------------------------------
     def reselect_states(self, t, z, hysteresis=0.5) -> bool:

@@ -37,7 +37,8 @@ class PantelidesResult:
         The augmented structure: the input's variables and equations first (same
         indices), then the created derivative variables and differentiated equations.
         ``var_to_diff``/``diff_to_var``/``eq_to_diff``/``diff_to_eq`` are extended;
-        new variables are named ``der(<name>)``, new equations ``d/dt(<name>)``.
+        new variables are named ``der(<name>)`` and get ``state_priority`` DEFAULT,
+        new equations are named ``d/dt(<name>)``.
     var_to_eq : list
         Final matching of each highest-derivative variable to an equation at the top of
         its differentiation chain; ``UNASSIGNED`` for lower derivatives.
@@ -70,6 +71,8 @@ def predict_derivative(s: Structure, e: int) -> tuple:
     out = {}
     for v, k in s.coeff[e].items():
         dv = s.var_to_diff[v]
+        if dv is UNASSIGNED:
+            raise ValueError(f"der({s.var_names[v]}) does not exist yet")
         kd = k if k <= LINEAR_VAR else LINEAR_VAR
         out[dv] = max(out.get(dv, kd), kd)
         if k >= LINEAR_VAR:     # a constant or parameter coefficient differentiates to 0
@@ -127,41 +130,38 @@ class _Work:
 def _augment(w: _Work, root: int, stamp: int) -> tuple:
     """Augmenting path from equation `root` over highest-derivative variables.
 
-    Iterative form of Pantelides' procedure AUGMENTPATH (MTK's
-    construct_augmenting_path!): first take a free highest variable of the current
-    equation, else recurse through the equations matched to its uncolored highest
-    variables.  Returns ``(found, colored_eqs, colored_vars)``; on failure every
-    highest variable of every colored equation is colored.
+    Pantelides' procedure AUGMENTPATH, searched breadth-first: a free highest
+    variable close to `root` is found without first walking down long matched chains
+    (depth-first search would, on a chain of bodies, walk the whole chain each time).
+    On failure the colored sets are the same as for the paper's depth-first search:
+    everything reachable by alternating paths, so every highest variable of every
+    colored equation is colored.  Returns ``(found, colored_eqs, colored_vars)``.
     """
-    graph, v2d, v2e = w.s.graph, w.v2d, w.var_to_eq
+    graph, v2d, v2e, vstamp, estamp = w.s.graph, w.v2d, w.var_to_eq, w.vstamp, w.estamp
     ceqs, cvars = [root], []
-    w.estamp[root] = stamp
-    frames = [[root, 0, -1]]          # [equation, next adjacency index, var taken]
-    while frames:
-        fr = frames[-1]
-        e = fr[0]
-        if fr[1] == 0:
-            for v in graph[e]:
-                if v2d[v] < 0 and v2e[v] < 0:      # free highest derivative: augment
-                    v2e[v] = e
-                    for f in frames[:-1]:
-                        v2e[f[2]] = f[0]
-                    return True, ceqs, cvars
-        vs, i = graph[e], fr[1]
-        while i < len(vs) and (v2d[vs[i]] >= 0 or w.vstamp[vs[i]] == stamp):
-            i += 1
-        if i == len(vs):
-            frames.pop()
-            continue
-        v = vs[i]
-        fr[1], fr[2] = i + 1, v
-        w.vstamp[v] = stamp
-        cvars.append(v)
-        nxt = v2e[v]                                 # matched: no free var was left
-        if w.estamp[nxt] != stamp:
-            w.estamp[nxt] = stamp
-            ceqs.append(nxt)
-            frames.append([nxt, 0, -1])
+    estamp[root] = stamp
+    via, came_from = {root: -1}, {}     # eq -> var it was reached by; var -> eq before
+    qi = 0
+    while qi < len(ceqs):
+        e = ceqs[qi]
+        qi += 1
+        for v in graph[e]:
+            if v2d[v] < 0 and v2e[v] < 0:           # free highest derivative: flip path
+                while v >= 0:
+                    v2e[v], v = e, via[e]
+                    if v >= 0:
+                        e = came_from[v]
+                return True, ceqs, cvars
+        for v in graph[e]:
+            if v2d[v] < 0 and vstamp[v] != stamp:
+                vstamp[v] = stamp
+                cvars.append(v)
+                came_from[v] = e
+                nxt = v2e[v]                         # matched: no free var was left
+                if estamp[nxt] != stamp:
+                    estamp[nxt] = stamp
+                    via[nxt] = v
+                    ceqs.append(nxt)
     return False, ceqs, cvars
 
 
@@ -179,7 +179,8 @@ def pantelides(s: Structure, differentiate: Optional[Callable] = None,
         built).  Default: :func:`predict_derivative`.
     max_rounds : int, optional
         Safety bound on failed searches per input equation; default
-        ``n_eqs + max derivative order + 2``.
+        ``n_eqs + max derivative order + 2`` (never reached once the model has passed
+        the structural check).
 
     Returns
     -------
@@ -191,7 +192,11 @@ def pantelides(s: Structure, differentiate: Optional[Callable] = None,
         The model has no perfect matching of equations onto derivative chains.
     IndexReductionFailed
         `max_rounds` exceeded or the callback returned invalid variables.
+    ValueError
+        If `s` already contains differentiated equations.
     """
+    if any(d is not UNASSIGNED for d in s.eq_to_diff):
+        raise ValueError("pantelides() expects a DAE without differentiated equations")
     check_structure(s)
     w = _Work(s)
     if max_rounds is None:

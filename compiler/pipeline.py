@@ -83,10 +83,13 @@ def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledMode
     else:
         state_z, pairs, dummies = [], reduction.pairs, reduction.dummies
     init_rows, init_text = _initial_rows(system, reduced, reduction, caus)
-    exprs, crossings, modes = extract_relations([e for _, e in assigned] + rows + init_rows)
-    assigned = [(a, e) for (a, _), e in zip(assigned, exprs[: len(assigned)])]
-    rows = exprs[len(assigned): len(assigned) + len(rows)]
-    init_rows = exprs[len(assigned) + len(rows):]
+    when_rows, targets, owners = _when_rows(reduced.whens, z_syms, caus, pairs)
+    sizes = [len(assigned), len(rows), len(init_rows), len(when_rows)]
+    exprs, crossings, modes = extract_relations([e for _, e in assigned] + rows + init_rows
+                                                + when_rows)
+    parts = np.split(np.array(exprs, dtype=object), np.cumsum(sizes)[:-1])
+    assigned = [(a, e) for (a, _), e in zip(assigned, parts[0])]
+    rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
     relation_ops = [type(r).__name__ for r in modes.values()]
     params = [p for p in reduced.parameters if _is_number(p.value)]
     psyms = [p.symbol for p in params]
@@ -104,7 +107,31 @@ def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledMode
     cm.outputs = _output_map(flat, aliases, {q: k for k, q in enumerate(syms)})
     cm.start = np.array([_start(system, v) for v in caus.z])
     cm.initial_conditions = InitialConditions(init_code, init_text)
+    if reduced.whens:
+        cm.set_whens(generate(when_rows, z_syms, psyms, len(modes), None, assigned),
+                     len(reduced.whens), targets, owners)
     return cm
+
+
+def _when_rows(whens, z_syms, caus, pairs):
+    """Rows: each when-condition as 1/0, then each reinit value (pre(x) is x here)."""
+    from ..components.component import ModelError
+    from ..components.symbols import pre
+    z_index = {s: k for k, s in enumerate(z_syms)}
+    states = set(range(caus.n_states)) if caus.causal else {a for a, _ in pairs}
+    conds, values, targets, owners = [], [], [], []
+    for w_i, w in enumerate(whens):
+        conds.append(sp.Piecewise((1, w.condition), (0, True)))
+        for act in w.actions:
+            k = z_index.get(act.variable)
+            if k is None or k not in states:
+                raise ModelError(f"reinit({act.variable.name}, ...) in {w.origin or '(model)'} "
+                                 f"({w.origin_class}): {act.variable.name} is not a state of "
+                                 "the model, so it cannot be re-initialized")
+            values.append(act.value.replace(lambda e: isinstance(e, pre), lambda e: e.args[0]))
+            targets.append(k)
+            owners.append(w_i)
+    return conds + values, targets, owners
 
 
 def solve_linear(residual, x):

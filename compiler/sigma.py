@@ -102,8 +102,8 @@ def _entries(sigma) -> tuple:
         val = np.array([sigma[k] for k in keys], dtype=float)
         n = int(max(i.max(initial=-1), j.max(initial=-1))) + 1
         return n, n, i, j, val
-    a = np.array([[-np.inf if x is None else x for x in row] for row in sigma], float)
-    a = a.reshape(len(a), -1)
+    rows = [[-np.inf if x is None else x for x in row] for row in sigma]
+    a = np.array(rows, float).reshape(len(rows), len(rows[0]) if rows else 0)
     i, j = np.nonzero(np.isfinite(a))
     return a.shape[0], a.shape[1], i, j, a[i, j]
 

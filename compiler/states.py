@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 from typing import Union
 
 from .blt import strongly_connected_components
-from .graph import ALWAYS, LINEAR_PARAM, UNASSIGNED, Structure
+from .graph import ALWAYS, LINEAR_PARAM, NONLINEAR, UNASSIGNED, Structure
 from .pantelides import PantelidesResult
 from .structure import StructurallySingular, _from_sentinel, _match, _to_sentinel
 
@@ -109,27 +109,34 @@ def _sort_key(s: Structure, v: int) -> tuple:
     return (s.state_priority[anti], -s.order(anti), -v)
 
 
-def _augment_col(c: int, cadj: dict, r2c: dict, c2r: dict, kmax: int) -> bool:
-    """Alternating path from column `c` to a free row, new edges of kind <= kmax."""
-    seen, frames = set(), [[c, 0]]
-    while frames:
-        fr = frames[-1]
-        col, i = fr
-        edges = cadj[col]
-        while i < len(edges) and (edges[i][1] > kmax or edges[i][0] in seen):
-            i += 1
-        if i == len(edges):
-            frames.pop()
-            continue
-        fr[1] = i + 1
-        r = edges[i][0]
-        seen.add(r)
-        if r not in r2c:
-            for f in frames:           # f[1]-1 indexes the edge used out of column f[0]
-                rr = cadj[f[0]][f[1] - 1][0]
-                r2c[rr], c2r[f[0]] = f[0], rr
-            return True
-        frames.append([r2c[r], 0])
+def _augment_col(c: int, cadj: dict, r2c: dict, c2r: dict, kmax: int,
+                 dead: set) -> bool:
+    """Alternating path from column `c` to a free row, new edges of kind <= kmax.
+
+    Breadth-first, so that a free row near `c` is found without walking long chains.
+    Rows reached by a failed search are added to `dead`: every alternating path into
+    them stays among them, so no later search (with the same edges) can use them, and
+    each row is explored by at most one failed search per edge set.
+    """
+    via, queue, qi = {c: None}, [c], 0   # column -> row by which it was reached
+    came_from = {}                       # row -> column it was reached from
+    while qi < len(queue):
+        col = queue[qi]
+        qi += 1
+        for r, kind in cadj[col]:
+            if kind > kmax or r in came_from or r in dead:
+                continue
+            came_from[r] = col
+            if r not in r2c:
+                while r is not None:     # flip: each column takes the row after it
+                    col = came_from[r]
+                    nxt = via[col]
+                    r2c[r], c2r[col] = col, r
+                    r = nxt
+                return True
+            queue.append(r2c[r])
+            via[r2c[r]] = r
+    dead.update(came_from)
     return False
 
 
@@ -146,16 +153,18 @@ def _select(s: Structure, rows: list, cols: list) -> dict:
     r2c, c2r = {}, {}
     order = sorted((c for c in cols if s.state_priority[s.diff_to_var[c]] < ALWAYS),
                    key=lambda c: _sort_key(s, c))
-    i = 0
+    i, dead_all = 0, set()      # rows that cannot reach a free row, whatever the edges
     while i < len(order) and len(r2c) < len(rowset):
         prio = s.state_priority[s.diff_to_var[order[i]]]
         j = i
         while j < len(order) and s.state_priority[s.diff_to_var[order[j]]] == prio:
             j += 1
-        for kmax in (LINEAR_PARAM, 3):     # globally valid edges first, then any
+        # globally valid edges first, then any; dead sets of the first pass become
+        # stale once the second pass re-routes through variable coefficients
+        for kmax, dead in ((LINEAR_PARAM, set(dead_all)), (NONLINEAR, dead_all)):
             for c in order[i:j]:
                 if c not in c2r and len(r2c) < len(rowset):
-                    _augment_col(c, cadj, r2c, c2r, kmax)
+                    _augment_col(c, cadj, r2c, c2r, kmax, dead)
         i = j
     return r2c
 

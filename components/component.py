@@ -26,7 +26,7 @@ from typing import Iterable
 import sympy as sp
 
 from .declarations import Parameter, Variable, ref
-from .symbols import Equation
+from .symbols import Equation, When
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError"]
 
@@ -252,7 +252,7 @@ def flatten_equation_list(items) -> list:
         except StopIteration:
             stack.pop()
             continue
-        if isinstance(item, (Equation, Connection)):
+        if isinstance(item, (Equation, Connection, When)):
             out.append(item)
         elif isinstance(item, (list, tuple)) or hasattr(item, "__next__"):
             stack.append(iter(item))

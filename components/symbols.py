@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "smooth_abs", "sympify_value"]
+__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "smooth_abs", "sympify_value",
+           "When", "when", "reinit", "pre"]
 
 time = sp.Symbol("time", real=True)
 
@@ -91,3 +92,57 @@ def sign(x):
 def smooth_abs(x):
     """|x| without an event (for expressions that are smooth enough where x = 0)."""
     return sp.Abs(sympify_value(x))
+
+
+class pre(sp.Function):
+    """pre(x): the value of x just before the event (inside when-clauses)."""
+
+    nargs = 1
+
+
+class Reinit:
+    """reinit(x, expr): at the event, the state x restarts from expr."""
+
+    __slots__ = ("variable", "value")
+
+    def __init__(self, variable, value):
+        self.variable = sympify_value(variable)
+        self.value = sympify_value(value)
+        if not isinstance(self.variable, sp.Symbol):
+            raise TypeError(f"reinit() takes a variable, got {variable!r}")
+
+    def __repr__(self):
+        return f"reinit({self.variable}, {self.value})"
+
+
+def reinit(variable, value) -> Reinit:
+    """Modelica's reinit: used inside ``when``."""
+    return Reinit(variable, value)
+
+
+class When:
+    """when condition: actions, firing when the condition becomes true (Modelica 8.3.5).
+
+    The condition is a relation (``self.h < 0``) or an ``sp.Or``/``sp.And`` of relations;
+    the actions are ``reinit(x, expr)``.  Expressions are evaluated with the values just
+    before the event (``pre(x)`` says so explicitly).
+    """
+
+    __slots__ = ("condition", "actions", "origin", "origin_class")
+
+    def __init__(self, condition, *actions):
+        self.condition = condition if isinstance(condition, sp.Basic) else sp.sympify(condition)
+        self.actions = list(actions)
+        for a in self.actions:
+            if not isinstance(a, Reinit):
+                raise TypeError(f"when() takes reinit(...) actions, got {a!r}")
+        self.origin = None
+        self.origin_class = None
+
+    def __repr__(self):
+        return f"when {self.condition}: {self.actions}"
+
+
+def when(condition, *actions) -> When:
+    """``ac.when(self.h < 0, ac.reinit(self.v, -e*ac.pre(self.v)))``."""
+    return When(condition, *actions)

@@ -47,6 +47,10 @@ What a problem provides (numbered, so integrators can cite it)
    :class:`InitializationFailed`.
 10. ``equation_names`` (optional): a label per residual, used in messages about
    singular iteration matrices and failed initialization.
+11. ``after_step(t, y, yp) -> bool`` (optional): called after every accepted step
+   without an event; returning True means the problem changed its formulation (e.g.
+   another choice of states), and the driver re-initializes and restarts the BDF
+   there as after an event.
 
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton

@@ -174,6 +174,7 @@ class _Run:
         if hook is not None and hook(s.t, s.y, s.yp):
             y, yp = self._reinit(s.t, s.y, s.yp)
             s.restart(s.t, y, yp, t_stop=s.t_stop)
+            self._arm_roots(s.t, y, yp)
 
     # ------------------------------------------------------------------ output
     def _emit_point(self, t, y, yp) -> None:

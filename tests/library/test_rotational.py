@@ -149,15 +149,17 @@ def _deadzone_energy(res, K=100.0, delta=0.05):
 
 
 def test_elastic_gear_with_deadzone_3_119():
+    # 22 contacts at sqrt(K/J_m) = 100 rad/s: the energy error of BDF accumulates over
+    # them and shrinks with rtol (5e-7, 1e-8, 4e-10 at rtol 1e-8, 1e-10, 1e-12)
     t = np.linspace(0, 0.5, 2001)
-    res = ac.simulate(GearWithDeadzone(), t_end=0.5, rtol=1e-10, t_eval=t)
+    res = ac.simulate(GearWithDeadzone(), t_end=0.5, rtol=1e-12, t_eval=t)
     phi, tau = res["gear.phi"], res["gear.tau"]
     law = np.where(phi < -0.05, 100.0 * (phi + 0.05), np.where(phi > 0.05, 100.0 * (phi - 0.05), 0))
     assert np.max(np.abs(tau - law)) < 1e-9
     assert len(res.events) >= 4                      # contact entered and left, both sides
     assert np.min(phi) < -0.05 < 0.05 < np.max(phi)
     energy = _deadzone_energy(res)
-    assert np.max(np.abs(energy - energy[0])) < 1e-7 * energy[0]
-    # momentum about the gear: J_m w_m + n J_L w_L changes by nothing (no external torque)
-    momentum = 0.01 * res["motor.w"] + 5.0 * 0.5 * res["load.w"] / 5.0**2 * 5.0
+    assert np.max(np.abs(energy - energy[0])) < 1e-8 * energy[0]
+    # no external torque: J_m w_m + J_L w_L / n is conserved (J_m w_m' = -tau, J_L w_L' = n tau)
+    momentum = 0.01 * res["motor.w"] + 0.5 * res["load.w"] / 5.0
     assert np.max(np.abs(momentum - momentum[0])) < 1e-7 * abs(momentum[0])

@@ -139,3 +139,18 @@ def test_step_counts_close_to_ida():
         print(f"\n  rtol {rtol:.0e}: steps ours {ours.stats.steps} IDA {ida_steps}")
         assert ours.stats.steps <= 1.5 * ida_steps
         np.testing.assert_allclose(ours.y[-1], ida.y[-1], rtol=max(50 * rtol, 1e-5), atol=1e-12)
+
+
+def test_max_step_first_step_and_max_steps_are_honoured():
+    from acausal.solvers import SimulationError
+
+    p = DampedOscillator()
+    out = integrate(p, (0.0, 2.0), [1.0, 0.0], rtol=1e-4, atol=1e-7, max_step=0.01,
+                    first_step=1e-3)
+    h = np.diff(out.t)
+    assert h.max() <= 0.01 * (1 + 1e-12) and h[0] == pytest.approx(1e-3)
+    assert out.t[-1] == 2.0
+    with pytest.raises(SimulationError) as info:
+        integrate(p, (0.0, 10.0), [1.0, 0.0], max_steps=50)
+    assert "maximum number of steps" in info.value.reason
+    assert info.value.partial.t.size == 51 and info.value.partial.t[-1] < 10.0

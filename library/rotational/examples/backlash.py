@@ -16,7 +16,7 @@ __all__ = ["GearWithDeadzone"]
 class GearWithDeadzone(ac.Component):
     """J_m = 0.01, J_L = 0.5 kg m^2, n = 5 (n_b = 0.2), K = 100 N m/rad, delta = 0.05 rad."""
 
-    stop_time = 2.0
+    stop_time = 0.5
     motor = Inertia(J=0.01, phi={"start": 0.0, "fixed": True}, w={"start": 5.0, "fixed": True})
     gear = ElasticGearWithDeadzone(n=5.0, K=100.0, delta=0.05)
     load = Inertia(J=0.5, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})

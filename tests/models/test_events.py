@@ -1,0 +1,80 @@
+"""Events in models: when/reinit, if-expressions, chattering, steady-state initialization."""
+import numpy as np
+import pytest
+
+import acausal as ac
+from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
+
+G, E = 9.81, 0.8
+
+
+class BouncingBall(ac.Component):
+    """h'' = -g; when h < 0: v := -e pre(v)."""
+
+    g = ac.Parameter(G)
+    e = ac.Parameter(E)
+    h = ac.Variable(start=1.0, fixed=True, unit="m")
+    v = ac.Variable(start=0.0, fixed=True, unit="m/s")
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.h), self.v), ac.Eq(ac.der(self.v), -self.g),
+                ac.when(self.h < 0, ac.reinit(self.v, -self.e * ac.pre(self.v)))]
+
+
+def _bounce_times(n, h0=1.0):
+    """Closed form: t1 = sqrt(2 h0 / g), then flights of 2 e^k v1 / g."""
+    t1 = np.sqrt(2 * h0 / G)
+    v1 = G * t1
+    return t1 + np.concatenate([[0.0], np.cumsum(2 * E ** np.arange(1, n) * v1 / G)])
+
+
+def test_bouncing_ball_bounce_times_match_closed_form():
+    res = ac.simulate(BouncingBall(), t_end=3.0, rtol=1e-8, atol=1e-10)
+    exact = _bounce_times(6)
+    assert len(res.events) == 6
+    assert np.max(np.abs(np.array(res.events) - exact)) < 1e-8
+    # between bounces the height stays non-negative (to the location tolerance)
+    assert res["h"].min() > -1e-8
+
+
+def test_bouncing_ball_chattering_is_detected_and_partial_result_returned():
+    accumulation = _bounce_times(1)[0] * (1 + 2 * E / (1 - E))
+    with pytest.warns(RuntimeWarning, match="chattering"):
+        res = ac.simulate(BouncingBall(), t_end=10.0, rtol=1e-8, atol=1e-10)
+    assert not res.success and "accumulate" in res.message
+    assert f"{accumulation:.3f}"[:4] in res.message
+    assert accumulation - 0.5 < res.t[-1] < accumulation
+
+
+def test_reinit_of_a_non_state_is_an_error_naming_it():
+    class Bad(ac.Component):
+        x = ac.Variable(start=0.0, fixed=True)
+        y = ac.Variable()
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.x), 1.0), ac.Eq(self.y, 2 * self.x),
+                    ac.when(self.x > 1, ac.reinit(self.y, 0.0))]
+
+    with pytest.raises(ac.ModelError, match=r"reinit\(y.*not a state"):
+        ac.compile(Bad())
+
+
+class DelayedStep(ac.Component):
+    """RC circuit switched on at t = 0.05 s (an if-expression in time)."""
+
+    src = StepVoltage(V=2.0, startTime=0.05)
+    R1 = Resistor(R=1e3)
+    C1 = Capacitor(C=1e-5)
+    gnd = Ground()
+
+    def equations(self):
+        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
+                ac.connect(self.C1.n, self.src.n, self.gnd.p)]
+
+
+def test_step_source_event_is_located_and_response_exact():
+    t = np.linspace(0, 0.1, 201)
+    res = ac.simulate(DelayedStep(), t_end=0.1, rtol=1e-8, t_eval=t)
+    assert any(abs(te - 0.05) < 1e-10 for te in res.events)
+    exact = np.where(t >= 0.05, 2.0 * (1 - np.exp(-(t - 0.05) / 1e-2)), 0.0)
+    assert np.max(np.abs(res["C1.v"] - exact)) < 1e-5 * 2.0
