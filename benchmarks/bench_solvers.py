@@ -5,7 +5,7 @@ Run:  python benchmarks/bench_solvers.py [--rtol 1e-4 1e-6 1e-8]
 Problems (same tolerances for every solver, analytic Jacobians everywhere):
 
 * Van der Pol, mu = 1000, y1' = y2, y2' = mu((1 - y1^2) y2 - y1) on [0, 3] (two periods,
-  four fast jumps);
+  four fast jumps), and the classic form y2' = mu (1 - y1^2) y2 - y1 on [0, 3000];
 * Robertson's kinetics on [0, 4e5]: a DAE (conservation law as the third equation) for
   acausal and IDA, the ODE form for scipy (which has no DAE solver);
 * a damped oscillator on [0, 10].
@@ -28,7 +28,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 
 from acausal.solvers import integrate  # noqa: E402
 from acausal.tests.solvers.problems import (DampedOscillator, Robertson,  # noqa: E402
-                                            VanDerPol)
+                                            VanDerPol, VanDerPolClassic)
 
 try:
     from sksundae.ida import IDA
@@ -38,12 +38,15 @@ except ImportError:  # optional
 
 def _cases():
     vdp = VanDerPol(1000.0)
+    classic = VanDerPolClassic(1000.0)
     rob = Robertson()
     osc = DampedOscillator()
     rob_atol = np.array([1e-8, 1e-14, 1e-8])
     return [
         ("Van der Pol mu=1000 [0,3]", vdp, (0.0, 3.0), [2.0, 0.0], [0.0, -2000.0],
          1e-8, vdp.ode, vdp.ode_jac, None),
+        ("Van der Pol classic mu=1000 [0,3000]", classic, (0.0, 3000.0), [2.0, 0.0],
+         [0.0, -2.0], 1e-8, classic.ode, classic.ode_jac, None),
         ("Robertson DAE [0,4e5]", rob, (0.0, 4e5), [1.0, 0.0, 0.0], [-0.04, 0.04, 0.0],
          rob_atol, rob.ode, rob.ode_jac, [2]),
         ("damped oscillator [0,10]", osc, (0.0, 10.0), [1.0, 0.0], [0.0, -4.0],

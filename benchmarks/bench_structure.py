@@ -9,7 +9,7 @@ Models (built directly as Structures, no symbolic layer):
 
 For each N the script times Pantelides, dummy-derivative state selection, the index-1
 matching and the BLT sort, and prints ``t / (N log N)``, which stays roughly constant
-when the passes scale as N log N.
+when the passes scale as N log N; then, separately, the tearing of every block.
 
 Usage: ``python benchmarks/bench_structure.py [N ...]``.
 """
@@ -25,6 +25,7 @@ from acausal.compiler.graph import LINEAR_VAR as V, NONLINEAR as N
 from acausal.compiler.pantelides import pantelides
 from acausal.compiler.states import index1_matching, select_states
 from acausal.compiler.structure import make_structure
+from acausal.compiler.tearing import tear
 
 __all__ = ["pendulum_chain", "gear_chain", "run"]
 
@@ -68,26 +69,33 @@ def gear_chain(n: int):
     return make_structure(eqs, derivatives=ders)
 
 
-def run(build, n: int) -> tuple:
-    """Time the passes on ``build(n)``; return (seconds, number of states, blocks)."""
+def run(build, n: int) -> dict:
+    """Time the passes on ``build(n)``."""
     s = build(n)
     t0 = time.perf_counter()
     p = pantelides(s)
     sel = select_states(p)
     _, eq_to_var = index1_matching(p, sel)
     blocks = blt(p.structure, eq_to_var)
-    return time.perf_counter() - t0, len(sel.states), len(blocks)
+    t1 = time.perf_counter()
+    tears = [tear(p.structure, b.eqs, b.vars) for b in blocks if len(b.eqs) > 1]
+    t2 = time.perf_counter()
+    return {"eqs": s.n_eqs, "time": t1 - t0, "states": len(sel.states),
+            "blocks": len(blocks), "largest": max(len(b.eqs) for b in blocks),
+            "tear_time": t2 - t1, "iteration_vars": sum(len(t.iteration_vars) for t in tears)}
 
 
 def main(sizes: list) -> None:
-    print(f"{'model':9s} {'N':>6s} {'eqs':>7s} {'time [s]':>9s} {'states':>7s} "
-          f"{'blocks':>7s} {'t/(N log N) [us]':>17s}")
+    print(f"{'model':9s} {'N':>6s} {'eqs':>7s} {'time [s]':>9s} {'t/(N log N) [us]':>17s} "
+          f"{'states':>7s} {'blocks':>7s} {'largest':>8s} {'tearing [s]':>12s} "
+          f"{'iter vars':>10s}")
     for name, build in (("pendulum", pendulum_chain), ("gears", gear_chain)):
         for n in sizes:
-            t, states, blocks = run(build, n)
-            eqs = build(n).n_eqs
-            print(f"{name:9s} {n:6d} {eqs:7d} {t:9.3f} {states:7d} {blocks:7d} "
-                  f"{1e6 * t / (n * math.log(n)):17.2f}")
+            r = run(build, n)
+            print(f"{name:9s} {n:6d} {r['eqs']:7d} {r['time']:9.3f} "
+                  f"{1e6 * r['time'] / (n * math.log(n)):17.2f} {r['states']:7d} "
+                  f"{r['blocks']:7d} {r['largest']:8d} {r['tear_time']:12.3f} "
+                  f"{r['iteration_vars']:10d}")
 
 
 if __name__ == "__main__":

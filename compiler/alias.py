@@ -49,10 +49,17 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     removed = []
 
     def find(s):
-        sign = 1
+        path, sign = [], 1
         while s in parent:
+            path.append(s)
             k, s = parent[s]
             sign *= k
+        # path compression (with signs): every visited node now points at the root
+        acc = sign
+        for q in path:
+            k, _ = parent[q]
+            parent[q] = (acc, s)
+            acc *= k
         return sign, s
 
     def rank(s):
@@ -60,21 +67,36 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         return (-STATE_SELECT[a.state_select], s not in differentiated,
                 not a.fixed, order[s])
 
-    pending = list(flat.equations)
-    while True:
-        # Substituting aliases can turn a kept equation into a trivial one (a node's
-        # current sum that collapses to gnd.p.i = 0), so repeat until nothing changes.
-        n_removed = len(removed)
-        kept = []
-        for eq in pending:
-            if _classify(eq, info, find, rank, parent, constants):
-                removed.append(eq)
-            else:
-                kept.append(eq)
-        if len(removed) == n_removed:
-            break
-        subs = _substitutions(flat, find, constants)
-        pending = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in kept]
+    # Removing an alias can make a neighbouring equation trivial (a node's current sum
+    # that collapses to gnd.p.i = 0), so equations sharing a variable with a removed one
+    # are substituted and classified again: a worklist, linear in the incidence.
+    eqs = list(flat.equations)
+    alive = [True] * len(eqs)
+    by_symbol = {}
+    for i, eq in enumerate(eqs):
+        for q in eq.residual.free_symbols:
+            by_symbol.setdefault(q, set()).add(i)
+    queue = set(range(len(eqs)))
+    while queue:
+        touched = set()
+        for i in sorted(queue):
+            if alive[i] and _classify(eqs[i], info, find, rank, parent, constants):
+                alive[i] = False
+                removed.append(eqs[i])
+                for q in eqs[i].residual.free_symbols:
+                    touched |= by_symbol.get(q, set())
+        queue = set()
+        for j in touched:
+            if not alive[j]:
+                continue
+            r = eqs[j].residual
+            local = _substitutions_for(r.free_symbols, info, find, constants)
+            if local:
+                eqs[j] = replace(eqs[j], residual=r.xreplace(local))
+                for q in eqs[j].residual.free_symbols:
+                    by_symbol.setdefault(q, set()).add(j)
+                queue.add(j)
+    kept = [eq for eq, a in zip(eqs, alive) if a]
 
     table = AliasTable(equations_before=len(flat.equations), removed=removed)
     subs = _substitutions(flat, find, constants)
@@ -85,6 +107,19 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         elif root != v.symbol:
             table.aliases[v.name] = (sign, root.name)
     return _rebuild(flat, kept, subs, table, find, constants), table
+
+
+def _substitutions_for(symbols, info, find, constants) -> dict:
+    out = {}
+    for q in symbols:
+        if q not in info:
+            continue
+        sign, root = find(q)
+        if root in constants:
+            out[q] = sign * constants[root]
+        elif root != q:
+            out[q] = sign * root
+    return out
 
 
 def _substitutions(flat, find, constants) -> dict:

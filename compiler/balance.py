@@ -53,8 +53,7 @@ def _with_components(system, s: Structure) -> Structure:
     """A copy of s whose variable names also say which component declares them."""
     from dataclasses import replace
     names = []
-    for k, sym in enumerate(system.symbols):
-        info = system.base_info(k)
+    for sym, info in zip(system.symbols, system.base_infos()):
         hint = _port_hint(info)
         names.append(f"{sym.name} [{info.where}]" + (f" -- {hint}" if hint else ""))
     return replace(s, var_names=names)

@@ -24,6 +24,8 @@ import numpy as np
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
+from .derivative import partial as _partial
+
 __all__ = ["GeneratedCode", "generate", "extract_relations"]
 
 
@@ -140,8 +142,8 @@ def _gradients(assigned, n_z):
     lines = []
     for k, (a, e) in enumerate(assigned):
         g = {}
-        for b in sorted(e.free_symbols & set(grads), key=lambda q: q.name):
-            partial = sp.diff(e, b)
+        for b in sorted((q for q in e.free_symbols if q in grads), key=lambda q: q.name):
+            partial = _partial(e, b)
             if partial == 0:
                 continue
             for j, gb in grads[b].items():
@@ -159,8 +161,8 @@ def _jacobian_entries(res, grads):
     rows, cols, jac = [], [], []
     for i, r in enumerate(res):
         g = {}
-        for b in sorted(r.free_symbols & set(grads), key=lambda q: q.name):
-            partial = sp.diff(r, b)
+        for b in sorted((q for q in r.free_symbols if q in grads), key=lambda q: q.name):
+            partial = _partial(r, b)
             for j, gb in grads[b].items():
                 g[j] = g.get(j, sp.Integer(0)) + partial * gb
         for j in sorted(g):

@@ -50,7 +50,7 @@ class FlatParameter:
 @dataclass
 class FlatEquation:
     residual: sp.Expr
-    text: str
+    source: object            # the text, or the Equation it is printed from on demand
     component: str
     component_class: str
     kind: str = "equation"       # equation | connect | unconnected | initial
@@ -59,6 +59,13 @@ class FlatEquation:
     @property
     def where(self) -> str:
         return f"{self.component or '(model)'} ({self.component_class})"
+
+    @property
+    def text(self) -> str:
+        """The equation as written (printed lazily: printing is slow on large models)."""
+        if not isinstance(self.source, str):
+            self.source = f"{sp.sstr(self.source.lhs)} = {sp.sstr(self.source.rhs)}"
+        return self.source
 
     def describe(self) -> str:
         return f"{self.text}   [{self.kind} in {self.where}]"
@@ -155,8 +162,7 @@ def _collect_declarations(comp: Component, flat: FlatModel) -> None:
 
 def _flat_equation(eq: Equation, comp: Component, kind: str) -> FlatEquation:
     eq.origin, eq.origin_class = comp.path, type(comp).__name__
-    text = f"{sp.sstr(eq.lhs)} = {sp.sstr(eq.rhs)}"
-    return FlatEquation(eq.residual, text, comp.path, type(comp).__name__, kind, eq.label)
+    return FlatEquation(eq.residual, eq, comp.path, type(comp).__name__, kind, eq.label)
 
 
 # -- connections -----------------------------------------------------------------------
@@ -191,7 +197,7 @@ def _connection_equations(connections: list, nodes: list) -> list:
     for conn in connections:
         keys = []
         for p in conn.ports:
-            role = "outside" if p in conn.owner.children().values() else "inside"
+            role = "outside" if getattr(p, "_parent", None) is conn.owner else "inside"
             key = (id(p), role, order[id(p)])
             ports[key] = p
             keys.append(key)

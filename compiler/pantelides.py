@@ -67,9 +67,15 @@ def predict_derivative(s: Structure, e: int) -> tuple:
         Sorted variables of d/dt(e).
     coeff : dict
         ``{var: kind}`` for those variables.
+
+    Raises
+    ------
+    ValueError
+        If der(v) does not exist for some variable v of e.
     """
     out = {}
-    for v, k in s.coeff[e].items():
+    for v in s.graph[e]:
+        k = s.coeff[e].get(v, NONLINEAR)
         dv = s.var_to_diff[v]
         if dv is UNASSIGNED:
             raise ValueError(f"der({s.var_names[v]}) does not exist yet")
@@ -202,11 +208,14 @@ def pantelides(s: Structure, differentiate: Optional[Callable] = None,
     if max_rounds is None:
         max_rounds = s.n_eqs + max((s.order(v) for v in range(s.n_vars)), default=0) + 2
     stamp = 0
-    for k in range(s.n_eqs):                       # Pantelides step 3: each equation
+    # Invariants: only highest derivatives (v2d[v] < 0) are matched; a matched
+    # equation is the top of its differentiation chain; a colored variable is matched
+    # to a colored equation, so step (iii) below always finds d/dt of its equation.
+    for k in range(s.n_eqs):                       # main loop: each input equation
         eq, rounds = k, 0
-        while True:
-            stamp += 1
-            found, ceqs, cvars = _augment(w, eq, stamp)          # step 3b-3d
+        while True:                                # repeat ... until PATHFOUND
+            stamp += 1                             # "designate all nodes uncolored"
+            found, ceqs, cvars = _augment(w, eq, stamp)          # AUGMENTPATH
             if found:
                 break
             rounds += 1
@@ -217,13 +226,13 @@ def pantelides(s: Structure, differentiate: Optional[Callable] = None,
                     [w.s.var_names[v] for v in cvars])
             cvars.sort()
             ceqs.sort()
-            for v in cvars:                            # step 3e-i: new derivative vars
+            for v in cvars:                 # (i) every colored var gets der(var)
                 w.add_var_derivative(v)
-            for e in ceqs:                             # step 3e-ii: differentiate eqs
+            for e in ceqs:                  # (ii) every colored equation is differentiated
                 w.add_eq_derivative(e, differentiate)
-            for v in cvars:                            # step 3e-iii: carry the matching
+            for v in cvars:                 # (iii) der(var) matched to d/dt(its equation)
                 w.var_to_eq[w.v2d[v]] = _eq_index(w.s.eq_to_diff[w.var_to_eq[v]])
-            eq = w.s.eq_to_diff[eq]                    # step 3e-iv: retry with d/dt(eq)
+            eq = w.s.eq_to_diff[eq]         # (iv) continue from d/dt(eq)
     return _result(w, s.n_eqs)
 
 

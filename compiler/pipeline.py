@@ -17,6 +17,7 @@ from ..components.component import Component
 from .alias import eliminate_aliases
 from .balance import check_balance
 from .codegen import extract_relations, generate
+from .derivative import partial
 from .graph import UNASSIGNED
 from .flatten import flatten
 from .initial import InitialConditions
@@ -136,9 +137,8 @@ def _when_rows(whens, z_syms, caus, pairs):
 
 def solve_linear(residual, x):
     """x from residual(x) = 0 when x enters linearly:  x = -r(x=0) / (dr/dx)."""
-    c = sp.diff(residual, x)
-    return sp.simplify(-residual.xreplace({x: 0}) / c) if not c.is_number \
-        else -residual.xreplace({x: 0}) / c
+    c = partial(residual, x)
+    return -residual.xreplace({x: 0}) / c
 
 
 def _dynamic(reduction) -> DynamicStateSelection:

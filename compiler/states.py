@@ -47,9 +47,24 @@ class StateSet:
 
     The runtime picks `n_dummies` of `candidates` such that the Jacobian of `equations`
     with respect to the picked candidates is nonsingular (e.g. by pivoting); the others
-    stay true derivatives.  `dummies` is the static default.  Sets are listed level by
-    level (level 1 = highest derivatives); MS93 step 3 requires the candidates picked at
-    level k+1 to be antiderivatives of dummies picked at level k.
+    stay true derivatives, i.e. their antiderivatives (``diff_to_var``) are states.
+    Sets are listed level by level (level 1 = highest derivatives); MS93 step 3
+    requires the candidates picked at level k+1 to be antiderivatives of dummies
+    picked at level k.
+
+    Attributes
+    ----------
+    level : int
+        1 for the highest differentiated equations, 2 one level down, ...
+    equations : list of int
+        Rows of the block (a connected component of the level's incidence).
+    candidates : list of int
+        Derivative variables that may be dummies (state_priority ALWAYS excluded).
+    n_dummies : int
+        ``len(equations)``: how many candidates are dummies at any time.
+    dummies : list of int
+        The static choice (also in ``StateSelection.dummies``), valid where the
+        Jacobian is nonsingular.
     """
 
     level: int
@@ -145,9 +160,9 @@ def _select(s: Structure, rows: list, cols: list) -> dict:
     rowset = set(rows)
     cadj = {c: [] for c in cols}
     for e in rows:
-        for v, k in s.coeff[e].items():
+        for v in s.graph[e]:
             if v in cadj:
-                cadj[v].append((e, k))
+                cadj[v].append((e, s.coeff[e].get(v, NONLINEAR)))
     for c in cols:
         cadj[c].sort()
     r2c, c2r = {}, {}
@@ -202,14 +217,16 @@ def _locally_valid(s: Structure, rows: list, r2c: dict) -> bool:
         for i in c:
             comp[i] = k
     for e in rows:
-        for v, kind in s.coeff[e].items():
-            if v in owner and kind > LINEAR_PARAM and comp[owner[v]] == comp[idx[e]]:
+        for v in s.graph[e]:
+            if (v in owner and s.coeff[e].get(v, NONLINEAR) > LINEAR_PARAM
+                    and comp[owner[v]] == comp[idx[e]]):
                 return True
     return False
 
 
 def _state_sets(s: Structure, level: int, rows: list, cols: list, r2c: dict) -> list:
     out = []
+    cols = [c for c in cols if s.state_priority[s.diff_to_var[c]] < ALWAYS]
     for crows, ccols in _components(s, rows, cols):
         if len(ccols) > len(crows) and _locally_valid(s, crows, r2c):
             out.append(StateSet(level, crows, ccols, len(crows),

@@ -1,8 +1,9 @@
 """Maximum matching, Dulmage-Mendelsohn decomposition and structural diagnosis.
 
 The matching is Hopcroft & Karp, "An n^(5/2) algorithm for maximum matchings in
-bipartite graphs", SIAM J. Comput. 2(4), 1973, started from a greedy matching; it runs
-in O(E sqrt(V)) and, on the sparse graphs of physical models, in a few phases.  The
+bipartite graphs", SIAM J. Comput. 2(4), 1973, started from a greedy matching (with
+augmenting paths of length 3); it runs in O(E sqrt(V)) and, on the sparse graphs of
+physical models, in a few phases.  The
 decomposition follows Dulmage & Mendelsohn, "Coverings of bipartite graphs", Canad. J.
 Math. 10, 1958: the over-determined part is everything reachable by alternating paths
 from an unmatched equation, the under-determined part everything reachable from an
@@ -71,18 +72,36 @@ class UnderdeterminedModel(StructurallySingular):
 
 # --------------------------------------------------------------------------- matching
 def _greedy(adj: list, l2r: list, r2l: list) -> None:
-    # A cheap start: on model graphs it already matches most vertices, leaving
-    # Hopcroft-Karp only a few short phases.
+    # A cheap start: take a free neighbour, else free one by moving its owner to
+    # another free neighbour (augmenting paths of length 3).  On model graphs this
+    # leaves Hopcroft-Karp only a few short phases.
     for u, vs in enumerate(adj):
-        if l2r[u] < 0:
-            for v in vs:
-                if r2l[v] < 0:
-                    l2r[u], r2l[v] = v, u
-                    break
+        if l2r[u] >= 0:
+            continue
+        for v in vs:
+            if r2l[v] < 0:
+                l2r[u], r2l[v] = v, u
+                break
+        else:
+            _short_augment(u, adj, l2r, r2l)
+
+
+def _short_augment(u: int, adj: list, l2r: list, r2l: list) -> None:
+    for v in adj[u]:
+        w = r2l[v]
+        for y in adj[w]:
+            if r2l[y] < 0:
+                l2r[w], r2l[y] = y, w
+                l2r[u], r2l[v] = v, u
+                return
 
 
 def _bfs_layers(adj: list, l2r: list, r2l: list) -> Optional[list]:
-    """Layer the left vertices by alternating distance from the free ones (HK step 1)."""
+    """Layer the left vertices by alternating distance from the free ones (HK step 1).
+
+    The search is not cut at the first layer with a free right vertex: on model
+    graphs the longer paths it admits save more phases than they cost.
+    """
     inf = len(adj) + 1
     dist = [inf] * len(adj)
     queue = [u for u in range(len(adj)) if l2r[u] < 0]

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from ..components.symbols import time
+from .derivative import partial
 from .flatten import derivative_symbol
 from .graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, STATE_SELECT,
                     UNASSIGNED, Structure)
@@ -83,13 +84,21 @@ class SymbolicSystem:
     def base_info(self, k: int):
         """The FlatVariable a (possibly derivative) variable k belongs to."""
         s = self.symbols[k]
-        while s not in self.var_info:
-            s = self._antiderivative[s]
+        if s not in self.var_info:
+            anti = {d: x for x, d in self.derivatives.items()}   # one dict per lookup chain
+            while s not in self.var_info:
+                s = anti[s]
         return self.var_info[s]
 
-    @property
-    def _antiderivative(self) -> dict:
-        return {d: x for x, d in self.derivatives.items()}
+    def base_infos(self) -> list:
+        """base_info for every variable, in one pass (linear in the number of variables)."""
+        anti = {d: x for x, d in self.derivatives.items()}
+        out = []
+        for s in self.symbols:
+            while s not in self.var_info:
+                s = anti[s]
+            out.append(self.var_info[s])
+        return out
 
     # -- Structure ---------------------------------------------------------------------
     def incidence(self, r: sp.Expr) -> tuple[list, dict]:
@@ -109,8 +118,7 @@ class SymbolicSystem:
             if x in self.index and d in self.index:
                 var_to_diff[self.index[x]] = self.index[d]
         names = [s.name for s in self.symbols]
-        priority = [STATE_SELECT[self.base_info(k).attrs.state_select]
-                    for k in range(len(self.symbols))]
+        priority = [STATE_SELECT[info.attrs.state_select] for info in self.base_infos()]
         return Structure(graph=graph, var_to_diff=var_to_diff,
                          eq_to_diff=[UNASSIGNED] * len(graph), coeff=coeff,
                          var_names=names, eq_names=[e.name(self) for e in self.equations],
@@ -127,8 +135,8 @@ class SymbolicSystem:
         eq = self.equations[e]
         r = eq.residual
         dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
-        for sym in sorted((r.free_symbols & set(self.index)), key=lambda q: self.index[q]):
-            dr += sp.diff(r, sym) * derivative_symbol(sym, self.derivatives)
+        for sym in sorted((q for q in r.free_symbols if q in self.index), key=lambda q: self.index[q]):
+            dr += partial(r, sym) * derivative_symbol(sym, self.derivatives)
             self._add_symbol(self.derivatives[sym])
         self.equations.append(SymbolicEquation(dr, f"d/dt({eq.text})", eq.component,
                                                eq.component_class, eq.kind,
@@ -137,21 +145,15 @@ class SymbolicSystem:
         return self.incidence(dr)
 
     def _sync_variables(self, s: Structure) -> None:
-        """Make symbol indices follow the Structure's variable numbering."""
+        """Mirror the derivative variables Pantelides created (indices must agree)."""
         for k in range(len(self.symbols), s.n_vars):
-            base = s.diff_to_var[k]
-            parent = self.symbols[base]
+            parent = self.symbols[s.diff_to_var[k]]
             self._add_symbol(derivative_symbol(parent, self.derivatives))
-        for k, sym in enumerate(self.symbols):
-            if k < s.n_vars and s.var_to_diff[k] is not UNASSIGNED:
-                d = self.symbols[s.var_to_diff[k]] if s.var_to_diff[k] < len(self.symbols) else None
-                if d is not None:
-                    self.derivatives[sym] = d
 
 
 def coefficient_kind(r: sp.Expr, s: sp.Symbol, index: dict, parameters: set) -> int:
     """How symbol s enters residual r (graph.LINEAR_CONST ... NONLINEAR)."""
-    c = sp.diff(r, s)
+    c = partial(r, s)
     if c.has(s):
         return NONLINEAR
     if c.is_number:

@@ -60,6 +60,10 @@ class _State:
         self.done = set()                 # equations assigned or residual
         self.heap = [e for e in sorted(eqs) if self.cnt[e] == 1]
         self.inner, self.residuals, self.tears = [], [], []
+        # candidate tearing variables: lazy heap of (-enables, -occurs, v); a var's
+        # score changes only when an equation containing it changes, so only those
+        # are re-scored ("dirty") before the next choice
+        self.dirty, self.scores = set(vars), []
 
     def last_unknown(self, e: int) -> int:
         return next(v for v in self.uvars[e] if v in self.unknown)
@@ -69,6 +73,7 @@ class _State:
         for e in self.var_eqs[v]:
             if e in self.done:
                 continue
+            self.dirty.update(self.uvars[e])
             self.cnt[e] -= 1
             if self.cnt[e] == 1:
                 heapq.heappush(self.heap, e)
@@ -84,26 +89,32 @@ class _State:
                 continue
             v = self.last_unknown(e)
             if self.ok(e, v):
+                self.dirty.update(self.uvars[e])
                 self.done.add(e)
                 self.inner.append((e, v))
                 self.make_known(v)
 
+    def score(self, v: int) -> tuple:
+        enables = occurs = 0
+        for e in self.var_eqs[v]:
+            if e in self.done:
+                continue
+            occurs += 1
+            if self.cnt[e] == 2:
+                w = next(u for u in self.uvars[e] if u in self.unknown and u != v)
+                enables += self.ok(e, w)
+        return (-enables, -occurs, v)
+
     def pick_tear(self) -> int:
         """Step 2: the unknown whose guess enables the most assignments."""
-        best, best_key = None, None
-        for v in sorted(self.unknown):
-            enables = occurs = 0
-            for e in self.var_eqs[v]:
-                if e in self.done:
-                    continue
-                occurs += 1
-                if self.cnt[e] == 2:
-                    w = next(u for u in self.uvars[e] if u in self.unknown and u != v)
-                    enables += self.ok(e, w)
-            key = (enables, occurs)
-            if best_key is None or key > best_key:
-                best, best_key = v, key
-        return best
+        for v in sorted(self.dirty):
+            if v in self.unknown:
+                heapq.heappush(self.scores, self.score(v))
+        self.dirty.clear()
+        while True:
+            key = heapq.heappop(self.scores)
+            if key[2] in self.unknown and key == self.score(key[2]):
+                return key[2]
 
 
 def tear(s: Structure, eqs: Sequence[int], vars: Sequence[int],

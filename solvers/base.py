@@ -24,7 +24,9 @@ What a problem provides (numbered, so integrators can cite it)
    ``handle_event(t, y, yp, crossed) -> EventAction`` (``crossed`` is a bool mask of
    the functions that changed sign; the problem updates its discrete state, may reinit
    y, and says whether to stop).  ``time_events`` lists known times of discontinuity
-   (steps, pulses) where the integrator must stop and restart; there
+   (steps, pulses) where the integrator must stop and restart; for unbounded
+   sequences (periodic pulses, samplers) a problem may instead define
+   ``next_time_event(t) -> float | None``, the first such time after ``t``.  There
    ``handle_event`` is called with ``crossed`` all False, so that relations on time
    can be kept frozen like the others and switched there.  After any event the
    driver re-initializes the algebraic part of y and y' (differential y as left by
@@ -42,6 +44,7 @@ What a problem provides (numbered, so integrators can cite it)
      minimum-norm steps from y0) and accepted only if all residuals vanish.
    * ``init_jacobian(t, y, yp) -> (dG/dy, dG/dyp)`` (optional; two (m, n) matrices,
      dense or sparse); without it G is differenced.
+   * ``init_equation_names`` (optional): labels of the m initial equations.
 
    ``y0``/``yp0`` given to the integrator are the start guesses.  Failure raises
    :class:`InitializationFailed`.
@@ -54,11 +57,13 @@ What a problem provides (numbered, so integrators can cite it)
 
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
-(convergence) failures, and the orders used.
+(convergence) failures, events, the steps taken at each order, and which LU
+(dense or sparse) was used.
 
 What a solver returns (``SolverOutput``): accepted times ``t``, values ``y`` and
 derivatives ``yp`` (rows = time), ``success``, ``message``, ``stats``, and the event
-times.  A failing run returns what it computed up to the failure, with the reason.
+times.  A run that fails raises :class:`SimulationError` whose ``partial`` is the
+``SolverOutput`` computed up to the failure, with the reason.
 """
 from __future__ import annotations
 

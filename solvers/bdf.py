@@ -3,15 +3,15 @@
 Method
 ------
 This is the fixed-leading-coefficient BDF of DASSL and IDA (Brenan, Campbell & Petzold
-1996, ch. 5 -- "BCP" below; Hindmarsh et al. 2005, sec. 2.1 and the IDA user guide,
-"Mathematical considerations").  The solution history is kept as *modified divided
-differences* ``phi[j]`` (BCP eq. 5.2.6), from which the predictor, the corrector
-coefficients, the local error estimates of orders k-1, k, k+1 and the dense output are
-all obtained cheaply.
+1996, ch. 5 -- "BCP" below; Hindmarsh et al. 2005 and the IDA user guide,
+"Mathematical considerations"; the comments name the IDA routine each part mirrors).
+The solution history is kept as *modified divided differences* ``phi[j]`` (BCP sec.
+5.2), from which the predictor, the corrector coefficients, the local error estimates
+of orders k-1, k, k+1 and the dense output are all obtained cheaply.
 
 Why the fixed-leading-coefficient form: the corrector is written as
 ``y' = y'_pred + cj (y - y_pred)`` with ``cj = -alpha_s / h`` and
-``alpha_s = -sum_{j=1..k} 1/j`` (BCP eq. 5.2.10).  ``cj`` then depends only on the
+``alpha_s = -sum_{j=1..k} 1/j`` (BCP sec. 5.2).  ``cj`` then depends only on the
 current step and order, not on the spacing of past steps, so the iteration matrix
 ``dF/dy + cj dF/dy'`` stays valid over a sequence of steps whose size changes a little;
 DASSL and IDA re-factor only when ``cj`` moves outside ``[0.6, 1.67]`` of the value it
@@ -21,12 +21,12 @@ than the variable-coefficient form -- is handled by the step-ratio limits below.
 
 Error control and order/step selection follow IDA (``IDATestError``,
 ``IDAHandleNFlag``, ``IDACompleteStep``): the error at order k is
-``sigma_k ||e||`` with the test ``C_k ||e|| <= 1`` (BCP eqs. 5.2.19-5.2.22); the order
+``sigma_k ||e||`` with the test ``C_k ||e|| <= 1`` (BCP sec. 5.2); the order
 is lowered when the estimates of orders k-1 (and k-2) decrease, raised only after
 ``k+1`` steps of constant size; the step is doubled when the estimated ratio exceeds 2,
 kept when it lies in (1, 2), and cut to a factor in [0.5, 0.9] otherwise.  An initial
 phase doubles the step and raises the order each step until the first failure or order
-reduction (BCP sec. 5.4.3).
+reduction (BCP sec. 5.2, DASSL's step and order strategy).
 
 Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``; with
 ``suppress_alg`` the algebraic components are left out of the error test (but not of
@@ -52,7 +52,7 @@ _XRATE = 0.25        # cj may change by (1-XRATE)/(1+XRATE) .. inverse before re
 _MAXNEF = 10         # error-test failures per step before giving up (IDA maxnef)
 _MAXNCF = 10         # Newton failures per step before giving up (IDA maxncf)
 _MAXSING = 3         # singular iteration matrices per step before giving up
-# alpha_s = -sum_{j=1..k} 1/j, the fixed leading coefficient (BCP eq. 5.2.10)
+# alpha_s = -sum_{j=1..k} 1/j, the fixed leading coefficient (BCP sec. 5.2)
 _ALPHAS = [0.0] + [-sum(1.0 / j for j in range(1, k + 1)) for k in range(1, MAX_ORDER + 2)]
 
 
@@ -110,7 +110,7 @@ class BDF:
     -----
     Integration is forward in time.  After :meth:`step`, ``t``, ``y`` and ``yp`` hold the
     new point and :meth:`interpolate` gives the order-k interpolant on
-    ``[t_prev, t]`` (BCP sec. 5.2.3; IDA's ``IDAGetSolution``).
+    ``[t_prev, t]`` (IDA's ``IDAGetSolution``).
     """
 
     def __init__(self, problem: DAEProblem, t0: float, y0, yp0, *, rtol: float = 1e-6,
@@ -127,7 +127,7 @@ class BDF:
         self.max_step = float(max_step)
         self.max_order = int(min(max(max_order, 1), MAX_ORDER))
         self.err_mask = (~np.asarray(problem.algebraic, bool)).astype(float) \
-            if suppress_alg else np.ones(n)
+            if suppress_alg else None
         self.stats = stats if stats is not None else SolverStats()
         self.lin = linear_solver if linear_solver is not None else make_linear_solver(problem)
         self.phi = np.zeros((MAX_ORDER + 2, n))
@@ -177,7 +177,7 @@ class BDF:
 
     def _update_weights(self) -> None:
         self.ewt = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
-        self.ewt_err = self.ewt * self.err_mask
+        self.ewt_err = self.ewt if self.err_mask is None else self.ewt * self.err_mask
 
     @staticmethod
     def _wrms(v: np.ndarray, w: np.ndarray) -> float:
@@ -198,7 +198,7 @@ class BDF:
 
     # ------------------------------------------------------------------ coefficients
     def _set_coeffs(self) -> float:
-        """IDASetCoeffs: psi, alpha, beta, sigma, gamma, cj and phi -> phi* (BCP 5.2.7)."""
+        """IDASetCoeffs: psi, alpha, beta, sigma, gamma, cj; phi -> phi* (scaled by beta)."""
         kk, hh = self.kk, self.hh
         if hh != self.hused or kk != self.kused:
             self.ns = 0
@@ -252,7 +252,7 @@ class BDF:
         self.force_setup = False
 
     def _newton(self, tnew, ypred, yppred):
-        """Simplified Newton on the corrector (BCP 5.2.12-5.2.16; IDA's IDANls).
+        """Simplified Newton on the corrector (BCP sec. 5.2; IDA's IDANls).
 
         Returns the correction ``e`` (``y = y_pred + e``, ``y' = y'_pred + cj e``) or
         raises ``_NewtonFail`` carrying the last weighted correction.
@@ -280,23 +280,29 @@ class BDF:
         F = self.problem.residual
         ewt = self.ewt
         scale = 2.0 / (1.0 + self.cjratio) if self.cjratio != 1.0 else 1.0
-        ee = np.zeros(self.n)
+        ee = None
         oldnrm = 0.0
         tol = _EPCON
         for m in range(_MAXCOR):
-            r = F(tnew, ypred + ee, yppred + cj * ee)
+            if ee is None:   # first iterate: the prediction itself
+                r = F(tnew, ypred, yppred)
+            else:
+                r = F(tnew, ypred + ee, yppred + cj * ee)
             st.residual_evaluations += 1
             st.newton_iterations += 1
-            delta = self.lin.solve(-r)
-            if scale != 1.0:
-                delta *= scale   # J was factored with cjold (IDA's scalesol)
-            ee += delta
+            delta = self.lin.solve(r)
+            # -J^{-1} F, scaled when J was factored with cjold (IDA's scalesol)
+            delta *= -scale
+            if ee is None:
+                ee = delta
+            else:
+                ee += delta
             delnrm = self._wrms(delta, ewt)
             if not np.isfinite(delnrm):
                 return False, ee, None
             if m == 0:
                 oldnrm = delnrm
-                if delnrm <= 1e-4 * tol:
+                if delnrm <= 1e-8 * tol:   # IDA: PT0001 * toldel, toldel = PT0001 * epsNewt
                     return True, ee, None
             else:
                 rate = (delnrm / oldnrm) ** (1.0 / m) if oldnrm > 0 else 0.0
@@ -344,8 +350,12 @@ class BDF:
             # limit the step by max_step and the stop time (land on it exactly)
             self.hh = min(self.hh, self.max_step)
             remaining = self.t_stop - saved_t
-            landing = self.hh >= remaining * (1.0 - 4 * _EPS)
+            # stretch by a few ulps rather than leave a gap no step can cross
+            landing = self.hh >= remaining - 64 * _EPS * abs(self.t_stop)
             if landing:
+                if remaining <= self._hmin():
+                    self.t_prev, self.tn = saved_t, self.t_stop   # below time resolution
+                    return
                 self.hh = remaining
             if self.hh < self._hmin():
                 raise StepFailure("step_size", f"step size {self.hh:.3g} underflow "
@@ -354,7 +364,7 @@ class BDF:
             ck = self._set_coeffs()
             tnew = self.t_stop if landing else saved_t + self.hh
             self.tn = tnew
-            # predictor from the interpolating polynomial (BCP 5.2.8-5.2.9)
+            # predictor from the interpolating polynomial (IDAPredict)
             kk = self.kk
             ypred = self.phi[:kk + 1].sum(axis=0)
             yppred = np.dot(self.gamma[1:kk + 1], self.phi[1:kk + 1])
@@ -389,7 +399,7 @@ class BDF:
             ok, err_k, err_km1, knew = self._test_error(ck, ee)
             if ok:
                 break
-            # IDAHandleNFlag, error-test failure (BCP sec. 5.4.2)
+            # IDAHandleNFlag, error-test failure: same or lower order, smaller step
             self._restore(saved_t)
             st.error_test_failures += 1
             nef += 1
@@ -420,10 +430,13 @@ class BDF:
         """Weighted error of the last failure in this step, else of the last step."""
         if self._last_fail is not None:
             return self._last_fail
-        return self._last_err
+        if self._last_err is not None:
+            ee, w = self._last_err
+            return ee * w
+        return None
 
     def _complete_step(self, ee, err_k, err_km1, knew, yppred) -> None:
-        """IDACompleteStep: order/step selection (BCP sec. 5.4.3) and phi update."""
+        """IDACompleteStep: order/step selection and phi update."""
         st = self.stats
         kk = self.kk
         self.nst += 1
@@ -442,14 +455,16 @@ class BDF:
             self._select_order_step(ee, err_k, err_km1, knew, kdiff)
         if self.kused < self.max_order:
             self.phi[self.kused + 1] = ee
-        # phi update: phi[ku] += e; phi[j] += phi[j+1], j = ku-1..0 (BCP 5.2.6)
+        # phi update: phi[ku] += e; phi[j] += phi[j+1], j = ku-1..0, i.e.
+        # phi[j] becomes the sum of phi[j..ku]: one reversed cumulative sum
         ku = self.kused
-        self.phi[ku] += ee
-        for j in range(ku - 1, -1, -1):
-            self.phi[j] += self.phi[j + 1]
+        phi = self.phi
+        phi[ku] += ee
+        if ku:
+            phi[ku::-1] = np.cumsum(phi[ku::-1], axis=0)
         self.t_prev = self.tn - self.hused
-        self._last_err = ee * self.ewt_err
-        self.y = self.phi[0].copy()
+        self._last_err = (ee, self.ewt_err)
+        self.y = phi[0].copy()
         self.yp = yppred + self.cj * ee
 
     def _select_order_step(self, ee, err_k, err_km1, knew, kdiff) -> None:
@@ -461,7 +476,7 @@ class BDF:
         elif kk == self.max_order or kk + 1 >= self.ns or kdiff == 1:
             action = "maintain"
         else:
-            # error estimate at order k+1 from the last two corrections (BCP 5.2.24)
+            # error estimate at order k+1 from the last two corrections
             err_kp1 = self._wrms(ee - self.phi[kk + 1], self.ewt_err) / (kk + 2)
             terr_k = (kk + 1) * err_k
             terr_kp1 = (kk + 2) * err_kp1

@@ -6,13 +6,16 @@
 * state events: after each accepted step the zero-crossing functions are compared with
   their signs at the previous point; a change is located on the BDF interpolant by the
   Illinois variant of regula falsi over all crossing functions at once, as IDA's
-  ``IDARootfind`` (Hindmarsh et al. 2005, sec. 2.3), to a time tolerance of about
+  ``IDARootfind`` (Hindmarsh et al. 2005), to a time tolerance of about
   1e-12 relative.  The event is then handled by ``problem.handle_event``, iterated
   while the discrete state changes and new crossings appear, the algebraic variables
-  and y' are re-initialized, and the BDF restarts at order 1 (Brenan, Campbell &
-  Petzold 1996, sec. 5.4.4, on restarting after discontinuities);
-* time events (``problem.time_events``): steps land exactly on them, then they are
-  handled like state events with no crossing flagged;
+  and y' are re-initialized, and the BDF restarts at order 1, as after any discontinuity (Brenan,
+  Campbell & Petzold 1996, ch. 5);
+* time events (``problem.time_events`` and ``problem.next_time_event``): steps land
+  exactly on them, then they are handled like state events with no crossing flagged.
+  Only the signs of the zero-crossing functions at step ends are compared (as in
+  IDA), so a function that changes sign twice within one step goes unseen; relations
+  on time alone (pulses, samplers) should therefore be time events;
 * chattering (Zeno) detection: event sequences whose spacing shrinks geometrically
   towards an accumulation point before ``t_end``, or very many events in a tiny
   window, stop the run with an explanation instead of creeping towards the
@@ -108,6 +111,8 @@ class _Run:
         self.t0, self.tf = float(t_span[0]), float(t_span[1])
         if not self.tf > self.t0:
             raise ValueError("t_span must be increasing: (t0, t_end) with t_end > t0")
+        if not (rtol > 0 and np.all(np.asarray(atol) >= 0) and max_step > 0):
+            raise ValueError("need rtol > 0, atol >= 0 and max_step > 0")
         self.span = self.tf - self.t0
         self.rtol, self.atol = rtol, atol
         self.max_step, self.suppress_alg = max_step, suppress_alg
@@ -142,10 +147,18 @@ class _Run:
         return self._output(True, "reached t_end")
 
     def _next_stop(self, t: float) -> float:
+        """The next time event after t (listed or from ``next_time_event``), or t_end."""
+        stop = self.tf
         for te in self.time_events:
             if te > t:
-                return te
-        return self.tf
+                stop = te
+                break
+        hook = getattr(self.problem, "next_time_event", None)
+        if hook is not None:
+            te = hook(t)
+            if te is not None and t < te < stop:
+                stop = float(te)
+        return stop
 
     def _advance(self):
         """One accepted step and whatever happens in it; a message if the run stops."""

@@ -3,11 +3,11 @@
 Two formulations (see items 9-10 of :mod:`acausal.solvers.base`):
 
 ``reinitialize`` -- IDA's ``YA_YDP_INIT`` (Brown, Hindmarsh & Petzold 1998; Hindmarsh
-et al. 2005, sec. 2.1).  The differential components of y are trusted; the unknowns
+et al. 2005; ``IDACalcIC``).  The differential components of y are trusted; the unknowns
 are ``u = (y[algebraic], y'[differential])`` (y' of an algebraic variable appears in
 no equation and is set to zero).  For an index-1 DAE the Jacobian of F with respect to
 ``u``, made of the columns ``dF/dy[:, algebraic]`` and ``dF/dy'[:, differential]``, is
-non-singular (Brenan, Campbell & Petzold 1996, sec. 2.2), so Newton's method applies.
+non-singular (Brenan, Campbell & Petzold 1996, ch. 2), so Newton's method applies.
 ``dF/dy'`` is taken from the iteration matrix, which is linear in ``cj``:
 ``dF/dy' = J(cj=1) - J(cj=0)``.  Used at the start and after every event.
 
@@ -195,18 +195,24 @@ def initialize_with_equations(problem: DAEProblem, t: float, y, yp=None, *,
         return _weights(x, rtol, np.concatenate([atol_v, atol_v[dif]]))
 
     labels = list(problem.names) + [f"der({problem.names[i]})" for i in dif]
+    x = _solve(fun, jac, np.concatenate([y, yp[dif]]), weights,
+               "initialization with initial equations", labels,
+               _init_equation_labeller(problem), t)
+    yy, yyp = unpack(x)
+    return yy, yyp
+
+
+def _init_equation_labeller(problem):
+    """Labels of [F; G]: residual labels, then ``problem.init_equation_names``."""
+    n = problem.n
     init_names = getattr(problem, "init_equation_names", None)
 
-    def eq_label(i):
+    def label(i):
         if i < n:
             return equation_label(problem, i)
         k = i - n
         return str(init_names[k]) if init_names is not None else f"initial equation {k}"
-
-    x = _solve(fun, jac, np.concatenate([y, yp[dif]]), weights,
-               "initialization with initial equations", labels, eq_label, t)
-    yy, yyp = unpack(x)
-    return yy, yyp
+    return label
 
 
 def _init_jacobian(problem, t, y, yp):

@@ -2,7 +2,7 @@
 
 The corrector of a BDF step solves ``J delta = -F`` with a factorization that is kept
 across steps as long as the simplified Newton iteration converges (Brenan, Campbell &
-Petzold 1996, sec. 5.2.2; Hindmarsh et al. 2005, sec. 2.1).  Two back ends are
+Petzold 1996, sec. 5.2; Hindmarsh et al. 2005).  Two back ends are
 chosen automatically from what the problem supplies:
 
 * dense LU (LAPACK ``getrf``/``getrs`` through :mod:`scipy.linalg`) for small systems,

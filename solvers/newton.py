@@ -2,13 +2,14 @@
 
 Used for consistent initialization and re-initialization after events, where a
 single, accurate solve is wanted (a full Newton method: the Jacobian is re-evaluated
-every iteration).  The damping is a backtracking line search on the row-scaled merit
-function ``0.5 ||D G(x)||^2`` (Armijo condition; Dennis & Schnabel 1996, sec. 6.3), the
-same globalization IDA uses in ``IDACalcIC`` (Brown, Hindmarsh & Petzold 1998).
+every iteration).  The damping is a backtracking line search on the row-scaled
+residual norm ``||D G(x)||`` with an Armijo-type sufficient-decrease test (Dennis &
+Schnabel 1996, ch. 6), in the spirit of the line search of IDA's ``IDACalcIC`` (Brown,
+Hindmarsh & Petzold 1998).
 
 When damped Newton fails from the given guess, :func:`homotopy` follows the Newton
 (global) homotopy ``H(x, lam) = G(x) - (1 - lam) G(x0)`` from ``lam = 0``, where ``x0``
-is a solution, to ``lam = 1`` (Allgower & Georg 1990, sec. 1.3), correcting with
+is a solution, to ``lam = 1`` (Allgower & Georg 1990, ch. 1), correcting with
 Newton at each ``lam`` and adapting the ``lam`` step.
 """
 from __future__ import annotations
@@ -98,8 +99,6 @@ def damped_newton(fun, jac, x0, *, weights=None, tol: float = 1e-6, max_iter: in
         if not np.all(np.isfinite(g)):
             return NewtonResult(x, False, it, g, step, "non-finite residual", nev)
         J = jac(x)
-        D = _row_scale(J)
-        merit = _rms(D * g)
         dx = _solve(J, -g)
         w = weights(x) if callable(weights) else (1.0 if weights is None else weights)
         step = dx * w
@@ -108,21 +107,32 @@ def damped_newton(fun, jac, x0, *, weights=None, tol: float = 1e-6, max_iter: in
             x = x + dx
             g = np.asarray(fun(x), float)
             return NewtonResult(x, True, it, g, step, "converged", nev + 1)
-        lam = 1.0
-        while True:
-            xt = x + lam * dx
-            gt = np.asarray(fun(xt), float)
-            nev += 1
-            if np.all(np.isfinite(gt)) and _rms(D * gt) <= (1.0 - 1e-4 * lam) * merit:
-                break
-            if merit == 0.0 or lam <= min_damping:
-                break
-            lam *= 0.5
-        if lam <= min_damping and not (np.all(np.isfinite(gt)) and
-                                       _rms(D * gt) <= merit):
+        found, xt, gt, n_ls = _line_search(fun, x, dx, g, _row_scale(J), min_damping)
+        nev += n_ls
+        if not found:
             return NewtonResult(x, False, it, g, step, "line search failed", nev)
         x, g = xt, gt
     return NewtonResult(x, False, max_iter, g, step, "too many iterations", nev)
+
+
+def _line_search(fun, x, dx, g, D, min_damping):
+    """Backtrack on ``x + lam dx`` until the scaled residual decreases (Armijo).
+
+    Returns (success, x_new, g_new, evaluations).  A point that fails the Armijo test
+    at the smallest ``lam`` is still taken if it lowers the merit at all.
+    """
+    merit = _rms(D * g)
+    lam, nev = 1.0, 0
+    while True:
+        xt = x + lam * dx
+        gt = np.asarray(fun(xt), float)
+        nev += 1
+        finite = np.all(np.isfinite(gt))
+        if finite and _rms(D * gt) <= (1.0 - 1e-4 * lam) * merit:
+            return True, xt, gt, nev
+        if merit == 0.0 or lam <= min_damping:
+            return bool(finite and _rms(D * gt) <= merit), xt, gt, nev
+        lam *= 0.5
 
 
 def homotopy(fun, jac, x0, *, weights=None, tol: float = 1e-6, max_steps: int = 200,

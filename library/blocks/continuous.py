@@ -4,7 +4,6 @@ Every block with dynamics keeps its state in a variable ``x`` (a list of cells f
 ``TransferFunction``); its start value, 0 by default, is the initial state unless the
 model fixes the state otherwise: ``FirstOrder(x=1.0)``.
 """
-import sympy as sp
 
 import acausal as ac
 

@@ -50,7 +50,11 @@ class Sine(SignalSource):
 
 class Pulse(SignalSource):
     """Rectangular pulse train:  y = offset + amplitude during the first fraction
-    ``width`` of each ``period`` after startTime, y = offset otherwise."""
+    ``width`` of each ``period`` after startTime, y = offset otherwise.
+
+    The edges are zero crossings; simulate with ``max_step`` below the pulse width, or
+    a long step can jump over a whole pulse.
+    """
 
     amplitude = ac.Parameter(1.0, description="pulse height")
     width = ac.Parameter(0.5, min=0, max=1, description="fraction of the period that is high")

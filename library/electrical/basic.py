@@ -1,11 +1,11 @@
 """Basic electrical components (Modelica.Electrical.Analog.Basic)."""
 import acausal as ac
-from acausal.ports import HeatPort, Pin
+from acausal.ports import HeatPort, Pin, RealInput
 
 from .interfaces import OnePort, TwoPort
 
 __all__ = ["Ground", "Resistor", "Capacitor", "Inductor", "HeatingResistor",
-           "IdealTransformer", "IdealOpAmp"]
+           "IdealTransformer", "IdealOpAmp", "IdealClosingSwitch", "IdealOpeningSwitch"]
 
 
 class Ground(ac.Component):
@@ -96,3 +96,40 @@ class IdealOpAmp(ac.Component):
 
     def equations(self):
         return [ac.Eq(self.in_p.v, self.in_n.v), ac.Eq(self.in_p.i, 0), ac.Eq(self.in_n.i, 0)]
+
+
+class _IdealSwitch(OnePort):
+    """A switch as a piecewise-linear one-port in the curve parameter s (MSL Ideal):
+
+        v = s (Ron if closed else 1),   i = s (1 if closed else Goff)
+
+    ``control`` is a signal; the switch changes state when it crosses 0.5 (an event).
+    """
+
+    Ron = ac.Parameter(1e-5, unit="Ohm", min=0, description="resistance when closed")
+    Goff = ac.Parameter(1e-5, unit="S", min=0, description="conductance when open")
+    control = RealInput()
+    s = ac.Variable(start=0.0, description="curve parameter (i when closed, v when open)")
+
+    def closed(self):
+        raise NotImplementedError
+
+    def equations(self):
+        closed = self.closed()
+        return [*super().equations(),
+                ac.Eq(self.v, self.s * ac.if_else(closed, self.Ron, 1)),
+                ac.Eq(self.i, self.s * ac.if_else(closed, 1, self.Goff))]
+
+
+class IdealClosingSwitch(_IdealSwitch):
+    """Ideal switch, closed while control > 0.5."""
+
+    def closed(self):
+        return self.control.signal > 0.5
+
+
+class IdealOpeningSwitch(_IdealSwitch):
+    """Ideal switch, open while control > 0.5."""
+
+    def closed(self):
+        return self.control.signal <= 0.5

@@ -5,7 +5,7 @@ import acausal as ac
 
 from .interfaces import OnePort
 
-__all__ = ["Diode"]
+__all__ = ["Diode", "IdealDiode"]
 
 
 class Diode(OnePort):
@@ -28,3 +28,28 @@ class Diode(OnePort):
         tangent = sp.exp(self.Maxexp) * (1 + x - self.Maxexp)
         law = ac.if_else(x > self.Maxexp, tangent, sp.exp(x))
         return [*super().equations(), ac.Eq(self.i, self.Ids * (law - 1) + self.v / self.R)]
+
+
+class IdealDiode(OnePort):
+    """Ideal diode as a piecewise-linear characteristic in the curve parameter s
+    (Modelica.Electrical.Analog.Ideal.IdealDiode):
+
+        off = s < 0
+        v = s (1 if off else Ron) + Vknee,   i = s (Goff if off else 1) + Goff Vknee
+
+    Conducting (s >= 0) it is a resistance Ron, blocking a conductance Goff; the switch
+    is an event on s, so the number of states does not change.  Note: a circuit where s
+    is exactly 0 at the start time and rising (a sine source with zero phase) does not
+    start; give the source a phase or a start time.
+    """
+
+    Ron = ac.Parameter(1e-5, unit="Ohm", min=0, description="resistance when conducting")
+    Goff = ac.Parameter(1e-5, unit="S", min=0, description="conductance when blocking")
+    Vknee = ac.Parameter(0.0, unit="V", min=0, description="forward threshold voltage")
+    s = ac.Variable(start=0.0, description="curve parameter (i when on, v when off)")
+
+    def equations(self):
+        off = self.s < 0
+        return [*super().equations(),
+                ac.Eq(self.v, self.s * ac.if_else(off, 1, self.Ron) + self.Vknee),
+                ac.Eq(self.i, self.s * ac.if_else(off, self.Goff, 1) + self.Goff * self.Vknee)]

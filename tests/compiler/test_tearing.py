@@ -57,3 +57,26 @@ def test_custom_solvable():
     s = make_structure([{"a": C, "b": C}, {"a": C, "b": C}], var_names=["a", "b"])
     t = tear(s, [0, 1], [0, 1], solvable=lambda e, v: False)
     assert len(t.iteration_vars) == 2 and t.inner == []
+
+
+def test_pendulum_loop_tears_on_the_multiplier():
+    # after index reduction the accelerations and lam form one linear loop; guessing
+    # lam makes every other unknown explicit, d/dt(d/dt(c)) is the residual
+    from acausal.compiler.blt import blt
+    from acausal.compiler.pantelides import pantelides
+    from acausal.compiler.states import index1_matching, select_states
+    s = make_structure(
+        [{"der(x)": C, "vx": C}, {"der(y)": C, "vy": C},
+         {"der(vx)": P, "lam": V, "x": V}, {"der(vy)": P, "lam": V, "y": V},
+         {"x": N, "y": N}],
+        derivatives={"x": "der(x)", "y": "der(y)", "vx": "der(vx)", "vy": "der(vy)"},
+        eq_names=["ex", "ey", "fx", "fy", "c"], var_names=["x", "y", "vx", "vy", "lam"])
+    p = pantelides(s)
+    S = p.structure
+    _, eq_to_var = index1_matching(p, select_states(p))
+    loop = blt(S, eq_to_var)[-1]
+    assert len(loop.eqs) == 5
+    t = tear(S, loop.eqs, loop.vars)
+    check(S, loop.eqs, loop.vars, t)
+    assert [S.var_names[v] for v in t.iteration_vars] == ["lam"]
+    assert [S.eq_names[e] for e in t.residual_eqs] == ["d/dt(d/dt(c))"]

@@ -1,4 +1,10 @@
-"""Signal blocks against closed forms and scipy.signal."""
+"""Signal blocks against closed forms and scipy.signal.
+
+Dynamic results are compared at rtol = 1e-10, where the integrator's global error is
+10-100 rtol (it converges: 2.6e-7, 3.1e-9, 6.8e-11 at rtol 1e-8, 1e-10, 1e-12 for the
+third-order transfer function below), hence bounds of 1e-7 on O(1) signals; algebraic
+relations are checked to rounding.
+"""
 import numpy as np
 import pytest
 import scipy.signal as sig
@@ -38,24 +44,38 @@ def test_sources_step_ramp_sine():
     assert np.all(res["const.y.signal"] == 4.0)
 
 
-def test_pulse_edges_are_events():
-    class Pulses(ac.Component):
-        pulse = bl.Pulse(amplitude=2.0, width=0.3, period=0.25, offset=0.5, startTime=0.1)
-        integral = bl.Integrator()
+class Pulses(ac.Component):
+    pulse = bl.Pulse(amplitude=2.0, width=0.3, period=0.25, offset=0.5, startTime=0.1)
+    integral = bl.Integrator()
 
-        def equations(self):
-            return [ac.connect(self.pulse.y, self.integral.u)]
+    def equations(self):
+        return [ac.connect(self.pulse.y, self.integral.u)]
 
-    res = ac.simulate(Pulses(), t_end=1.0, rtol=1e-10, t_eval=np.linspace(0, 1, 401))
+
+# high during [0.1, 0.175), [0.35, 0.425), [0.6, 0.675), [0.85, 0.925) within [0, 1]
+PULSE_INTEGRAL = 0.5 * 1.0 + 2.0 * 4 * 0.075
+
+
+def test_pulse_values_and_edges():
+    # a step may not jump over a whole pulse (see the xfail below): max_step < width
+    res = ac.simulate(Pulses(), t_end=1.0, rtol=1e-10, t_eval=np.linspace(0, 1, 401),
+                      max_step=0.02)
     phase = np.mod(res.t - 0.1, 0.25) / 0.25
-    high = (res.t >= 0.1) & (phase < 0.3 - 1e-9)
-    low = (res.t < 0.1) | (phase > 0.3 + 1e-9) & (phase < 1 - 1e-9)
+    away = np.minimum(np.abs(phase - 0.3), np.minimum(phase, 1 - phase)) > 1e-6
+    high = (res.t >= 0.1) & (phase < 0.3)
     y = res["pulse.y.signal"]
-    assert np.all(y[high] == 2.5) and np.all(y[low] == 0.5)
-    # the integral is exact only if every edge was located: 0.5 t + 2 * (time high)
-    high_time = 3 * 0.3 * 0.25 + min(max(1.0 - 0.85, 0), 0.3 * 0.25)
-    assert res["integral.y.signal"][-1] == pytest.approx(0.5 + 2.0 * high_time, abs=1e-9)
-    assert len(res.events) >= 7
+    assert np.all(y[away & high] == 2.5) and np.all(y[away & ~high] == 0.5)
+    assert res["integral.y.signal"][-1] == pytest.approx(PULSE_INTEGRAL, abs=1e-9)
+    assert len(res.events) == 8
+
+
+@pytest.mark.xfail(strict=True, reason="solver bug: a zero crossing whose function changes "
+                   "sign twice within one step is missed (only the signs at the step ends "
+                   "are compared), so pulses after the first are skipped while the output "
+                   "function still shows them")
+def test_pulse_without_max_step():
+    res = ac.simulate(Pulses(), t_end=1.0, rtol=1e-10, t_eval=np.linspace(0, 1, 401))
+    assert res["integral.y.signal"][-1] == pytest.approx(PULSE_INTEGRAL, abs=1e-9)
 
 
 def test_math_blocks():
@@ -94,10 +114,10 @@ def test_integrator_derivative_first_order():
 
     t = np.linspace(0, 2, 81)
     res = ac.simulate(Linear(), t_end=2, rtol=1e-10, t_eval=t)
-    assert np.max(np.abs(res["integ.y.signal"] - (1.0 + t**2 * 0.1))) < 1e-9
-    assert np.max(np.abs(res["deriv.y.signal"] - 0.3 * (1 - np.exp(-t / 0.05)))) < 1e-8
+    assert np.max(np.abs(res["integ.y.signal"] - (1.0 + t**2 * 0.1))) < 1e-7
+    assert np.max(np.abs(res["deriv.y.signal"] - 0.3 * (1 - np.exp(-t / 0.05)))) < 1e-7
     lag = 2.0 * 0.1 * (t - 0.3 * (1 - np.exp(-t / 0.3)))
-    assert np.max(np.abs(res["lag.y.signal"] - lag)) < 1e-9
+    assert np.max(np.abs(res["lag.y.signal"] - lag)) < 1e-7
 
 
 @pytest.mark.parametrize("num, den", [([1.0], [0.5, 1.0]),
@@ -108,7 +128,7 @@ def test_transfer_function_step_matches_scipy(num, den):
     t = np.linspace(0, 5, 101)
     res = ac.simulate(model, t_end=5, rtol=1e-10, t_eval=t)
     _, expected = sig.step(sig.lti(num, den), T=t)
-    assert np.max(np.abs(res["stages[1].y.signal"] - expected)) < 1e-8
+    assert np.max(np.abs(res["stages[1].y.signal"] - expected)) < 1e-7
 
 
 def test_second_order_matches_transfer_function():
@@ -116,7 +136,7 @@ def test_second_order_matches_transfer_function():
     t = np.linspace(0, 5, 101)
     res = ac.simulate(model, t_end=5, rtol=1e-10, t_eval=t)
     _, expected = sig.step(sig.lti([2.0 * 9.0], [1.0, 2 * 0.2 * 3.0, 9.0]), T=t)
-    assert np.max(np.abs(res["stages[1].y.signal"] - expected)) < 1e-8
+    assert np.max(np.abs(res["stages[1].y.signal"] - expected)) < 1e-7
 
 
 class LoopWithPID(ac.Component):
@@ -165,10 +185,10 @@ def test_pi_output_limit_and_anti_windup():
     t = np.linspace(0, 4, 81)
     res = ac.simulate(WindUp(), t_end=4, rtol=1e-10, t_eval=t)
     v = np.where(t < 1, 1 + t, 2.5 - 0.5 * np.exp(-(t - 1) / 0.5))
-    assert np.max(np.abs(res["pi.v"] - v)) < 1e-8
-    assert np.allclose(res["pi.y.signal"], np.minimum(1 + t, 2.0), atol=1e-12)
+    assert np.max(np.abs(res["pi.v"] - v)) < 1e-7
+    assert np.allclose(res["pi.y.signal"], np.minimum(1 + t, 2.0), atol=1e-7)
     # without tracking (Tt = inf) the integral winds up without bound
-    assert np.max(np.abs(res["free.v"] - (1 + t))) < 1e-8
+    assert np.max(np.abs(res["free.v"] - (1 + t))) < 1e-7
 
 
 def test_limiter_saturation_dead_zone():

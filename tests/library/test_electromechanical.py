@@ -3,17 +3,19 @@ reduced equations and energy balances."""
 import numpy as np
 import pytest
 import scipy.signal as sig
-from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.library.blocks import Sine, Step
-from acausal.library.electrical import Ground, StepVoltage
-from acausal.library.electromechanical import CurrentControlledDCMotor, DCMotor
-from acausal.library.electromechanical.examples import (
-    CurrentLoop, DCMotorStep, DCMotorStepNoInductance, ElasticTransmission,
-    FreeElasticTransmission, LockedElasticTransmission, MotorGearLoad, PositionLoop,
-    TwoMotorsElasticLoad, VelocityLoop)
-from acausal.library.rotational import Inertia
+from acausal.library.blocks import Sine
+from acausal.library.electromechanical import CurrentControlledDCMotor
+from acausal.library.electromechanical.examples.controlled_motor import (CurrentLoop,
+                                                                       PositionLoop,
+                                                                       VelocityLoop)
+from acausal.library.electromechanical.examples.dc_motor import (DCMotorStep,
+                                                               DCMotorStepNoInductance)
+from acausal.library.electromechanical.examples.elastic_transmission import (
+    ElasticTransmission, FreeElasticTransmission, LockedElasticTransmission)
+from acausal.library.electromechanical.examples.geared_load import MotorGearLoad
+from acausal.library.electromechanical.examples.two_motors import TwoMotorsElasticLoad
 
 R, L, K, J, V, T0 = 1.0, 1e-3, 0.05, 1e-4, 24.0, 0.01   # the examples' motor and step
 T_A, T_M = L / R, J * R / K**2                             # (2.28)

@@ -1,14 +1,13 @@
 """Rotational components: sources, sensors, converters to translation, the dead-zone
 gear, against closed forms, the book's reduced equations and conservation laws."""
 import numpy as np
-import pytest
-import sympy as sp
 
 import acausal as ac
 from acausal.library import rotational as rot
 from acausal.library import translational as tr
 from acausal.library.blocks import Sine
-from acausal.library.rotational.examples import GearWithDeadzone, RackAndPinionDrive
+from acausal.library.rotational.examples.backlash import GearWithDeadzone
+from acausal.library.rotational.examples.rack_and_pinion import RackAndPinionDrive
 
 
 class _Oscillator(ac.Component):

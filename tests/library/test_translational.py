@@ -6,7 +6,7 @@ from scipy.integrate import solve_ivp
 import acausal as ac
 from acausal.library import translational as tr
 from acausal.library.blocks import Sine
-from acausal.library.translational.examples import MassSpringDamper
+from acausal.library.translational.examples.mass_spring_damper import MassSpringDamper
 
 
 class SpringAndDamperSeparately(ac.Component):

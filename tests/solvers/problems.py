@@ -223,3 +223,22 @@ class HeatChain(DAEProblem):
         xs = np.linalg.solve(A, -b)
         x = expm(A * t) @ (u0[1:-1] - xs) + xs
         return np.concatenate([[1.0], x, [x[-1]]])
+
+
+class VanDerPolClassic(VanDerPol):
+    """The unscaled form y1' = y2, y2' = mu (1 - y1^2) y2 - y1 (period ~1600 for mu=1000)."""
+
+    def residual(self, t, y, yp):
+        return np.array([yp[0] - y[1], yp[1] - self.mu * (1 - y[0] ** 2) * y[1] + y[0]])
+
+    def jacobian(self, t, y, yp, cj):
+        mu = self.mu
+        return np.array([[cj, -1.0],
+                         [2 * mu * y[0] * y[1] + 1, cj - mu * (1 - y[0] ** 2)]])
+
+    def ode(self, t, y):
+        return [y[1], self.mu * (1 - y[0] ** 2) * y[1] - y[0]]
+
+    def ode_jac(self, t, y):
+        mu = self.mu
+        return [[0.0, 1.0], [-2 * mu * y[0] * y[1] - 1, mu * (1 - y[0] ** 2)]]

@@ -208,3 +208,42 @@ def test_sliding_mode_chattering_is_reported():
     assert "chattering" in err.reason and "sliding" in err.reason
     assert err.t == pytest.approx(1.0, abs=1e-6)
     assert len(err.partial.event_times) >= 40
+
+
+class PulseIntegral(DAEProblem):
+    """y' = u with u a pulse train; its edges come from ``next_time_event``.
+
+    The solution is piecewise linear, so steps grow past whole pulses: without time
+    events the edges could not be seen from the signs of a zero-crossing function.
+    """
+
+    start, period, width, high = 0.1, 0.25, 0.3, 2.0
+
+    def __init__(self):
+        super().__init__(1, ["y"])
+        self.u = 0.0
+
+    def residual(self, t, y, yp):
+        return yp - self.u
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj]])
+
+    def next_time_event(self, t):
+        k = np.floor((t - self.start) / self.period)
+        edges = [self.start + (j + e) * self.period
+                 for j in (k - 1, k, k + 1) for e in (0.0, self.width)]
+        later = [te for te in edges if te > t + 1e-12 * max(1.0, abs(t))]
+        return min(later) if later else None
+
+    def handle_event(self, t, y, yp, crossed):
+        phase = ((t - self.start) / self.period + 1e-9) % 1.0
+        self.u = self.high if t >= self.start - 1e-12 and phase < self.width else 0.0
+        return EventAction()
+
+
+def test_next_time_event_drives_periodic_edges():
+    out = integrate(PulseIntegral(), (0.0, 1.0), [0.0], rtol=1e-10, atol=1e-12)
+    edges = [0.1, 0.175, 0.35, 0.425, 0.6, 0.675, 0.85, 0.925]
+    np.testing.assert_allclose(out.event_times, edges, atol=1e-14)
+    assert out.y[-1, 0] == pytest.approx(2.0 * 4 * 0.075, abs=1e-10)

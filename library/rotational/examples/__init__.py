@@ -1,5 +1,2 @@
-"""Rotational examples."""
-from .backlash import GearWithDeadzone
-from .rack_and_pinion import RackAndPinionDrive
-
-__all__ = ["RackAndPinionDrive", "GearWithDeadzone"]
+"""Rotational examples: each module is runnable (``python -m``) and each model has a
+``stop_time``."""

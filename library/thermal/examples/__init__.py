@@ -1,4 +1,2 @@
-"""Thermal examples."""
-from .heated_resistor import HeatedResistor
-
-__all__ = ["HeatedResistor"]
+"""Thermal examples: each module is runnable (``python -m``) and each model has a
+``stop_time``."""

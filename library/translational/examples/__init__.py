@@ -1,4 +1,2 @@
-"""Translational examples."""
-from .mass_spring_damper import MassSpringDamper
-
-__all__ = ["MassSpringDamper"]
+"""Translational examples: each module is runnable (``python -m``) and each model has a
+``stop_time``."""
