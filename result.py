@@ -41,7 +41,7 @@ class Result:
             raise KeyError(f"no variable '{name}' in the result"
                            + (f"; similar: {', '.join(close)}" if close else "")) from None
         if sign is None:
-            return np.full(len(self.t), k)
+            return np.full(len(self.t), k(self.compiled.p) if callable(k) else k)
         if self._y is None:
             self._y = _expand(self.compiled, self.t, self._z)
         return sign * self._y[:, k]

@@ -19,6 +19,7 @@ import sympy as sp
 
 from ..components.component import ModelError
 from .flatten import FlatEquation, FlatModel
+from .derivative import partial
 from .graph import STATE_SELECT
 
 __all__ = ["AliasTable", "eliminate_aliases"]
@@ -44,6 +45,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     order = {v.symbol: k for k, v in enumerate(flat.variables)}
     info = {v.symbol: v for v in flat.variables}
     differentiated = set(flat.derivatives)
+    params = frozenset(p.symbol for p in flat.parameters)
     parent = {}          # symbol -> (sign, parent symbol)
     constants = {}       # root symbol -> constant expression
     removed = []
@@ -80,7 +82,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     while queue:
         touched = set()
         for i in sorted(queue):
-            if alive[i] and _classify(eqs[i], info, find, rank, parent, constants):
+            if alive[i] and _classify(eqs[i], info, find, rank, parent, constants, params):
                 alive[i] = False
                 removed.append(eqs[i])
                 for q in eqs[i].residual.free_symbols:
@@ -133,9 +135,9 @@ def _substitutions(flat, find, constants) -> dict:
     return subs
 
 
-def _classify(eq, info, find, rank, parent, constants) -> bool:
+def _classify(eq, info, find, rank, parent, constants, params=frozenset()) -> bool:
     """Record eq in the union-find if it is trivial; True when it was removed."""
-    pattern = _alias_pattern(eq.residual, info)
+    pattern = _alias_pattern(eq.residual, info, params)
     if pattern is None:
         return False
     kind, a, b, k = pattern
@@ -159,20 +161,22 @@ def _classify(eq, info, find, rank, parent, constants) -> bool:
     return True
 
 
-def _alias_pattern(residual: sp.Expr, info: dict):
+def _alias_pattern(residual: sp.Expr, info: dict, params: frozenset = frozenset()):
     """Classify residual: ('alias', a, b, k) for a = k*b with k = +-1; ('const', a, None, c)
-    for a = c with c a number.  None otherwise."""
-    syms = [s for s in residual.free_symbols if s in info]
-    if residual.free_symbols - set(syms):
-        return None        # parameters, der() or time: not a trivial equation
+    for a = c with c a number or an expression of parameters.  None otherwise."""
+    free = residual.free_symbols
+    syms = [s for s in free if s in info]
+    others = free - set(syms)
+    if others - params:
+        return None        # der(), time or unknown symbols: not a trivial equation
     if len(syms) == 1:
         a = syms[0]
-        ca = residual.coeff(a)
-        rest = sp.expand(residual - ca * a)
-        if ca.is_number and ca != 0 and rest.is_number and not rest.has(a):
-            return "const", a, None, sp.nsimplify(-rest / ca) if rest.is_Rational else -rest / ca
-        return None
-    if len(syms) != 2 or not residual.is_Add or len(residual.args) != 2:
+        ca = partial(residual, a)
+        if not ca.is_number or ca == 0:
+            return None
+        rest = residual.xreplace({a: 0})
+        return "const", a, None, -rest / ca
+    if others or len(syms) != 2 or not residual.is_Add or len(residual.args) != 2:
         return None
     a, b = sorted(syms, key=lambda s: s.name)
     ca, cb = residual.coeff(a), residual.coeff(b)

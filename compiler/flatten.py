@@ -80,6 +80,7 @@ class FlatModel:
     initial_equations: list = field(default_factory=list)
     derivatives: dict = field(default_factory=dict)   # variable symbol -> der symbol
     whens: list = field(default_factory=list)         # When clauses (condition, reinits)
+    structural_zeros: list = field(default_factory=list)  # parameters evaluated as 0
     ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
     components: dict = field(default_factory=dict)    # path -> class name
 
@@ -237,15 +238,39 @@ def _node_equations(members: list, connections: list) -> list:
 
 # -- parameters bound to expressions, and der() ----------------------------------------
 def _substitute_parameter_expressions(flat: FlatModel) -> None:
-    """Parameters given as expressions of other parameters are substituted away."""
+    """Substitute parameters bound to expressions of other parameters, and zeros.
+
+    A parameter whose value is exactly 0 is a *structural* zero (Modelica tools evaluate
+    such parameters, as with Evaluate=true): L*der(i) = v with L = 0 is the algebraic
+    equation 0 = v, and index reduction must see it so.  Give a parameter a non-zero
+    value to keep it tunable after compilation.
+    """
     bound = {p.symbol: sp.sympify(p.value) for p in flat.parameters
              if isinstance(p.value, sp.Basic) and not p.value.is_number}
+    zeros = {p.symbol: sp.Integer(0) for p in flat.parameters
+             if not isinstance(p.value, sp.Basic) and _is_zero(p.value)}
+    bound.update(zeros)
+    for _ in range(64):  # resolve chains of bindings (depth = nesting of components)
+        new = {k: v.xreplace(bound) for k, v in bound.items()}
+        if new == bound:
+            break
+        bound = new
+    flat.structural_zeros = sorted(p.name for p in flat.parameters if bound.get(p.symbol) == 0)
     if not bound:
         return
-    for _ in range(len(bound)):  # resolve chains of bindings
-        bound = {k: v.xreplace(bound) for k, v in bound.items()}
     for eq in flat.equations + flat.initial_equations:
         eq.residual = eq.residual.xreplace(bound)
+    for w in flat.whens:
+        w.condition = w.condition.xreplace(bound)
+        for act in w.actions:
+            act.value = act.value.xreplace(bound)
+
+
+def _is_zero(value) -> bool:
+    try:
+        return float(value) == 0.0
+    except (TypeError, ValueError):
+        return False
 
 
 def _expand_derivatives(flat: FlatModel) -> None:

@@ -322,5 +322,8 @@ class CompiledModel(DAEProblem):
             try:
                 k = self.param_names.index(name)
             except ValueError:
-                raise KeyError(f"the model has no parameter '{name}'") from None
+                zeros = self.meta.get("structural_zeros", ())
+                why = (" (it was 0 at compile time and was evaluated as a structural zero: "
+                       "compile with a non-zero value to tune it)") if name in zeros else ""
+                raise KeyError(f"the model has no tunable parameter '{name}'{why}") from None
             self.p[k] = float(value)

@@ -39,6 +39,11 @@ def compile_model(model: Component) -> CompiledModel:
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
+    if flat.structural_zeros:
+        report.notes.append("parameters equal to 0 were evaluated as structural zeros (set a "
+                            "non-zero value to keep them tunable): "
+                            + ", ".join(flat.structural_zeros[:20])
+                            + (" ..." if len(flat.structural_zeros) > 20 else ""))
     reduced, aliases = clock("alias", eliminate_aliases, flat)
     report.aliases = aliases
     report.count("alias", equations=len(reduced.equations), variables=len(reduced.variables))
@@ -92,7 +97,8 @@ def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledMode
     assigned = [(a, e) for (a, _), e in zip(assigned, parts[0])]
     rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
     relation_ops = [type(r).__name__ for r in modes.values()]
-    params = [p for p in reduced.parameters if _is_number(p.value)]
+    zeros = set(reduced.structural_zeros)
+    params = [p for p in reduced.parameters if _is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
     code = generate(rows, z_syms, psyms, len(modes), crossings, assigned, outputs=syms)
     init_code = generate(init_rows, z_syms, psyms, len(modes), None, assigned)
@@ -104,8 +110,9 @@ def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledMode
                        meta={"relations": relation_ops, "n_all": len(syms),
                              "equation_names": [system.equations[e].name(system)
                                                 for e in caus.residual_eqs],
-                             "modes": modes, "causal": caus.causal})
-    cm.outputs = _output_map(flat, aliases, {q: k for k, q in enumerate(syms)})
+                             "modes": modes, "causal": caus.causal,
+                             "structural_zeros": sorted(zeros)})
+    cm.outputs = _output_map(flat, aliases, {q: k for k, q in enumerate(syms)}, psyms)
     cm.start = np.array([_start(system, v) for v in caus.z])
     cm.initial_conditions = InitialConditions(init_code, init_text)
     if reduced.whens:
@@ -180,12 +187,15 @@ def _start(system, k) -> float:
     return 0.0
 
 
-def _output_map(flat, aliases, index) -> dict:
-    """Every flat variable's name -> (sign, y index) or (None, constant value)."""
+def _output_map(flat, aliases, index, psyms) -> dict:
+    """Every flat variable's name -> (sign, y index), or (None, f) with f(p) its constant
+    value (a variable fixed to an expression of parameters)."""
     out = {}
     for v in flat.variables:
         if v.name in aliases.constants:
-            out[v.name] = (None, float(aliases.constants[v.name]))
+            value = sp.sympify(aliases.constants[v.name])
+            out[v.name] = (None, sp.lambdify([psyms], value, modules="math")
+                           if value.free_symbols else float(value))
             continue
         sign, root = aliases.resolve(v.name)
         out[v.name] = (float(sign), index[sp.Symbol(root, real=True)])

@@ -56,6 +56,8 @@ class IndexReport:
                 "the choice of dummy derivatives is only valid locally (coefficients that "
                 "depend on the variables, listed as dynamic state sets): the states are "
                 "re-chosen at run time where the constraint Jacobian calls for it")
+        self._names = names
+        self._graph = [list(vs) for vs in s.graph]
         self.counts["solver"] = {"unknowns": compiled.n, "states": len(compiled.state_index),
                                  "zero_crossings": compiled.n_roots}
 
@@ -77,6 +79,56 @@ class IndexReport:
             "timings_s": self.timings,
             "notes": self.notes,
         }
+
+    def blt_order(self) -> tuple[list, list]:
+        """Equations and variables in BLT order (rows and columns of the picture)."""
+        eqs = [e for b in self.blocks for e in b["equations"]]
+        vars_ = [v for b in self.blocks for v in b["variables"]]
+        return eqs, vars_
+
+    def to_dot(self) -> str:
+        """Graphviz DOT text: one node per BLT block, edges from the blocks it needs."""
+        owner = {v: k for k, b in enumerate(self.blocks) for v in b["variables"]}
+        lines = [f'digraph "{self.model_name}" {{', "  rankdir=LR;", "  node [shape=box];"]
+        for k, b in enumerate(self.blocks):
+            label = ", ".join(self._names[v] for v in b["variables"][:4])
+            label += " ..." if len(b["variables"]) > 4 else ""
+            style = ' style=filled fillcolor="#f4c7c3"' if b.get("torn") else ""
+            lines.append(f'  b{k} [label="{k}: {label}\\n({b["size"]} eq, {b["solved"]})"{style}];')
+        for k, b in enumerate(self.blocks):
+            needs = {owner[v] for e in b["equations"] for v in self._graph[e]
+                     if v in owner and owner[v] != k}
+            lines += [f"  b{j} -> b{k};" for j in sorted(needs)]
+        return "\n".join(lines + ["}"])
+
+    def plot(self, ax=None, path=None):
+        """The incidence matrix in BLT order with the blocks outlined (matplotlib)."""
+        import matplotlib
+        if path is not None:
+            matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from matplotlib.patches import Rectangle
+        eqs, vars_ = self.blt_order()
+        col = {v: j for j, v in enumerate(vars_)}
+        pts = [(i, col[v]) for i, e in enumerate(eqs) for v in self._graph[e] if v in col]
+        if ax is None:
+            size = min(12, 3 + 0.25 * len(vars_))
+            _, ax = plt.subplots(figsize=(size, size))
+        if pts:
+            ax.scatter([j for _, j in pts], [i for i, _ in pts], s=12, marker="s", c="k")
+        k = 0
+        for b in self.blocks:
+            n = b["size"]
+            ax.add_patch(Rectangle((k - 0.5, k - 0.5), n, n, fill=False,
+                                   ec="tab:red" if b.get("torn") else "tab:blue"))
+            k += n
+        ax.set_xticks(range(len(vars_)), [self._names[v] for v in vars_], rotation=90, fontsize=7)
+        ax.set_yticks(range(len(eqs)), [str(e) for e in eqs], fontsize=7)
+        ax.invert_yaxis()
+        ax.set_title(f"{self.model_name}: incidence in BLT order (red: torn blocks)")
+        if path is not None:
+            ax.figure.savefig(path, dpi=120, bbox_inches="tight")
+        return ax
 
     def to_json(self, **kw) -> str:
         return json.dumps(self.as_dict(), default=str, **kw)

@@ -2,9 +2,10 @@
 from .base import Port, SignalPort
 from .electrical import Pin, PositivePin, NegativePin
 from .mechanical import RotationalFlange, TranslationalFlange
+from .planar import Frame
 from .fluid import FluidPort
 from .thermal import HeatPort
 from .signal import RealInput, RealOutput
 
 __all__ = ["Port", "SignalPort", "Pin", "PositivePin", "NegativePin", "RotationalFlange",
-           "TranslationalFlange", "FluidPort", "HeatPort", "RealInput", "RealOutput"]
+           "TranslationalFlange", "Frame", "FluidPort", "HeatPort", "RealInput", "RealOutput"]

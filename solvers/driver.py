@@ -9,8 +9,10 @@
   ``IDARootfind`` (Hindmarsh et al. 2005), to a time tolerance of about
   1e-12 relative.  The event is then handled by ``problem.handle_event``, iterated
   while the discrete state changes and new crossings appear, the algebraic variables
-  and y' are re-initialized, and the BDF restarts at order 1, as after any discontinuity (Brenan,
-  Campbell & Petzold 1996, ch. 5);
+  and y' are re-initialized, and the BDF restarts at order 1 as after any
+  discontinuity (Brenan, Campbell & Petzold 1996, ch. 5), its first step sized by a
+  trial step (IDA's heuristic alone makes it orders of magnitude too small at tight
+  tolerances);
 * time events (``problem.time_events`` and ``problem.next_time_event``): steps land
   exactly on them, then they are handled like state events with no crossing flagged.
   Only the signs of the zero-crossing functions at step ends are compared (as in
@@ -186,7 +188,7 @@ class _Run:
         hook = getattr(self.problem, "after_step", None)
         if hook is not None and hook(s.t, s.y, s.yp):
             y, yp = self._reinit(s.t, s.y, s.yp)
-            s.restart(s.t, y, yp, t_stop=s.t_stop)
+            s.restart(s.t, y, yp, t_stop=s.t_stop, probe=True)
             self._arm_roots(s.t, y, yp)
 
     # ------------------------------------------------------------------ output
@@ -357,7 +359,7 @@ class _Run:
                 self._append(t_e, y, yp)
         if action.stop:
             return action.message or f"stopped by the model at t={t_e:.10g}"
-        self.solver.restart(t_e, y, yp, t_stop=self._next_stop(t_e))
+        self.solver.restart(t_e, y, yp, t_stop=self._next_stop(t_e), probe=True)
         self._arm_roots(t_e, y, yp)
         return None
 

@@ -64,10 +64,8 @@ def test_inductance_to_zero_approaches_the_algebraic_model():
     assert gaps[-1] < 1e-3 * V / K
 
 
-@pytest.mark.xfail(strict=True, reason="compiler bug: a parameter equal to 0 multiplying "
-                   "der(x) (Inductor L = 0) is not recognised; La.i stays a state and "
-                   "the residual divides by L (non-finite initialization)")
 def test_dc_motor_with_zero_inductance_parameter():
+    """L = 0 is a structural zero: the armature equation becomes algebraic (2.2.1)."""
     res = ac.simulate(DCMotorStep(motor={"L": 0.0}), t_end=0.2, rtol=1e-8,
                       t_eval=np.linspace(0, 0.2, 21), raise_on_failure=True)
     assert np.max(np.abs(res["motor.rotor.w"] - _step_speed_first_order(res.t))) < 1e-5 * V / K
