@@ -23,6 +23,10 @@ from .linalg import LinearSolver, SingularMatrixError
 
 __all__ = ["NewtonResult", "damped_newton", "homotopy"]
 
+# A weighted step that no longer contracts is accepted below this size (a tenth of the
+# error scale the weights describe)
+_STALL_FLOOR = 0.1
+
 
 @dataclass
 class NewtonResult:
@@ -95,6 +99,7 @@ def damped_newton(fun, jac, x0, *, weights=None, tol: float = 1e-6, max_iter: in
     g = np.asarray(fun(x), float)
     nev = 1
     step = np.zeros_like(x)
+    last = np.inf
     for it in range(1, max_iter + 1):
         if not np.all(np.isfinite(g)):
             return NewtonResult(x, False, it, g, step, "non-finite residual", nev)
@@ -102,11 +107,17 @@ def damped_newton(fun, jac, x0, *, weights=None, tol: float = 1e-6, max_iter: in
         dx = _solve(J, -g)
         w = weights(x) if callable(weights) else (1.0 if weights is None else weights)
         step = dx * w
-        if _rms(step) <= tol:
-            # already at the round-off level: a merit decrease cannot be asked for
+        size = _rms(step)
+        # Converged: the step is below tol, or it has stopped contracting while far
+        # below the error scale (round-off in an ill-conditioned J: iterating more
+        # only moves x around within that noise)
+        stalled = it > 2 and _STALL_FLOOR >= size >= 0.5 * last
+        if size <= tol or stalled:
+            # a merit decrease cannot be asked for at the round-off level
             x = x + dx
             g = np.asarray(fun(x), float)
             return NewtonResult(x, True, it, g, step, "converged", nev + 1)
+        last = size
         found, xt, gt, n_ls = _line_search(fun, x, dx, g, _row_scale(J), min_damping)
         nev += n_ls
         if not found:

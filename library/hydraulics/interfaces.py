@@ -1,0 +1,64 @@
+"""Partial models of hydraulics (Egeland & Gravdahl ch. 4), and the orifice law they share.
+
+A ``FluidPort`` carries the pressure p [Pa] (across) and the volume flow q [m3/s]
+(through, positive into the component), so p q is the hydraulic power into it.
+"""
+import sympy as sp
+
+import acausal as ac
+from acausal.ports import FluidPort
+
+__all__ = ["PartialOnePort", "PartialTwoPort", "F_tr", "orifice_flow"]
+
+
+class PartialOnePort(ac.Component):
+    """One fluid port, named port."""
+
+    port = FluidPort()
+
+
+class PartialTwoPort(ac.Component):
+    """A restriction between port_a and port_b (orifice, valve, pipe):
+
+        dp = port_a.p - port_b.p,   q = port_a.q,   0 = port_a.q + port_b.q
+
+    q flows from port_a to port_b through the element.
+    """
+
+    port_a = FluidPort()
+    port_b = FluidPort()
+    dp = ac.Variable(start=0.0, unit="Pa", nominal=1e6, description="pressure drop a -> b")
+    q = ac.Variable(start=0.0, unit="m3/s", nominal=1e-4, description="flow from a to b")
+
+    def equations(self):
+        return [ac.Eq(self.dp, self.port_a.p - self.port_b.p),
+                ac.Eq(self.q, self.port_a.q),
+                ac.Eq(0, self.port_a.q + self.port_b.q)]
+
+
+def F_tr(Re_tr, rho, nu, C_d):
+    """Transition force F_tr = 9 Re_tr^2 rho nu^2 / (8 C_d^2) * pi/4  [N]
+    (Egeland & Gravdahl (4.42); (4.12)/(4.14) print a stray factor pi)."""
+    return 9 * Re_tr**2 * rho * nu**2 / (8 * C_d**2) * sp.pi / 4
+
+
+def orifice_flow(A, dp, C_d, rho, nu, Re_tr):
+    """Regularized orifice flow q(A, dp) (Ellman & Piche 1999; Egeland & Gravdahl 4.2.3,
+    (4.13) with F_tr of (4.42)), extended as an odd function of dp:
+
+        x = A dp / F_tr
+        q = (3 nu Re_tr / 4) (sqrt(pi)/2) sqrt(A) x (3 - |x|)    |x| <= 1   (laminar)
+        q = sign(dp) C_d A sqrt(2 |dp| / rho)                    |x| >= 1   (turbulent)
+
+    The two branches and their slopes agree at |x| = 1, and the slope at dp = 0 is
+    finite.  ``A`` may be an expression that reaches 0 (a closed spool): A enters as
+    A^(3/2) in the laminar branch, whose derivative stays finite there.
+    """
+    Ftr = F_tr(Re_tr, rho, nu, C_d)
+    x = A * dp / Ftr
+    s = ac.if_else(dp >= 0, 1, -1)
+    laminar = 3 * nu * Re_tr / 4 * sp.sqrt(sp.pi) / 2 * A**sp.Rational(3, 2) * dp / Ftr \
+        * (3 - s * x)
+    turbulent = C_d * A * sp.sqrt(2 * sp.Abs(dp) / rho)
+    return ac.if_else(A * dp > Ftr, turbulent,
+                      ac.if_else(A * dp < -Ftr, -turbulent, laminar))
