@@ -59,6 +59,8 @@ def orifice_flow(A, dp, C_d, rho, nu, Re_tr):
     s = ac.if_else(dp >= 0, 1, -1)
     laminar = 3 * nu * Re_tr / 4 * sp.sqrt(sp.pi) / 2 * A**sp.Rational(3, 2) * dp / Ftr \
         * (3 - s * x)
-    turbulent = C_d * A * sp.sqrt(2 * sp.Abs(dp) / rho)
+    # |dp|^(1/2) as (dp^2)^(1/4): no Abs (whose derivative sympy gives in re/im), and
+    # no negative square root if Newton strays across dp = 0 in a frozen branch
+    turbulent = C_d * A * sp.sqrt(2 / rho) * (dp**2)**sp.Rational(1, 4)
     return ac.if_else(A * dp > Ftr, turbulent,
                       ac.if_else(A * dp < -Ftr, -turbulent, laminar))

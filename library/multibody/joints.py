@@ -18,12 +18,14 @@ class Revolute(PartialTwoFrames):
     origin (MSL PlanarMechanics.Joints.Revolute):
 
         (frame_b.x, frame_b.y) = (frame_a.x, frame_a.y),   frame_b.phi = frame_a.phi + phi,
-        w = der(phi),   frame_a.f + frame_b.f = 0,
+        w = der(phi),   a = der(w),   frame_a.f + frame_b.f = 0,
         frame_b.tau = -flange.tau,   frame_a.tau = flange.tau,   flange.phi = phi
 
     A torque tau driving the flange turns frame_b in +phi relative to frame_a.  phi and
     w are preferred states, as in the MSL: the joint coordinates are then the states of
-    an open chain and need not be re-chosen at run time.
+    an open chain and need not be re-chosen at run time.  a = der(w) is there, as in
+    the MSL, so that phi appears twice differentiated: index reduction then
+    differentiates the joint's angle equation twice and phi, w can be states.
     """
 
     flange = RotationalFlange()
@@ -31,12 +33,14 @@ class Revolute(PartialTwoFrames):
                       description="rotation angle of frame_b relative to frame_a")
     w = ac.Variable(start=0.0, unit="rad/s", state_select="prefer",
                     description="relative angular velocity")
+    a = ac.Variable(unit="rad/s2", description="relative angular acceleration")
 
     def equations(self):
         a, b = self.frame_a, self.frame_b
         return [ac.Eq(b.x, a.x), ac.Eq(b.y, a.y),
                 ac.Eq(b.phi, a.phi + self.phi),
                 ac.Eq(self.w, ac.der(self.phi)),
+                ac.Eq(self.a, ac.der(self.w)),
                 ac.Eq(0, a.fx + b.fx), ac.Eq(0, a.fy + b.fy),
                 ac.Eq(b.tau, -self.flange.tau),
                 ac.Eq(a.tau, self.flange.tau),
@@ -48,7 +52,7 @@ class Prismatic(PartialTwoFrames):
     frame_a (MSL PlanarMechanics.Joints.Prismatic):
 
         e0 = R(frame_a.phi) e / |e|,   (frame_b.x, frame_b.y) = (frame_a.x, frame_a.y) + s e0,
-        frame_b.phi = frame_a.phi,   v = der(s),
+        frame_b.phi = frame_a.phi,   v = der(s),   a = der(v),
         frame_a.f + frame_b.f = 0,   e0 . frame_b.f = -flange.f,
         frame_a.tau + frame_b.tau + s (e0_x frame_b.fy - e0_y frame_b.fx) = 0,
         flange.s = s
@@ -63,6 +67,7 @@ class Prismatic(PartialTwoFrames):
                     description="translation of frame_b relative to frame_a along e")
     v = ac.Variable(start=0.0, unit="m/s", state_select="prefer",
                     description="relative velocity along e")
+    a = ac.Variable(unit="m/s2", description="relative acceleration along e")
 
     def equations(self):
         a, b = self.frame_a, self.frame_b
@@ -72,6 +77,7 @@ class Prismatic(PartialTwoFrames):
                 ac.Eq(b.y, a.y + self.s * e0y),
                 ac.Eq(b.phi, a.phi),
                 ac.Eq(self.v, ac.der(self.s)),
+                ac.Eq(self.a, ac.der(self.v)),
                 ac.Eq(0, a.fx + b.fx), ac.Eq(0, a.fy + b.fy),
                 ac.Eq(e0x * b.fx + e0y * b.fy, -self.flange.f),
                 ac.Eq(0, a.tau + b.tau + self.s * (e0x * b.fy - e0y * b.fx)),
