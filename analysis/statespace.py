@@ -113,8 +113,10 @@ class StateSpace:
         """A minimal realization: the controllable and observable part (Kalman).
 
         The state names of the result are those of the original states that weigh most
-        in each new coordinate (the new states are orthogonal combinations of the old).
+        in each new coordinate (the new states are orthonormal combinations of the old).
         """
+        if self.n_states == 0:
+            return self
         V = _krylov_basis(self.A, self.B, tol)
         A, B, C = V.T @ self.A @ V, V.T @ self.B, self.C @ V
         W = _krylov_basis(A.T, C.T, tol)
@@ -163,8 +165,12 @@ class StateSpace:
             np.real(np.poly(sys.A))
 
     def dcgain(self) -> np.ndarray:
-        """H(0) = D - C A^-1 B (p x m)."""
-        return self.D - self.C @ np.linalg.solve(self.A, self.B)
+        """H(0) = D - C A^-1 B (p x m) of a minimal realization (so that modes the
+        outputs do not see, such as a free angle, do not make A singular)."""
+        sys = self.minimal()
+        if sys.n_states == 0:
+            return sys.D.copy()
+        return sys.D - sys.C @ np.linalg.solve(sys.A, sys.B)
 
     def freqresp(self, w) -> np.ndarray:
         """H(j w) for each w: shape (len(w), p, m), or (len(w),) for one channel."""
@@ -348,22 +354,25 @@ def _sorted(values):
 def _krylov_basis(A, B, tol):
     """Orthonormal basis of the controllable subspace span[B, AB, A^2 B, ...].
 
-    Rank decisions are relative: B's columns against ||B||, each next block (A applied
-    to orthonormal vectors) against ||A||, so scaling the inputs does not change them.
+    A new direction is kept when its part orthogonal to the basis is not small against
+    the vector it came from (relative ``tol``) and above the round-off of the product
+    (a multiple of eps ||A||): a small but genuine coupling (rad/s from Pa in a
+    hydraulic drive) is kept, cancellation noise is not.
     """
     n = A.shape[0]
     rel = tol if tol is not None else max(n, 1) * 1e-10
+    noise = 1e3 * np.finfo(float).eps
     V = np.zeros((n, 0))
-    new, ref = B, np.linalg.norm(B, 2)
+    raw, ref = B, np.linalg.norm(B, 2)
     while V.shape[1] < n and ref > 0:
-        new = new - V @ (V.T @ new)           # twice: one Gram-Schmidt pass loses digits
+        new = raw - V @ (V.T @ raw)           # twice: one Gram-Schmidt pass loses digits
         new = new - V @ (V.T @ new)
         U, s, _ = np.linalg.svd(new, full_matrices=False)
-        keep = U[:, s > rel * ref]
+        keep = U[:, s > max(rel * np.linalg.norm(raw, 2), noise * ref)]
         if keep.shape[1] == 0:
             break
         V = np.hstack([V, keep])
-        new, ref = A @ keep, np.linalg.norm(A, 2)
+        raw, ref = A @ keep, np.linalg.norm(A, 2)
     return V
 
 

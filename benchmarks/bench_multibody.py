@@ -1,12 +1,17 @@
-"""Compile and run times of the n-mass pendulum chain assembled from joints, bars and
-bodies (``acausal.library.multibody.examples.pendulums.PendulumChain``).
+"""Compile and run times of the n-mass pendulum chain, in two forms
+(``acausal.library.multibody.examples.pendulums``):
+
+* ``PendulumChain``: revolute joints, bars and bodies; the joint angles are the states;
+* ``PointMassChain`` (``--point-masses``): the DAE notes' point masses on rods, one
+  distance constraint per rod, the states chosen at run time.
 
 For each n the script prints the size of the flattened model, the compile time (the
 passes and the sympy code generation, split as the index report times them), the time
 to simulate the chain's stop time (2 s, released horizontally) at rtol 1e-6, and the
 largest drift of the total energy relative to the initial potential energy.
 
-Usage: ``python benchmarks/bench_multibody.py [n ...]`` (default 2 5 10 20 50).
+Usage: ``python benchmarks/bench_multibody.py [--point-masses] [n ...]``
+(default 2 5 10 20 50).
 """
 from __future__ import annotations
 
@@ -16,33 +21,35 @@ import time
 import numpy as np
 
 import acausal as ac
-from acausal.library.multibody.examples.pendulums import PendulumChain
+from acausal.library.multibody.examples.pendulums import PendulumChain, PointMassChain
 
 __all__ = ["run"]
 
 G = 9.81
 
 
-def _energy(res, n: int) -> np.ndarray:
-    return sum(0.5 * (res[f"links[{i}].mass.vx"]**2 + res[f"links[{i}].mass.vy"]**2)
-               + G * res[f"links[{i}].mass.y"] for i in range(n))
+def _energy(res, n: int, point_masses: bool) -> np.ndarray:
+    mass = "masses[{}]" if point_masses else "links[{}].mass"
+    return sum(0.5 * (res[mass.format(i) + ".vx"]**2 + res[mass.format(i) + ".vy"]**2)
+               + G * res[mass.format(i) + ".y"] for i in range(n))
 
 
-def run(sizes=(2, 5, 10, 20, 50), rtol: float = 1e-6) -> list:
+def run(sizes=(2, 5, 10, 20, 50), rtol: float = 1e-6, point_masses: bool = False) -> list:
     """Time compile and simulation for each chain length; return the rows printed."""
     rows = []
     print(f"{'n':>4} {'equations':>10} {'states':>7} {'compile s':>10} {'codegen s':>10} "
           f"{'run s':>8} {'steps':>6} {'energy drift':>13}")
     for n in sizes:
         t0 = time.perf_counter()
-        compiled = ac.compile(PendulumChain(n))
+        model = PointMassChain(n) if point_masses else PendulumChain(n)
+        compiled = ac.compile(model)
         t1 = time.perf_counter()
-        res = ac.simulate(compiled, t_end=PendulumChain.stop_time, rtol=rtol, atol=rtol,
+        res = ac.simulate(compiled, t_end=model.stop_time, rtol=rtol, atol=rtol,
                           n_points=201)
         t2 = time.perf_counter()
         rep = compiled.report
         codegen = sum(v for k, v in rep.timings.items() if "codegen" in k)
-        e = _energy(res, n)
+        e = _energy(res, n, point_masses)
         scale = G * sum(i + 1 for i in range(n))     # potential energy drop of the fall
         row = (n, rep.counts["flatten"]["equations"], len(rep.states), t1 - t0, codegen,
                t2 - t1, res.stats["steps"], float(np.max(np.abs(e - e[0])) / scale))
@@ -53,4 +60,6 @@ def run(sizes=(2, 5, 10, 20, 50), rtol: float = 1e-6) -> list:
 
 
 if __name__ == "__main__":
-    run([int(a) for a in sys.argv[1:]] or (2, 5, 10, 20, 50))
+    args = sys.argv[1:]
+    flag = "--point-masses" in args
+    run([int(a) for a in args if a != "--point-masses"] or (2, 5, 10, 20, 50), point_masses=flag)

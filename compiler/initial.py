@@ -18,6 +18,7 @@ import numpy as np
 import scipy.sparse as sps
 
 from ..solvers.base import SimulationError
+from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton, homotopy
 
 __all__ = ["InitialConditions", "InitializationFailed", "solve_initial"]
@@ -28,23 +29,101 @@ class InitializationFailed(SimulationError):
 
 
 class InitialConditions:
-    """The initial-condition rows as generated code over the solver vector z."""
+    """The initial-condition rows as generated code over the solver vector z.
+
+    ``rows`` selects which of the generated rows are used (all mandatory rows, and the
+    optional start-value rows that :meth:`choose_rows` keeps).
+    """
 
     def __init__(self, code, descriptions):
         self.code = code
-        self.descriptions = descriptions      # one text per row, for messages
+        self.all_descriptions = descriptions
+        self.rows = np.arange(code.n_rows)
+        self._entries = np.ones(len(code.jac_rows), dtype=bool)
+        self._renumber = np.arange(code.n_rows)
 
     @property
     def n(self) -> int:
-        return self.code.n_rows
+        return len(self.rows)
+
+    @property
+    def descriptions(self) -> list:
+        return [self.all_descriptions[k] for k in self.rows]
+
+    def choose_rows(self, model_code, n_res, n_mandatory, n_states, n_z) -> None:
+        """Keep the mandatory rows and those optional start-value rows (in state order)
+        that complete a perfect matching of [G; initial rows] onto z (Modelica's rule:
+        start values fix the states that nothing else determines)."""
+        from .structure import _match
+        keep = model_code.jac_rows < n_res
+        adj = _adjacency(model_code.jac_rows[keep], model_code.jac_cols[keep], n_res)
+        i_adj = _adjacency(self.code.jac_rows, self.code.jac_cols, self.code.n_rows)
+        adj += i_adj[:n_mandatory]
+        l2r, r2l = _match(adj, n_z)
+        if min(l2r, default=0) < 0:
+            bad = [self.all_descriptions[k - n_res] for k, v in enumerate(l2r)
+                   if v < 0 and k >= n_res]
+            raise InitializationFailed(
+                "the initial conditions contradict the model equations structurally "
+                "(they determine the same variables twice): " + "; ".join(bad or ["(model)"]))
+        chosen = list(range(n_mandatory))
+        for k in range(n_mandatory, self.code.n_rows):
+            if len(chosen) == n_states:
+                break
+            adj.append(i_adj[k])
+            l2r.append(-1)
+            if _augment(len(adj) - 1, adj, l2r, r2l):
+                chosen.append(k)
+            else:
+                adj.pop()
+                l2r.pop()
+        self._select(np.array(chosen, dtype=np.int64))
+
+    def _select(self, rows) -> None:
+        self.rows = rows
+        self._renumber = np.full(self.code.n_rows, -1)
+        self._renumber[rows] = np.arange(len(rows))
+        self._entries = self._renumber[self.code.jac_rows] >= 0
 
     def residual(self, t, z, p, m):
-        return self.code.residual(t, z, p, m, np.empty(self.code.n_rows))
+        return self.code.residual(t, z, p, m, np.empty(self.code.n_rows))[self.rows]
 
     def jacobian(self, t, z, p, m, n):
         c = self.code
-        vals = c.jacobian(t, z, p, m, np.empty(len(c.jac_rows)))
-        return sps.csr_matrix((vals, (c.jac_rows, c.jac_cols)), shape=(self.n, n))
+        vals = c.jacobian(t, z, p, m, np.empty(len(c.jac_rows)))[self._entries]
+        rows = self._renumber[c.jac_rows[self._entries]]
+        return sps.csr_matrix((vals, (rows, c.jac_cols[self._entries])), shape=(self.n, n))
+
+
+def _augment(root, adj, l2r, r2l) -> bool:
+    """One augmenting path from row ``root`` (iterative Kuhn search); flips it if found."""
+    seen, stack, parent = {root}, [(root, iter(adj[root]))], {}
+    while stack:
+        u, it = stack[-1]
+        v = next(it, None)
+        if v is None:
+            stack.pop()
+            continue
+        w = r2l[v]
+        if w < 0:
+            while True:             # flip the path back to the root
+                prev = l2r[u]
+                l2r[u], r2l[v] = v, u
+                if u == root:
+                    return True
+                u, v = parent[u], prev
+        if w not in seen:
+            seen.add(w)
+            parent[w] = u
+            stack.append((w, iter(adj[w])))
+    return False
+
+
+def _adjacency(rows, cols, n_rows) -> list:
+    adj = [[] for _ in range(n_rows)]
+    for r, c in zip(rows.tolist(), cols.tolist()):
+        adj[r].append(c)
+    return [sorted(set(a)) for a in adj]
 
 
 def solve_initial(model, init: InitialConditions, t0: float, z_guess: np.ndarray,
@@ -61,17 +140,33 @@ def solve_initial(model, init: InitialConditions, t0: float, z_guess: np.ndarray
                            init.jacobian(t0, z, model.p, model.m, model.n)]).tocsc()
 
     weights = 1.0 / (1e-10 * np.abs(z_guess) + 1e-10 * model.nominal)
-    out = damped_newton(F, J, z_guess.copy(), weights=weights, tol=1.0, max_iter=max_iter)
-    if not out.converged:
-        out = homotopy(F, J, z_guess.copy(), weights=weights, tol=1.0)
-    if not out.converged or np.max(np.abs(out.residual), initial=0) > 1e-6:
-        r = F(out.x)
-        worst = [k for k in np.argsort(-np.abs(r))[:5] if abs(r[k]) > tol]
-        names = [_row_name(model, init, k) for k in worst]
+    out, singular = _attempt(damped_newton, F, J, z_guess, weights, max_iter=max_iter)
+    if out is None or not out.converged:
+        out2, singular2 = _attempt(homotopy, F, J, z_guess, weights)
+        out, singular = (out2, singular2) if out2 is not None else (out, singular or singular2)
+    if out is not None and out.converged and np.max(np.abs(out.residual), initial=0) <= 1e-6:
+        return out.x
+    if out is None:   # the Jacobian of the initial system is singular where Newton started
+        rows = [_row_name(model, init, k) for k in getattr(singular, "rows", [])][:8]
+        cols = [model.names[k] for k in getattr(singular, "cols", []) if k < model.n][:8]
         raise InitializationFailed(
-            f"initialization failed at t = {t0}: {out.message or 'no convergence'}; "
-            "largest residuals in: " + "; ".join(names), t=t0, variables=names)
-    return out.x
+            f"initialization failed at t = {t0}: the initial system is singular at the start "
+            f"values (no unique solution near them); equations: {'; '.join(rows) or '?'}; "
+            f"variables: {', '.join(cols) or '?'}", t=t0, variables=cols)
+    r = F(out.x)
+    worst = [k for k in np.argsort(-np.abs(r))[:5] if abs(r[k]) > tol]
+    names = [_row_name(model, init, k) for k in worst]
+    raise InitializationFailed(
+        f"initialization failed at t = {t0}: {out.message or 'no convergence'}; "
+        "largest residuals in: " + "; ".join(names), t=t0, variables=names)
+
+
+def _attempt(method, F, J, z0, weights, **kw):
+    """(result, None), or (None, the SingularMatrixError) when the Jacobian is singular."""
+    try:
+        return method(F, J, z0.copy(), weights=weights, tol=1.0, **kw), None
+    except SingularMatrixError as err:
+        return None, err
 
 
 def _row_name(model, init, k):

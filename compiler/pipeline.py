@@ -88,7 +88,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledMode
         state_z, pairs, dummies = list(range(caus.n_states)), [], []
     else:
         state_z, pairs, dummies = [], reduction.pairs, reduction.dummies
-    init_rows, init_text = _initial_rows(system, reduced, reduction, caus)
+    init_rows, init_text, n_mandatory = _initial_rows(system, reduced, reduction, caus)
     when_rows, targets, owners = _when_rows(reduced.whens, z_syms, caus, pairs)
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows)]
     exprs, crossings, modes = extract_relations([e for _, e in assigned] + rows + init_rows
@@ -115,6 +115,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledMode
     cm.outputs = _output_map(flat, aliases, {q: k for k, q in enumerate(syms)}, psyms)
     cm.start = np.array([_start(system, v) for v in caus.z])
     cm.initial_conditions = InitialConditions(init_code, init_text)
+    cm.initial_conditions.choose_rows(code, n_res, n_mandatory, reduction.n_states, cm.n)
     if reduced.whens:
         cm.set_whens(generate(when_rows, z_syms, psyms, len(modes), None, assigned),
                      len(reduced.whens), targets, owners)
@@ -205,7 +206,9 @@ def _output_map(flat, aliases, index, psyms) -> dict:
 
 
 def _initial_rows(system, reduced, reduction, caus):
-    """Initial equations, fixed starts, then free states' starts (see compiler.initial)."""
+    """Initial equations and fixed starts (mandatory), then a start-value row for every
+    other state (optional: :func:`acausal.compiler.initial.choose_rows` keeps those that
+    make the initial system structurally nonsingular)."""
     rows = [e.residual for e in reduced.initial_equations]
     text = [f"initial equation {e.text} [{e.where}]" for e in reduced.initial_equations]
     needed = reduction.n_states
@@ -216,20 +219,16 @@ def _initial_rows(system, reduced, reduction, caus):
             rows.append(sym - info.attrs.start)
             text.append(f"{sym.name} = {info.attrs.start} (fixed start value) [{info.where}]")
             fixed.add(k)
-    free = needed - len(rows)
-    if free < 0:
+    if len(rows) > needed:
         from .initial import InitializationFailed
         raise InitializationFailed(
             f"the initial problem is over-specified: {len(rows)} initial conditions for "
             f"{needed} states ({', '.join(system.symbols[v].name for v in reduction.states)}); "
             "conditions: " + "; ".join(text))
+    n_mandatory = len(rows)
     for v in reduction.states:
-        if free == 0:
-            break
-        if v in fixed:
-            continue
-        start = _start(system, v)
-        rows.append(system.symbols[v] - start)
-        text.append(f"{system.symbols[v].name} = {start} (start value of a state)")
-        free -= 1
-    return rows, text
+        if v not in fixed:
+            start = _start(system, v)
+            rows.append(system.symbols[v] - start)
+            text.append(f"{system.symbols[v].name} = {start} (start value of a state)")
+    return rows, text, n_mandatory

@@ -52,15 +52,18 @@ def orifice_flow(A, dp, C_d, rho, nu, Re_tr):
 
     The two branches and their slopes agree at |x| = 1, and the slope at dp = 0 is
     finite.  ``A`` may be an expression that reaches 0 (a closed spool): A enters as
-    A^(3/2) in the laminar branch, whose derivative stays finite there.
+    A^(3/2) in the laminar branch, whose slope in A vanishes with A.
     """
     Ftr = F_tr(Re_tr, rho, nu, C_d)
     x = A * dp / Ftr
     s = ac.if_else(dp >= 0, 1, -1)
-    laminar = 3 * nu * Re_tr / 4 * sp.sqrt(sp.pi) / 2 * A**sp.Rational(3, 2) * dp / Ftr \
-        * (3 - s * x)
-    # |dp|^(1/2) as (dp^2)^(1/4): no Abs (whose derivative sympy gives in re/im), and
-    # no negative square root if Newton strays across dp = 0 in a frozen branch
-    turbulent = C_d * A * sp.sqrt(2 / rho) * (dp**2)**sp.Rational(1, 4)
+    # the power goes inside a piecewise area (a spool that closes): d(u^r)/du is
+    # r u^r / u to sympy, 0/0 in the branch where the area is identically 0
+    A32 = sp.piecewise_fold(sp.sympify(A)**sp.Rational(3, 2))
+    laminar = 3 * nu * Re_tr / 4 * sp.sqrt(sp.pi) / 2 * A32 * dp / Ftr * (3 - s * x)
+    # |dp|^(1/2) as (dp^2 + 1 Pa^2)^(1/4): exact to 1e-12 where a turbulent branch is
+    # active (|dp| >= F_tr/A), and defined when Newton strays across dp = 0 while the
+    # branch is frozen; sp.Abs would be differentiated into re()/im()
+    turbulent = C_d * A * sp.sqrt(2 / rho) * (dp**2 + 1)**sp.Rational(1, 4)
     return ac.if_else(A * dp > Ftr, turbulent,
                       ac.if_else(A * dp < -Ftr, -turbulent, laminar))

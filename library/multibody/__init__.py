@@ -1,8 +1,9 @@
 """Planar multibody mechanics (shaped like Modelica PlanarMechanics)."""
-from .forces import Damper, Spring, SpringDamper
+from .forces import Damper, Rod, Spring, SpringDamper
 from .interfaces import PartialLineForce, PartialOneFrame, PartialTwoFrames
 from .joints import Prismatic, Revolute
-from .parts import Body, FixedFrame, FixedTranslation
+from .parts import Body, FixedFrame, FixedTranslation, PointMass
 
 __all__ = ["PartialOneFrame", "PartialTwoFrames", "PartialLineForce", "FixedFrame", "Body",
-           "FixedTranslation", "Revolute", "Prismatic", "Spring", "Damper", "SpringDamper"]
+           "PointMass", "FixedTranslation", "Revolute", "Prismatic", "Rod", "Spring", "Damper",
+           "SpringDamper"]

@@ -1,10 +1,23 @@
-"""Force elements between two frames, along the line through their origins (Modelica
-PlanarMechanics.Parts.Spring / Damper without their rotational part)."""
+"""Elements acting along the line through the origins of two frames: springs and
+dampers (Modelica PlanarMechanics.Parts.Spring / Damper without their rotational part)
+and the rigid rod of a point-mass chain."""
 import acausal as ac
 
 from .interfaces import PartialLineForce
 
-__all__ = ["Spring", "Damper", "SpringDamper"]
+__all__ = ["Rod", "Spring", "Damper", "SpringDamper"]
+
+
+class Rod(PartialLineForce):
+    """Massless rigid rod with a pin at each end (the links of the DAE notes, 000
+    section 3.2, (3.2.4)):  s = L.  The tension f is the constraint force (the
+    Lagrange multiplier, times L); the rod takes no torque, so the frames' angles stay
+    free."""
+
+    L = ac.Parameter(1.0, unit="m", min=0, description="rod length")
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.s, self.L)]
 
 
 class Spring(PartialLineForce):

@@ -10,7 +10,7 @@ import acausal as ac
 
 from .interfaces import PartialOneFrame, PartialTwoFrames
 
-__all__ = ["FixedFrame", "Body", "FixedTranslation"]
+__all__ = ["FixedFrame", "Body", "PointMass", "FixedTranslation"]
 
 
 def rotate(phi, rx, ry):
@@ -65,6 +65,33 @@ class Body(PartialOneFrame):
                 ac.Eq(self.m * ac.der(self.vx), f.fx),
                 ac.Eq(self.m * ac.der(self.vy), f.fy - self.m * self.g),
                 ac.Eq(self.J * ac.der(self.w), f.tau)]
+
+
+class PointMass(PartialOneFrame):
+    """Point mass m without orientation; gravity g acts in -y (the particles of the DAE
+    notes, 000 section 3.2):
+
+        v = der(r),   m der(vx) = frame.fx,   m der(vy) = frame.fy - m g,   frame.phi = 0
+
+    Its frame is kept parallel to the world, so it takes any torque.  Attach it with
+    elements that leave the angle free (``Rod``, ``Spring``, ``Damper``); on a bar or
+    a joint, which set the angle, use ``Body(J=0)``.
+    """
+
+    m = ac.Parameter(1.0, unit="kg", min=0, description="mass")
+    g = ac.Parameter(9.81, unit="m/s2", description="gravity, acting in -y")
+    x = ac.Variable(start=0.0, unit="m", description="x position")
+    y = ac.Variable(start=0.0, unit="m", description="y position")
+    vx = ac.Variable(start=0.0, unit="m/s", description="velocity in x")
+    vy = ac.Variable(start=0.0, unit="m/s", description="velocity in y")
+
+    def equations(self):
+        f = self.frame
+        return [ac.Eq(self.x, f.x), ac.Eq(self.y, f.y), ac.Eq(f.phi, 0),
+                ac.Eq(self.vx, ac.der(self.x)),
+                ac.Eq(self.vy, ac.der(self.y)),
+                ac.Eq(self.m * ac.der(self.vx), f.fx),
+                ac.Eq(self.m * ac.der(self.vy), f.fy - self.m * self.g)]
 
 
 class FixedTranslation(PartialTwoFrames):

@@ -283,10 +283,6 @@ def test_ideal_diode_rectifier_against_solve_ivp():
     assert np.allclose(res["diode.i"][~on], GOFF * res["diode.v"][~on], rtol=0, atol=5e-9)
 
 
-@pytest.mark.xfail(strict=True, reason="solver bug: with the ideal diode's mode switch, "
-                   "re-initialization after the turn-on event at t = 0.02165 fails at "
-                   "rtol 1e-10 (too many iterations); at rtol 1e-11 the iteration matrix "
-                   "is reported singular at the first turn-on (t = 0.000955)")
 def test_ideal_diode_rectifier_at_tight_tolerance():
     t = np.linspace(0, 0.04, 81)
     res = ac.simulate(IdealRectifier(), t_end=0.04, rtol=1e-10, t_eval=t,

@@ -11,16 +11,20 @@ hand-reduced Cartesian form of 000 section 3.5 is singular).
 
 * ``SinglePendulum``: one link, released at 0.5 rad.
 * ``DoublePendulum``: two links, released at 0.5 rad and 0.4 rad relative (0.9 absolute).
-* ``PendulumChain(n)``: the n-mass pendulum of 000 section 3.4, released straight out
-  horizontally (joint 1 at pi/2, the others at 0).
+* ``PendulumChain(n)``: n such links, released straight out horizontally (joint 1 at
+  pi/2, the others at 0).
+* ``PointMassChain(n)``: the n-mass pendulum of 000 section 3.4 in its own form: point
+  masses on rigid rods, one distance constraint per rod (3.2.4), differentiated twice;
+  the masses' Cartesian coordinates are the only candidates for states, and which of
+  x_i, y_i is a state must change as the rods turn: dynamic state selection.
 """
 import numpy as np
 
 import acausal as ac
 from acausal.library.multibody import (Body, FixedFrame, FixedTranslation, PartialTwoFrames,
-                                      Revolute)
+                                      PointMass, Revolute, Rod)
 
-__all__ = ["Link", "SinglePendulum", "DoublePendulum", "PendulumChain"]
+__all__ = ["Link", "SinglePendulum", "DoublePendulum", "PendulumChain", "PointMassChain"]
 
 
 class Link(PartialTwoFrames):
@@ -87,8 +91,29 @@ class PendulumChain(ac.Component):
         return [ac.connect(a, link.frame_a) for a, link in zip(frames, self.links)]
 
 
+class PointMassChain(ac.Component):
+    """n point masses of 1 kg on rods of 1 m (000 section 3.4), released at rest with
+    the chain straight out horizontally along +x."""
+
+    stop_time = 2.0
+
+    def __init__(self, n: int = 5, **modifications):
+        super().__init__(**modifications)
+        self.world = FixedFrame()
+        self.rods = [Rod(L=1.0) for _ in range(n)]
+        # y is fixed, not x: along the horizontal the rods do not determine y
+        self.masses = [PointMass(x={"start": i + 1.0}, y={"start": 0.0, "fixed": True},
+                                 vy={"start": 0.0, "fixed": True})
+                       for i in range(n)]
+
+    def equations(self):
+        frames = [self.world.frame] + [mass.frame for mass in self.masses]
+        return [[ac.connect(a, rod.frame_a), ac.connect(rod.frame_b, b)]
+                for a, b, rod in zip(frames, frames[1:], self.rods)]
+
+
 if __name__ == "__main__":
-    for model in (SinglePendulum(), DoublePendulum(), PendulumChain(5)):
+    for model in (SinglePendulum(), DoublePendulum(), PendulumChain(5), PointMassChain(3)):
         compiled = ac.compile(model)
         print(compiled.report)
         res = ac.simulate(compiled, t_end=model.stop_time, rtol=1e-8)

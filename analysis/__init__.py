@@ -1,0 +1,7 @@
+"""Analysis of compiled models: linearization, steady state, energy, estimation."""
+from .linearize import linearize
+from .operating import OperatingPoint, SteadyStateError, steady_state
+from .statespace import Margins, StateSpace
+
+__all__ = ["linearize", "steady_state", "OperatingPoint", "SteadyStateError", "StateSpace",
+           "Margins"]

@@ -1,0 +1,123 @@
+"""Rotational friction elements (Egeland & Gravdahl ch. 5).
+
+Each element sits between flange_a and flange_b like a damper: with flange_a on a
+``Fixed`` housing it is friction against the ground.  The friction torque tau acts on
+flange_b against the relative angular velocity w (f v >= 0 for the static laws), and -tau on
+flange_a.
+"""
+import acausal as ac
+
+from ._models import _Dahl, _ElastoPlastic, _Karnopp, _LuGre, _Stribeck
+from .interfaces import PartialRotationalFriction
+
+__all__ = ["StribeckFriction", "KarnoppFriction", "DahlFriction", "LuGreFriction",
+           "ElastoPlasticFriction"]
+
+
+class StribeckFriction(_Stribeck, PartialRotationalFriction):
+    """Coulomb, viscous and Stribeck friction, a static map (Egeland & Gravdahl (5.13)):
+
+        tau = [F_c + (F_s - F_c) exp(-(w/v_s)^2)] sgn(w) + F_v w
+
+    F_s = F_c gives Coulomb + viscous friction (5.12).  sgn(0) = 0: a body that should
+    stick chatters about w = 0 (5.18)-(5.19); use ``KarnoppFriction`` for sticking.
+    """
+
+    F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")
+    F_s = ac.Parameter(1.5, unit="N.m", min=0, description="static (break-away) friction")
+    v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
+    F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous friction coefficient")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.w, self.tau)]
+
+
+class KarnoppFriction(_Karnopp, PartialRotationalFriction):
+    """Karnopp's stick-slip friction (Egeland & Gravdahl 5.2.3, 5.2.5-5.2.6, (5.14),
+    (5.22)-(5.23)) with a zero-velocity band |w| < dv:
+
+        |w| >= dv:  tau = [F_c + (F_s - F_c) exp(-(w/v_s)^2)] sgn(w) + F_v w
+        |w| <  dv:  tau = sat(F_a, F_s)     (stuck while |F_a| <= F_s)
+
+    F_a, the torque the rest of the system applies, is found by a curve parameter sa:
+    inside the band tau = sat(sa, F_s) and der(w) = sa - sat(sa, F_s), outside
+    der(w) = sa.  A body that enters the band is stopped there (reinit of w to 0),
+    so it sticks with w = 0 exactly, and breaks away when |F_a| exceeds F_s.  Band
+    edges and |sa| = F_s are events; no chattering.
+    """
+
+    F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")
+    F_s = ac.Parameter(1.5, unit="N.m", min=0, description="static (break-away) friction")
+    v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
+    F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous friction coefficient")
+    dv = ac.Parameter(1e-6, unit="rad/s", min=0, description="half width of the sticking band")
+    a = ac.Variable(unit="rad/s2", description="relative acceleration")
+    sa = ac.Variable(start=0.0, description="curve parameter (applied torque when stuck)")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.w, self.tau)]
+
+
+class DahlFriction(_Dahl, PartialRotationalFriction):
+    """Dahl's friction model (Egeland & Gravdahl 5.3.2, (5.35)):
+
+        der(F) = sigma (w - |w| F / F_c),   tau = F
+
+    In forward motion from F = 0 at x = 0:  F = F_c (1 - exp(-sigma x / F_c))  (5.38).
+    """
+
+    F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")
+    sigma = ac.Parameter(1e3, unit="N.m/rad", min=0, description="rest stiffness")
+    F = ac.Variable(start=0.0, unit="N.m", description="friction state")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.w, self.tau)]
+
+
+class LuGreFriction(_LuGre, PartialRotationalFriction):
+    """LuGre friction (Canudas de Wit et al. 1995; Egeland & Gravdahl 5.3.4, (5.42)-(5.44)):
+
+        der(z) = w - sigma_0 |w| z / g(w),   g = F_c + (F_s - F_c) exp(-(w/v_s)^2)
+        tau = sigma_0 z + sigma_1 der(z) + sigma_2 w
+
+    At constant w the force settles on the Stribeck curve g(w) sgn(w) + sigma_2 w
+    ((5.48), with g the force level, see ``laws.stribeck_level``).  Passive from w to
+    tau iff sigma_1 <= sigma_2 F_c / (F_s - F_c)  (5.54).
+    """
+
+    F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")
+    F_s = ac.Parameter(1.5, unit="N.m", min=0, description="static (break-away) friction")
+    v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
+    sigma_0 = ac.Parameter(1e5, unit="N.m/rad", min=0, description="bristle stiffness")
+    sigma_1 = ac.Parameter(300.0, unit="N.m.s/rad", min=0, description="bristle damping")
+    sigma_2 = ac.Parameter(0.4, unit="N.m.s/rad", min=0, description="viscous friction coefficient")
+    z = ac.Variable(start=0.0, unit="rad", description="mean bristle deflection")
+    z_dot = ac.Variable(unit="rad/s", description="der(z)")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.w, self.tau)]
+
+
+class ElastoPlasticFriction(_ElastoPlastic, PartialRotationalFriction):
+    """Elasto-plastic friction (Dupont et al. 2002; Egeland & Gravdahl 5.3.6, (5.55)-(5.58),
+    exponent i = 1):
+
+        der(z) = w (1 - alpha(z, w) sigma_0 sgn(w) z / g(w))
+        tau = sigma_0 z + sigma_1 der(z) + sigma_2 w,   z_max = g(w) / sigma_0
+
+    alpha = 0 for |z| <= z_b (purely elastic: true stiction, no drift), a sine ramp up to
+    1 at z_max, and 0 when z and w have opposite signs (``laws.elastoplastic_alpha``).
+    """
+
+    F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")
+    F_s = ac.Parameter(1.5, unit="N.m", min=0, description="static (break-away) friction")
+    v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
+    sigma_0 = ac.Parameter(1e5, unit="N.m/rad", min=0, description="bristle stiffness")
+    sigma_1 = ac.Parameter(300.0, unit="N.m.s/rad", min=0, description="bristle damping")
+    sigma_2 = ac.Parameter(0.4, unit="N.m.s/rad", min=0, description="viscous friction coefficient")
+    z_b = ac.Parameter(5e-6, unit="rad", min=0, description="break-away deflection, < F_c/sigma_0")
+    z = ac.Variable(start=0.0, unit="rad", description="elastic (pre-sliding) deflection")
+    z_dot = ac.Variable(unit="rad/s", description="der(z)")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.w, self.tau)]

@@ -1,0 +1,123 @@
+"""Translational friction elements (Egeland & Gravdahl ch. 5).
+
+Each element sits between flange_a and flange_b like a damper: with flange_a on a
+``Fixed`` housing it is friction against the ground.  The friction force f acts on
+flange_b against the relative velocity v (f v >= 0 for the static laws), and -f on
+flange_a.
+"""
+import acausal as ac
+
+from ._models import _Dahl, _ElastoPlastic, _Karnopp, _LuGre, _Stribeck
+from .interfaces import PartialTranslationalFriction
+
+__all__ = ["StribeckFriction", "KarnoppFriction", "DahlFriction", "LuGreFriction",
+           "ElastoPlasticFriction"]
+
+
+class StribeckFriction(_Stribeck, PartialTranslationalFriction):
+    """Coulomb, viscous and Stribeck friction, a static map (Egeland & Gravdahl (5.13)):
+
+        f = [F_c + (F_s - F_c) exp(-(v/v_s)^2)] sgn(v) + F_v v
+
+    F_s = F_c gives Coulomb + viscous friction (5.12).  sgn(0) = 0: a body that should
+    stick chatters about v = 0 (5.18)-(5.19); use ``KarnoppFriction`` for sticking.
+    """
+
+    F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")
+    F_s = ac.Parameter(1.5, unit="N", min=0, description="static (break-away) friction")
+    v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
+    F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous friction coefficient")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.v, self.f)]
+
+
+class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
+    """Karnopp's stick-slip friction (Egeland & Gravdahl 5.2.3, 5.2.5-5.2.6, (5.14),
+    (5.22)-(5.23)) with a zero-velocity band |v| < dv:
+
+        |v| >= dv:  f = [F_c + (F_s - F_c) exp(-(v/v_s)^2)] sgn(v) + F_v v
+        |v| <  dv:  f = sat(F_a, F_s)     (stuck while |F_a| <= F_s)
+
+    F_a, the force the rest of the system applies, is found by a curve parameter sa:
+    inside the band f = sat(sa, F_s) and der(v) = sa - sat(sa, F_s), outside
+    der(v) = sa.  A body that enters the band is stopped there (reinit of v to 0),
+    so it sticks with v = 0 exactly, and breaks away when |F_a| exceeds F_s.  Band
+    edges and |sa| = F_s are events; no chattering.
+    """
+
+    F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")
+    F_s = ac.Parameter(1.5, unit="N", min=0, description="static (break-away) friction")
+    v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
+    F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous friction coefficient")
+    dv = ac.Parameter(1e-6, unit="m/s", min=0, description="half width of the sticking band")
+    a = ac.Variable(unit="m/s2", description="relative acceleration")
+    sa = ac.Variable(start=0.0, description="curve parameter (applied force when stuck)")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.v, self.f)]
+
+
+class DahlFriction(_Dahl, PartialTranslationalFriction):
+    """Dahl's friction model (Egeland & Gravdahl 5.3.2, (5.35)):
+
+        der(F) = sigma (v - |v| F / F_c),   f = F
+
+    In forward motion from F = 0 at x = 0:  F = F_c (1 - exp(-sigma x / F_c))  (5.38).
+    """
+
+    F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")
+    sigma = ac.Parameter(1e3, unit="N/m", min=0, description="rest stiffness")
+    F = ac.Variable(start=0.0, unit="N", description="friction state")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.v, self.f)]
+
+
+class LuGreFriction(_LuGre, PartialTranslationalFriction):
+    """LuGre friction (Canudas de Wit et al. 1995; Egeland & Gravdahl 5.3.4, (5.42)-(5.44)):
+
+        der(z) = v - sigma_0 |v| z / g(v),   g = F_c + (F_s - F_c) exp(-(v/v_s)^2)
+        f = sigma_0 z + sigma_1 der(z) + sigma_2 v
+
+    At constant v the force settles on the Stribeck curve g(v) sgn(v) + sigma_2 v
+    ((5.48), with g the force level, see ``laws.stribeck_level``).  Passive from v to
+    f iff sigma_1 <= sigma_2 F_c / (F_s - F_c)  (5.54).
+    """
+
+    F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")
+    F_s = ac.Parameter(1.5, unit="N", min=0, description="static (break-away) friction")
+    v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
+    sigma_0 = ac.Parameter(1e5, unit="N/m", min=0, description="bristle stiffness")
+    sigma_1 = ac.Parameter(300.0, unit="N.s/m", min=0, description="bristle damping")
+    sigma_2 = ac.Parameter(0.4, unit="N.s/m", min=0, description="viscous friction coefficient")
+    z = ac.Variable(start=0.0, unit="m", description="mean bristle deflection")
+    z_dot = ac.Variable(unit="m/s", description="der(z)")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.v, self.f)]
+
+
+class ElastoPlasticFriction(_ElastoPlastic, PartialTranslationalFriction):
+    """Elasto-plastic friction (Dupont et al. 2002; Egeland & Gravdahl 5.3.6, (5.55)-(5.58),
+    exponent i = 1):
+
+        der(z) = v (1 - alpha(z, v) sigma_0 sgn(v) z / g(v))
+        f = sigma_0 z + sigma_1 der(z) + sigma_2 v,   z_max = g(v) / sigma_0
+
+    alpha = 0 for |z| <= z_b (purely elastic: true stiction, no drift), a sine ramp up to
+    1 at z_max, and 0 when z and v have opposite signs (``laws.elastoplastic_alpha``).
+    """
+
+    F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")
+    F_s = ac.Parameter(1.5, unit="N", min=0, description="static (break-away) friction")
+    v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
+    sigma_0 = ac.Parameter(1e5, unit="N/m", min=0, description="bristle stiffness")
+    sigma_1 = ac.Parameter(300.0, unit="N.s/m", min=0, description="bristle damping")
+    sigma_2 = ac.Parameter(0.4, unit="N.s/m", min=0, description="viscous friction coefficient")
+    z_b = ac.Parameter(5e-6, unit="m", min=0, description="break-away deflection, < F_c/sigma_0")
+    z = ac.Variable(start=0.0, unit="m", description="elastic (pre-sliding) deflection")
+    z_dot = ac.Variable(unit="m/s", description="der(z)")
+
+    def equations(self):
+        return [*super().equations(), *self.law(self.v, self.f)]

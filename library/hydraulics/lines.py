@@ -1,0 +1,103 @@
+"""Hydraulic transmission lines (Egeland & Gravdahl 4.5-4.6): a chain of Helmholtz
+resonators (``LumpedLine``) and the modal (rational) approximation (``ModalLine``).
+
+Line data: length L, cross-section A, density rho, bulk modulus beta = rho c^2, and
+linear (laminar) friction F/rho = B q with B = 8 nu / r0^2, r0 = sqrt(A/pi)  (4.159)-(4.160).
+"""
+import sympy as sp
+
+import acausal as ac
+from acausal.ports import FluidPort
+
+__all__ = ["LumpedLine", "ModalLine"]
+
+# (port_a on a pipe, port_b on a pipe) for each form
+_FORMS = {"impedance": (0, 0), "admittance": (1, 1), "hybrid": (1, 0)}
+
+
+class _Node(ac.Component):
+    """The pressure of one volume of the chain."""
+
+    p = ac.Variable(start=0.0, unit="Pa", nominal=1e6, state_select="prefer",
+                    description="pressure in the volume")
+
+
+class _Pipe(ac.Component):
+    """The flow through one pipe of the chain."""
+
+    q = ac.Variable(start=0.0, unit="m3/s", nominal=1e-4, state_select="prefer",
+                    description="flow in the pipe, towards port_b")
+
+
+class _LineData(ac.Component):
+    port_a = FluidPort()
+    port_b = FluidPort()
+    L = ac.Parameter(10.0, unit="m", min=0, description="line length")
+    A = ac.Parameter(1e-4, unit="m2", min=0, description="cross-section")
+    rho = ac.Parameter(870.0, unit="kg/m3", min=0, description="density")
+    beta = ac.Parameter(1.7052e9, unit="Pa", min=0, description="bulk modulus rho c^2")
+    nu = ac.Parameter(0.0, unit="m2/s", min=0, description="kinematic viscosity (0: lossless)")
+
+    def _B(self):
+        return 8 * self.nu * sp.pi / self.A
+
+
+class LumpedLine(_LineData):
+    """Transmission line as a chain of n Helmholtz resonators (Egeland & Gravdahl
+    4.6.3-4.6.6).  Volume i (V_h = A h) and pipe i (length h):
+
+        (A h / beta) der(p_i) = q_{i-1} - q_i                               (4.279)
+        (h rho / A) der(q_{i-1}) = p_{i-1} - p_i - (h rho / A) B q_{i-1}      (4.280), (4.282)
+
+    ``form`` sets what the ends are:
+
+    * ``"impedance"`` (4.6.5): both ports on volumes (the line is fed flows, e.g. by
+      valves); n volumes, n - 1 pipes, L = n h.
+    * ``"admittance"`` (4.6.4): both ports on pipes (fed pressures, e.g. by volumes or
+      tanks); n volumes, n + 1 pipes, L = (n + 1) h.
+    * ``"hybrid"`` (4.6.6): port_a on a pipe, port_b on a volume; n volumes, n pipes,
+      L = (n + 1/2) h.
+
+    Closed at both ends the impedance form has the natural frequencies
+    w_k = 2 (c/h) sin(k pi / (2 n)), k = 1..n-1: 2 sqrt(2) c/L for n = 2 (4.300),
+    3 c/L and 3 sqrt(3) c/L for n = 3 (4.305), tending to k pi c/L (4.301).
+    """
+
+    def __init__(self, n=10, form="impedance", **mods):
+        super().__init__(**mods)
+        if form not in _FORMS:
+            raise ac.ModelError(f"LumpedLine: form must be one of {sorted(_FORMS)}, not {form!r}")
+        if n < 1 or (form == "impedance" and n < 2):
+            raise ac.ModelError("LumpedLine: needs n >= 1 volumes (n >= 2 in impedance form)")
+        self.n, self.form = n, form
+        self.volumes = [_Node() for _ in range(n)]
+        self.pipes = [_Pipe() for _ in range(n - 1 + sum(_FORMS[form]))]
+
+    def _h(self):
+        pipes_over_volumes = {"impedance": 0, "admittance": 1, "hybrid": sp.Rational(1, 2)}
+        return self.L / (self.n + pipes_over_volumes[self.form])
+
+    def equations(self):
+        h, A, rho = self._h(), self.A, self.rho
+        p = [v.p for v in self.volumes]
+        q = [pipe.q for pipe in self.pipes]
+        head, tail = _FORMS[self.form]
+        # a port on a volume feeds it a flow, a port on a pipe gives it a pressure
+        q_in = (([self.port_a.q] if head == 0 else []) + q)[: self.n]
+        q_out = q[head:] + ([-self.port_b.q] if tail == 0 else [])
+        left = ([self.port_a.p] if head == 1 else []) + p
+        right = p[1 - head:] + ([self.port_b.p] if tail == 1 else [])
+        eqs = [ac.Eq(A * h / self.beta * ac.der(p[i]), q_in[i] - q_out[i])
+               for i in range(self.n)]
+        eqs += [ac.Eq(h * rho / A * ac.der(q[j]),
+                      left[j] - right[j] - h * rho / A * self._B() * q[j])
+                for j in range(len(q))]
+        if head == 0:
+            eqs.append(ac.Eq(self.port_a.p, p[0]))
+        else:
+            eqs.append(ac.Eq(self.port_a.q, q[0]))
+        if tail == 1:
+            eqs.append(ac.Eq(self.port_b.q, -q[-1]))
+        else:
+            eqs.append(ac.Eq(self.port_b.p, p[-1]))
+        return eqs
