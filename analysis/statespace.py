@@ -252,12 +252,17 @@ class StateSpace:
     def margins(self, output=None, input=None) -> Margins:  # noqa: A002
         """Gain and phase margins of this system taken as a loop transfer function L(s)
         (negative feedback); crossover frequencies from exact polynomial roots."""
-        num, den = self.tf(output, input)
-        w180 = _positive_real_roots(_imag_of_product(num, den))
-        w180 = [w for w in w180 if _tf_eval(num, den, w).real < 0]
-        gains = [1.0 / abs(_tf_eval(num, den, w)) for w in w180]
+        sys = self.select([_default(output, self.outputs, "output")],
+                          [_default(input, self.inputs, "input")]).minimal()
+        num, den = sys.tf()
+
+        def L(w):    # the state-space form: better conditioned than the polynomials
+            return complex(sys.freqresp([w])[0])
+
+        w180 = [w for w in _positive_real_roots(_imag_of_product(num, den)) if L(w).real < 0]
+        gains = [1.0 / abs(L(w)) for w in w180]
         wc = _positive_real_roots(_gain_crossover_poly(num, den))
-        phases = [_wrap180(180.0 + np.degrees(np.angle(_tf_eval(num, den, w)))) for w in wc]
+        phases = [_wrap180(180.0 + np.degrees(np.angle(L(w)))) for w in wc]
         k = int(np.argmin(gains)) if gains else None
         q = int(np.argmin(np.abs(phases))) if phases else None
         return Margins(gains[k] if k is not None else np.inf,
@@ -409,11 +414,6 @@ def _positive_real_roots(c):
     r = np.roots(np.trim_zeros(c, "f"))
     return sorted(float(x.real) for x in r
                   if abs(x.imag) <= 1e-7 * max(abs(x), 1.0) and x.real > 1e-12)
-
-
-def _tf_eval(num, den, w):
-    s = 1j * w
-    return np.polyval(num, s) / np.polyval(den, s)
 
 
 def _wrap180(deg):

@@ -3,8 +3,6 @@
 Frames carry the position (x, y) and angle phi of a point in the world, and the cut
 force (fx, fy) and torque tau acting on the component, in world coordinates.
 """
-import sympy as sp
-
 import acausal as ac
 from acausal.ports import Frame
 
@@ -28,11 +26,13 @@ class PartialLineForce(PartialTwoFrames):
     """A massless force element acting along the line through the two frame origins
     (MSL PlanarMechanics line-force elements):
 
-        s = |r_b - r_a|,   (frame_b.fx, frame_b.fy) = f (r_b - r_a)/s,
+        s^2 = |r_b - r_a|^2,   (frame_b.fx, frame_b.fy) = f (r_b - r_a)/s,
         frame_a.f = -frame_b.f,   frame_a.tau = frame_b.tau = 0
 
     f > 0 is tension: it pulls the frames towards each other.  The direction is
-    undefined at s = 0.
+    undefined at s = 0.  The distance is defined implicitly, s > 0 by its start value:
+    sympy writes sqrt(dx^2) as Abs(dx) when dy is a structural zero (an element along
+    an axis), and Abs does not differentiate into code.
     """
 
     s = ac.Variable(start=1.0, unit="m", min=0, state_select="avoid",
@@ -42,7 +42,7 @@ class PartialLineForce(PartialTwoFrames):
     def equations(self):
         dx = self.frame_b.x - self.frame_a.x
         dy = self.frame_b.y - self.frame_a.y
-        return [ac.Eq(self.s, sp.sqrt(dx**2 + dy**2)),
+        return [ac.Eq(self.s**2, dx**2 + dy**2),
                 ac.Eq(self.frame_b.fx * self.s, self.f * dx),
                 ac.Eq(self.frame_b.fy * self.s, self.f * dy),
                 ac.Eq(self.frame_a.fx, -self.frame_b.fx),

@@ -4,19 +4,9 @@ import numpy as np
 import acausal as ac
 from acausal.compiler.alias import eliminate_aliases
 from acausal.compiler.flatten import flatten
-from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
 from acausal.library.rotational import Fixed, Inertia, Spring
 
-
-class RC(ac.Component):
-    src = ConstantVoltage(V=10.0)
-    R1 = Resistor(R=100.0)
-    C1 = Capacitor(C=1e-3)
-    gnd = Ground()
-
-    def equations(self):
-        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
-                ac.connect(self.C1.n, self.src.n, self.gnd.p)]
+from ..models.test_electrical_circuits import RCCharging as RC
 
 
 def test_rc_circuit_reduces_to_its_four_real_equations():
