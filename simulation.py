@@ -58,6 +58,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     yp0 = np.zeros_like(y0)
     yp0[compiled.state_index] = compiled.state_derivatives(t_start, y0)
     atol = rtol if atol is None else atol
+    compiled.time_events = compiled.scan_time_events(t_start, t_end)
     from .solvers import integrate
     try:
         out = integrate(compiled, (t_start, t_end), y0, yp0, rtol=rtol, atol=atol,

@@ -253,15 +253,18 @@ class StateSpace:
         """Gain and phase margins of this system taken as a loop transfer function L(s)
         (negative feedback); crossover frequencies from exact polynomial roots."""
         sys = self.select([_default(output, self.outputs, "output")],
-                          [_default(input, self.inputs, "input")]).minimal()
+                          [_default(input, self.inputs, "input")])
         num, den = sys.tf()
 
-        def L(w):    # the state-space form: better conditioned than the polynomials
+        def L(w):    # the model's own realization: exact where the polynomials round off
             return complex(sys.freqresp([w])[0])
 
-        w180 = [w for w in _positive_real_roots(_imag_of_product(num, den)) if L(w).real < 0]
+        w180 = [_polish(lambda w: L(w).imag, w) for w in
+                _positive_real_roots(_imag_of_product(num, den))]
+        w180 = [w for w in w180 if L(w).real < 0]
         gains = [1.0 / abs(L(w)) for w in w180]
-        wc = _positive_real_roots(_gain_crossover_poly(num, den))
+        wc = [_polish(lambda w: abs(L(w)) - 1.0, w) for w in
+              _positive_real_roots(_gain_crossover_poly(num, den))]
         phases = [_wrap180(180.0 + np.degrees(np.angle(L(w)))) for w in wc]
         k = int(np.argmin(gains)) if gains else None
         q = int(np.argmin(np.abs(phases))) if phases else None
@@ -414,6 +417,15 @@ def _positive_real_roots(c):
     r = np.roots(np.trim_zeros(c, "f"))
     return sorted(float(x.real) for x in r
                   if abs(x.imag) <= 1e-7 * max(abs(x), 1.0) and x.real > 1e-12)
+
+
+def _polish(f, w0, rel=1e-6):
+    """Refine a root w0 of f by bisection in [w0 (1 - rel), w0 (1 + rel)] if bracketed."""
+    import scipy.optimize as so
+    a, b = w0 * (1 - rel), w0 * (1 + rel)
+    if np.sign(f(a)) * np.sign(f(b)) < 0:
+        return float(so.brentq(f, a, b, xtol=1e-15 * w0, rtol=4 * np.finfo(float).eps))
+    return w0
 
 
 def _wrap180(deg):

@@ -106,12 +106,12 @@ def generate(residuals: list, y_syms: list, params: list, n_modes: int = 0,
     """
     from ..components.symbols import time
     crossings = crossings or []
-    sub = {s: sp.Symbol(f"_y{k}") for k, s in enumerate(y_syms)}
+    sub = {s: sp.Symbol(f"_y{k}", real=True) for k, s in enumerate(y_syms)}
     n_z = len(y_syms)
     for k, (a, _) in enumerate(assignments):
-        sub[a] = sp.Symbol(f"_a{k}")
-    sub.update({s: sp.Symbol(f"_p{k}") for k, s in enumerate(params)})
-    sub[time] = sp.Symbol("t")
+        sub[a] = sp.Symbol(f"_a{k}", real=True)
+    sub.update({s: sp.Symbol(f"_p{k}", real=True) for k, s in enumerate(params)})
+    sub[time] = sp.Symbol("t", real=True)
     res = [sp.sympify(r).xreplace(sub) for r in residuals]
     roots = [sp.sympify(g).xreplace(sub) for g in crossings]
     assigned = [(sub[a], sp.sympify(e).xreplace(sub)) for a, e in assignments]
@@ -138,7 +138,7 @@ def generate(residuals: list, y_syms: list, params: list, n_modes: int = 0,
 
 def _gradients(assigned, n_z):
     """Forward-mode gradients of the assigned symbols with respect to z (sparse)."""
-    grads = {sp.Symbol(f"_y{j}"): {j: sp.Integer(1)} for j in range(n_z)}
+    grads = {sp.Symbol(f"_y{j}", real=True): {j: sp.Integer(1)} for j in range(n_z)}
     lines = []
     for k, (a, e) in enumerate(assigned):
         g = {}
@@ -150,7 +150,7 @@ def _gradients(assigned, n_z):
                 g[j] = g.get(j, sp.Integer(0)) + partial * gb
         named = {}
         for j, expr in sorted(g.items()):
-            sym = sp.Symbol(f"_g{k}_{j}")
+            sym = sp.Symbol(f"_g{k}_{j}", real=True)
             lines.append(f"    {sym} = {_PRINTER.doprint(expr)}")
             named[j] = sym
         grads[a] = named

@@ -154,6 +154,8 @@ class CompiledModel(DAEProblem):
         self.pair_d = np.asarray([b for _, b in pairs], dtype=np.int64)
         self.dummies = set(dummies)
         self.dynamic = dynamic
+        self._time_idx = np.zeros(0, dtype=np.int64)
+        self._time_f = None
         self.m = np.zeros(code.n_roots, dtype=bool)
         self.n_roots = code.n_roots
         self.n_g = self.n_res     # rows of the model equations proper (for initialization)
@@ -231,8 +233,38 @@ class CompiledModel(DAEProblem):
         return sps.csr_matrix((vals[keep], (c.jac_rows[keep], c.jac_cols[keep])),
                               shape=(self.n_res, self.n))
 
-    def roots(self, t, z, zp):
+    def relations(self, t, z):
+        """lhs - rhs of every relation (the zero-crossing functions, unmasked)."""
         return self.code.roots(t, z, self.p, self.m, np.empty(self.n_roots))
+
+    def roots(self, t, z, zp):
+        g = self.relations(t, z)
+        g[self._time_idx] = 1.0   # relations of time alone are time events, not roots
+        return g
+
+    # -- relations of time alone: events known before integrating --------------------------
+    def set_time_relations(self, idx, f) -> None:
+        self._time_idx = np.asarray(idx, dtype=np.int64)
+        self._time_f = f
+        self.time_events = ()
+
+    def scan_time_events(self, t0, t1, samples: int = 20000) -> list:
+        """Every crossing of a time-only relation in (t0, t1]: sampled at (t1-t0)/samples,
+        then refined by Brent's method.  (Two crossings closer than the sampling interval
+        may be missed; such a signal needs its own time-event description.)"""
+        from scipy.optimize import brentq
+        if self._time_f is None:
+            return []
+        grid = np.linspace(t0, t1, samples + 1)
+        G = np.atleast_2d(np.asarray(self._time_f(grid, self.p), dtype=float))
+        events = []
+        for row, k in zip(G, range(len(self._time_idx))):
+            s = np.sign(row)
+            for j in np.flatnonzero(s[1:] * s[:-1] < 0):
+                fk = lambda tt, k=k: float(np.asarray(self._time_f(np.array([tt]), self.p))[k][0])
+                events.append(brentq(fk, grid[j], grid[j + 1], xtol=1e-14, rtol=1e-15))
+            events += [grid[j] for j in np.flatnonzero(s == 0) if grid[j] > t0]
+        return sorted(set(events))
 
     def expand(self, t, z) -> np.ndarray:
         """All variables of the reduced system (states, assigned and torn) from z."""
@@ -243,7 +275,7 @@ class CompiledModel(DAEProblem):
     def init_modes(self, t, z):
         """Relations take the values they have at the initial point."""
         if self.n_roots:
-            g = self.roots(t, z, None)
+            g = self.relations(t, z)
             self.m[:] = [_RELATION[op](x) for op, x in zip(self.meta["relations"], g)]
 
     def set_whens(self, code, n_when, targets, owners) -> None:
@@ -262,7 +294,9 @@ class CompiledModel(DAEProblem):
     def handle_event(self, t, z, zp, crossed):
         """Switch the relations that crossed; fire when-clauses whose condition became true."""
         m_old = self.m.copy()
-        self._settle_modes(t, z, crossed)
+        which = np.array(crossed, dtype=bool, copy=True)
+        which[self._time_idx] = True     # a time event: settle the relations of time
+        self._settle_modes(t, z, which)
         if getattr(self, "when_code", None) is None:
             return EventAction(changed=not np.array_equal(m_old, self.m))
         before = self._when_values(t, z, m_old)
@@ -284,7 +318,7 @@ class CompiledModel(DAEProblem):
         point itself, or a ball reinitialized at h = 0 with v > 0) it is the sign a
         short step along z' gives.
         """
-        g = self.roots(t, z, None)
+        g = self.relations(t, z)
         ops = self.meta["relations"]
         at_zero = which & (np.abs(g) <= 1e-9 * (1.0 + np.abs(g).max(initial=0.0)))
         for k in np.flatnonzero(which & ~at_zero):
@@ -294,7 +328,7 @@ class CompiledModel(DAEProblem):
         zp = np.zeros_like(z)
         zp[self.state_index] = self.state_derivatives(t, z)
         dt = 1e-7 * (1.0 + abs(t))
-        g_next = self.roots(t + dt, z + dt * zp, None)
+        g_next = self.relations(t + dt, z + dt * zp)
         for k in np.flatnonzero(at_zero):
             self.m[k] = _RELATION[ops[k]](g_next[k])
 

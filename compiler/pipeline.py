@@ -116,10 +116,23 @@ def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledMode
     cm.start = np.array([_start(system, v) for v in caus.z])
     cm.initial_conditions = InitialConditions(init_code, init_text)
     cm.initial_conditions.choose_rows(code, n_res, n_mandatory, reduction.n_states, cm.n)
+    cm.set_time_relations(*_time_relations(crossings, psyms))
     if reduced.whens:
         cm.set_whens(generate(when_rows, z_syms, psyms, len(modes), None, assigned),
                      len(reduced.whens), targets, owners)
     return cm
+
+
+def _time_relations(crossings, psyms):
+    """Zero-crossing functions of time and parameters only (steps, ramps, pulses), as one
+    vectorized numpy function f(t_array, p) -> rows: their events are known in advance."""
+    from ..components.symbols import time
+    allowed = set(psyms) | {time}
+    idx = [k for k, g in enumerate(crossings) if g.free_symbols <= allowed and g.has(time)]
+    if not idx:
+        return [], None
+    f = sp.lambdify([time, psyms], [crossings[k] + 0 * time for k in idx], modules="numpy")
+    return idx, f
 
 
 def _when_rows(whens, z_syms, caus, pairs):

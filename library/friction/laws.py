@@ -20,7 +20,10 @@ def stribeck_level(v, F_c, F_s, v_s):
     (5.35), and z_max = g/sigma_0 (5.58), so g is the force level itself, as in
     Canudas de Wit et al. (1995), and z_ss = g(v) sgn(v) / sigma_0.
     """
-    return F_c + (F_s - F_c) * sp.exp(-(v / v_s)**2)
+    # (v/v_s)^2 spelled ((v + v_s)/v_s - 1)^2: sympy keeps it a square of a sum, and the
+    # code printer emits v^2/v_s^2 wrongly as v*v/v_s*v_s (see tests/library/test_friction)
+    ratio = (v + v_s) / v_s - 1
+    return F_c + (F_s - F_c) * sp.exp(-ratio**2)
 
 
 def stribeck(v, F_c, F_s, v_s, F_v):
@@ -33,8 +36,12 @@ def stribeck(v, F_c, F_s, v_s, F_v):
 
 
 def saturation(x, limit):
-    """sat(x, limit) = x clipped to [-limit, limit] (Karnopp's sticking force (5.22))."""
-    return ac.if_else(x > limit, limit, ac.if_else(x < -limit, -limit, x))
+    """sat(x, limit) = x clipped to [-limit, limit] (Karnopp's sticking force (5.22)).
+
+    The relations are non-strict: an event that finds x exactly at the limit (a
+    break-away, located where the applied force reaches F_s) then starts the slip.
+    """
+    return ac.if_else(x >= limit, limit, ac.if_else(x <= -limit, -limit, x))
 
 
 def elastoplastic_alpha(z, v, z_b, z_max):

@@ -74,8 +74,8 @@ class PointMass(PartialOneFrame):
         v = der(r),   m der(vx) = frame.fx,   m der(vy) = frame.fy - m g,   frame.phi = 0
 
     Its frame is kept parallel to the world, so it takes any torque.  Attach it with
-    elements that leave the angle free (``Rod``, ``Spring``, ``Damper``); on a bar or
-    a joint, which set the angle, use ``Body(J=0)``.
+    elements that leave the angle free (``Rod``, ``Spring``, ``Damper``).  On a bar it
+    would hold the bar's angle at 0 and lock the joints before it: use ``Body(J=0)``.
     """
 
     m = ac.Parameter(1.0, unit="kg", min=0, description="mass")

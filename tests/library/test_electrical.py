@@ -151,8 +151,7 @@ class SourcesOnResistors(ac.Component):
 
 def test_source_waveforms():
     t = np.linspace(0, 1, 201)
-    # max_step below the pulse widths: see test_blocks.test_pulse_without_max_step
-    res = ac.simulate(SourcesOnResistors(), t_end=1, rtol=1e-8, t_eval=t, max_step=0.02)
+    res = ac.simulate(SourcesOnResistors(), t_end=1, rtol=1e-8, t_eval=t)
     assert np.allclose(res["ramp_v.v"], 1.0 + 3.0 * np.clip((t - 0.2) / 0.5, 0, 1), atol=1e-12)
     phase = np.mod(t - 0.1, 0.4) / 0.4
     away = np.minimum(np.abs(phase - 0.25), np.minimum(phase, 1 - phase)) > 1e-6

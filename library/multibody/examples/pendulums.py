@@ -4,9 +4,9 @@ the same systems as raw Cartesian equations are in ``acausal.library.examples.pe
 Each link is a Revolute, a massless FixedTranslation of length L pointing down at
 phi = 0, and a point mass (Body with J = 0) at its end, so a joint angle is measured
 from the downward vertical and the absolute angle of link i is the sum of the first i
-joint angles.  The bars fix the bodies' positions as functions of the angles: index 3,
-two position constraints per link differentiated twice; the joint angles are the
-states (a static choice, valid through the vertical and through full turns, where the
+joint angles.  The bars fix the bodies' positions as functions of the angles: index 3;
+the two bar equations of every link, and the angle relation of every joint after the
+first, are differentiated twice; the joint angles and speeds are the states (a static choice, valid through the vertical and through full turns, where the
 hand-reduced Cartesian form of 000 section 3.5 is singular).
 
 * ``SinglePendulum``: one link, released at 0.5 rad.
