@@ -8,7 +8,8 @@
 For each n the script prints the size of the flattened model, the compile time (the
 passes and the sympy code generation, split as the index report times them), the time
 to simulate the chain's stop time (2 s, released horizontally) at rtol 1e-6, and the
-largest drift of the total energy relative to the initial potential energy.
+largest drift of the total energy relative to the potential energy of the full fall
+(g (1 + 2 + ... + n) for unit masses and lengths).
 
 Usage: ``python benchmarks/bench_multibody.py [--point-masses] [n ...]``
 (default 2 5 10 20 50).

@@ -13,8 +13,21 @@ from .interfaces import PartialOneFrame, PartialTwoFrames
 __all__ = ["FixedFrame", "Body", "PointMass", "FixedTranslation"]
 
 
-def rotate(phi, rx, ry):
-    """The vector (rx, ry), given in a frame at angle phi, in world coordinates."""
+def rotate(phi, rx, ry) -> tuple:
+    """R(phi) r: a vector given in a frame at angle phi, in world coordinates.
+
+    Parameters
+    ----------
+    phi : sympy expression
+        Angle of the frame [rad].
+    rx, ry : sympy expression or float
+        The vector's components in the frame.
+
+    Returns
+    -------
+    tuple
+        The world components (cos(phi) rx - sin(phi) ry, sin(phi) rx + cos(phi) ry).
+    """
     c, s = sp.cos(phi), sp.sin(phi)
     return c * rx - s * ry, s * rx + c * ry
 

@@ -53,6 +53,7 @@ class BallAndBeam(ac.Component):
     track_offset = FixedTranslation(rx=0.0, ry=ac.ref("R"))
     track = Prismatic(ex=1.0, ey=0.0, s={"start": 0.0, "fixed": True},
                       v={"start": 0.0, "fixed": True})
+    # the ball's rotation follows from x by rolling: leave the book's theta, x as states
     ball_joint = Revolute(phi={"state_select": "default"}, w={"state_select": "default"})
     ball = Body(m=ac.ref("m_2"), J=ac.ref("J_2"))
     rolling = IdealGearR2T(ratio=ac.ref("rolling_ratio"))

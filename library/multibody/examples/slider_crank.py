@@ -37,6 +37,8 @@ class SliderCrank(ac.Component):
     world = FixedFrame()
     crank_joint = Revolute(phi={"start": 0.3, "fixed": True})
     crank = FixedTranslation(rx=ac.ref("r"), ry=0.0)
+    # the other joints of the loop follow from the crank angle: no preference for them,
+    # and start values on the intended branch (rod to the right of the crank)
     pin = Revolute(phi={"start": -0.4, "state_select": "default"},
                    w={"state_select": "default"})
     rod_a = FixedTranslation(rx=ac.ref("half_l"), ry=0.0)
@@ -59,8 +61,21 @@ class SliderCrank(ac.Component):
                 ac.connect(self.slider_joint.frame_b, self.slider.frame, self.guide.frame_b)]
 
 
-def slider_position(theta, r=0.1, l=0.3):
-    """Closed-form slider position for crank angle theta."""
+def slider_position(theta: np.ndarray, r: float = 0.1, l: float = 0.3) -> np.ndarray:
+    """Closed-form slider position.
+
+    Parameters
+    ----------
+    theta : array_like
+        Crank angle from +x [rad].
+    r, l : float
+        Crank and connecting-rod lengths [m].
+
+    Returns
+    -------
+    numpy.ndarray
+        x_s = r cos(theta) + sqrt(l^2 - r^2 sin(theta)^2) [m].
+    """
     return r * np.cos(theta) + np.sqrt(l**2 - (r * np.sin(theta))**2)
 
 
