@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.analysis import energy_balance, is_passive, register_storage
+from acausal.analysis import energy_balance, is_passive
 from acausal.library.electrical import Ground, Resistor, StepVoltage
 from acausal.library.electrical.interfaces import OnePort
 from acausal.library.electromechanical import DCMotor
@@ -82,12 +82,14 @@ class ActiveCircuit(ac.Component):
                 ac.connect(self.active.n, self.source.n, self.ground.p)]
 
 
-def test_negative_resistor_is_not_passive_and_a_registered_storage_is_used():
+def test_negative_resistor_is_not_passive_and_per_audit_entries_override():
     model = ActiveCircuit()
     res = ac.simulate(model, t_end=1.0, n_points=11)
     assert not is_passive(res, model, "active")
     assert is_passive(res, model, "load")
-    register_storage(NegativeResistor, lambda v, p: 0.0 * v("i"))
+    i = res["load.i"]
     audit = energy_balance(res, ActiveCircuit())             # a fresh, unbound instance
-    assert "active" in audit.stored and audit.relative_residual() < 1e-6 or \
-        np.max(np.abs(audit.residual)) > 0.5                 # storage 0: power unaccounted
+    assert np.allclose(audit.sources["active"], 1.0 * i**2)  # it delivers R i^2
+    audit = energy_balance(res, model, dissipation={"active": lambda v, p: v("v") * v("i")})
+    assert set(audit.sources) == {"source"}
+    assert np.max(np.abs(audit.residual)) < 1e-9
