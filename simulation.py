@@ -26,6 +26,7 @@ def initial_values(compiled: CompiledModel, t0: float = 0.0) -> np.ndarray:
     y = compiled.start.copy()
     compiled.init_modes(t0, y)
     if compiled.dynamic is not None:
+        compiled.dynamic.switches = []      # the log is per simulation
         compiled.reselect_states(t0, y, hysteresis=1.0)
     y = solve_initial(compiled, compiled.initial_conditions, t0, y)
     compiled.init_modes(t0, y)

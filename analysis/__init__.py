@@ -5,8 +5,9 @@ from .estimate import Estimate, estimate
 from .linearize import linearize
 from .operating import OperatingPoint, SteadyStateError, steady_state
 from .statespace import Margins, StateSpace
+from .symbolic import SymbolicStateSpace, linearize_symbolic
 
-__all__ = ["linearize", "steady_state", "estimate", "energy_balance", "is_passive",
+__all__ = ["linearize", "linearize_symbolic", "steady_state", "estimate", "energy_balance", "is_passive",
            "register_storage", "register_dissipation", "OperatingPoint",
            "SteadyStateError", "StateSpace", "Margins", "Estimate", "EnergyBalance",
-           "Passivity"]
+           "Passivity", "SymbolicStateSpace"]

@@ -36,6 +36,7 @@ import numpy as np
 from ..components.component import Component, Port
 from ..ports import HeatPort
 from ..ports.base import SignalPort
+from .operating import constant_value
 
 __all__ = ["energy_balance", "is_passive", "register_storage", "register_dissipation",
            "EnergyBalance", "Passivity"]
@@ -117,7 +118,7 @@ class _Trajectory:
             return self.value(name[4:-1], rate=True)
         sign, k = self.c.outputs[name]
         if sign is None:
-            return np.full(len(self.result.t), 0.0 if rate else k)
+            return np.full(len(self.result.t), 0.0 if rate else constant_value(self.c, k))
         return sign * (self.Xdot if rate else self.X)[:, k]
 
     def parameter(self, component: Component, name: str) -> float:
@@ -238,6 +239,7 @@ def energy_balance(result, model: Component, *, storage=None, dissipation=None) 
             power = _port_power(traj, comp)
             if np.max(np.abs(power), initial=0.0) > 0.0:
                 sources[comp.path] = -power
+    sources = _significant(sources)
     E, dE = _storage_and_rate(traj, stored)
     ports = {p.path: _one_port_power(traj, p) for p in _ports(model)}
     P_in = sum(sources.values(), np.zeros(len(result.t))) + sum(ports.values(),
@@ -246,6 +248,12 @@ def energy_balance(result, model: Component, *, storage=None, dissipation=None) 
     return EnergyBalance(result.t, E, dE, P_in, P_diss, dE - (P_in - P_diss),
                          {k: fn(*traj.accessors(c)) for k, (fn, c) in stored.items()},
                          dissipated, sources, ports)
+
+
+def _significant(sources):
+    """Drop leaves whose power is round-off (an EMF's v i - tau w, a sensor's)."""
+    peak = max((np.max(np.abs(p)) for p in sources.values()), default=0.0)
+    return {k: p for k, p in sources.items() if np.max(np.abs(p)) > 1e-10 * peak}
 
 
 def _bind(model, result):

@@ -124,7 +124,7 @@ def _matrices(plant, op, inputs, outputs):
         else np.zeros((H.shape[0], 0))
     rows = [_output_row(plant, name) for name in outputs]
     C = np.array([s * (H[k] @ Zx) if s is not None else np.zeros(ns) for s, k in rows])
-    D = np.array([s * (H[k] @ Zp + Hp[k]) if s is not None else np.zeros(len(inputs))
+    D = np.array([s * (H[k] @ Zp + Hp[k]) if s is not None else _dconst_dp(c, k, cols)
                   for s, k in rows])
     return A, B, C.reshape(len(outputs), ns), D.reshape(len(outputs), len(inputs))
 
@@ -156,22 +156,24 @@ def _input_column(plant, name, t, z):
     if internal not in c.outputs:
         raise KeyError(f"no parameter, input or variable named '{name}'")
     sign, idx = c.outputs[internal]
-    if sign is None:
+    if sign is None and not callable(idx):
         raise ValueError(f"'{name}' is a constant of the model, it cannot be an input")
+    if sign is None:        # fixed to a function of the parameters by the compiler
+        return _driving_parameter(plant, name, lambda k: _dconst_dp(c, idx, [(k, 1.0)])[0])
     if idx in {c.outputs[c.names[j]][1] for j in range(c.n)}:
         raise ValueError(f"'{name}' is computed by the solver, not driven by a source; "
                          "use a parameter or a top-level RealInput as input")
-    return _driving_parameter(plant, name, sign, idx, t, z)
+    return _driving_parameter(plant, name, lambda k: sign * _dexpand_dp(c, t, z, k)[idx])
 
 
-def _driving_parameter(plant, name, sign, idx, t, z):
-    """The source parameter that shifts variable ``name`` additively (slope +-1)."""
+def _driving_parameter(plant, name, slope):
+    """The source parameter that shifts variable ``name`` additively (slope +-1).
+
+    ``slope(k)`` is d(name)/d p_k with the solver vector held; an ``offset`` with slope
+    1 is preferred, then any slope +-1, then the steepest.
+    """
     c = plant.compiled
-    slopes = {}
-    for k in range(len(c.p)):
-        g = sign * _dexpand_dp(c, t, z, k)[idx]
-        if abs(g) > 1e-9:
-            slopes[k] = g
+    slopes = {k: g for k in range(len(c.p)) if abs(g := slope(k)) > 1e-9}
     unit = [k for k, g in slopes.items() if abs(abs(g) - 1.0) < 1e-6]
     offsets = [k for k in unit if c.param_names[k].endswith(".offset")]
     pick = offsets or unit or sorted(slopes, key=lambda k: -abs(slopes[k]))
@@ -182,6 +184,24 @@ def _driving_parameter(plant, name, sign, idx, t, z):
             "a compiled model: pass the Component, or use a parameter or a top-level "
             "RealInput)")
     return pick[0], slopes[pick[0]]
+
+
+def _dconst_dp(c, k, cols):
+    """D row of an output the compiler fixed to a constant or a function of p."""
+    if not callable(k):
+        return np.zeros(len(cols))
+    out = []
+    for j, g in cols:
+        p0, h = c.p[j], _step(c.p[j])
+        try:
+            c.p[j] = p0 + h
+            fp = k(c.p)
+            c.p[j] = p0 - h
+            fm = k(c.p)
+        finally:
+            c.p[j] = p0
+        out.append((fp - fm) / (2 * h) / g)
+    return np.array(out)
 
 
 def _step(x, nominal=1.0):

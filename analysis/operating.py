@@ -29,7 +29,8 @@ from ..ports import RealInput, RealOutput
 from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton, homotopy
 
-__all__ = ["OperatingPoint", "SteadyStateError", "steady_state", "operating_point"]
+__all__ = ["OperatingPoint", "SteadyStateError", "steady_state", "operating_point",
+           "constant_value"]
 
 
 class SteadyStateError(ValueError):
@@ -58,7 +59,7 @@ class OperatingPoint:
             return float(c.p[c.param_names.index(self.plant.input_params[name])])
         sign, k = c.outputs[self.plant.internal(name)]
         if sign is None:
-            return float(k)
+            return constant_value(c, k)
         with _modes_at(c, self.t, self.z):
             return float(sign * c.expand(self.t, self.z)[k])
 
@@ -198,6 +199,11 @@ def _merged(a: dict, b: dict) -> dict:
         out[k] = _merged(out[k], v) if isinstance(v, dict) and isinstance(out.get(k), dict) \
             else v
     return out
+
+
+def constant_value(compiled, k) -> float:
+    """The value of a variable the compiler fixed: a number, or a function of p."""
+    return float(k(compiled.p)) if callable(k) else float(k)
 
 
 # -- consistency -------------------------------------------------------------------------------

@@ -164,6 +164,10 @@ class StateSpace:
         return np.real_if_close(k * np.poly(z)).real if len(z) else np.array([k]), \
             np.real(np.poly(sys.A))
 
+    def transfer_functions(self, minimal: bool = True) -> dict:
+        """Every channel's (num, den), keyed by (output name, input name)."""
+        return {(o, i): self.tf(o, i, minimal) for o in self.outputs for i in self.inputs}
+
     def dcgain(self) -> np.ndarray:
         """H(0) = D - C A^-1 B (p x m) of a minimal realization (so that modes the
         outputs do not see, such as a free angle, do not make A singular)."""

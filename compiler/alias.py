@@ -100,6 +100,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
                 queue.add(j)
     kept = [eq for eq, a in zip(eqs, alive) if a]
 
+    _check_fixed_constants(flat, find, constants)
     table = AliasTable(equations_before=len(flat.equations), removed=removed)
     subs = _substitutions(flat, find, constants)
     for v in flat.variables:
@@ -109,6 +110,20 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         elif root != v.symbol:
             table.aliases[v.name] = (sign, root.name)
     return _rebuild(flat, kept, subs, table, find, constants), table
+
+
+def _check_fixed_constants(flat, find, constants) -> None:
+    """A variable with a fixed start value that an equation fixes to another constant is a
+    contradiction (Modelica: an over-specified initial problem); say so by name."""
+    for v in flat.variables:
+        sign, root = find(v.symbol)
+        if not v.attrs.fixed or v.attrs.start is None or root not in constants:
+            continue
+        value = sign * constants[root]
+        if value.is_number and abs(float(value) - v.attrs.start) > 1e-12 * (1 + abs(v.attrs.start)):
+            raise ModelError(f"'{v.name}' in {v.where} has fixed=True with start = "
+                             f"{v.attrs.start}, but its equations make it the constant "
+                             f"{float(value):g}: the initial problem is over-specified")
 
 
 def _substitutions_for(symbols, info, find, constants) -> dict:

@@ -6,7 +6,8 @@ from acausal.ports import FluidPort, RealInput, RotationalFlange, TranslationalF
 
 from .interfaces import PartialOnePort, PartialTwoPort, orifice_flow
 
-__all__ = ["Volume", "PistonVolume", "LaminarOrifice", "TurbulentOrifice", "ReliefValve",
+__all__ = ["Volume", "PistonVolume", "LaminarOrifice", "TurbulentOrifice", "VariableOrifice",
+           "ReliefValve",
            "HydraulicMotor", "Pump", "VariablePump", "Cylinder", "SingleActingCylinder"]
 
 _BETA = 7e8   # bulk modulus of oil, Egeland & Gravdahl 4.3.1
@@ -52,7 +53,7 @@ class PistonVolume(PartialOnePort):
     def equations(self):
         return [ac.Eq(self.p, self.port.p),
                 ac.Eq(self.V, self.V0 + self.A * self.flange.s),
-                ac.Eq(self.V / self.beta * ac.der(self.p) + ac.der(self.V), self.port.q),
+                ac.Eq(ac.der(self.p), self.beta / self.V * (self.port.q - ac.der(self.V))),
                 ac.Eq(self.flange.f, -self.A * self.p)]
 
 
@@ -65,7 +66,19 @@ class LaminarOrifice(PartialTwoPort):
         return [*super().equations(), ac.Eq(self.q, self.C_l * self.dp)]
 
 
-class TurbulentOrifice(PartialTwoPort):
+class _RegularizedOrifice(PartialTwoPort):
+    """Fluid data of the regularized orifice law (4.13): the book's oil by default."""
+
+    C_d = ac.Parameter(0.6, min=0, description="discharge coefficient")
+    rho = ac.Parameter(900.0, unit="kg/m3", min=0, description="oil density")
+    nu = ac.Parameter(30e-6, unit="m2/s", min=0, description="kinematic viscosity")
+    Re_tr = ac.Parameter(1000.0, min=0, description="transition Reynolds number")
+
+    def _law(self, A):
+        return orifice_flow(A, self.dp, self.C_d, self.rho, self.nu, self.Re_tr)
+
+
+class TurbulentOrifice(_RegularizedOrifice):
     """Orifice of area A, turbulent flow (4.1) regularized to laminar flow at small
     Reynolds numbers (Egeland & Gravdahl 4.2.3, (4.13) with F_tr of (4.42)):
 
@@ -77,14 +90,20 @@ class TurbulentOrifice(PartialTwoPort):
     """
 
     A = ac.Parameter(1e-5, unit="m2", min=0, description="orifice area")
-    C_d = ac.Parameter(0.6, min=0, description="discharge coefficient")
-    rho = ac.Parameter(900.0, unit="kg/m3", min=0, description="oil density")
-    nu = ac.Parameter(30e-6, unit="m2/s", min=0, description="kinematic viscosity")
-    Re_tr = ac.Parameter(1000.0, min=0, description="transition Reynolds number")
 
     def equations(self):
-        law = orifice_flow(self.A, self.dp, self.C_d, self.rho, self.nu, self.Re_tr)
-        return [*super().equations(), ac.Eq(self.q, law)]
+        return [*super().equations(), ac.Eq(self.q, self._law(self.A))]
+
+
+class VariableOrifice(_RegularizedOrifice):
+    """``TurbulentOrifice`` whose area is a signal, A = max(A_in, 0): a valve that opens
+    and closes (e.g. the fast closure of Egeland & Gravdahl 11.2.10)."""
+
+    A_in = RealInput()
+
+    def equations(self):
+        A = ac.if_else(self.A_in > 0, self.A_in, 0)
+        return [*super().equations(), ac.Eq(self.q, self._law(A))]
 
 
 class ReliefValve(PartialTwoPort):
@@ -187,7 +206,9 @@ class Cylinder(ac.Component):
         flange.f = -(A_a p_a - A_b p_b)
 
     A symmetric cylinder has A_a = A_b = A_p - A_r (4.81), a single-rod one A_a = A_p,
-    A_b = A_p - A_r (4.82).  The force A_a p_a - A_b p_b pushes the rod in +x.
+    A_b = A_p - A_r (4.82).  The force A_a p_a - A_b p_b pushes the rod in +x.  The
+    chamber equations are written solved for der(p): in the form above their
+    coefficient V/beta (~1e-13) looks singular to the solver's pivot test.
     """
 
     port_a = FluidPort()
@@ -211,10 +232,10 @@ class Cylinder(ac.Component):
         pa, pb, leak = self.p_a, self.p_b, self.C_i * (self.p_a - self.p_b)
         return [ac.Eq(self.x, self.flange.s), ac.Eq(self.v, ac.der(self.x)),
                 ac.Eq(pa, self.port_a.p), ac.Eq(pb, self.port_b.p),
-                ac.Eq((self.V_a0 + self.A_a * self.x) / self.beta * ac.der(pa),
-                      self.port_a.q - self.A_a * self.v - leak - self.C_e * pa),
-                ac.Eq((self.V_b0 - self.A_b * self.x) / self.beta * ac.der(pb),
-                      self.port_b.q + self.A_b * self.v + leak - self.C_e * pb),
+                ac.Eq(ac.der(pa), self.beta / (self.V_a0 + self.A_a * self.x)
+                      * (self.port_a.q - self.A_a * self.v - leak - self.C_e * pa)),
+                ac.Eq(ac.der(pb), self.beta / (self.V_b0 - self.A_b * self.x)
+                      * (self.port_b.q + self.A_b * self.v + leak - self.C_e * pb)),
                 ac.Eq(self.flange.f, -(self.A_a * pa - self.A_b * pb))]
 
 
@@ -239,6 +260,6 @@ class SingleActingCylinder(ac.Component):
     def equations(self):
         return [ac.Eq(self.x, self.flange.s), ac.Eq(self.v, ac.der(self.x)),
                 ac.Eq(self.p, self.port.p),
-                ac.Eq((self.V_0 + self.A * self.x) / self.beta * ac.der(self.p),
-                      self.port.q - self.A * self.v - self.C_e * self.p),
+                ac.Eq(ac.der(self.p), self.beta / (self.V_0 + self.A * self.x)
+                      * (self.port.q - self.A * self.v - self.C_e * self.p)),
                 ac.Eq(self.flange.f, -self.A * self.p)]

@@ -9,7 +9,7 @@ import sympy as sp
 import acausal as ac
 from acausal.ports import FluidPort
 
-__all__ = ["LumpedLine", "ModalLine"]
+__all__ = ["LumpedLine"]
 
 # (port_a on a pipe, port_b on a pipe) for each form
 _FORMS = {"impedance": (0, 0), "admittance": (1, 1), "hybrid": (1, 0)}
@@ -37,6 +37,8 @@ class _LineData(ac.Component):
     rho = ac.Parameter(870.0, unit="kg/m3", min=0, description="density")
     beta = ac.Parameter(1.7052e9, unit="Pa", min=0, description="bulk modulus rho c^2")
     nu = ac.Parameter(0.0, unit="m2/s", min=0, description="kinematic viscosity (0: lossless)")
+    p_start = ac.Parameter(0.0, unit="Pa", description="initial pressure along the line")
+    q_start = ac.Parameter(0.0, unit="m3/s", description="initial flow along the line")
 
     def _B(self):
         return 8 * self.nu * sp.pi / self.A
@@ -72,6 +74,11 @@ class LumpedLine(_LineData):
         self.n, self.form = n, form
         self.volumes = [_Node() for _ in range(n)]
         self.pipes = [_Pipe() for _ in range(n - 1 + sum(_FORMS[form]))]
+
+    def initial_equations(self):
+        # a uniform initial state: at rest, or a steady flow of a lossless line
+        return [*(ac.Eq(v.p, self.p_start) for v in self.volumes),
+                *(ac.Eq(pipe.q, self.q_start) for pipe in self.pipes)]
 
     def _h(self):
         pipes_over_volumes = {"impedance": 0, "admittance": 1, "hybrid": sp.Rational(1, 2)}

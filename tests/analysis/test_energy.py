@@ -54,6 +54,7 @@ def test_dc_motor_energy_3_33_and_passivity():
     audit = energy_balance(res, model)
     u, i = res["motor.p.v"] - res["motor.n.v"], res["motor.La.i"]
     # V' = i_a u_a - R_a i_a^2 without load (3.33); the source delivers u_a i_a
+    assert set(audit.sources) == {"source"}                     # the EMF is lossless
     assert np.allclose(audit.sources["source"], u * i, rtol=1e-9, atol=1e-9)
     assert np.allclose(audit.dE_dt, u * i - 1.0 * i**2, rtol=0, atol=1e-6 * np.max(u * i))
     assert audit.relative_residual() < 1e-6
@@ -93,3 +94,17 @@ def test_negative_resistor_is_not_passive_and_per_audit_entries_override():
     audit = energy_balance(res, model, dissipation={"active": lambda v, p: v("v") * v("i")})
     assert set(audit.sources) == {"source"}
     assert np.max(np.abs(audit.residual)) < 1e-9
+
+
+def test_valve_controlled_motor_energy_audit_4_66():
+    hyd = pytest.importorskip("acausal.library.hydraulics")
+    if not hasattr(hyd, "Volume"):
+        pytest.skip("the hydraulics library has no Volume")
+    from acausal.library.hydraulics.examples.valve_motor import V_0, BETA, ValveControlledMotor
+    model = ValveControlledMotor()
+    res = ac.simulate(model, t_end=0.05, rtol=1e-8, n_points=101)
+    audit = energy_balance(res, model)
+    assert np.allclose(audit.stored["line_1"], V_0 * res["line_1.p"] ** 2 / (2 * BETA))
+    assert {"supply", "valve"} <= set(audit.sources)            # the valve throttles
+    assert np.all(audit.sources["valve"] <= 1e-9 * np.max(audit.sources["supply"]))
+    assert audit.relative_residual() < 1e-6

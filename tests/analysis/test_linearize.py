@@ -247,3 +247,13 @@ def test_valve_controlled_motor_from_the_library():
     assert margins.w_180 == pytest.approx(w_h, rel=1e-9)             # (4.109)
     K_v = vm.K_P * K_q / vm.D_M
     assert 1 / margins.gain == pytest.approx(K_v / (2 * zeta_h * w_h), rel=1e-9)
+
+
+def test_cartesian_pendulum_index_3_small_oscillations():
+    """The index-3 pendulum (dynamic state selection) at its lower equilibrium: the
+    linearization in the selected states has poles +-j sqrt(g/L)."""
+    from acausal.library.examples.pendulum import Pendulum
+    op = steady_state(Pendulum(L=2.0))
+    assert op["y"] == pytest.approx(-2.0, rel=1e-12)
+    sys = linearize(op.compiled, [], ["x"], at=op)
+    assert _rel(sys.poles(), [-1j * np.sqrt(9.81 / 2.0), 1j * np.sqrt(9.81 / 2.0)]) < 1e-9

@@ -3,7 +3,6 @@ against hand-written Cartesian models, angle-coordinate ODEs, the book's closed 
 and energy balances."""
 import numpy as np
 import pytest
-import sympy as sp
 from scipy.integrate import cumulative_trapezoid, solve_ivp
 
 import acausal as ac
@@ -426,22 +425,3 @@ def test_spring_pendulum_energy_and_free_rotation():
     assert np.max(np.abs(energy - energy[0])) / np.max(np.abs(energy)) < 1e-7
     assert np.allclose(res["body.w"], 1.0, rtol=1e-10)           # the spring takes no torque
 
-
-class SqrtDistance(ac.Component):
-    """A distance written sqrt(x^2): sympy makes it Abs(x) for a real x."""
-
-    x = ac.Variable(start=1.0, fixed=True, unit="m")
-    s = ac.Variable(start=1.0, unit="m")
-
-    def equations(self):
-        return [ac.Eq(ac.der(self.x), -self.x), ac.Eq(self.s, sp.sqrt(self.x**2))]
-
-
-@pytest.mark.xfail(reason="codegen bug: generate() swaps the real model symbols for "
-                          "placeholders _y/_a/_p without real=True, so d|x|/dx becomes "
-                          "re(x)*Derivative(re(x), x)... and the printer rejects 're' "
-                          "(PartialLineForce uses s^2 = dx^2 + dy^2 because of it)",
-                   strict=True)
-def test_distance_written_with_sqrt_compiles():
-    res = ac.simulate(SqrtDistance(), t_end=1.0, rtol=1e-8)
-    assert res["s"][-1] == pytest.approx(np.exp(-1.0), rel=1e-6)

@@ -77,3 +77,14 @@ def test_inconsistent_initial_problem_fails_with_the_residuals_named():
     with pytest.raises(InitializationFailed) as err:
         ac.simulate(Impossible(), t_end=0.1)
     assert "motor.rotor.w**2 = -1" in str(err.value)
+
+
+def test_fixed_start_contradicted_by_an_equation_is_an_error():
+    class Contradiction(ac.Component):
+        x = ac.Variable(start=0.5, fixed=True)
+
+        def equations(self):
+            return [ac.Eq(self.x, 0)]
+
+    with pytest.raises(ac.ModelError, match=r"'x'.*fixed=True.*over-specified"):
+        ac.compile(Contradiction())
