@@ -15,8 +15,11 @@ from .compiler.model import CompiledModel
 from .result import Result
 from .simulation import compile, initial_values, simulate
 from .solvers.base import SimulationError
+from .analysis import (StateSpace, energy_balance, estimate, is_passive, linearize,
+                       linearize_symbolic, steady_state)
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
            "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre", "Connection", "if_else", "sign", "time",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
-           "ModelError", "SimulationError"]
+           "ModelError", "SimulationError", "linearize", "linearize_symbolic", "StateSpace",
+           "steady_state", "energy_balance", "is_passive", "estimate"]

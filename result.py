@@ -21,6 +21,7 @@ class Result:
         self.t = np.asarray(t, dtype=float)
         self._z = np.asarray(y, dtype=float).reshape(len(self.t), -1)
         self._y = None
+        self.parameters = compiled.p.copy()     # this run's values: later runs may change p
         self.stats = stats.as_dict() if hasattr(stats, "as_dict") else (stats or {})
         self.events = list(events)
         self.success = success
@@ -41,9 +42,9 @@ class Result:
             raise KeyError(f"no variable '{name}' in the result"
                            + (f"; similar: {', '.join(close)}" if close else "")) from None
         if sign is None:
-            return np.full(len(self.t), k(self.compiled.p) if callable(k) else k)
+            return np.full(len(self.t), k(self.parameters) if callable(k) else k)
         if self._y is None:
-            self._y = _expand(self.compiled, self.t, self._z)
+            self._y = _expand(self.compiled, self.t, self._z, self.parameters)
         return sign * self._y[:, k]
 
     def at(self, name: str, t: float) -> float:
@@ -84,13 +85,14 @@ class Result:
                 f"{len(self.compiled.outputs)} variables, {status}>")
 
 
-def _expand(compiled, t, z) -> np.ndarray:
+def _expand(compiled, t, z, p) -> np.ndarray:
     """Every variable at every output time, from the solver vector z.
 
     Relations are evaluated afresh at each point (not frozen), so values computed from
     if-expressions are those of the branch that holds at that time.
     """
-    saved = compiled.m.copy()
+    saved, saved_p = compiled.m.copy(), compiled.p.copy()
+    compiled.p[:] = p
     try:
         rows = []
         for tk, zk in zip(t, z):
@@ -99,3 +101,4 @@ def _expand(compiled, t, z) -> np.ndarray:
         return np.array(rows).reshape(len(t), -1)
     finally:
         compiled.m[:] = saved
+        compiled.p[:] = saved_p

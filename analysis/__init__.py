@@ -4,10 +4,12 @@ from .energy import (EnergyBalance, Passivity, energy_balance, is_passive,
 from .estimate import Estimate, estimate
 from .linearize import linearize
 from .operating import OperatingPoint, SteadyStateError, steady_state
+from .sensitivity import output_sensitivities, simulate_sensitivities
 from .statespace import Margins, StateSpace
 from .symbolic import SymbolicStateSpace, linearize_symbolic
 
-__all__ = ["linearize", "linearize_symbolic", "steady_state", "estimate", "energy_balance", "is_passive",
-           "register_storage", "register_dissipation", "OperatingPoint",
+__all__ = ["linearize", "linearize_symbolic", "steady_state", "estimate", "energy_balance",
+           "is_passive", "register_storage", "register_dissipation", "OperatingPoint",
            "SteadyStateError", "StateSpace", "Margins", "Estimate", "EnergyBalance",
-           "Passivity", "SymbolicStateSpace"]
+           "Passivity", "SymbolicStateSpace", "simulate_sensitivities",
+           "output_sensitivities"]

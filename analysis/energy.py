@@ -162,7 +162,8 @@ def _values_and_rates(c, t, Z):
             zdot = _consistent_rate(c, tk, zk)
             h = 1e-6 * (1.0 + abs(tk))
             X.append(c.expand(tk, zk))
-            Xd.append((c.expand(tk + h, zk + h * zdot) - c.expand(tk - h, zk - h * zdot)) / (2 * h))
+            ahead, behind = c.expand(tk + h, zk + h * zdot), c.expand(tk - h, zk - h * zdot)
+            Xd.append((ahead - behind) / (2 * h))
     finally:
         c.m[:] = saved
     return np.array(X).reshape(len(t), -1), np.array(Xd).reshape(len(t), -1)

@@ -7,8 +7,10 @@ the model's prediction y^(t_k | theta),
 
 is minimized over theta.  Here by ``scipy.optimize.least_squares`` (trust-region
 reflective, so bounds hold at every iterate) on the parameters scaled by their start
-values and on residuals scaled per output, with the sensitivities dy^/dtheta by central
-differences of simulations (the notes' (7.1.17)-(7.1.26) in finite-difference form).
+values and on residuals scaled per output.  The sensitivities dy^/dtheta are central
+differences of simulations, or (``sensitivities="forward"``) the forward sensitivity
+equations integrated with the model (the notes' (7.1.17)-(7.1.26), see
+:mod:`.sensitivity`), one simulation per iteration instead of 2p + 1.
 Parameters change in place (``CompiledModel.set_parameters``): nothing is recompiled.
 
 The covariance is the Gauss-Newton one, s^2 (J^T J)^-1 with s^2 = SSR / (N - p)
@@ -52,7 +54,8 @@ class Estimate:
 
 
 def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=None,
-             rtol: float = 1e-8, diff_step: float = 1e-4, max_nfev: int = 200) -> Estimate:
+             rtol: float = 1e-8, diff_step: float = 1e-4, max_nfev: int = 200,
+             sensitivities: str = "fd") -> Estimate:
     """Fit parameters of a model to measured time series.
 
     Parameters
@@ -75,6 +78,9 @@ def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=
         Simulation tolerance; keep it well below the noise.
     diff_step : float
         Relative step of the finite-difference sensitivities.
+    sensitivities : {"fd", "forward"}
+        Finite differences of simulations, or forward sensitivity equations (a model
+        with a static choice of states).
     max_nfev : int
         Limit on optimizer iterations (function evaluations).
 
@@ -97,11 +103,13 @@ def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=
     w = {k: 1.0 / (sigma[k] if sigma else max(np.abs(y[k]).max(), 1e-300)) for k in outs}
     scale = np.array([abs(v) if v != 0 else 1.0 for v in start.values()])
     lo, hi = _bounds(names, start, bounds, scale)
-    problem = _Problem(compiled, names, scale, t, y, w, rtol)
+    problem = (_ForwardProblem if sensitivities == "forward" else _Problem)(
+        compiled, names, scale, t, y, w, rtol)
     x0 = np.clip(np.array(list(start.values())) / scale, lo, hi)
     saved = compiled.p.copy()
     try:
-        opt = so.least_squares(problem.residual, x0, jac=lambda x: problem.jacobian(x, diff_step),
+        opt = so.least_squares(problem.residual, x0,
+                               jac=lambda x: problem.jacobian(x, diff_step),
                                bounds=(lo, hi), x_scale="jac", max_nfev=max_nfev,
                                xtol=1e-12, ftol=1e-12, gtol=1e-12)
         return _summary(problem, opt, names, scale, outs)
@@ -167,6 +175,52 @@ class _Problem:
             xm[j] -= h
             cols.append((self.residual(xp) - self.residual(xm)) / (2 * h))
         return np.column_stack(cols)
+
+
+class _ForwardProblem(_Problem):
+    """Residuals and their Jacobian from one simulation with forward sensitivities."""
+
+    _last = None
+
+    def _evaluate(self, x):
+        if self._last is not None and np.array_equal(self._last[0], x):
+            return self._last[1:]
+        from .sensitivity import output_sensitivities, simulate_sensitivities
+        c = self.compiled
+        saved = c.p.copy()
+        idx = [c.param_names.index(n) for n in self.names]
+        self.n_sim += 1
+        try:
+            c.p[idx] = x * self.scale
+            t, Z, S = simulate_sensitivities(c, idx, self.t, rtol=self.rtol)
+            Y, dY = output_sensitivities(c, t, Z, S, idx, list(self.y))
+        except (ValueError, ArithmeticError) as err:     # SimulationError is a ValueError
+            raise _Failed from err
+        finally:
+            c.p[:] = saved
+        r = np.concatenate([self.w[k] * (Y[:, o] - self.y[k]) for o, k in enumerate(self.y)])
+        # dY is p_j dy/dp_j and p_j = x_j scale_j, so dy/dx_j = dY / x_j
+        J = np.column_stack([np.concatenate([self.w[k] * dY[:, b, o] / x[b]
+                                             for o, k in enumerate(self.y)])
+                             for b in range(len(x))])
+        self._last = (x.copy(), r, J)
+        return r, J
+
+    def residual(self, x):
+        try:
+            return self._evaluate(x)[0]
+        except _Failed:
+            return np.full(self.size, 1e3)
+
+    def jacobian(self, x, rel):
+        try:
+            return self._evaluate(x)[1]
+        except _Failed:
+            return super().jacobian(x, rel)
+
+
+class _Failed(Exception):
+    """The model could not be simulated with these parameter values."""
 
 
 def _summary(problem, opt, names, scale, outs) -> Estimate:

@@ -173,7 +173,11 @@ def _driving_parameter(plant, name, slope):
     1 is preferred, then any slope +-1, then the steepest.
     """
     c = plant.compiled
-    slopes = {k: g for k in range(len(c.p)) if abs(g := slope(k)) > 1e-9}
+    slopes = {}
+    for k in range(len(c.p)):
+        g = slope(k)
+        if abs(g) > 1e-9:
+            slopes[k] = g
     unit = [k for k, g in slopes.items() if abs(abs(g) - 1.0) < 1e-6]
     offsets = [k for k in unit if c.param_names[k].endswith(".offset")]
     pick = offsets or unit or sorted(slopes, key=lambda k: -abs(slopes[k]))

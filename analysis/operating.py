@@ -30,7 +30,7 @@ from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton, homotopy
 
 __all__ = ["OperatingPoint", "SteadyStateError", "steady_state", "operating_point",
-           "constant_value"]
+           "make_consistent", "constant_value"]
 
 
 class SteadyStateError(ValueError):
@@ -132,7 +132,7 @@ class _InputValue(Component):
     """Drives a top-level input from a parameter (so linearize can perturb it)."""
 
     y = RealOutput()
-    k = Parameter(0.0, description="value of the input")
+    k = Parameter(1.0, description="value of the input")
 
     def equations(self):
         return [Eq(self.y, self.k)]
@@ -234,7 +234,7 @@ def parameters_set(plant: Plant, values: dict):
         c.p[:] = saved
 
 
-def make_consistent(compiled, t: float, z: np.ndarray, tol: float = 1e-12) -> np.ndarray:
+def make_consistent(compiled, t: float, z: np.ndarray) -> np.ndarray:
     """Solve G(t, z) = 0 for the non-state part of z, the states held."""
     alg = np.flatnonzero(compiled.algebraic)
     if alg.size == 0:
@@ -361,9 +361,11 @@ def steady_state(model, *, hold=(), t: float = 0.0, inputs=None, parameters=None
     c = plant.compiled
     if parameters:
         c.set_parameters({plant.internal(k): v for k, v in parameters.items()})
-    if inputs:
-        for name, v in inputs.items():
-            c.p[plant.parameter_index(name)] = float(v)
+    for name, v in (inputs or {}).items():
+        k = plant.parameter_index(name)
+        if k is None:
+            raise KeyError(f"the model has no top-level input or parameter '{name}'")
+        c.p[k] = float(v)
     z0 = _start_values(c, t)
     for name, v in (guess or {}).items():
         z0[_z_index(plant, name)] = v * _z_sign(plant, name)

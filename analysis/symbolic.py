@@ -110,8 +110,9 @@ def linearize_symbolic(model, inputs=(), outputs=(), at=None,
     u = [_parameter_symbol(reduced, input_params.get(n, prefix + n)) for n in inputs]
     h = sp.Matrix([_output_expression(flat, aliases, syms, prefix + n, subs) for n in outputs])
     A, B, C, D = _jacobians(f, R, h, x, tr, u)
+    free = set().union(*(M.free_symbols for M in (A, B, C, D)))
     rename = {s: sp.Symbol(s.name[len(prefix):], real=True)
-              for M in (A, B, C, D) for s in M.free_symbols if prefix and s.name.startswith(prefix)}
+              for s in free if prefix and s.name.startswith(prefix)}
     rename.update({sp.Symbol(input_params[n], real=True): sp.Symbol(n, real=True)
                    for n in input_params})
     mats = [M.xreplace(rename) for M in (A, B, C, D)]

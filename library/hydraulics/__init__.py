@@ -4,7 +4,7 @@ from .components import (Cylinder, HydraulicMotor, LaminarOrifice, PistonVolume,
                          ReliefValve, SingleActingCylinder, TurbulentOrifice, VariableOrifice,
                          VariablePump, Volume)
 from .interfaces import F_tr, PartialOnePort, PartialTwoPort, orifice_flow
-from .lines import LumpedLine
+from .lines import LumpedLine, ModalLine
 from .sensors import FlowSensor, PressureSensor, RelativePressureSensor
 from .sources import ConstantFlow, FixedPressure, FlowSource, PressureSource
 from .valves import (BalanceValve, CriticalCentreValve, FourWayValve, OpenCentreValve,
@@ -16,4 +16,4 @@ __all__ = ["PartialOnePort", "PartialTwoPort", "F_tr", "orifice_flow", "Volume",
            "FourWayValve", "CriticalCentreValve", "OpenCentreValve",
            "PressureCompensatedValve", "BalanceValve", "FixedPressure", "PressureSource",
            "ConstantFlow", "FlowSource", "PressureSensor", "RelativePressureSensor",
-           "FlowSensor", "LumpedLine"]
+           "FlowSensor", "LumpedLine", "ModalLine"]

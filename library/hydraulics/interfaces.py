@@ -65,5 +65,6 @@ def orifice_flow(A, dp, C_d, rho, nu, Re_tr):
     # active (|dp| >= F_tr/A), and defined when Newton strays across dp = 0 while the
     # branch is frozen; sp.Abs would be differentiated into re()/im()
     turbulent = C_d * A * sp.sqrt(2 / rho) * (dp**2 + 1)**sp.Rational(1, 4)
-    return ac.if_else(A * dp > Ftr, turbulent,
-                      ac.if_else(A * dp < -Ftr, -turbulent, laminar))
+    # the switch is on x, not on A dp against F_tr: F_tr alone has C_d^2 as its only
+    # denominator, which the code printer emits wrongly (a / C_d * C_d)
+    return ac.if_else(x > 1, turbulent, ac.if_else(x < -1, -turbulent, laminar))

@@ -4,12 +4,13 @@ resonators (``LumpedLine``) and the modal (rational) approximation (``ModalLine`
 Line data: length L, cross-section A, density rho, bulk modulus beta = rho c^2, and
 linear (laminar) friction F/rho = B q with B = 8 nu / r0^2, r0 = sqrt(A/pi)  (4.159)-(4.160).
 """
+import numpy as np
 import sympy as sp
 
 import acausal as ac
 from acausal.ports import FluidPort
 
-__all__ = ["LumpedLine"]
+__all__ = ["LumpedLine", "ModalLine"]
 
 # (port_a on a pipe, port_b on a pipe) for each form
 _FORMS = {"impedance": (0, 0), "admittance": (1, 1), "hybrid": (1, 0)}
@@ -37,8 +38,6 @@ class _LineData(ac.Component):
     rho = ac.Parameter(870.0, unit="kg/m3", min=0, description="density")
     beta = ac.Parameter(1.7052e9, unit="Pa", min=0, description="bulk modulus rho c^2")
     nu = ac.Parameter(0.0, unit="m2/s", min=0, description="kinematic viscosity (0: lossless)")
-    p_start = ac.Parameter(0.0, unit="Pa", description="initial pressure along the line")
-    q_start = ac.Parameter(0.0, unit="m3/s", description="initial flow along the line")
 
     def _B(self):
         return 8 * self.nu * sp.pi / self.A
@@ -64,6 +63,9 @@ class LumpedLine(_LineData):
     w_k = 2 (c/h) sin(k pi / (2 n)), k = 1..n-1: 2 sqrt(2) c/L for n = 2 (4.300),
     3 c/L and 3 sqrt(3) c/L for n = 3 (4.305), tending to k pi c/L (4.301).
     """
+
+    p_start = ac.Parameter(0.0, unit="Pa", description="initial pressure along the line")
+    q_start = ac.Parameter(0.0, unit="m3/s", description="initial flow along the line")
 
     def __init__(self, n=10, form="impedance", **mods):
         super().__init__(**mods)
@@ -108,3 +110,65 @@ class LumpedLine(_LineData):
         else:
             eqs.append(ac.Eq(self.port_b.p, p[-1]))
         return eqs
+
+
+_WINDOWS = {"riemann": lambda b: np.sin(b) / b, "hann": lambda b: (1 - np.cos(b)) / 2,
+            "hamming": lambda b: 0.54 + 0.46 * np.cos(b), "none": lambda b: 1.0 + 0 * b}
+
+
+class _Mode(ac.Component):
+    """One second-order section T^2 w'' + B T^2 w' + (k pi)^2 w = 4 sigma_k Z_0 T q."""
+
+    w = ac.Variable(start=0.0, unit="Pa.s", nominal=1e4, description="section state")
+    w_dot = ac.Variable(start=0.0, unit="Pa", nominal=1e6, description="der(w)")
+
+
+class ModalLine(_LineData):
+    """Transmission line from the truncated modal (rational) expansion of its impedance,
+    with linear friction (Piche & Ellman 1996; Egeland & Gravdahl 4.5.11-4.5.16, Table 4.1,
+    second row).  Flows are the inputs (impedance form, ports on valves or flow sources):
+    with q_1 = port_a.q into the line and q_2 = -port_b.q out of it,
+
+        q_s = (q_1 - q_2)/2,  p_s = (p_1 + p_2)/2,  q_a = (q_1 + q_2)/2,  p_a = (p_1 - p_2)/2
+        Z_s/Z_0 = 2/(Ts) + sum_{k=2,4..N} 4 sigma_k T (s + B) / ((Ts)^2 + B T^2 s + (k pi)^2)
+        Z_a/Z_0 = sum_{k=1,3..N-1} 4 sigma_k T (s + b_N B) / ((Ts)^2 + B T^2 s + (k pi)^2)
+
+    T = L/c, Z_0 = rho c / A, B = 8 nu / r_0^2 (4.160), sigma_k a window (4.270) with
+    beta_k = k pi/(N + 1), and b_N = (8 sum_{k odd} sigma_k/(k pi)^2)^-1 (4.272) makes the
+    steady pressure drop the laminar one, p_1 - p_2 = Z_0 T B q = 8 mu L q/(pi r_0^4).
+    Each section is T^2 w'' + B T^2 w' + (k pi)^2 w = 4 sigma_k Z_0 T q_{s,a}, with
+    p_k = w' + B w (b_N B for the antisymmetric ones).  The poles are those of the
+    distributed line with linear friction, s = -B/2 +- j sqrt((k pi/T)^2 - B^2/4).
+    """
+
+    def __init__(self, N=8, window="riemann", **mods):
+        super().__init__(**mods)
+        if N < 2 or N % 2:
+            raise ac.ModelError(f"ModalLine: N must be even and >= 2, not {N}")
+        if window not in _WINDOWS:
+            raise ac.ModelError(f"ModalLine: window must be one of {sorted(_WINDOWS)}")
+        self.N = N
+        k = np.arange(1, N + 1)
+        self.sigma = _WINDOWS[window](k * np.pi / (N + 1))
+        odd = k % 2 == 1
+        self.b_N = 1.0 / (8 * np.sum(self.sigma[odd] / (k[odd] * np.pi)**2))
+        self.modes = [_Mode() for _ in range(N)]
+        self.mean = _Node()        # the integrator 2 Z_0/(T s) of Z_s: the mean pressure
+
+    def equations(self):
+        c = sp.sqrt(self.beta / self.rho)
+        T, Z0, B = self.L / c, self.rho * c / self.A, self._B()
+        q_1, q_2 = self.port_a.q, -self.port_b.q
+        q_s, q_a = (q_1 - q_2) / 2, (q_1 + q_2) / 2
+        eqs = [ac.Eq(T * ac.der(self.mean.p), 2 * Z0 * q_s)]
+        p_s, p_a = self.mean.p, 0
+        for k, (mode, sigma) in enumerate(zip(self.modes, self.sigma), start=1):
+            q, damping = (q_s, B) if k % 2 == 0 else (q_a, self.b_N * B)
+            eqs += [ac.Eq(ac.der(mode.w), mode.w_dot),
+                    ac.Eq(T**2 * ac.der(mode.w_dot) + B * T**2 * mode.w_dot
+                          + (k * sp.pi)**2 * mode.w, 4 * float(sigma) * Z0 * T * q)]
+            if k % 2 == 0:
+                p_s = p_s + mode.w_dot + damping * mode.w
+            else:
+                p_a = p_a + mode.w_dot + damping * mode.w
+        return eqs + [ac.Eq(self.port_a.p, p_s + p_a), ac.Eq(self.port_b.p, p_s - p_a)]

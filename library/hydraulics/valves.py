@@ -29,14 +29,13 @@ class FourWayValve(_OrificeData):
     """Four-way valve, general (Egeland & Gravdahl 4.2.4, (4.15)-(4.17)), the orifices
     with the regularized law (4.13):
 
-        q_a = q(A_a, p_s - p_1),  q_b = q(A_b, p_s - p_2)      (supply -> 1, supply -> 2)
-        q_c = q(A_c, p_1 - p_r),  q_d = q(A_d, p_2 - p_r)      (1 -> return, 2 -> return)
-        port_s.q = q_a + q_b,  port_r.q = -(q_c + q_d),
-        port_1.q = -(q_a - q_c),  port_2.q = q_d - q_b  ... i.e. q_1 = q_a - q_c flows
-        out of port_1 to the load and q_2 = q_d - q_b returns into port_2 (4.17).
+        q_a = q(A_a, p_s - p_1),  q_b = q(A_b, p_s - p_2)     (supply -> 1, supply -> 2)
+        q_c = q(A_c, p_1 - p_r),  q_d = q(A_d, p_2 - p_r)     (1 -> return, 2 -> return)
+        q_s = q_a + q_b,  q_r = q_c + q_d,  q_1 = q_a - q_c,  q_2 = q_d - q_b   (4.16)-(4.17)
 
-    Subclasses give the opening areas A_a..A_d as functions of the spool position x_v
-    (``areas``).
+    q_s enters at port_s, q_r leaves at port_r, q_1 leaves at port_1 towards the load
+    and q_2 comes back from it at port_2.  Subclasses give the opening areas A_a..A_d
+    as functions of the spool position x_v (``areas``).
     """
 
     port_s = FluidPort()
@@ -129,17 +128,19 @@ class BalanceValve(_OrificeData, PartialTwoPort):
     """Balance (counterbalance) valve, spool in static equilibrium (Egeland & Gravdahl
     4.2.9, (4.58)-(4.60)); port_a = 1 (load side), port_b = 2, pilot port port_p:
 
-        x_v = (A_r/K) [p_1 - p_0 + R p_p - p_2 (R + 1)],  0 <= x_v <= x_v_max,  R = A_p/A_r
+        x_v = (A_r/K) [p_1 - p_0 + R p_p - p_2 (R + 1)] - F_0/K,  0 <= x_v <= x_v_max
         q = q(b x_v, p_1 - p_2)   for p_1 > p_2   (pilot-opened flow 1 -> 2)
         q = q(A_ch, p_1 - p_2)    for p_1 < p_2   (check valve, free flow 2 -> 1)
 
-    with A_r = A - A_p (4.58) and the regularized orifice (4.13).
+    with A_r = A - A_p, R = A_p/A_r (4.58) and the regularized orifice (4.13).  The
+    spring preload F_0 (0 in (4.59)) sets the load pressure the valve holds.
     """
 
     port_p = FluidPort()
     A = ac.Parameter(2e-4, unit="m2", min=0, description="spool area on the p_2 side")
     A_p = ac.Parameter(1.5e-4, unit="m2", min=0, description="pilot area")
     K = ac.Parameter(1e5, unit="N/m", min=0, description="spring stiffness")
+    F_0 = ac.Parameter(0.0, unit="N", min=0, description="spring preload")
     p_0 = ac.Parameter(0.0, unit="Pa", description="spring chamber pressure")
     x_v_max = ac.Parameter(2e-3, unit="m", min=0, description="spool stroke")
     b = ac.Parameter(0.01, unit="m", min=0, description="area gradient")
@@ -150,7 +151,7 @@ class BalanceValve(_OrificeData, PartialTwoPort):
         A_r = self.A - self.A_p
         R = self.A_p / A_r
         p1, p2 = self.port_a.p, self.port_b.p
-        free = A_r / self.K * (p1 - self.p_0 + R * self.port_p.p - p2 * (R + 1))
+        free = (A_r * (p1 - self.p_0 + R * self.port_p.p - p2 * (R + 1)) - self.F_0) / self.K
         clipped = ac.if_else(free < 0, 0, ac.if_else(free > self.x_v_max, self.x_v_max, free))
         law = ac.if_else(self.dp > 0, self._orifice(self.b * self.x_v, self.dp),
                          self._orifice(self.A_ch, self.dp))

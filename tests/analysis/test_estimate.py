@@ -71,3 +71,10 @@ def test_dc_motor_resistance_constant_and_inertia_from_a_step_response():
     assert fit.correlation.shape == (3, 3)
     assert np.allclose(np.diag(fit.correlation), 1.0)
     assert compiled.p[compiled.param_names.index("motor.R")] == 1.0   # left as it was
+
+
+def test_an_earlier_result_keeps_the_parameters_of_its_run():
+    compiled = ac.compile(Tank(a=A_TRUE))
+    first = ac.simulate(compiled, t_end=1.0, n_points=3)
+    ac.simulate(compiled, t_end=1.0, n_points=3, parameters={"a": 2 * A_TRUE})
+    assert first["q"][0] == pytest.approx(A_TRUE * np.sqrt(2 * G), rel=1e-12)

@@ -33,7 +33,7 @@ class WaterHammer(ac.Component):
 
     stop_time = 0.14
     tank = FixedPressure(p=P_0 + DP_VALVE)
-    line = LumpedLine(n=60, form="hybrid", L=L, A=A_LINE, rho=RHO, beta=RHO * C**2,
+    line = LumpedLine(n=30, form="hybrid", L=L, A=A_LINE, rho=RHO, beta=RHO * C**2,
                       p_start=P_0 + DP_VALVE, q_start=Q_0)
     valve = VariableOrifice(rho=RHO)
     outlet = FixedPressure(p=P_0)
