@@ -30,6 +30,14 @@ def initial_values(compiled: CompiledModel, t0: float = 0.0) -> np.ndarray:
         compiled.reselect_states(t0, y, hysteresis=1.0)
     y = solve_initial(compiled, compiled.initial_conditions, t0, y)
     compiled.init_modes(t0, y)
+    for _ in range(3):
+        # a relation that sits exactly at zero (sign(v) with v(0) = 0) takes the value it
+        # has just after t0; the initial values are then recomputed in that mode
+        before = compiled.m.copy()
+        compiled.settle_modes(t0, y)
+        if np.array_equal(before, compiled.m):
+            break
+        y = solve_initial(compiled, compiled.initial_conditions, t0, y)
     return y
 
 

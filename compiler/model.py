@@ -311,6 +311,11 @@ class CompiledModel(DAEProblem):
         self._settle_modes(t, new, np.ones(self.n_roots, dtype=bool))
         return EventAction(y=new, changed=True)
 
+    def settle_modes(self, t, z) -> None:
+        """Every relation takes the value it has just after t (see _settle_modes)."""
+        if self.n_roots:
+            self._settle_modes(t, z, np.ones(self.n_roots, dtype=bool))
+
     def _settle_modes(self, t, z, which):
         """Relations in ``which`` take the value they have just after t.
 

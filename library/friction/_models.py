@@ -5,7 +5,7 @@ import sympy as sp
 
 import acausal as ac
 
-from .laws import elastoplastic_alpha, saturation, stribeck, stribeck_level
+from .laws import direction, elastoplastic_alpha, saturation, stribeck, stribeck_level
 
 __all__ = []
 
@@ -41,14 +41,14 @@ class _Dahl:
     def law(self, v, f):
         """dF/dt = sigma (v - |v| F / F_c)  (5.35)."""
         return [ac.Eq(f, self.F),
-                ac.Eq(ac.der(self.F), self.sigma * (v - v * ac.sign(v) * self.F / self.F_c))]
+                ac.Eq(ac.der(self.F), self.sigma * (v - v * direction(v) * self.F / self.F_c))]
 
 
 class _LuGre:
     def law(self, v, f):
         """dz/dt = v - sigma_0 |v| z / g(v),  f = sigma_0 z + sigma_1 dz/dt + sigma_2 v."""
         g = stribeck_level(v, self.F_c, self.F_s, self.v_s)
-        return [ac.Eq(self.z_dot, v - self.sigma_0 * v * ac.sign(v) * self.z / g),
+        return [ac.Eq(self.z_dot, v - self.sigma_0 * v * direction(v) * self.z / g),
                 ac.Eq(ac.der(self.z), self.z_dot),
                 ac.Eq(f, self.sigma_0 * self.z + self.sigma_1 * self.z_dot + self.sigma_2 * v)]
 
@@ -59,6 +59,6 @@ class _ElastoPlastic:
         g = stribeck_level(v, self.F_c, self.F_s, self.v_s)
         z_max = g / self.sigma_0                                         # (5.58)
         alpha = elastoplastic_alpha(self.z, v, self.z_b, z_max)
-        return [ac.Eq(self.z_dot, v * (1 - alpha * self.sigma_0 * self.z * ac.sign(v) / g)),
+        return [ac.Eq(self.z_dot, v * (1 - alpha * self.sigma_0 * self.z * direction(v) / g)),
                 ac.Eq(ac.der(self.z), self.z_dot),
                 ac.Eq(f, self.sigma_0 * self.z + self.sigma_1 * self.z_dot + self.sigma_2 * v)]

@@ -158,10 +158,6 @@ class BlockPushedFromRest(ac.Component):
                 ac.connect(self.block.flange_b, self.push.flange)]
 
 
-@pytest.mark.xfail(reason="driver bug: a relation whose crossing function is exactly 0 when "
-                          "the roots are armed (here sign(v) at v(0) = 0) is armed later "
-                          "without its mode being re-evaluated, so sgn(v) stays 0",
-                   strict=True)
 def test_static_friction_block_pushed_from_rest():
     """m v' = 3 - F_c - F_v v for v > 0: v = (2/F_v)(1 - exp(-F_v t/m))."""
     t = np.linspace(0, 1.0, 11)
