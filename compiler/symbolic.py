@@ -40,12 +40,17 @@ class SymbolicEquation:
         return f"{self.component or '(model)'} ({self.component_class})"
 
     def name(self, system: "SymbolicSystem") -> str:
+        """The source equation with its component, and the differentiations applied:
+        ``d^2/dt^2(x**2 + y**2 = L**2  [pendulum (Pendulum)])``."""
         base = self
         while base.derivative_of is not None:
             base = system.equations[base.derivative_of]
         text = base.text if len(base.text) <= 60 else base.text[:57] + "..."
         core = f"{text}  [{base.where}]"
-        return f"d{'^%d' % self.order if self.order > 1 else ''}/dt{'^%d' % self.order if self.order > 1 else ''}({core})" if self.order else core
+        if self.order == 0:
+            return core
+        power = f"^{self.order}" if self.order > 1 else ""
+        return f"d{power}/dt{power}({core})"
 
 
 @dataclass
