@@ -42,12 +42,13 @@ class _Printer(PythonCodePrinter):
         return str(int(expr))
 
     def _print_Pow(self, expr, rational=False):
+        # Parenthesized, so that x/a**2 inside a product stays x/(a*a).
         base, e = expr.args
         if e == 2:
             b = self.parenthesize(base, 1000)
-            return f"{b}*{b}"
+            return f"({b}*{b})"
         if e == -1:
-            return f"1.0/{self.parenthesize(base, 1000)}"
+            return f"(1.0/{self.parenthesize(base, 1000)})"
         return super()._print_Pow(expr, rational)
 
 
@@ -121,7 +122,7 @@ def generate(residuals: list, y_syms: list, params: list, n_modes: int = 0,
     lines = ["import math", "", ""]
     lines += _function("residual", res, prologue)
     lines += _function("jacobian", jac, prologue + grad_lines, cse=not assigned)
-    lines += _function("roots", roots, prologue)
+    lines += _function("roots", roots, _needed(assigned, roots))
     if outputs is not None:
         lines += _function("expand", [sp.sympify(o).xreplace(sub) for o in outputs], prologue,
                            cse=False)
@@ -134,6 +135,18 @@ def generate(residuals: list, y_syms: list, params: list, n_modes: int = 0,
                          hashlib.sha1(source.encode()).hexdigest()[:16])
     code.expand = namespace.get("expand")
     return code
+
+
+def _needed(assigned, exprs) -> list:
+    """The assignment lines that exprs depend on, in order (the others are left out: a
+    root function must not evaluate sqrt(1 - p) that only the residual needs)."""
+    need = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
+    keep = []
+    for a, e in reversed(assigned):
+        if a in need:
+            keep.append((a, e))
+            need |= e.free_symbols
+    return [f"    {a} = {_PRINTER.doprint(e)}" for a, e in reversed(keep)]
 
 
 def _gradients(assigned, n_z):

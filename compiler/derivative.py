@@ -29,4 +29,8 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
         if len(with_x) == 1:
             rest = [a for a in expr.args if not a.has(x)]
             return sp.Mul(*rest) * partial(with_x[0], x)
+    if expr.is_Pow and not expr.exp.has(x):
+        # r u^(r-1) u' directly: sympy writes r u^r/u, which is 0/0 where u = 0
+        base, r = expr.args
+        return r * base ** (r - 1) * partial(base, x)
     return sp.diff(expr, x)

@@ -206,7 +206,12 @@ class CompiledModel(DAEProblem):
 
     def residual(self, t, z, zp):
         c = self.code
-        out = c.residual(t, z, self.p, self.m, np.empty(c.n_rows))
+        try:
+            out = c.residual(t, z, self.p, self.m, np.empty(c.n_rows))
+        except (ValueError, ZeroDivisionError, OverflowError):
+            # outside the domain of a function (sqrt of a negative, ...): the iterate is
+            # unusable, which the integrator treats like a failed Newton iteration
+            return np.full(self.n, np.nan)
         F = np.empty(self.n)
         F[: self.n_res] = out[: self.n_res]
         k = self.n_res + len(self.state_z)
@@ -216,7 +221,10 @@ class CompiledModel(DAEProblem):
 
     def jacobian(self, t, z, zp, cj):
         c = self.code
-        vals = c.jacobian(t, z, self.p, self.m, np.empty(len(c.jac_rows)))
+        try:
+            vals = c.jacobian(t, z, self.p, self.m, np.empty(len(c.jac_rows)))
+        except (ValueError, ZeroDivisionError, OverflowError):
+            vals = np.full(len(c.jac_rows), np.nan)
         vals[self._der_entries] *= -1.0
         n_sz, n_l = len(self.state_z), len(self.link_s)
         k = self.n_res + n_sz
@@ -274,9 +282,14 @@ class CompiledModel(DAEProblem):
 
     def init_modes(self, t, z):
         """Relations take the values they have at the initial point."""
-        if self.n_roots:
+        for _ in range(10):   # relations may depend on variables computed in other modes
+            if not self.n_roots:
+                return
             g = self.relations(t, z)
-            self.m[:] = [_RELATION[op](x) for op, x in zip(self.meta["relations"], g)]
+            new = [_RELATION[op](x) for op, x in zip(self.meta["relations"], g)]
+            if np.array_equal(new, self.m):
+                return
+            self.m[:] = new
 
     def set_whens(self, code, n_when, targets, owners) -> None:
         """When-clauses: rows 0..n_when-1 of ``code`` are the conditions (1/0), then one
@@ -296,7 +309,14 @@ class CompiledModel(DAEProblem):
         m_old = self.m.copy()
         which = np.array(crossed, dtype=bool, copy=True)
         which[self._time_idx] = True     # a time event: settle the relations of time
-        self._settle_modes(t, z, which)
+        for _ in range(10):
+            self._settle_modes(t, z, which)
+            # event iteration: a relation on a variable that jumped at this event may now
+            # clearly contradict its frozen value without having crossed; relations that
+            # sit at zero keep theirs (their side was decided when they crossed)
+            which = self._contradicted(t, z)
+            if not which.any():
+                break
         if getattr(self, "when_code", None) is None:
             return EventAction(changed=not np.array_equal(m_old, self.m))
         before = self._when_values(t, z, m_old)
@@ -310,6 +330,13 @@ class CompiledModel(DAEProblem):
         self.when_log.append((t, np.flatnonzero(fired).tolist()))
         self._settle_modes(t, new, np.ones(self.n_roots, dtype=bool))
         return EventAction(y=new, changed=True)
+
+    def _contradicted(self, t, z) -> np.ndarray:
+        g = self.relations(t, z)
+        tiny = 1e-9 * (1.0 + np.abs(g).max(initial=0.0))
+        truth = np.array([_RELATION[op](x) for op, x in zip(self.meta["relations"], g)],
+                         dtype=bool)
+        return (np.abs(g) > tiny) & (truth != self.m)
 
     def settle_modes(self, t, z) -> None:
         """Every relation takes the value it has just after t (see _settle_modes)."""

@@ -11,8 +11,8 @@ import acausal as ac
 __all__ = ["stribeck", "saturation", "stribeck_level", "direction", "elastoplastic_alpha"]
 
 # direction() switches at v = -1e-300 rather than at 0: a relation whose function is
-# exactly 0 where the solver arms its events (a body starting at rest) would not switch
-# when v leaves 0 (see tests/library/test_friction.py); |v| is then off by < 1e-300.
+# exactly 0 when the solver (re)arms its events, as v of a body at rest after an event,
+# is not switched when v leaves 0; |v| = v direction(v) is then off by < 1e-300.
 _AT_REST = 1e-300
 
 
@@ -31,7 +31,7 @@ def stribeck_level(v, F_c, F_s, v_s):
     Canudas de Wit et al. (1995), and z_ss = g(v) sgn(v) / sigma_0.
     """
     # (v/v_s)^2 spelled ((v + v_s)/v_s - 1)^2: sympy keeps it a square of a sum, and the
-    # code printer emits v^2/v_s^2 wrongly as v*v/v_s*v_s (see tests/library/test_friction)
+    # code printer emits v^2/v_s^2 wrongly, as v*v/v_s*v_s
     ratio = (v + v_s) / v_s - 1
     return F_c + (F_s - F_c) * sp.exp(-ratio**2)
 
@@ -41,7 +41,20 @@ def stribeck(v, F_c, F_s, v_s, F_v):
 
         F = [F_c + (F_s - F_c) exp(-(v/v_s)^2)] sgn(v) + F_v v
 
-    With F_s = F_c it is Coulomb + viscous friction (5.12)."""
+    With F_s = F_c it is Coulomb + viscous friction (5.12).
+
+    Parameters
+    ----------
+    v : sympy expression
+        Sliding velocity.
+    F_c, F_s, v_s, F_v : float or sympy expression
+        Coulomb level, static (break-away) level, Stribeck velocity, viscous coefficient.
+
+    Returns
+    -------
+    sympy expression
+        The friction force, with sgn(0) = 0 as an event.
+    """
     return stribeck_level(v, F_c, F_s, v_s) * ac.sign(v) + F_v * v
 
 

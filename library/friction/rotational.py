@@ -26,7 +26,7 @@ class StribeckFriction(_Stribeck, PartialRotationalFriction):
     F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")
     F_s = ac.Parameter(1.5, unit="N.m", min=0, description="static (break-away) friction")
     v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
-    F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous friction coefficient")
+    F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous coefficient")
 
     def equations(self):
         return [*super().equations(), *self.law(self.w, self.tau)]
@@ -49,7 +49,7 @@ class KarnoppFriction(_Karnopp, PartialRotationalFriction):
     F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")
     F_s = ac.Parameter(1.5, unit="N.m", min=0, description="static (break-away) friction")
     v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
-    F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous friction coefficient")
+    F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous coefficient")
     dv = ac.Parameter(1e-6, unit="rad/s", min=0, description="half width of the sticking band")
     a = ac.Variable(unit="rad/s2", description="relative acceleration")
     sa = ac.Variable(start=0.0, description="curve parameter (applied torque when stuck)")
@@ -90,7 +90,7 @@ class LuGreFriction(_LuGre, PartialRotationalFriction):
     v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
     sigma_0 = ac.Parameter(1e5, unit="N.m/rad", min=0, description="bristle stiffness")
     sigma_1 = ac.Parameter(300.0, unit="N.m.s/rad", min=0, description="bristle damping")
-    sigma_2 = ac.Parameter(0.4, unit="N.m.s/rad", min=0, description="viscous friction coefficient")
+    sigma_2 = ac.Parameter(0.4, unit="N.m.s/rad", min=0, description="viscous coefficient")
     z = ac.Variable(start=0.0, unit="rad", description="mean bristle deflection")
     z_dot = ac.Variable(unit="rad/s", description="der(z)")
 
@@ -114,7 +114,7 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialRotationalFriction):
     v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
     sigma_0 = ac.Parameter(1e5, unit="N.m/rad", min=0, description="bristle stiffness")
     sigma_1 = ac.Parameter(300.0, unit="N.m.s/rad", min=0, description="bristle damping")
-    sigma_2 = ac.Parameter(0.4, unit="N.m.s/rad", min=0, description="viscous friction coefficient")
+    sigma_2 = ac.Parameter(0.4, unit="N.m.s/rad", min=0, description="viscous coefficient")
     z_b = ac.Parameter(5e-6, unit="rad", min=0, description="break-away deflection, < F_c/sigma_0")
     z = ac.Variable(start=0.0, unit="rad", description="elastic (pre-sliding) deflection")
     z_dot = ac.Variable(unit="rad/s", description="der(z)")

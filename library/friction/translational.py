@@ -26,7 +26,7 @@ class StribeckFriction(_Stribeck, PartialTranslationalFriction):
     F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")
     F_s = ac.Parameter(1.5, unit="N", min=0, description="static (break-away) friction")
     v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
-    F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous friction coefficient")
+    F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous coefficient")
 
     def equations(self):
         return [*super().equations(), *self.law(self.v, self.f)]
@@ -49,7 +49,7 @@ class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
     F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")
     F_s = ac.Parameter(1.5, unit="N", min=0, description="static (break-away) friction")
     v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
-    F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous friction coefficient")
+    F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous coefficient")
     dv = ac.Parameter(1e-6, unit="m/s", min=0, description="half width of the sticking band")
     a = ac.Variable(unit="m/s2", description="relative acceleration")
     sa = ac.Variable(start=0.0, description="curve parameter (applied force when stuck)")
@@ -90,7 +90,7 @@ class LuGreFriction(_LuGre, PartialTranslationalFriction):
     v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
     sigma_0 = ac.Parameter(1e5, unit="N/m", min=0, description="bristle stiffness")
     sigma_1 = ac.Parameter(300.0, unit="N.s/m", min=0, description="bristle damping")
-    sigma_2 = ac.Parameter(0.4, unit="N.s/m", min=0, description="viscous friction coefficient")
+    sigma_2 = ac.Parameter(0.4, unit="N.s/m", min=0, description="viscous coefficient")
     z = ac.Variable(start=0.0, unit="m", description="mean bristle deflection")
     z_dot = ac.Variable(unit="m/s", description="der(z)")
 
@@ -114,7 +114,7 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialTranslationalFriction):
     v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
     sigma_0 = ac.Parameter(1e5, unit="N/m", min=0, description="bristle stiffness")
     sigma_1 = ac.Parameter(300.0, unit="N.s/m", min=0, description="bristle damping")
-    sigma_2 = ac.Parameter(0.4, unit="N.s/m", min=0, description="viscous friction coefficient")
+    sigma_2 = ac.Parameter(0.4, unit="N.s/m", min=0, description="viscous coefficient")
     z_b = ac.Parameter(5e-6, unit="m", min=0, description="break-away deflection, < F_c/sigma_0")
     z = ac.Variable(start=0.0, unit="m", description="elastic (pre-sliding) deflection")
     z_dot = ac.Variable(unit="m/s", description="der(z)")

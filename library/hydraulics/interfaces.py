@@ -38,7 +38,19 @@ class PartialTwoPort(ac.Component):
 
 def F_tr(Re_tr, rho, nu, C_d):
     """Transition force F_tr = 9 Re_tr^2 rho nu^2 / (8 C_d^2) * pi/4  [N]
-    (Egeland & Gravdahl (4.42); (4.12)/(4.14) print a stray factor pi)."""
+    (Egeland & Gravdahl (4.42); (4.12)/(4.14) print a stray factor pi).
+
+    Parameters
+    ----------
+    Re_tr, rho, nu, C_d : float or sympy expression
+        Transition Reynolds number, density [kg/m3], kinematic viscosity [m2/s],
+        discharge coefficient.
+
+    Returns
+    -------
+    sympy expression
+        F_tr = p_tr A, the product of orifice area and pressure drop at the transition.
+    """
     return 9 * Re_tr**2 * rho * nu**2 / (8 * C_d**2) * sp.pi / 4
 
 
@@ -53,6 +65,21 @@ def orifice_flow(A, dp, C_d, rho, nu, Re_tr):
     The two branches and their slopes agree at |x| = 1, and the slope at dp = 0 is
     finite.  ``A`` may be an expression that reaches 0 (a closed spool): A enters as
     A^(3/2) in the laminar branch, whose slope in A vanishes with A.
+
+    Parameters
+    ----------
+    A : sympy expression
+        Opening area [m2], >= 0.
+    dp : sympy expression
+        Pressure drop across the orifice [Pa].
+    C_d, rho, nu, Re_tr : float or sympy expression
+        Discharge coefficient, density [kg/m3], kinematic viscosity [m2/s] and
+        transition Reynolds number.
+
+    Returns
+    -------
+    sympy expression
+        The flow q [m3/s] in the direction of dp; its branches are events.
     """
     Ftr = F_tr(Re_tr, rho, nu, C_d)
     x = A * dp / Ftr

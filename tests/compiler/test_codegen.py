@@ -2,6 +2,7 @@
 import math
 
 import numpy as np
+import pytest
 import sympy as sp
 
 import acausal as ac
@@ -53,3 +54,19 @@ def test_compiled_jacobian_matches_finite_differences():
             fd[:, j] = (compiled.residual(0.0, z + dz, zp + cj * dz)
                         - compiled.residual(0.0, z - dz, zp - cj * dz)) / (2 * h)
         assert np.allclose(J, fd, atol=1e-6)
+
+
+def test_squares_and_reciprocals_in_products_print_with_parentheses():
+    """x / a**2 must stay x / (a*a) inside a product (it once printed as x/a*a)."""
+    x, a = sp.symbols("x a")
+    code = generate([3 * x / a**2 - 1 / (x * a)], [x], [a])
+    val = code.residual(0.0, np.array([2.0]), np.array([5.0]), [], np.empty(1))[0]
+    assert val == pytest.approx(3 * 2.0 / 25.0 - 1 / 10.0, rel=1e-15)
+
+
+def test_power_rule_is_finite_where_the_base_vanishes():
+    """d/dx u**(3/2) = 3/2 u**(1/2) u': finite (0) at u = 0, where u**r/u would be 0/0."""
+    x = sp.Symbol("x")
+    code = generate([(x - 1) ** sp.Rational(3, 2)], [x], [])
+    val = code.jacobian(0.0, np.array([1.0]), np.array([]), [], np.empty(1))[0]
+    assert val == 0.0

@@ -163,3 +163,40 @@ def test_static_friction_block_pushed_from_rest():
     t = np.linspace(0, 1.0, 11)
     res = ac.simulate(BlockPushedFromRest(), t_end=1.0, rtol=1e-10, t_eval=t)
     assert np.max(np.abs(res["block.v"] - 4.0 * (1 - np.exp(-0.5 * t)))) < 1e-7
+
+
+class BlockOnLuGre(ac.Component):
+    """A block at rest on a LuGre contact, pushed by a force ramping at 2 N/s."""
+
+    ground = tr.Fixed()
+    friction = ftr.LuGreFriction(F_c=1.0, F_s=1.5, v_s=0.01, sigma_0=1e5, sigma_1=300.0,
+                                 sigma_2=0.4, z={"start": 0.0, "fixed": True})
+    block = tr.Mass(m=1.0, s={"start": 0.0, "fixed": True}, v={"start": 0.0, "fixed": True})
+    push = tr.Force()
+    ramp = Ramp(height=2.0, duration=1.0)
+
+    def equations(self):
+        return [ac.connect(self.ground.flange, self.friction.flange_a),
+                ac.connect(self.friction.flange_b, self.block.flange_a),
+                ac.connect(self.block.flange_b, self.push.flange),
+                ac.connect(self.ramp.y, self.push.f)]
+
+
+def _lugre_block(t, y):
+    """(5.42)-(5.44) by hand: y = (x, v, z), m v' = 2 t - F."""
+    x, v, z = y
+    g = 1.0 + 0.5 * np.exp(-(v / 0.01)**2)
+    z_dot = v - 1e5 * abs(v) * z / g
+    return [v, 2.0 * t - (1e5 * z + 300.0 * z_dot + 0.4 * v), z_dot]
+
+
+def test_lugre_block_starting_at_rest_breaks_away():
+    """Pre-sliding (F = sigma_0 z ~ applied force), then break-away near F_s: the whole
+    motion against solve_ivp on the hand-written LuGre equations."""
+    t = np.linspace(0, 1.0, 101)
+    res = ac.simulate(BlockOnLuGre(), t_end=1.0, rtol=1e-9, t_eval=t)
+    ref = solve_ivp(_lugre_block, (0, 1.0), [0.0, 0.0, 0.0], t_eval=t, method="Radau",
+                    rtol=1e-11, atol=[1e-14, 1e-12, 1e-16])
+    assert np.max(np.abs(res["block.v"] - ref.y[1])) < 1e-6 * np.max(np.abs(ref.y[1]))
+    assert np.max(np.abs(res["block.s"] - ref.y[0])) < 1e-6 * np.max(np.abs(ref.y[0]))
+    assert ref.y[1][-1] > 0.1 and np.max(ref.y[1][t < 0.5]) < 1e-3   # stuck, then sliding

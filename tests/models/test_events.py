@@ -1,5 +1,6 @@
 """Events in models: when/reinit, if-expressions, chattering, steady-state initialization."""
 import numpy as np
+import sympy as sp
 import pytest
 
 import acausal as ac
@@ -78,3 +79,55 @@ def test_step_source_event_is_located_and_response_exact():
     assert any(abs(te - 0.05) < 1e-10 for te in res.events)
     exact = np.where(t >= 0.05, 2.0 * (1 - np.exp(-(t - 0.05) / 1e-2)), 0.0)
     assert np.max(np.abs(res["C1.v"] - exact)) < 1e-5 * 2.0
+
+
+class JumpThenSwitch(ac.Component):
+    """u jumps at t = 0.5; der(x) switches on u > 0, a relation that never crossed zero."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    u = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(self.u, ac.if_else(ac.time >= 0.5, 1.0, 0.0)),
+                ac.Eq(ac.der(self.x), ac.if_else(self.u > 0, 1.0, 0.0))]
+
+
+def test_relation_on_a_variable_that_jumps_at_an_event():
+    res = ac.simulate(JumpThenSwitch(), t_end=1.0, rtol=1e-8)
+    assert res["x"][-1] == pytest.approx(0.5, abs=1e-9)
+
+
+class ChainedRelations(ac.Component):
+    """z depends on a relation of y, which depends on a relation of time."""
+
+    y = ac.Variable()
+    z = ac.Variable()
+    w = ac.Variable(start=0.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(self.y, ac.if_else(ac.time > 0.5, 2, 0)),
+                ac.Eq(self.z, ac.if_else(self.y > 1, 1, 0)),
+                ac.Eq(ac.der(self.w), self.z)]
+
+
+def test_output_points_see_consistent_modes():
+    res = ac.simulate(ChainedRelations(), t_end=1.0, t_eval=[0, 0.25, 0.75, 1.0])
+    assert list(res["z"]) == [0, 0, 1, 1]
+    assert res["w"][-1] == pytest.approx(0.5, abs=1e-9)
+
+
+class SqrtUntilFull(ac.Component):
+    """p' = sqrt(1 - p) while p < 1: the dense output overshoots p = 1 when locating
+    the event, where sqrt(1 - p) is undefined; that must not abort the run."""
+
+    p = ac.Variable(start=0.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.p), ac.if_else(self.p < 1, sp.sqrt(1 - self.p), 0))]
+
+
+def test_function_outside_its_domain_is_not_a_crash():
+    res = ac.simulate(SqrtUntilFull(), t_end=3.0, rtol=1e-8, t_eval=[0.0, 1.0, 3.0])
+    # p = 1 - (1 - t/2)^2 until t = 2, then p = 1
+    assert res.success and res["p"][1] == pytest.approx(0.75, rel=1e-6)
+    assert res["p"][-1] == pytest.approx(1.0, abs=1e-9)

@@ -29,7 +29,8 @@ DP_VALVE = RHO / 2 * (Q_0 / (0.6 * A_VALVE))**2
 
 class WaterHammer(ac.Component):
     """L = 100 m (2L/c = 0.16 s), A = 10 cm2, v_0 = 2 m/s; the valve closes linearly in
-    5 ms from t = 10 ms."""
+    5 ms from t = 10 ms.  30 resonators: the pressure rings about rho c v_0 (peak +5 %)
+    at the chain's highest frequencies, 2 c/h."""
 
     stop_time = 0.14
     tank = FixedPressure(p=P_0 + DP_VALVE)
@@ -47,6 +48,8 @@ class WaterHammer(ac.Component):
 
 
 if __name__ == "__main__":
-    res = ac.simulate(WaterHammer(), t_end=WaterHammer.stop_time, rtol=1e-6)
-    rise = res["line.port_b.p"].max() - (P_0 + DP_VALVE)
-    print(f"pressure rise {rise / 1e5:.2f} bar, rho c v0 = {RHO * C * V_0 / 1e5:.2f} bar")
+    res = ac.simulate(WaterHammer(), t_end=WaterHammer.stop_time, rtol=1e-5)
+    closed = res.t > 0.02
+    rise = res["line.port_b.p"][closed] - (P_0 + DP_VALVE)
+    print(f"pressure rise: mean {rise.mean() / 1e5:.2f} bar, peak {rise.max() / 1e5:.2f} bar; "
+          f"rho c v0 = {RHO * C * V_0 / 1e5:.2f} bar")
