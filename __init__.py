@@ -9,7 +9,7 @@ Write a model as components with ports, connect them like a schematic, and simul
 See the README for the modelling language and the design.
 """
 from .components import (Across, Component, Connection, Eq, Equation, ModelError, Parameter,
-                         Port, Signal, Through, Variable, When, connect, der, if_else, pre,
+                         Port, Signal, Through, Variable, When, connect, der, if_else, no_event, pre,
                          ref, reinit, sign, time, when)
 from .compiler.model import CompiledModel
 from .result import Result
@@ -19,7 +19,7 @@ from .analysis import (StateSpace, energy_balance, estimate, is_passive, lineari
                        linearize_symbolic, steady_state)
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
-           "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre", "Connection", "if_else", "sign", "time",
+           "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre", "Connection", "if_else", "no_event", "sign", "time",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
            "ModelError", "SimulationError", "linearize", "linearize_symbolic", "StateSpace",
            "steady_state", "energy_balance", "is_passive", "estimate"]

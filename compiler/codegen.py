@@ -65,22 +65,69 @@ class GeneratedCode:
     digest: str
 
 
+def event_form(expr: sp.Expr) -> sp.Expr:
+    """abs, min, max and sign as if-expressions, so their kinks generate events (as in
+    Modelica, where only noEvent(...) suppresses them); no_event(...) is unwrapped."""
+    from ..components.symbols import no_event
+    if not expr.has(sp.Abs, sp.Min, sp.Max, sp.sign, no_event):
+        return expr
+    quiet = {}
+    for k, q in enumerate(expr.atoms(no_event)):
+        quiet[q] = sp.Dummy(f"quiet{k}")
+    e = expr.xreplace(quiet) if quiet else expr
+    e = e.replace(sp.Abs, lambda x: sp.Piecewise((x, x >= 0), (-x, True)))
+    e = e.replace(sp.sign, lambda x: sp.Piecewise((1, x > 0), (-1, x < 0), (0, True)))
+    e = e.replace(sp.Min, lambda *a: _fold(a, lambda u, v: sp.Piecewise((u, u <= v), (v, True))))
+    e = e.replace(sp.Max, lambda *a: _fold(a, lambda u, v: sp.Piecewise((u, u >= v), (v, True))))
+    return e.xreplace({d: q.args[0] for q, d in quiet.items()}) if quiet else e
+
+
+def _fold(args, pair):
+    out = args[0]
+    for a in args[1:]:
+        out = pair(out, a)
+    return out
+
+
 def extract_relations(exprs: list) -> tuple[list, list, dict]:
     """Replace relations inside Piecewise conditions by boolean mode symbols.
 
+    abs/min/max/sign are first written as if-expressions (:func:`event_form`); relations
+    inside ``no_event(...)`` stay as they are and are evaluated directly.
     Returns (new exprs, zero-crossing expressions, {mode symbol: relation}).
     """
+    from ..components.symbols import no_event
+    exprs = [event_form(sp.sympify(e)) for e in exprs]
     relations = {}
     for e in exprs:
-        for pw in e.atoms(sp.Piecewise):
+        for pw in _event_piecewise(e, no_event):
             for _, cond in pw.args:
                 for rel in _relations_in(cond):
                     relations.setdefault(rel, None)
     ordered = sorted(relations, key=sp.srepr)
     modes = {rel: sp.Symbol(f"_m{k}") for k, rel in enumerate(ordered)}
-    new = [e.xreplace(modes) if modes else e for e in exprs]
+    new = [_freeze(e, modes, no_event) for e in exprs]
     crossings = [rel.lhs - rel.rhs for rel in ordered]
     return new, crossings, {modes[r]: r for r in ordered}
+
+
+def _event_piecewise(e, no_event):
+    """Piecewise sub-expressions of e that are not inside no_event(...)."""
+    if isinstance(e, no_event):
+        return []
+    out = [e] if isinstance(e, sp.Piecewise) else []
+    for a in e.args:
+        out += _event_piecewise(a, no_event)
+    return out
+
+
+def _freeze(e, modes, no_event):
+    """Relations -> mode symbols, except inside no_event(...), which is unwrapped."""
+    if not modes and not e.has(no_event):
+        return e
+    quiet = {q: sp.Dummy() for q in e.atoms(no_event)}
+    out = e.xreplace(quiet).xreplace(modes) if modes else e.xreplace(quiet)
+    return out.xreplace({d: q.args[0] for q, d in quiet.items()})
 
 
 def _relations_in(cond):

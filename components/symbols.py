@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "smooth_abs", "sympify_value",
+__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "sympify_value",
            "When", "when", "reinit", "pre"]
 
 time = sp.Symbol("time", real=True)
@@ -89,9 +89,14 @@ def sign(x):
     return sp.Piecewise((1, x > 0), (-1, x < 0), (0, True))
 
 
-def smooth_abs(x):
-    """|x| without an event (for expressions that are smooth enough where x = 0)."""
-    return sp.Abs(sympify_value(x))
+class no_event(sp.Function):
+    """Modelica's noEvent(expr): relations, abs, min and max inside are evaluated
+    directly, not frozen between events (for expressions smooth enough at their kinks)."""
+
+    nargs = 1
+
+    def fdiff(self, argindex=1):
+        return sp.Integer(1)   # the identity: d no_event(u) = du
 
 
 class pre(sp.Function):

@@ -131,3 +131,28 @@ def test_function_outside_its_domain_is_not_a_crash():
     # p = 1 - (1 - t/2)^2 until t = 2, then p = 1
     assert res.success and res["p"][1] == pytest.approx(0.75, rel=1e-6)
     assert res["p"][-1] == pytest.approx(1.0, abs=1e-9)
+
+
+class Kinks(ac.Component):
+    """x' = 1; y' = |x - 0.4|; z' = max(0, time - 0.3) (Modelica: abs and max make events)."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    y = ac.Variable(start=0.0, fixed=True)
+    z = ac.Variable(start=0.0, fixed=True)
+    q = ac.Variable(start=0.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1.0),
+                ac.Eq(ac.der(self.y), sp.Abs(self.x - 0.4)),
+                ac.Eq(ac.der(self.z), sp.Max(0, ac.time - 0.3)),
+                ac.Eq(ac.der(self.q), ac.no_event(sp.Abs(self.x - 0.7)))]
+
+
+def test_abs_and_max_kinks_are_events_and_no_event_suppresses_them():
+    res = ac.simulate(Kinks(), t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=[0.0, 1.0])
+    events = np.array(res.events)
+    assert np.min(np.abs(events - 0.4)) < 1e-10 and np.min(np.abs(events - 0.3)) < 1e-12
+    assert np.min(np.abs(events - 0.7)) > 1e-3                   # no event under no_event
+    assert res["y"][-1] == pytest.approx(0.4**2 / 2 + 0.6**2 / 2, abs=1e-9)
+    assert res["z"][-1] == pytest.approx(0.7**2 / 2, abs=1e-9)
+    assert res["q"][-1] == pytest.approx(0.7**2 / 2 + 0.3**2 / 2, abs=1e-6)
