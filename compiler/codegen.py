@@ -67,7 +67,7 @@ class GeneratedCode:
 
 def event_form(expr: sp.Expr) -> sp.Expr:
     """abs, min, max and sign as if-expressions, so their kinks generate events (as in
-    Modelica, where only noEvent(...) suppresses them); no_event(...) is unwrapped."""
+    Modelica, where only noEvent(...) suppresses them); inside no_event(...) they stay."""
     from ..components.symbols import no_event
     if not expr.has(sp.Abs, sp.Min, sp.Max, sp.sign, no_event):
         return expr
@@ -79,7 +79,8 @@ def event_form(expr: sp.Expr) -> sp.Expr:
     e = e.replace(sp.sign, lambda x: sp.Piecewise((1, x > 0), (-1, x < 0), (0, True)))
     e = e.replace(sp.Min, lambda *a: _fold(a, lambda u, v: sp.Piecewise((u, u <= v), (v, True))))
     e = e.replace(sp.Max, lambda *a: _fold(a, lambda u, v: sp.Piecewise((u, u >= v), (v, True))))
-    return e.xreplace({d: q.args[0] for q, d in quiet.items()}) if quiet else e
+    # the no_event wrappers go back in: _freeze unwraps them after relations are taken
+    return e.xreplace({d: q for q, d in quiet.items()}) if quiet else e
 
 
 def _fold(args, pair):

@@ -1,6 +1,7 @@
 """1-D rotational mechanics."""
-from .components import (Damper, ElasticGearWithDeadzone, Fixed, IdealGear, IdealGearR2T,
-                         IdealRollingWheel, Inertia, RackAndPinion, Spring, SpringDamper)
+from .components import (Damper, ElasticGearWithDeadzone, Fixed, GearWithBacklash, IdealGear,
+                         IdealGearR2T, IdealRollingWheel, Inertia, RackAndPinion, Spring,
+                         SpringDamper)
 from .interfaces import (PartialAbsoluteSensor, PartialCompliant, PartialElementaryOneFlange,
                          PartialElementaryRotationalToTranslational, PartialRelativeSensor,
                          PartialTwoFlanges)
@@ -12,6 +13,6 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryRotationalToTranslational", "Fixed", "Inertia", "Spring",
            "Damper", "SpringDamper", "IdealGear", "IdealGearR2T", "IdealRollingWheel",
-           "RackAndPinion", "ElasticGearWithDeadzone", "ConstantTorque", "StepTorque",
-           "Torque", "ConstantSpeed", "Speed", "Position", "AngleSensor", "SpeedSensor",
-           "RelAngleSensor", "RelSpeedSensor", "TorqueSensor", "PowerSensor"]
+           "RackAndPinion", "ElasticGearWithDeadzone", "GearWithBacklash", "ConstantTorque",
+           "StepTorque", "Torque", "ConstantSpeed", "Speed", "Position", "AngleSensor",
+           "SpeedSensor", "RelAngleSensor", "RelSpeedSensor", "TorqueSensor", "PowerSensor"]

@@ -1,9 +1,12 @@
-"""Translational components (Egeland & Gravdahl 2.1.2: the mass-spring-damper)."""
+"""Translational components (Egeland & Gravdahl 2.1.2: the mass-spring-damper; the MSL's
+hard stops)."""
+import sympy as sp
+
 import acausal as ac
 
 from .interfaces import PartialCompliant, PartialElementaryOneFlange, PartialTwoFlanges
 
-__all__ = ["Fixed", "Mass", "Spring", "Damper", "SpringDamper"]
+__all__ = ["Fixed", "Mass", "Spring", "Damper", "SpringDamper", "MassWithStop"]
 
 
 class Fixed(PartialElementaryOneFlange):
@@ -63,3 +66,99 @@ class SpringDamper(PartialCompliant):
     def equations(self):
         return [*super().equations(),
                 ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0) + self.d * ac.der(self.s_rel))]
+
+
+class MassWithStop(PartialTwoFlanges):
+    """Sliding mass between hard stops at s_min and s_max (the stops of the MSL's
+    ``MassWithStopAndFriction``, without friction):
+
+        s = flange_a.s = flange_b.s,   v = der(s),   m der(v) = f_app + f_stop
+        f_app = flange_a.f + flange_b.f              (the force of the rest of the model)
+        f_stop = -max(f_app, 0) at s_max,  -min(f_app, 0) at s_min,  0 in between
+
+    Parameters
+    ----------
+    m : float
+        Mass [kg].
+    s_min, s_max : float
+        Positions of the stops [m], s_min < s_max.
+    e : float
+        Coefficient of restitution (Newton's law of impact): a hit sets v to -e v.
+        0 (the default) is a plastic impact: the mass comes to rest at the stop (and,
+        being 0, a structural zero: give e at instantiation to use it).
+    v_rest : float
+        Rebound speed [m/s] below which a hit is plastic instead (see Notes).
+    eps : float
+        Width of the contact band inside each stop [m], see Notes.
+
+    Notes
+    -----
+    At a stop the mass rests with v = 0 and der(v) = 0 exactly while the applied
+    force pushes into the stop (the stop force is its reaction); it leaves, on the
+    free motion, at the event where f_app changes sign.  The stops are rigid:
+    reaching one is an event that reinitializes v, v+ = -e v- (Newton's impact law,
+    e.g. Brogliato, *Nonsmooth Mechanics*, 1999; the MSL's ``MassWithStopAndFriction``
+    stops the mass, e = 0).  Everything rigidly attached to the mass (masses,
+    ideal gears) takes part in the impact with it, as the stop is fixed.
+
+    With e > 0 and a force that keeps pushing, the rebounds shrink geometrically and
+    accumulate in finite time (Zeno), which the simulator stops on; so a rebound
+    slower than v_rest ends the bouncing: the mass is then put at rest on the stop.
+
+    Contact is a band of width eps inside each stop: entering it is the impact, which
+    also sets s to the stop exactly (a shift of at most eps); after a rebound s is
+    put 2 eps inside the free range.  The band's relation is
+    atan((s - s_max)/eps + 1) > 0 (mirrored at s_min), +-pi/4 at s = s_max and
+    s_max - 2 eps, clearly non-zero for the event logic whatever eps (eps must be
+    small against the stroke and above the round-off of s).
+    """
+
+    m = ac.Parameter(1.0, unit="kg", min=0, description="mass")
+    s_min = ac.Parameter(-1.0, unit="m", description="position of the lower stop")
+    s_max = ac.Parameter(1.0, unit="m", description="position of the upper stop")
+    e = ac.Parameter(0.0, min=0, max=1, description="coefficient of restitution")
+    v_rest = ac.Parameter(1e-3, unit="m/s", min=0,
+                          description="slowest rebound; slower hits are plastic")
+    eps = ac.Parameter(1e-10, unit="m", min=0, description="width of the contact band")
+    # states, because the impacts reinitialize them
+    s = ac.Variable(start=0.0, unit="m", state_select="prefer", description="absolute position")
+    v = ac.Variable(start=0.0, unit="m/s", state_select="prefer", description="absolute velocity")
+    a = ac.Variable(unit="m/s2", description="absolute acceleration")
+    f_app = ac.Variable(unit="N", description="force applied by the rest of the model")
+    f_stop = ac.Variable(unit="N", description="force of the stops on the mass")
+
+    def at_max(self):
+        """Relation: in the contact band at s_max."""
+        return sp.atan((self.s - self.s_max) / self.eps + 1) > 0
+
+    def at_min(self):
+        """Relation: in the contact band at s_min."""
+        return sp.atan((self.s_min - self.s) / self.eps + 1) > 0
+
+    def equations(self):
+        f, at_max, at_min = self.f_app, self.at_max(), self.at_min()
+        stop = ac.if_else(at_max, ac.if_else(f > 0, -f, 0),
+                          ac.if_else(at_min, ac.if_else(f < 0, -f, 0), 0))
+        # 1 for a rebound, 0 for rest (a rebound slower than v_rest), on the speed just
+        # before the hit: the step max(0, x)/max(|x|, tiny), because no_event() keeps
+        # max and abs out of the zero crossings but not an if_else relation (that would
+        # add an event at every v = +-v_rest/e), and sign() or Heaviside() have no
+        # printable derivative for the generated Jacobian
+        up = _step(self.e * ac.pre(self.v) - self.v_rest)
+        down = _step(-self.e * ac.pre(self.v) - self.v_rest)
+        return [ac.Eq(self.s, self.flange_a.s),
+                ac.Eq(self.s, self.flange_b.s),
+                ac.Eq(self.v, ac.der(self.s)),
+                ac.Eq(self.a, ac.der(self.v)),
+                ac.Eq(self.f_app, self.flange_a.f + self.flange_b.f),
+                ac.Eq(self.f_stop, stop),
+                ac.Eq(self.m * self.a, self.f_app + self.f_stop),
+                ac.when(at_max, ac.reinit(self.s, self.s_max - up * 2 * self.eps),
+                        ac.reinit(self.v, -up * self.e * ac.pre(self.v))),
+                ac.when(at_min, ac.reinit(self.s, self.s_min + down * 2 * self.eps),
+                        ac.reinit(self.v, -down * self.e * ac.pre(self.v)))]
+
+
+def _step(x):
+    """1 for x > 0, else 0, evaluated directly (no event)."""
+    return ac.no_event(sp.Max(0, x) / sp.Max(sp.Abs(x), 1e-300))

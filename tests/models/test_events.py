@@ -156,3 +156,21 @@ def test_abs_and_max_kinks_are_events_and_no_event_suppresses_them():
     assert res["y"][-1] == pytest.approx(0.4**2 / 2 + 0.6**2 / 2, abs=1e-9)
     assert res["z"][-1] == pytest.approx(0.7**2 / 2, abs=1e-9)
     assert res["q"][-1] == pytest.approx(0.7**2 / 2 + 0.3**2 / 2, abs=1e-6)
+
+
+def test_no_event_keeps_if_expressions_from_making_events():
+    class Ramp(ac.Component):
+        x = ac.Variable(start=0.0, fixed=True)
+        y = ac.Variable()
+        w = ac.Variable(start=0.0, fixed=True)
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.x), 1.0),
+                    ac.Eq(self.y, ac.no_event(ac.if_else(self.x > 0.5, 1.0, 0.0))),
+                    ac.Eq(ac.der(self.w), self.y)]
+
+    compiled = ac.compile(Ramp())
+    assert compiled.n_roots == 0
+    res = ac.simulate(compiled, t_end=1.0, rtol=1e-8, t_eval=[0.25, 1.0])
+    assert list(res["y"]) == [0.0, 1.0] and res.events == []
+    assert res["w"][-1] == pytest.approx(0.5, abs=1e-3)   # integrated across the jump
