@@ -25,10 +25,13 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
     if expr.is_Add:
         return sp.Add(*[partial(a, x) for a in expr.args if a.has(x)])
     if expr.is_Mul:
-        with_x = [a for a in expr.args if a.has(x)]
-        if len(with_x) == 1:
-            rest = [a for a in expr.args if not a.has(x)]
-            return sp.Mul(*rest) * partial(with_x[0], x)
+        # product rule over the factors that contain x
+        args = expr.args
+        terms = []
+        for i, a in enumerate(args):
+            if a.has(x):
+                terms.append(sp.Mul(*args[:i], partial(a, x), *args[i + 1:]))
+        return sp.Add(*terms)
     if expr.is_Pow and not expr.exp.has(x):
         # r u^(r-1) u' directly: sympy writes r u^r/u, which is 0/0 where u = 0
         base, r = expr.args
