@@ -8,7 +8,11 @@ Problems (same tolerances for every solver, analytic Jacobians everywhere):
   four fast jumps), and the classic form y2' = mu (1 - y1^2) y2 - y1 on [0, 3000];
 * Robertson's kinetics on [0, 4e5]: a DAE (conservation law as the third equation) for
   acausal and IDA, the ODE form for scipy (which has no DAE solver);
-* a damped oscillator on [0, 10].
+* a damped oscillator on [0, 10];
+* a chain of 40 undamped oscillators (modes up to 1e5 rad/s) moved slowly at one end,
+  on [0, 0.2]: the high modes, excited to about the tolerance, are not damped by BDF
+  orders 3-5.  Also run with stability limit detection (``stald=True``) and with
+  ``max_order=2``.
 
 Printed per problem and tolerance: accepted steps, residual (right-hand side)
 evaluations, Jacobian evaluations, wall time, and the ratios acausal/scipy and
@@ -27,8 +31,9 @@ from scipy.integrate import solve_ivp
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 from acausal.solvers import integrate  # noqa: E402
-from acausal.tests.solvers.problems import (DampedOscillator, Robertson,  # noqa: E402
-                                            VanDerPol, VanDerPolClassic)
+from acausal.tests.solvers.problems import (DampedOscillator,  # noqa: E402
+                                            OscillatorChain, Robertson, VanDerPol,
+                                            VanDerPolClassic)
 
 try:
     from sksundae.ida import IDA
@@ -41,6 +46,7 @@ def _cases():
     classic = VanDerPolClassic(1000.0)
     rob = Robertson()
     osc = DampedOscillator()
+    chain = OscillatorChain(N=40, w=5e4, d=0.0, a=20.0)
     rob_atol = np.array([1e-8, 1e-14, 1e-8])
     return [
         ("Van der Pol mu=1000 [0,3]", vdp, (0.0, 3.0), [2.0, 0.0], [0.0, -2000.0],
@@ -51,6 +57,8 @@ def _cases():
          rob_atol, rob.ode, rob.ode_jac, [2]),
         ("damped oscillator [0,10]", osc, (0.0, 10.0), [1.0, 0.0], [0.0, -4.0],
          1e-8, osc.ode, lambda t, y: [[0.0, 1.0], [-4.0, -0.4]], None),
+        ("oscillator chain N=40 [0,0.2]", chain, (0.0, 0.2), *chain.initial(), 1e-6,
+         chain.ode, chain.ode_jac, [0]),
     ]
 
 
@@ -66,8 +74,9 @@ def _timed(fn):
     return result, best
 
 
-def run_ours(p, span, y0, yp0, rtol, atol):
-    out, dt = _timed(lambda: integrate(p, span, y0, yp0, rtol=rtol, atol=atol))
+def run_ours(p, span, y0, yp0, rtol, atol, **options):
+    out, dt = _timed(lambda: integrate(p, span, y0, yp0, rtol=rtol, atol=atol,
+                                       **options))
     s = out.stats
     return s.steps, s.residual_evaluations, s.jacobian_evaluations, dt, out.y[-1]
 
@@ -116,6 +125,10 @@ def main(argv=None):
             ours = run_ours(p, span, y0, yp0, rtol, atol)
             sci = run_scipy(fun, jac, span, y0, rtol, atol)
             print(_row("acausal", ours))
+            if isinstance(p, OscillatorChain):
+                for label, opt in [("stald", {"stald": True}),
+                                   ("maxord2", {"max_order": 2})]:
+                    print(_row(label, run_ours(p, span, y0, yp0, rtol, atol, **opt)))
             print(_row("scipy", sci) + _ratios(ours, sci, "acausal/scipy"))
             if IDA is not None:
                 ida = run_ida(p, span, y0, yp0, rtol, atol, alg)

@@ -57,7 +57,8 @@ What a problem provides (numbered, so integrators can cite it)
 
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
-(convergence) failures, events, the steps taken at each order, and which LU
+(convergence) failures, events, the steps taken at each order, the order reductions
+made by stability limit detection, and which LU
 (dense or sparse) was used.
 
 What a solver returns (``SolverOutput``): accepted times ``t``, values ``y`` and
@@ -131,6 +132,7 @@ class SolverStats:
     newton_failures: int = 0
     events: int = 0
     orders: dict = field(default_factory=dict)
+    stability_limit_reductions: int = 0   # order lowered by stability limit detection
     linear_solver: str = ""      # "dense" or "sparse" LU, as chosen for the problem
 
     def as_dict(self) -> dict:

@@ -28,6 +28,11 @@ kept when it lies in (1, 2), and cut to a factor in [0.5, 0.9] otherwise.  An in
 phase doubles the step and raises the order each step until the first failure or order
 reduction (BCP sec. 5.2, DASSL's step and order strategy).
 
+Orders 3-5 are not A-stable.  ``max_order`` (DASSL's ``maxord``) caps the order; with
+``stald`` the order is capped at 2 when the step turns out to be limited by stability
+on a weakly damped mode rather than by accuracy (Hindmarsh's stability limit
+detection, as in CVODE, where it is off by default too: :mod:`acausal.solvers.stald`).
+
 Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``; with
 ``suppress_alg`` the algebraic components are left out of the error test (but not of
 the Newton convergence test), as IDA's ``suppressalg``.
@@ -40,6 +45,7 @@ import numpy as np
 
 from .base import DAEProblem, SolverStats
 from .linalg import LinearSolver, SingularMatrixError, make_linear_solver
+from .stald import StabilityLimitDetector
 
 __all__ = ["BDF", "StepFailure", "MAX_ORDER"]
 
@@ -59,16 +65,10 @@ _ALPHAS = [0.0] + [-sum(1.0 / j for j in range(1, k + 1)) for k in range(1, MAX_
 class StepFailure(RuntimeError):
     """A step could not be completed.
 
-    Attributes
-    ----------
-    kind : str
-        ``"error_test"``, ``"newton"``, ``"step_size"``, ``"singular"`` or ``"residual"``.
-    t, h : float
-        Where it happened and the last step size tried.
-    weighted : ndarray or None
-        Weighted error (or Newton correction) components, to name the culprits.
-    rows, cols : list of int
-        Equations/variables of a singular iteration matrix.
+    ``kind``: ``"error_test"``, ``"newton"``, ``"step_size"``, ``"singular"`` or
+    ``"residual"``; ``t``, ``h``: where, and the last step size tried; ``weighted``:
+    weighted error (or Newton correction) components, to name the culprits; ``rows``,
+    ``cols``: equations/variables of a singular iteration matrix.
     """
 
     def __init__(self, kind, message, t, h, weighted=None, rows=(), cols=()):
@@ -100,7 +100,13 @@ class BDF:
     suppress_alg : bool
         Exclude algebraic variables from the local error test.
     max_order : int
-        Highest order used (1-5).
+        Highest order used (1-5).  Orders 1 and 2 are A-stable; a lower limit trades
+        accuracy per step for damping of oscillatory modes (DASSL's ``maxord``).
+    stald : bool
+        Stability limit detection at orders 3-5 (see :mod:`acausal.solvers.stald`):
+        when the step is found stability-limited at order q and order q-1 meets the
+        tolerance at the same step, the order is capped at 2 until an error-test
+        failure or a restart.
     t_stop : float
         Steps never pass this time and land on it exactly.
     stats : SolverStats or None
@@ -121,7 +127,8 @@ class BDF:
                  atol=1e-8, max_step: float = np.inf, first_step: float | None = None,
                  suppress_alg: bool = False, max_order: int = MAX_ORDER,
                  t_stop: float = np.inf, stats: SolverStats | None = None,
-                 linear_solver: LinearSolver | None = None, probe: bool = False):
+                 linear_solver: LinearSolver | None = None, probe: bool = False,
+                 stald: bool = False):
         n = problem.n
         self.problem = problem
         self.n = n
@@ -143,16 +150,14 @@ class BDF:
         self.sigma = [0.0] * (MAX_ORDER + 2)
         self.gamma = [0.0] * (MAX_ORDER + 2)
         self.t_stop = float(t_stop)
+        self.stald = StabilityLimitDetector() if stald and self.max_order >= 3 else None
         self.restart(t0, y0, yp0, first_step, probe=probe)
 
     # ------------------------------------------------------------------ set-up
     def restart(self, t0: float, y0, yp0, first_step: float | None = None,
                 t_stop: float | None = None, probe: bool = False) -> None:
-        """Start afresh at order 1 from a consistent point (after events).
-
-        With ``probe`` (and no ``first_step``) the first step comes from a trial
-        backward-Euler step instead of IDA's heuristic alone (see :meth:`_probe`).
-        """
+        """Start afresh at order 1 from a consistent point (after events); with
+        ``probe`` (and no ``first_step``) the first step comes from :meth:`_probe`."""
         if t_stop is not None:
             self.t_stop = float(t_stop)
         self.tn = float(t0)
@@ -175,6 +180,9 @@ class BDF:
         self.ss = 20.0
         self.force_setup = True
         self._last_fail = self._last_err = None
+        self.kmax = self.max_order     # lowered by stability limit detection
+        if self.stald is not None:
+            self.stald.reset()
 
     def _initial_step(self) -> float:
         """IDA's first step: 0.001 of the interval, and at most 0.5/||y'0||_wrms."""
@@ -227,13 +235,9 @@ class BDF:
         x = v * w
         return math.sqrt(x.dot(x) / x.size)
 
-    @property
-    def t(self) -> float:
-        return self.tn
+    t = property(lambda self: self.tn)
 
-    @property
-    def order(self) -> int:
-        return self.kused
+    order = property(lambda self: self.kused)
 
     def set_stop(self, t_stop: float) -> None:
         """Move the time that steps must not pass (a time event or t_end)."""
@@ -452,6 +456,7 @@ class BDF:
                 raise StepFailure("error_test", f"error test failed {nef} times at "
                                   f"t={saved_t:.17g} (h={self.hh:.3g})", saved_t,
                                   self.hh, self._last_fail)
+            self.kmax = self.max_order   # lift a stability cap: this order fails accuracy
             if nef == 1:
                 self.kk = knew
                 err_knew = err_k if knew == kk else err_km1
@@ -488,7 +493,7 @@ class BDF:
         kdiff = kk - self.kused
         self.kused = kk
         self.hused = self.hh
-        if knew == kk - 1 or kk == self.max_order:
+        if knew == kk - 1 or kk >= self.kmax:
             self.phase = 1
         if self.phase == 0:
             if self.nst > 1:
@@ -505,6 +510,12 @@ class BDF:
         phi[ku] += ee
         if ku:
             phi[ku::-1] = np.cumsum(phi[ku::-1], axis=0)
+        if self.stald is not None:
+            self.stald.record(ku, phi, ee, self.ewt_err)
+            # only where order k-1 is as accurate at this step: a mode resolved on
+            # purpose (amplitude well above the tolerance) also has |r| ~ 1
+            if self.kk >= ku >= 3 and 2.0 * err_km1 + 1e-4 <= 1.0 and self.stald.limited():
+                self._stability_limited()
         self.t_prev = self.tn - self.hused
         self._last_err = (ee, self.ewt_err)
         self.y = phi[0].copy()
@@ -516,7 +527,7 @@ class BDF:
         err_kp1 = 0.0
         if knew == kk - 1:
             action = "lower"
-        elif kk == self.max_order or kk + 1 >= self.ns or kdiff == 1:
+        elif kk >= self.kmax or kk + 1 >= self.ns or kdiff == 1:
             action = "maintain"
         else:
             # error estimate at order k+1 from the last two corrections
@@ -539,11 +550,25 @@ class BDF:
             err_knew = err_km1
         else:
             err_knew = err_k
+        self._next_step(err_knew)
+
+    def _next_step(self, err_knew: float) -> None:
+        """Step for the next order from its error estimate (IDA: doubled, kept, or cut)."""
         rr = (2.0 * err_knew + 1e-4) ** (-1.0 / (self.kk + 1))
         if rr >= 2.0:
             self.hh = min(2.0 * self.hh, self.max_step)
         elif rr <= 1.0:
             self.hh *= max(0.5, min(0.9, rr))
+
+    def _stability_limited(self) -> None:
+        """STALD found the step stability-limited: go on at order 2, the highest
+        A-stable one, with the same step, and keep the order there until an error-test
+        failure says order 2 cannot keep the accuracy at that step.  (CVODE lowers the
+        order by one only; here the order selection, which sees accuracy alone, then
+        raises it again within a few steps and the stall resumes.)"""
+        self.stats.stability_limit_reductions += 1
+        self.hh = self.hused
+        self.kk = self.kmax = 2
 
     # ------------------------------------------------------------------ output
     def interpolate(self, t: float):

@@ -52,7 +52,8 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
               atol=1e-8, t_eval=None, max_step: float = np.inf,
               first_step: float | None = None, suppress_alg: bool = False,
               max_steps: int = 500000, initialize: bool = True,
-              max_event_iterations: int = 20) -> SolverOutput:
+              max_event_iterations: int = 20, max_order: int = 5,
+              stald: bool = False) -> SolverOutput:
     """Integrate the DAE ``problem`` over ``t_span`` with the variable-order BDF.
 
     Parameters
@@ -82,6 +83,13 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
         Compute consistent initial values first (else y0, yp0 must be consistent).
     max_event_iterations : int
         Limit on event iterations at one time instant.
+    max_order : int
+        Highest BDF order (1-5; DASSL's ``maxord``).  Orders 1 and 2 are A-stable and
+        damp weakly damped high-frequency modes that orders 3-5 may not.
+    stald : bool
+        BDF stability limit detection (Hindmarsh's STALD, see
+        :mod:`acausal.solvers.stald`): caps the order when the step is limited by
+        stability on such a mode rather than by accuracy.
 
     Returns
     -------
@@ -100,6 +108,7 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     """
     run = _Run(problem, t_span, t_eval, rtol, atol, max_step, suppress_alg, max_steps,
                max_event_iterations)
+    run.bdf_options = {"max_order": max_order, "stald": stald}
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         return run.go(y0, yp0, first_step, initialize)
 
@@ -127,6 +136,7 @@ class _Run:
         te = sorted({float(x) for x in getattr(problem, "time_events", ()) or ()})
         self.time_events = [x for x in te if self.t0 < x < self.tf]
         self.n_roots = int(getattr(problem, "n_roots", 0) or 0)
+        self.bdf_options = {}
 
     # ------------------------------------------------------------------ main loop
     def go(self, y0, yp0, first_step, initialize) -> SolverOutput:
@@ -139,7 +149,7 @@ class _Run:
         self.solver = BDF(p, self.t0, y, yp, rtol=self.rtol, atol=self.atol,
                           max_step=self.max_step, first_step=first_step,
                           suppress_alg=self.suppress_alg, t_stop=self._next_stop(self.t0),
-                          stats=self.stats)
+                          stats=self.stats, **self.bdf_options)
         self._arm_roots(self.t0, y, yp)
         while self.solver.t < self.tf:
             stop = self._advance()

@@ -11,10 +11,30 @@ chosen automatically from what the problem supplies:
   ``jac_pattern`` or returns a scipy.sparse matrix and ``n`` exceeds
   :data:`SPARSE_THRESHOLD`.
 
+A factorization whose pivots look singular is judged again on the *equilibrated*
+matrix ``B = D_r J D_c`` (``D_r``, ``D_c`` diagonal): first every row, then every
+column is scaled to a largest entry of one, as
+LAPACK's ``xGEEQU`` (Anderson et al., *LAPACK Users' Guide*, 3rd ed. 1999, sec.
+4.4.1; van der Sluis 1969 for why equilibration nearly minimizes the condition
+number).  The units of a model set the scales of its rows (equations) and columns
+(variables) arbitrarily -- a hydraulic chamber ``(V/beta) p' = q`` has a coefficient
+~1e-13 in a row of its own -- so only pivots of the equilibrated matrix say anything
+about singularity: a pivot of ``B`` below :data:`_PIVOT_RTOL` times its largest pivot
+means ``J`` is singular to working precision.  Scaling the rows of ``J`` (the units of
+the equations) leaves ``B`` unchanged up to rounding.  Scaling its columns (the units
+of the variables) changes ``B`` only by a diagonal similarity, which leaves the pivots
+alone, while every row's and column's largest entry stays on the diagonal (the usual
+case of an iteration matrix); beyond that, one pass of equilibration removes most but
+not all of it (an exactly invariant scaling needs a maximum-product matching, Duff &
+Koster 2001 (MC64), not done here).  If ``B`` passes, its factorization is used and
+solves use ``x = D_c B^{-1} D_r b``.  Equilibrating only then leaves the arithmetic of
+the common, well-scaled case untouched (and costs nothing there).
+
 A singular iteration matrix raises :class:`SingularMatrixError`, which carries the
 equations (rows) and variables (columns) involved, found first structurally (maximum
 bipartite matching: unmatched rows/columns) and, for a structurally regular matrix,
-numerically (the singular vectors of the smallest singular value).
+numerically (the singular vectors of the smallest singular value of the equilibrated
+matrix).
 """
 from __future__ import annotations
 
@@ -25,14 +45,37 @@ from scipy.sparse.csgraph import maximum_bipartite_matching
 from scipy.sparse.linalg import splu
 
 __all__ = ["SPARSE_THRESHOLD", "LinearSolver", "SingularMatrixError", "singular_block",
-           "make_linear_solver"]
+           "make_linear_solver", "equilibrate"]
 
 #: Systems larger than this use sparse LU when the problem offers sparsity.
 SPARSE_THRESHOLD = 60
 
-# A pivot this small relative to the largest one is treated as zero: below it, LU
-# solutions carry no correct digits and a Newton step built on them cannot converge.
+# A pivot of the equilibrated matrix this small relative to the largest one is treated
+# as zero: below it, LU solutions carry no correct digits and a Newton step built on
+# them cannot converge.
 _PIVOT_RTOL = 64 * np.finfo(float).eps
+
+
+def _inverse(scale: np.ndarray) -> np.ndarray:
+    """1/scale; an empty row or column stays empty (and shows as a zero pivot)."""
+    return 1.0 / np.maximum(scale, 1e-300)
+
+
+def equilibrate(J):
+    """Row and column scalings ``(r, c)`` of a finite ``J`` (dense or sparse): the rows
+    of ``diag(r) J`` and then the columns of ``diag(r) J diag(c)`` have largest
+    magnitude 1 (xGEEQU; not rounded to powers of two as xGEEQUB does, which would
+    cost more than the O(eps) relative change it avoids in each entry)."""
+    if sp.issparse(J):
+        A = abs(sp.csr_matrix(J))
+        r = _inverse(A.max(axis=1).toarray().ravel())
+        c = _inverse((sp.diags(r) @ A).max(axis=0).toarray().ravel())
+    else:
+        A = np.abs(J)
+        r = _inverse(A.max(axis=1))
+        A *= r[:, None]
+        c = _inverse(A.max(axis=0))
+    return r, c
 
 
 class SingularMatrixError(np.linalg.LinAlgError):
@@ -91,7 +134,9 @@ def singular_block(J, max_dense: int = 3000):
     rows, cols : ndarray of int
         Unmatched rows/columns if ``J`` is structurally singular; otherwise the
         components above 10 % of the largest in the left/right singular vectors of the
-        smallest singular value.  Empty when nothing can be said.
+        smallest singular value of the equilibrated matrix (so that the answer does
+        not depend on the units of the equations and variables).  Empty when nothing
+        can be said.
     """
     S = sp.csr_matrix(J)
     S.eliminate_zeros()
@@ -101,8 +146,8 @@ def singular_block(J, max_dense: int = 3000):
     if S.shape[0] > max_dense:
         return np.empty(0, int), np.empty(0, int)
     A = S.toarray()
-    A = A / np.maximum(np.abs(A).max(axis=1, keepdims=True), 1e-300)  # row equilibration
-    u, _, vt = np.linalg.svd(A)
+    r, c = equilibrate(A)
+    u, _, vt = np.linalg.svd(A * r[:, None] * c)
     left, right = np.abs(u[:, -1]), np.abs(vt[-1])
     return np.flatnonzero(left > 0.1 * left.max()), np.flatnonzero(right > 0.1 * right.max())
 
@@ -127,6 +172,7 @@ class LinearSolver:
         self.pattern = pattern
         self._lu = None
         self._piv = None
+        self._r = self._c = None     # row and column equilibration of the factored matrix
         self._getrf = self._getrs = None
 
     def _decide(self, J) -> None:
@@ -147,31 +193,37 @@ class LinearSolver:
             self._factor_dense(J)
 
     def _factor_dense(self, J) -> None:
-        A = J.toarray() if sp.issparse(J) else np.array(J, dtype=float, order="F")
+        A = J.toarray() if sp.issparse(J) else np.asarray(J, dtype=float)
         if not np.all(np.isfinite(A)):
             raise SingularMatrixError("iteration matrix has non-finite entries",
                                       *self._nonfinite(A))
-        lu, piv, info = self._getrf(A, overwrite_a=True)
-        d = np.abs(np.diagonal(lu))
-        if info > 0 or d.min() <= _PIVOT_RTOL * d.max():
+        lu, piv, info = self._getrf(np.array(A, order="F"), overwrite_a=True)
+        if info == 0 and _pivots_ok(np.diagonal(lu)):
+            self._lu, self._piv, self._r = lu, piv, None
+            return
+        # a small pivot may only reflect the units: judge the equilibrated matrix
+        r, c = equilibrate(A)
+        B = np.multiply(A, r[:, None], order="F")
+        B *= c
+        lu, piv, info = self._getrf(B, overwrite_a=True)
+        if info > 0 or not _pivots_ok(np.diagonal(lu)):
             raise SingularMatrixError("iteration matrix is singular", matrix=J)
-        self._lu, self._piv = lu, piv
+        self._lu, self._piv, self._r, self._c = lu, piv, r, c
 
     def _factor_sparse(self, J) -> None:
         A = sp.csc_matrix(J, dtype=float)
         if not np.all(np.isfinite(A.data)):
             raise SingularMatrixError("iteration matrix has non-finite entries",
                                       *self._nonfinite(A.toarray()))
-        try:
-            lu = splu(A)
-        except RuntimeError:
-            lu = None
-        if lu is not None:
-            d = np.abs(lu.U.diagonal())
-            if d.size and d.min() > _PIVOT_RTOL * d.max():
-                self._lu = lu
-                return
-        raise SingularMatrixError("iteration matrix is singular", matrix=A)
+        lu = _splu(A)
+        if lu is not None and _pivots_ok(lu.U.diagonal()):
+            self._lu, self._r = lu, None
+            return
+        r, c = equilibrate(A)
+        lu = _splu(sp.csc_matrix(sp.diags(r) @ A @ sp.diags(c)))
+        if lu is None or not _pivots_ok(lu.U.diagonal()):
+            raise SingularMatrixError("iteration matrix is singular", matrix=A)
+        self._lu, self._r, self._c = lu, r, c
 
     @staticmethod
     def _nonfinite(A: np.ndarray):
@@ -180,10 +232,26 @@ class LinearSolver:
 
     def solve(self, b: np.ndarray) -> np.ndarray:
         """Return ``J^{-1} b`` with the last factorization."""
+        r = self._r
         if self.sparse:
-            return self._lu.solve(b)
-        x, _ = self._getrs(self._lu, self._piv, b)
+            return self._lu.solve(b) if r is None else self._c * self._lu.solve(r * b)
+        if r is None:
+            return self._getrs(self._lu, self._piv, b)[0]
+        x, _ = self._getrs(self._lu, self._piv, r * b, overwrite_b=True)
+        x *= self._c
         return x
+
+
+def _pivots_ok(diag) -> bool:
+    d = np.abs(diag)
+    return bool(d.size) and d.min() > _PIVOT_RTOL * d.max()
+
+
+def _splu(A):
+    try:
+        return splu(A)
+    except RuntimeError:     # exactly singular
+        return None
 
 
 def make_linear_solver(problem) -> LinearSolver:

@@ -184,9 +184,11 @@ def test_contact_follows_the_reduced_rigid_model_under_a_varying_torque():
     t = res.t
     after = t > t_c + 1e-6
     phi_b, w_b = ref.sol(t[after])
-    assert np.max(np.abs(res["load.w"][after] - w_b)) < 1e-8
-    assert np.max(np.abs(res["load.phi"][after] - phi_b)) < 1e-8
-    assert np.max(np.abs(res["motor.w"][after] - N * w_b)) < 1e-8
+    # relative to each signal's size: BDF's global error is 10-100 x rtol (1e-10)
+    close = lambda a, b: np.max(np.abs(a - b)) < 1e-8 * max(1.0, np.max(np.abs(b)))
+    assert close(res["load.w"][after], w_b)
+    assert close(res["load.phi"][after], phi_b)
+    assert close(res["motor.w"][after], N * w_b)
     assert np.all(res["gear.phi_rel"][after] == res["gear.phi_rel"][after][0])
     assert abs(res["gear.phi_rel"][after][0] + DELTA) < 1e-15
     before = t < t_c - 1e-6

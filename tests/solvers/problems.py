@@ -242,3 +242,105 @@ class VanDerPolClassic(VanDerPol):
     def ode_jac(self, t, y):
         mu = self.mu
         return [[0.0, 1.0], [-2 * mu * y[0] * y[1] - 1, mu * (1 - y[0] ** 2)]]
+
+
+class OscillatorChain(DAEProblem):
+    """N equal masses in a chain of springs (and optional dashpots), fixed at the far
+    end, the near end moved by a smooth ramp: a linear DAE with N weakly damped modes.
+
+    y = (x_0, x_1..x_N, v_1..v_N); x_0 is algebraic, ``x_0 = u(t) = (1 - e^{-a t})^2``
+    (u(0) = u'(0) = 0); ``x_i' = v_i`` and
+    ``v_i' = w^2 (x_{i-1} - 2 x_i + x_{i+1}) + d w^2 (v_{i-1} - 2 v_i + v_{i+1})``
+    (x_{N+1} = 0, v_0 = u').  Both ends are displacement-driven, so the modes have the
+    frequencies ``w_k = 2 w sin(k pi / (2 (N + 1)))``, k = 1..N, up to ``2 w``; the
+    stiffness-proportional damping ``d`` gives them damping ratios ``d w_k / 2``.
+    """
+
+    def __init__(self, N=40, w=5e3, d=0.0, a=200.0):
+        super().__init__(2 * N + 1, ["x[0]"] + [f"x[{i}]" for i in range(1, N + 1)]
+                         + [f"v[{i}]" for i in range(1, N + 1)])
+        self.N, self.w2, self.d, self.a = N, w * w, d, a
+        self.algebraic[0] = True
+        K = self.w2 * (np.diag(np.full(N, -2.0)) + np.diag(np.ones(N - 1), 1)
+                       + np.diag(np.ones(N - 1), -1))
+        # dy'/dt block of the state (x_1..x_N, v_1..v_N) and the input column (x_0)
+        self.A = np.block([[np.zeros((N, N)), np.eye(N)], [K, d * K]])
+        self.b = np.zeros(2 * N)
+        self.b[N] = self.w2
+        self.bd = np.zeros(2 * N)
+        self.bd[N] = d * self.w2
+        J0 = np.zeros((self.n, self.n))
+        J0[0, 0] = 1.0
+        J0[1:, 1:] = -self.A
+        J0[1:, 0] = -self.b
+        E = np.zeros((self.n, self.n))
+        E[1:, 1:] = np.eye(2 * N)
+        E[1:, 0] = -self.bd       # the dashpot at the driven end sees x_0'
+        self._J0, self._E = J0, E
+
+    def u(self, t):
+        e = np.exp(-self.a * t)
+        return (1.0 - e) ** 2
+
+    def residual(self, t, y, yp):
+        r = self._J0 @ y + self._E @ yp
+        r[0] -= self.u(t)
+        return r
+
+    def jacobian(self, t, y, yp, cj):
+        return self._J0 + cj * self._E
+
+    def initial(self):
+        return np.zeros(self.n), np.zeros(self.n)
+
+    def ode(self, t, y):
+        """The same system as an ODE in y (x_0' = u'(t)), for ODE solvers."""
+        e = np.exp(-self.a * t)
+        du = 2.0 * self.a * e * (1.0 - e)
+        return np.concatenate([[du], self.A @ y[1:] + self.b * y[0] + self.bd * du])
+
+    def ode_jac(self, t, y):
+        J = np.zeros((self.n, self.n))
+        J[1:, 1:] = self.A
+        J[1:, 0] = self.b
+        return J
+
+    def exact(self, ts):
+        """y at the times ``ts`` (rows): the matrix exponential of the system augmented
+        with the input's exponentials, u = 1 - 2 e1 + e2, e1' = -a e1, e2' = -2a e2."""
+        from scipy.linalg import expm
+        m, a = 2 * self.N, self.a
+        M = np.zeros((m + 3, m + 3))
+        M[:m, :m] = self.A
+        # x_0 = u = c - 2 e1 + e2 with a constant state c = 1; x_0' = 2a e1 - 2a e2
+        M[:m, m] = self.b
+        M[:m, m + 1] = -2 * self.b + 2 * a * self.bd
+        M[:m, m + 2] = self.b - 2 * a * self.bd
+        M[m + 1, m + 1], M[m + 2, m + 2] = -a, -2 * a
+        z0 = np.zeros(m + 3)
+        z0[m:] = 1.0
+        zs = np.array([expm(M * t) @ z0 for t in np.atleast_1d(ts)])
+        return np.column_stack([self.u(np.atleast_1d(ts)), zs[:, :m]])
+
+
+class Chamber(DAEProblem):
+    """A filling hydraulic chamber, x' = 1, (V(x)/beta) p' = q, V = 1e-4 + 1e-3 x,
+    beta = 7e8, q = 1e-4, with the pressure's derivative as an algebraic unknown
+    (``dp``, as a model compiler leaves it): the iteration matrix has a pivot ~1e-13.
+    p = 7e7 ln(1 + 10 t)."""
+
+    def __init__(self):
+        super().__init__(3, ["x", "p", "der(p)"])
+        self.algebraic[2] = True
+
+    def residual(self, t, y, yp):
+        return np.array([yp[0] - 1.0, yp[1] - y[2],
+                         (1e-4 + 1e-3 * y[0]) / 7e8 * y[2] - 1e-4])
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj, 0.0, 0.0], [0.0, cj, -1.0],
+                         [1e-3 / 7e8 * y[2], 0.0, (1e-4 + 1e-3 * y[0]) / 7e8]])
+
+    @staticmethod
+    def exact(t):
+        return t, 7e7 * np.log1p(10.0 * t)

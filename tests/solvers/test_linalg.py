@@ -39,3 +39,42 @@ def test_numerically_singular_block_is_named():
         LinearSolver(3).factor(A)
     assert sorted(info.value.rows) == [0, 2]
     assert {0, 2} <= set(info.value.cols)   # null vector (-2, 3, 1)
+
+
+def _scaled(A, rng, decades=13):
+    """Row factors 10^-decades .. 10^decades (the units of the equations) and column
+    factors that keep each row's largest entry where it is (the units of the variables
+    of a diagonally dominant matrix: 10^-3 .. 10^3 here)."""
+    r = 10.0 ** rng.uniform(-decades, decades, A.shape[0])
+    c = 10.0 ** rng.uniform(-3, 3, A.shape[1])
+    return r, c
+
+
+def test_badly_scaled_regular_matrices_are_factored_accurately():
+    rng = np.random.default_rng(3)
+    # the iteration matrix of a hydraulic chamber (V/beta) p' = q: a pivot ~1e-13
+    lin = LinearSolver(2)
+    lin.factor(np.array([[1e6, 0.0], [3e-12, 1.4e-13]]))
+    np.testing.assert_allclose(lin.solve(np.array([1.0, 1.0])),
+                               [1e-6, (1.0 - 3e-18) / 1.4e-13], rtol=1e-14)
+    for n, sparse in [(8, False), (90, True)]:
+        A = (sp.random(n, n, density=0.05, random_state=n, format="csc")
+             + 4e3 * sp.eye(n)).toarray()
+        r, c = _scaled(A, rng)
+        B = A * r[:, None] * c
+        x0 = rng.standard_normal(n)
+        x, b = x0 / c, r * (A @ x0)     # B x = b without cancellation in forming b
+        lin = LinearSolver(n, pattern=np.nonzero(B) if sparse else None)
+        lin.factor(sp.csc_matrix(B) if sparse else B)
+        assert lin.sparse == sparse
+        np.testing.assert_allclose(lin.solve(b), x, rtol=1e-9)
+
+
+def test_badly_scaled_singular_matrix_is_still_named():
+    rng = np.random.default_rng(4)
+    A = np.array([[1.0, 0.0, 2.0], [5.0, 3.0, 1.0], [2.0, 0.0, 4.0]])
+    r, c = _scaled(A, rng)
+    with pytest.raises(SingularMatrixError) as info:
+        LinearSolver(3).factor(A * r[:, None] * c)
+    assert sorted(info.value.rows) == [0, 2]
+    assert 1 not in info.value.cols or len(info.value.cols) == 3
