@@ -14,12 +14,12 @@ from .components import (Across, Component, Connection, Eq, Equation, ModelError
 from .compiler.model import CompiledModel
 from .result import Result
 from .simulation import compile, initial_values, simulate
-from .solvers.base import SimulationError
+from .solvers.base import InitializationFailed, SimulationError
 from .analysis import (StateSpace, energy_balance, estimate, is_passive, linearize,
                        linearize_symbolic, steady_state)
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
            "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre", "Connection", "if_else", "no_event", "sign", "time",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
-           "ModelError", "SimulationError", "linearize", "linearize_symbolic", "StateSpace",
+           "ModelError", "SimulationError", "InitializationFailed", "linearize", "linearize_symbolic", "StateSpace",
            "steady_state", "energy_balance", "is_passive", "estimate"]

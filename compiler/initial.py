@@ -1,12 +1,16 @@
 """The initialization problem, the way Modelica tools pose it.
 
-At t0 the unknowns are all of y (variables and derivative variables).  The equations are
-the model's G(t0, y) = 0 plus as many *initial conditions* as there are states:
+At t0 the unknowns are the solver vector z (the states and tearing variables; every
+other variable follows from z).  The equations are the model's residual rows G(t0, z) = 0
+plus as many *initial conditions* as there are states:
 
 1. the user's initial equations (e.g. ``der(w) = 0`` for steady state);
 2. ``v = start`` for every variable with ``fixed=True``;
-3. ``s = start`` for the selected states that are still free (Modelica's rule that a
-   state's start value is used when nothing else fixes it), in declaration order.
+3. ``s = start`` for states that nothing else fixes (Modelica's rule that a state's start
+   value is used then): a start-value row is generated for every other state, and those
+   that complete a perfect structural matching of the initial system are kept, in state
+   order (:meth:`InitialConditions.choose_rows`).  So ``der(w) = 0`` fixes the speed and
+   leaves the angle to its start value.
 
 Start values of everything else are only guesses for Newton's method.  Too many fixed
 conditions, or an initial problem whose Jacobian is singular, is an
@@ -17,15 +21,11 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sps
 
-from ..solvers.base import SimulationError
+from ..solvers.base import InitializationFailed
 from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton, homotopy
 
 __all__ = ["InitialConditions", "InitializationFailed", "solve_initial"]
-
-
-class InitializationFailed(SimulationError):
-    """The initial values could not be made consistent (names what was involved)."""
 
 
 class InitialConditions:

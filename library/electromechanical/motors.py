@@ -1,35 +1,29 @@
 """DC motor with constant field, built by composition (Egeland & Gravdahl 3.3)."""
 import acausal as ac
-from acausal.ports import NegativePin, PositivePin, RotationalFlange
+from acausal.ports import NegativePin, PositivePin, RealInput, RotationalFlange
 
-from acausal.ports import RealInput
-
-from ..electrical import Ground, Inductor, Resistor, SignalCurrent
+from ..electrical import Ground, Inductor, OnePort, Resistor, SignalCurrent
 from ..rotational import Inertia
 
 __all__ = ["EMF", "DCMotor", "CurrentControlledDCMotor"]
 
 
-class EMF(ac.Component):
+class EMF(OnePort):
     """Ideal electromechanical converter (Egeland & Gravdahl 3.3.2, (3.27)-(3.28)):
 
         v = k w,   tau = k i,   so  v i = tau w  (power in = power out),
         w = der(flange.phi),  flange.tau = -tau
+
+    The electrical side is a one-port: v is the back EMF, i the armature current.
     """
 
     k = ac.Parameter(1.0, unit="N.m/A", description="torque (= back-EMF) constant")
-    p = PositivePin()
-    n = NegativePin()
     flange = RotationalFlange()
-    v = ac.Variable(unit="V", description="back EMF")
-    i = ac.Variable(unit="A", description="armature current")
     w = ac.Variable(unit="rad/s", description="shaft speed")
     tau = ac.Variable(unit="N.m", description="motor torque")
 
     def equations(self):
-        return [ac.Eq(self.v, self.p.v - self.n.v),
-                ac.Eq(0, self.p.i + self.n.i),
-                ac.Eq(self.i, self.p.i),
+        return [*super().equations(),
                 ac.Eq(self.w, ac.der(self.flange.phi)),
                 ac.Eq(self.v, self.k * self.w),
                 ac.Eq(self.tau, self.k * self.i),
