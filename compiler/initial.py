@@ -22,8 +22,7 @@ import numpy as np
 import scipy.sparse as sps
 
 from ..solvers.base import InitializationFailed
-from ..solvers.linalg import SingularMatrixError
-from ..solvers.newton import damped_newton, homotopy
+from ..solvers.initialization import solve_with_fallback
 
 __all__ = ["InitialConditions", "InitializationFailed", "solve_initial"]
 
@@ -126,9 +125,10 @@ def _adjacency(rows, cols, n_rows) -> list:
     return [sorted(set(a)) for a in adj]
 
 
-def solve_initial(model, init: InitialConditions, t0: float, z_guess: np.ndarray,
-                  tol: float = 1e-10, max_iter: int = 60) -> np.ndarray:
-    """Damped Newton on [G; I](z) = 0, then a homotopy from the guess if that fails."""
+def solve_initial(model, init: InitialConditions, t0: float, z_guess: np.ndarray) -> np.ndarray:
+    """[G; I](z) = 0 by damped Newton, then a homotopy from the guess (the solver
+    package's :func:`~acausal.solvers.initialization.solve_with_fallback`); a failure
+    names the equations and initial conditions involved in the user's words."""
     if model.n == 0:
         return z_guess
 
@@ -139,34 +139,10 @@ def solve_initial(model, init: InitialConditions, t0: float, z_guess: np.ndarray
         return sps.vstack([model.dG_dy(t0, z),
                            init.jacobian(t0, z, model.p, model.m, model.n)]).tocsc()
 
-    weights = 1.0 / (1e-10 * np.abs(z_guess) + 1e-10 * model.nominal)
-    out, singular = _attempt(damped_newton, F, J, z_guess, weights, max_iter=max_iter)
-    if out is None or not out.converged:
-        out2, singular2 = _attempt(homotopy, F, J, z_guess, weights)
-        out, singular = (out2, singular2) if out2 is not None else (out, singular or singular2)
-    if out is not None and out.converged and np.max(np.abs(out.residual), initial=0) <= 1e-6:
-        return out.x
-    if out is None:   # the Jacobian of the initial system is singular where Newton started
-        rows = [_row_name(model, init, k) for k in getattr(singular, "rows", [])][:8]
-        cols = [model.names[k] for k in getattr(singular, "cols", []) if k < model.n][:8]
-        raise InitializationFailed(
-            f"initialization failed at t = {t0}: the initial system is singular at the start "
-            f"values (no unique solution near them); equations: {'; '.join(rows) or '?'}; "
-            f"variables: {', '.join(cols) or '?'}", t=t0, variables=cols)
-    r = F(out.x)
-    worst = [k for k in np.argsort(-np.abs(r))[:5] if abs(r[k]) > tol]
-    names = [_row_name(model, init, k) for k in worst]
-    raise InitializationFailed(
-        f"initialization failed at t = {t0}: {out.message or 'no convergence'}; "
-        "largest residuals in: " + "; ".join(names), t=t0, variables=names)
-
-
-def _attempt(method, F, J, z0, weights, **kw):
-    """(result, None), or (None, the SingularMatrixError) when the Jacobian is singular."""
-    try:
-        return method(F, J, z0.copy(), weights=weights, tol=1.0, **kw), None
-    except SingularMatrixError as err:
-        return None, err
+    # weighted steps below 1e-5 (the routine's tolerance) are then 1e-11 relative
+    weights = 1.0 / (1e-6 * np.abs(z_guess) + 1e-6 * model.nominal)
+    return solve_with_fallback(F, J, z_guess.copy(), weights, f"initialization at t = {t0}",
+                               model.names, lambda k: _row_name(model, init, k), t0)
 
 
 def _row_name(model, init, k):

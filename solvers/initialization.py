@@ -28,7 +28,8 @@ from .base import DAEProblem, InitializationFailed, equation_label
 from .linalg import SingularMatrixError
 from .newton import damped_newton, homotopy
 
-__all__ = ["consistent_initial", "reinitialize", "initialize_with_equations"]
+__all__ = ["consistent_initial", "reinitialize", "initialize_with_equations",
+           "solve_with_fallback"]
 
 _NEWTON_TOL = 1e-5   # weighted step, relative to the integration tolerance
 _N_NAMED = 3         # how many culprits an error message names
@@ -69,8 +70,11 @@ def _top(values, k=_N_NAMED):
     return [int(i) for i in order[:k] if v[i] >= 0.01 * v.max()]
 
 
-def _solve(fun, jac, x0, weights, what, labels, eq_labels, t):
-    """Damped Newton, then homotopy; raise InitializationFailed naming the culprits."""
+def solve_with_fallback(fun, jac, x0, weights, what, labels, eq_labels, t):
+    """Damped Newton, then homotopy; raise InitializationFailed naming the culprits.
+
+    ``labels``: names of the unknowns; ``eq_labels(i)``: the name of residual row i.
+    """
     singular = newton = res = None
     try:
         newton = damped_newton(fun, jac, x0, weights=weights, tol=_NEWTON_TOL)
@@ -151,7 +155,7 @@ def reinitialize(problem: DAEProblem, t: float, y, yp=None, *, rtol: float = 1e-
         return _weights(u, rtol, np.concatenate([atol_v[alg], atol_v[dif]]))
 
     labels = [problem.names[i] for i in alg] + [f"der({problem.names[i]})" for i in dif]
-    u = _solve(fun, jac, np.concatenate([y[alg], yp[dif]]), weights,
+    u = solve_with_fallback(fun, jac, np.concatenate([y[alg], yp[dif]]), weights,
                "consistent initialization (algebraic variables and derivatives)",
                labels, lambda i: equation_label(problem, i), t)
     return unpack(u)
@@ -195,7 +199,7 @@ def initialize_with_equations(problem: DAEProblem, t: float, y, yp=None, *,
         return _weights(x, rtol, np.concatenate([atol_v, atol_v[dif]]))
 
     labels = list(problem.names) + [f"der({problem.names[i]})" for i in dif]
-    x = _solve(fun, jac, np.concatenate([y, yp[dif]]), weights,
+    x = solve_with_fallback(fun, jac, np.concatenate([y, yp[dif]]), weights,
                "initialization with initial equations", labels,
                _init_equation_labeller(problem), t)
     yy, yyp = unpack(x)
