@@ -7,6 +7,15 @@ writing component's own port).  The ports joined by connect() form a node: acros
 variables are equal, and the through variables sum to zero, inside ports counted with
 +1 and outside ports with -1.  A port that is never connected from outside its own
 component (for the root: its own ports) gets through = 0.
+
+Flattening is where the names of equations and connections become known, so it checks
+what the components cannot check themselves (raising the ``ModelError`` subclasses of
+``components.component``): every symbol in an equation belongs to the model, every
+connected port lies inside the component that connects it, ``der()`` is applied to
+something that varies, parameter bindings depend only on parameters and are not
+circular, values respect their declared [min, max], and an infinite parameter value
+leaves the equations it appears in finite (``1/Tt`` with Tt = inf is 0; ``R*i`` with
+R = inf is not a number).
 """
 from __future__ import annotations
 
@@ -14,10 +23,11 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from ..components.component import (Component, Connection, ModelError, Port,
-                                     flatten_equation_list)
-from ..components.declarations import Parameter, VariableAttributes
-from ..components.symbols import Equation, When, der, pre, time
+from ..components.component import (Component, Connection, InvalidConnection,
+                                     InvalidEquation, InvalidValue, ModelError, NotInModel,
+                                     Port, compiling, flatten_equation_list)
+from ..components.declarations import Parameter, VariableAttributes, bound_violation
+from ..components.symbols import Equation, When, der, time
 
 __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
 
@@ -45,6 +55,19 @@ class FlatParameter:
     unit: str = ""
     description: str = ""
     component: str = ""
+    component_class: str = ""
+    min: float | None = None
+    max: float | None = None
+
+    @property
+    def where(self) -> str:
+        return f"{self.component or '(model)'} ({self.component_class})"
+
+    def describe(self) -> str:
+        """``'R1' (Resistor): parameter R``, as the component's own errors say it."""
+        owner = f"'{self.component}'" if self.component else "the model"
+        local = self.name[len(self.component) + 1:] if self.component else self.name
+        return f"{owner} ({self.component_class}): parameter {local}"
 
 
 @dataclass
@@ -99,26 +122,35 @@ def flatten(model: Component) -> FlatModel:
     nodes = list(_walk(model))
     flat = FlatModel(name=type(model).__name__, variables=[], parameters=[], equations=[])
     connections = []
-    for comp in nodes:
-        flat.components[comp.path] = type(comp).__name__
-        _collect_declarations(comp, flat)
-        if isinstance(comp, Port):
-            flat.ports.append((comp.path, type(comp).__name__, comp.effort, comp.flow))
-            continue
-        for item in _read(comp, "equations"):
-            if isinstance(item, Connection):
-                item.owner = comp
-                connections.append(item)
-            elif isinstance(item, When):
-                item.origin, item.origin_class = comp.path, type(comp).__name__
-                flat.whens.append(item)
-            else:
-                flat.equations.append(_flat_equation(item, comp, "equation"))
-        for item in _read(comp, "initial_equations"):
-            flat.initial_equations.append(_flat_equation(item, comp, "initial"))
+    with compiling(model):
+        for comp in nodes:
+            flat.components[comp.path] = type(comp).__name__
+            _collect_declarations(comp, flat)
+            if isinstance(comp, Port):
+                flat.ports.append((comp.path, type(comp).__name__, comp.effort, comp.flow))
+                continue
+            for item in _read(comp, "equations"):
+                if isinstance(item, Connection):
+                    item.owner = comp
+                    connections.append(item)
+                elif isinstance(item, When):
+                    item.origin, item.origin_class = comp.path, type(comp).__name__
+                    flat.whens.append(item)
+                else:
+                    flat.equations.append(_flat_equation(item, comp, "equation"))
+            for item in _read(comp, "initial_equations"):
+                if not isinstance(item, Equation):
+                    raise InvalidEquation(f"{comp._describe()}.initial_equations() returned "
+                                          f"{item!r}; expected ac.Eq(lhs, rhs)")
+                flat.initial_equations.append(_flat_equation(item, comp, "initial"))
+    _check_connections(connections, model)
     flat.equations.extend(_connection_equations(connections, nodes))
+    _check_symbols(flat)
+    # substitution first: a structural zero removes the derivative it multiplies
+    # (L*der(i) with L = 0), and no der(i) may be created for it
     _substitute_parameter_expressions(flat)
     _expand_derivatives(flat)
+    _check_infinite_parameters(flat)
     return flat
 
 
@@ -131,18 +163,36 @@ def _walk(root: Component):
 
 
 def _read(comp: Component, method: str) -> list:
+    where = f"{comp._describe()}.{method}()"
     try:
-        items = flatten_equation_list(getattr(comp, method)())
-    except ModelError:
-        raise
+        raw = getattr(comp, method)()
+        items = None if raw is None else flatten_equation_list(raw)
+    except ModelError as err:
+        raise _in_context(err, where) from err
     except Exception as err:  # the user's equations() raised: say where
         raise ModelError(f"while reading the {method.replace('_', ' ')} of "
                          f"{comp._describe()}: {type(err).__name__}: {err}") from err
+    if items is None:
+        raise InvalidEquation(f"{where} returned None; it must return a list of equations "
+                              "(is a 'return' missing?)")
     for item in items:
         if not isinstance(item, (Equation, Connection, When)):
-            raise ModelError(f"{comp._describe()}.{method}() returned {item!r}; expected "
-                             "ac.Eq(lhs, rhs), ac.connect(a, b) or ac.when(...)")
+            hint = ""
+            if isinstance(item, (sp.Basic, bool)):
+                hint = (" (a sympy relation or a truth value: acausal's equation is "
+                        "ac.Eq(lhs, rhs))")
+            raise InvalidEquation(f"{where} returned {item!r}{hint}; expected "
+                                  "ac.Eq(lhs, rhs), ac.connect(a, b) or ac.when(...)")
     return items
+
+
+def _in_context(err: ModelError, where: str) -> ModelError:
+    """The same kind of error, its message prefixed by where it happened."""
+    text = f"in {where}: {err}"
+    try:
+        return type(err)(text)
+    except TypeError:   # a subclass with another constructor
+        return ModelError(text)
 
 
 def _collect_declarations(comp: Component, flat: FlatModel) -> None:
@@ -153,7 +203,8 @@ def _collect_declarations(comp: Component, flat: FlatModel) -> None:
             if value is None:
                 raise ModelError(f"parameter '{sym.name}' of {comp._describe()} has no value")
             flat.parameters.append(FlatParameter(sym.name, sym, value, decl.unit,
-                                                 decl.description, comp.path))
+                                                 decl.description, comp.path,
+                                                 type(comp).__name__, decl.min, decl.max))
         else:
             hint = comp.hint if isinstance(comp, Port) else ""
             flat.variables.append(FlatVariable(sym.name, sym, comp.variable_attributes(name),
@@ -188,6 +239,27 @@ class _UnionFind:
 
 def _order_key(node):
     return node[2], node[1]
+
+
+def _check_connections(connections: list, root: Component) -> None:
+    """Every port of a connect() is in the model, and is the writing component's own or
+    lies inside one of its sub-components (Modelica 9.1)."""
+    for conn in connections:
+        for p in conn.ports:
+            if p._root is not root:
+                whose = (f"'{p.path}' of another model instance" if p._path is not None
+                         else "a port of a component that was never made part of it")
+                raise NotInModel(f"{conn!r} in {conn.owner._describe()}: the model "
+                                 f"({type(root).__name__}) does not contain this "
+                                 f"{type(p).__name__}: it is {whose}")
+            node = p._parent
+            while node is not None and node is not conn.owner:
+                node = node._parent
+            if node is None:
+                raise InvalidConnection(
+                    f"{conn!r} in {conn.owner._describe()}: port '{p.path}' is neither a "
+                    f"port of {conn.owner._describe()} nor inside one of its "
+                    "sub-components; connect it where both ends are visible")
 
 
 def _connection_equations(connections: list, nodes: list) -> list:
@@ -236,6 +308,63 @@ def _node_equations(members: list, connections: list) -> list:
     return eqs
 
 
+# -- what equations and parameter bindings may refer to -----------------------------------
+def _check_symbols(flat: FlatModel) -> None:
+    """Parameter bindings use only parameters; equations use only the model's variables,
+    parameters and time, and at least one variable."""
+    var_syms = {v.symbol for v in flat.variables}
+    par_syms = {p.symbol for p in flat.parameters}
+    allowed = var_syms | par_syms | {time}
+    for p in flat.parameters:
+        if isinstance(p.value, sp.Basic) and not p.value.is_number:
+            _check_binding(p, p.value.free_symbols, var_syms, allowed)
+    for eq in flat.equations + flat.initial_equations:
+        if eq.kind not in ("equation", "initial"):
+            continue   # connection equations are built from the model's own ports
+        free = eq.residual.free_symbols
+        if not free <= allowed:
+            _check_known(free - allowed, f"equation '{eq.text}' in {eq.where}")
+        if eq.residual.has(der):
+            _check_der_arguments(eq, var_syms)
+        if free.isdisjoint(var_syms):
+            raise InvalidEquation(f"equation '{eq.text}' in {eq.where} involves no "
+                                  "variable of the model (only parameters, time and "
+                                  "numbers): it cannot determine anything")
+    for w in flat.whens:
+        free = set(w.condition.free_symbols)
+        for act in w.actions:
+            free |= act.variable.free_symbols | act.value.free_symbols
+        if not free <= allowed:
+            _check_known(free - allowed,
+                         f"when {w.condition} in {w.origin or '(model)'} ({w.origin_class})")
+
+
+def _check_binding(p: FlatParameter, free: set, var_syms: set, allowed: set) -> None:
+    if free <= allowed and time not in free and not p.value.has(der) \
+            and free.isdisjoint(var_syms):
+        return
+    where = f"{p.describe()} = {sp.sstr(p.value)}"
+    on_vars = sorted(s.name for s in free & var_syms)
+    if on_vars:
+        raise InvalidValue(f"{where} depends on the variable(s) {', '.join(on_vars)}; a "
+                           "parameter's value may depend only on other parameters")
+    if time in free:
+        raise InvalidValue(f"{where} depends on time; a parameter is constant (declare a "
+                           "Variable with an equation instead)")
+    if p.value.has(der):
+        raise InvalidValue(f"{where} contains der(); a parameter is constant")
+    _check_known(free - allowed, where)
+
+
+def _check_known(unknown: set, where: str) -> None:
+    if unknown:
+        names = ", ".join(f"'{s.name}'" for s in sorted(unknown, key=lambda s: s.name))
+        raise NotInModel(f"{where} uses {names}, which the model being compiled does not "
+                         "declare: a sympy Symbol made outside the model, or a variable "
+                         "of another model instance (use the variables and parameters "
+                         "of the model's own components)")
+
+
 # -- parameters bound to expressions, and der() ----------------------------------------
 def _substitute_parameter_expressions(flat: FlatModel) -> None:
     """Substitute parameters bound to expressions of other parameters, and zeros.
@@ -243,18 +372,15 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     A parameter whose value is exactly 0 is a *structural* zero (Modelica tools evaluate
     such parameters, as with Evaluate=true): L*der(i) = v with L = 0 is the algebraic
     equation 0 = v, and index reduction must see it so.  Give a parameter a non-zero
-    value to keep it tunable after compilation.
+    value to keep it tunable after compilation.  Every value, bound or not, is checked
+    against its declared [min, max].
     """
-    bound = {p.symbol: sp.sympify(p.value) for p in flat.parameters
-             if isinstance(p.value, sp.Basic) and not p.value.is_number}
+    resolved = _resolve_bindings(flat)
     zeros = {p.symbol: sp.Integer(0) for p in flat.parameters
-             if not isinstance(p.value, sp.Basic) and _is_zero(p.value)}
+             if p.symbol not in resolved and _is_zero(p.value)}
+    bound = {k: v.xreplace(zeros) for k, v in resolved.items()}
     bound.update(zeros)
-    for _ in range(64):  # resolve chains of bindings (depth = nesting of components)
-        new = {k: v.xreplace(bound) for k, v in bound.items()}
-        if new == bound:
-            break
-        bound = new
+    _check_bounds(flat, resolved)
     flat.structural_zeros = sorted(p.name for p in flat.parameters if bound.get(p.symbol) == 0)
     if not bound:
         return
@@ -266,11 +392,113 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
             act.value = act.value.xreplace(bound)
 
 
+def _is_expression(value) -> bool:
+    return isinstance(value, sp.Basic) and not value.is_number
+
+
+def _resolve_bindings(flat: FlatModel) -> dict:
+    """symbol -> its binding in unbound parameters only, in dependency order (Kahn);
+    a cycle of bindings is an error naming it."""
+    exprs = {p.symbol: sp.sympify(p.value) for p in flat.parameters if _is_expression(p.value)}
+    waits = {s: e.free_symbols & exprs.keys() for s, e in exprs.items()}
+    users = {s: [] for s in exprs}
+    for s, deps in waits.items():
+        for d in deps:
+            users[d].append(s)
+    ready = [s for s in exprs if not waits[s]]
+    resolved = {}
+    while ready:
+        s = ready.pop()
+        deps = exprs[s].free_symbols & exprs.keys()
+        resolved[s] = exprs[s].xreplace({d: resolved[d] for d in deps})
+        for u in users[s]:
+            waits[u].discard(s)
+            if not waits[u]:
+                ready.append(u)
+    if len(resolved) < len(exprs):
+        raise _cycle_error(flat, exprs, {s: w for s, w in waits.items() if w})
+    return resolved
+
+
+def _cycle_error(flat: FlatModel, exprs: dict, waits: dict) -> InvalidValue:
+    by_symbol = {p.symbol: p for p in flat.parameters}
+    start = next(p.symbol for p in flat.parameters if p.symbol in waits)
+    chain = [start]
+    while True:   # follow unresolved dependencies until one repeats: that is a cycle
+        nxt = min(waits[chain[-1]], key=lambda s: s.name)
+        if nxt in chain:
+            cycle = chain[chain.index(nxt):] + [nxt]
+            break
+        chain.append(nxt)
+    steps = ", ".join(f"{s.name} = {sp.sstr(exprs[s])}" for s in cycle[:-1])
+    return InvalidValue(f"parameters {' -> '.join(s.name for s in cycle)} are defined in "
+                        f"terms of each other ({steps}); a parameter binding may not "
+                        f"depend on itself [{by_symbol[start].where}]")
+
+
+def _check_bounds(flat: FlatModel, resolved: dict) -> None:
+    """Each parameter's value (a binding evaluated with the values it uses) is a real
+    number within its declared [min, max]."""
+    leaf = {p.symbol: _as_sympy_number(p.value) for p in flat.parameters
+            if p.symbol not in resolved}
+    for p in flat.parameters:
+        if p.symbol in resolved:
+            expr = resolved[p.symbol].xreplace(leaf)
+            try:
+                value = float(expr)
+            except (TypeError, ValueError):
+                raise InvalidValue(f"{p.describe()} = {sp.sstr(p.value)} (= {sp.sstr(expr)}) "
+                                   "is not a real number") from None
+            text = f"{sp.sstr(p.value)} (= {value!r})"
+            if value != value:
+                raise InvalidValue(f"{p.describe()} = {text} is not a number (NaN)")
+        else:
+            value, text = float(p.value), f"{p.value!r}"
+        why = bound_violation(value, p.min, p.max)
+        if why:
+            raise InvalidValue(f"{p.describe()} = {text} {why}")
+
+
+def _as_sympy_number(value) -> sp.Expr:
+    x = float(value)
+    if x == float("inf"):
+        return sp.oo
+    if x == float("-inf"):
+        return -sp.oo
+    return sp.sympify(value) if isinstance(value, (int, sp.Basic)) else sp.Float(x)
+
+
 def _is_zero(value) -> bool:
     try:
         return float(value) == 0.0
     except (TypeError, ValueError):
         return False
+
+
+_NON_FINITE = (sp.oo, -sp.oo, sp.zoo, sp.nan)
+
+
+def _check_infinite_parameters(flat: FlatModel) -> None:
+    """An infinite parameter value must leave the equations finite (1/Tt -> 0, a limit
+    of a clip never reached); where it does not (R*i), name the equation."""
+    infinite = {p.symbol: _as_sympy_number(p.value) for p in flat.parameters
+                if not _is_expression(p.value) and abs(float(p.value)) == float("inf")}
+    if not infinite:
+        return
+    names = {p.symbol: p for p in flat.parameters}
+    checks = [(eq.residual, f"equation '{eq.text}' in {eq.where}")
+              for eq in flat.equations + flat.initial_equations]
+    checks += [(act.value, f"reinit({act.variable}, {act.value}) in "
+                f"{w.origin or '(model)'} ({w.origin_class})")
+               for w in flat.whens for act in w.actions]
+    for expr, where in checks:
+        used = expr.free_symbols & infinite.keys()
+        if used and expr.xreplace(infinite).has(*_NON_FINITE):
+            which = " and ".join(f"{names[s].describe()} = {names[s].value!r}"
+                                 for s in sorted(used, key=lambda s: s.name))
+            raise InvalidValue(f"{which} makes the {where} infinite or undefined; an "
+                               "infinite value is allowed only where the equations have a "
+                               "finite limit (as 1/Tt for Tt = inf)")
 
 
 def _expand_derivatives(flat: FlatModel) -> None:
@@ -279,6 +507,20 @@ def _expand_derivatives(flat: FlatModel) -> None:
     for eq in flat.equations + flat.initial_equations:
         if eq.residual.has(der):
             eq.residual = _replace_der(eq.residual, var_syms, flat.derivatives)
+
+
+def _check_der_arguments(eq: FlatEquation, var_syms: set) -> None:
+    """der() of something that cannot vary (a number, a parameter) is always zero: the
+    argument was meant to be a variable."""
+    for d in sorted(eq.residual.atoms(der), key=sp.default_sort_key):
+        arg = d.args[0]
+        if not (arg.free_symbols & var_syms) and not arg.has(time):
+            what = ("a number" if arg.is_number else
+                    "a parameter" if isinstance(arg, sp.Symbol) else
+                    "an expression of parameters")
+            raise InvalidEquation(f"equation '{eq.text}' in {eq.where}: {d} is the "
+                                  f"derivative of {what}, which is constant, so it is 0; "
+                                  "der() applies to variables")
 
 
 def derivative_symbol(x: sp.Symbol, derivatives: dict) -> sp.Symbol:

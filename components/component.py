@@ -17,22 +17,71 @@ for a variable sets its start value.  Sub-components may also be created in ``__
 
 A component becomes part of a model when the root is bound (``_bind``), which happens in
 ``acausal.compile``: only then do its variables have their dotted names.
+
+Bad input raises a ``ModelError`` naming the component path, the declaration and the
+value, at the earliest point where those names are known: declarations when their class
+is created (``Resistor.R: ...``), modifications and the instance tree when the model is
+bound (``'R1' (Resistor): parameter R = 'ten' is not a real number``), equations and
+connections when they are read by flattening.
 """
 from __future__ import annotations
 
+import contextvars
 import copy
+from contextlib import contextmanager
 from typing import Iterable
 
 import sympy as sp
 
-from .declarations import Parameter, Variable, ref
+from .declarations import Parameter, Variable, check_parameter_value, ref
 from .symbols import Equation, When
 
-__all__ = ["Component", "Port", "Connection", "connect", "ModelError"]
+__all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
+           "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel"]
 
 
 class ModelError(ValueError):
     """The model as written is not valid (unknown modification, bad connect, ...)."""
+
+
+class InvalidValue(ModelError):
+    """A parameter value or variable attribute that is not valid: not a real number,
+    NaN, outside [min, max], infinite where an equation needs it finite, or a parameter
+    binding that depends on a variable or on itself."""
+
+
+class InvalidEquation(ModelError):
+    """Something returned as an equation that is not one, an equation that determines
+    nothing or can never hold, or der() of a constant."""
+
+
+class InvalidConnection(ModelError):
+    """A connect() that is not valid: not ports, ports of different types, the same port
+    twice, or a port that is not the writing component's or its sub-components'."""
+
+
+class InvalidHierarchy(ModelError):
+    """A component that contains itself, or one instance held at two places."""
+
+
+class NotInModel(ModelError):
+    """An equation or connection uses a component, port, variable or symbol that is not
+    part of the model being compiled."""
+
+
+# The root of the model being flattened: reading a variable of a component outside it is
+# an error (its symbol would name a variable of another model, or one that does not exist).
+_COMPILING = contextvars.ContextVar("acausal_compiling", default=None)
+
+
+@contextmanager
+def compiling(root: "Component"):
+    """Within this block, equations may use only the variables of ``root``'s tree."""
+    token = _COMPILING.set(root)
+    try:
+        yield
+    finally:
+        _COMPILING.reset(token)
 
 
 class Component:
@@ -41,6 +90,8 @@ class Component:
     def __init__(self, **modifications):
         object.__setattr__(self, "_mods", dict(modifications))
         object.__setattr__(self, "_path", None)
+        object.__setattr__(self, "_parent", None)
+        object.__setattr__(self, "_root", None)
         object.__setattr__(self, "_children", {})
         object.__setattr__(self, "_symbols", {})
         object.__setattr__(self, "_param_values", {})
@@ -48,8 +99,28 @@ class Component:
         for name, decl in _class_children(type(self)).items():
             setattr(self, name, decl._clone())
 
+    def __init_subclass__(cls, **kwargs):
+        """Check the class's own declarations once, naming them ``Class.attribute``."""
+        super().__init_subclass__(**kwargs)
+        for name, decl in vars(cls).items():
+            if isinstance(decl, (Parameter, Variable)):
+                try:
+                    decl.check()
+                except ValueError as err:
+                    raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
+
     # -- the instance tree -------------------------------------------------------------
     def __setattr__(self, name, value):
+        if value is self or (_is_component_list(value) and any(v is self for v in value)):
+            raise InvalidHierarchy(f"{type(self).__name__}.{name}: a component cannot "
+                                   "contain itself")
+        if isinstance(_declarations(type(self)).get(name), (Parameter, Variable)):
+            # the assignment would hide the declaration: the equations would use the
+            # value while the model still declares the parameter or variable
+            raise InvalidValue(f"{type(self).__name__}.{name} is a declared "
+                               f"{type(_declarations(type(self))[name]).__name__.lower()}; "
+                               f"set it by modification, {type(self).__name__}({name}=...), "
+                               f"not by assigning self.{name}")
         if isinstance(value, Component):
             self._children[name] = value
         elif _is_component_list(value):
@@ -80,14 +151,27 @@ class Component:
 
     # -- binding: names and modifications ----------------------------------------------
     def _bind(self, path: str = "", parent: "Component | None" = None) -> None:
+        """Name this tree (pre-order, so a parent's modifications reach its children
+        before they are bound); a cycle or an instance held twice is an error."""
+        seen = {}                       # id -> path of the instances named so far
+        stack = [(self, path, parent)]
+        while stack:
+            comp, where, above = stack.pop()
+            if id(comp) in seen:
+                raise _hierarchy_error(comp, where, above, seen[id(comp)])
+            seen[id(comp)] = where
+            comp._bind_one(where, above, self)
+            for name, child in reversed(list(comp._children.items())):
+                stack.append((child, f"{where}.{name}" if where else name, comp))
+
+    def _bind_one(self, path: str, parent, root) -> None:
         object.__setattr__(self, "_path", path)
         object.__setattr__(self, "_parent", parent)
+        object.__setattr__(self, "_root", root)
         self._symbols.clear()
         decls = _declarations(type(self))
         for key, mod in self._mods.items():
             self._apply_modification(key, mod, decls)
-        for name, child in self._children.items():
-            child._bind(f"{path}.{name}" if path else name, self)
 
     def _apply_modification(self, key, mod, decls):
         if key in self._children:
@@ -97,13 +181,17 @@ class Component:
             child = self._children[key]
             object.__setattr__(child, "_mods", {**child._mods, **mod})
         elif isinstance(decls.get(key), Parameter):
+            try:
+                check_parameter_value(mod, f"parameter {key}")
+            except ValueError as err:
+                raise InvalidValue(f"{self._describe()}: {err}") from None
             self._param_values[key] = mod
         elif isinstance(decls.get(key), Variable):
             base = self._var_attrs.get(key, decls[key].attributes)
             try:
                 self._var_attrs[key] = base.modified(mod)
             except (TypeError, ValueError) as err:
-                raise ModelError(f"{self._describe()}: variable '{key}': {err}") from None
+                raise InvalidValue(f"{self._describe()}: variable '{key}': {err}") from None
         else:
             known = sorted(set(decls) | set(self._children))
             raise ModelError(f"{self._describe()} has no parameter, variable or "
@@ -114,6 +202,9 @@ class Component:
         return f"{where} ({type(self).__name__})"
 
     def _symbol(self, name: str) -> sp.Symbol:
+        active = _COMPILING.get()
+        if active is not None and self._root is not active:
+            raise _foreign_error(self, name, active)
         sym = self._symbols.get(name)
         if sym is None:
             if self._path is None:
@@ -127,17 +218,46 @@ class Component:
 
     # -- what the compiler reads -------------------------------------------------------
     def parameter_value(self, name: str):
+        """The value of parameter ``name``: a number, or a sympy expression of other
+        parameters (a ``ref`` or a function of the component, evaluated here)."""
         if name in self._param_values:
             value = self._param_values[name]
         else:
             value = _declarations(type(self))[name].value
         if isinstance(value, ref):
-            parent = getattr(self, "_parent", None)
-            if parent is None or value.name not in parent.declarations():
-                raise ModelError(f"{self._describe()}: parameter '{name}' refers to "
-                                 f"'{value.name}' of the enclosing component, which has none")
-            return getattr(parent, value.name)
-        return value(self) if callable(value) else value
+            return self._referenced(name, value)
+        if callable(value) and not isinstance(value, sp.Basic):
+            try:
+                value = value(self)
+            except ModelError:
+                raise
+            except Exception as err:  # the user's function raised: say whose it is
+                raise InvalidValue(f"{self._describe()}: evaluating parameter {name} "
+                                   f"raised {type(err).__name__}: {err}") from err
+            if callable(value) and not isinstance(value, sp.Basic):
+                raise InvalidValue(f"{self._describe()}: parameter {name} is a function "
+                                   f"that returned another function ({value!r})")
+            if isinstance(value, ref):
+                return self._referenced(name, value)
+        try:
+            check_parameter_value(value, f"parameter {name}")
+        except ValueError as err:
+            raise InvalidValue(f"{self._describe()}: {err}") from None
+        return value
+
+    def _referenced(self, name: str, value: ref):
+        parent = self._parent
+        if parent is None:
+            raise InvalidValue(f"{self._describe()}: parameter {name} = {value!r}, but "
+                               "the model has no enclosing component to refer to")
+        decl = parent.declarations().get(value.name)
+        if not isinstance(decl, Parameter):
+            what = ("is a variable, not a parameter" if decl is not None
+                    else "has no parameter of that name")
+            raise InvalidValue(f"{self._describe()}: parameter '{name}' refers to "
+                               f"'{value.name}' of the enclosing component, "
+                               f"{parent._describe()}, which {what}")
+        return getattr(parent, value.name)
 
     def variable_attributes(self, name: str):
         return self._var_attrs.get(name, _declarations(type(self))[name].attributes)
@@ -195,12 +315,25 @@ def connect(a: Port, b: Port, *more: Port) -> Connection:
     ports = (a, b) + more
     for p in ports:
         if not isinstance(p, Port):
-            raise ModelError(f"connect() takes ports, got {p!r} ({type(p).__name__})")
+            raise InvalidConnection(f"connect() takes ports, got {p!r} ({type(p).__name__})")
     kinds = {p.connection_type() for p in ports}
     if len(kinds) > 1:
         names = ", ".join(f"{p.path} ({type(p).__name__})" for p in ports)
-        raise ModelError(f"connect() of ports of different types: {names}")
+        raise InvalidConnection(f"connect() of ports of different types: {names}")
+    seen = set()
+    for p in ports:
+        if id(p) in seen:
+            text = repr(Connection(ports))
+            if len(ports) == 2:
+                raise InvalidConnection(f"{text} connects port '{_port_name(p)}' to itself")
+            raise InvalidConnection(f"{text}: port '{_port_name(p)}' appears more than "
+                                    "once")
+        seen.add(id(p))
     return Connection(ports)
+
+
+def _port_name(p: Port) -> str:
+    return p.path or repr(p)
 
 
 def _connection_type(self):
@@ -235,6 +368,33 @@ def _declarations(cls) -> dict:
                     out[name] = value
         _DECL_CACHE[cls] = out
     return _DECL_CACHE[cls]
+
+
+def _hierarchy_error(comp, where: str, above, first: str) -> InvalidHierarchy:
+    """An instance met twice while binding: a cycle if it encloses ``where``."""
+    kind = type(comp).__name__
+    node = above
+    while node is not None:
+        if node is comp:
+            name = f"'{first}'" if first else "the model"
+            return InvalidHierarchy(f"{name} ({kind}) contains itself: its sub-component "
+                                    f"'{where}' is {name} again")
+        node = node._parent
+    return InvalidHierarchy(f"the same {kind} instance is part of the model twice, as "
+                            f"'{first}' and as '{where}'; give each place its own "
+                            f"instance ({kind}(...))")
+
+
+def _foreign_error(comp, name: str, root) -> NotInModel:
+    kind = type(comp).__name__
+    if comp._path is None:
+        whose = f"a {kind} that was never made part of it"
+    else:
+        full = f"{comp._path}.{name}" if comp._path else name
+        whose = f"'{full}' of a {kind} in another model instance"
+    return NotInModel(f"{kind}.{name}: the model being compiled ({type(root).__name__}) "
+                      f"uses {whose}; equations may use only the model's own components "
+                      "(self and its sub-components)")
 
 
 def _is_component_list(value) -> bool:

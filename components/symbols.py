@@ -3,7 +3,14 @@
 Variables and parameters are sympy Symbols named by their dotted path, so an equation a
 user writes is an ordinary sympy expression and prints in the user's names.
 ``der(x)`` is the time derivative (Modelica's ``der``); it may be applied to an expression
-(``der(m*v)``), which flattening expands by the chain rule.
+(``der(m*v)``), which flattening expands by the chain rule.  ``der`` of a constant (a
+number, a parameter) is kept unevaluated here so that flattening can report it: it is
+always zero, so writing it is a mistake (the argument was meant to be a variable).
+
+An equation is checked when it is written: both sides must be values (a relation such
+as ``x > 1`` is not one: use ``if_else``), finite, and the equation must involve
+something that can vary (``Eq(1, 1)`` and ``Eq(x, x)`` determine nothing, ``Eq(1, 2)``
+never holds).  Errors are ``InvalidEquation``; flattening adds the component path.
 """
 from __future__ import annotations
 
@@ -20,13 +27,6 @@ class der(sp.Function):
 
     nargs = 1
 
-    @classmethod
-    def eval(cls, arg):
-        arg = sp.sympify(arg)
-        if arg.is_number:
-            return sp.Integer(0)
-        return None
-
     def _latex(self, printer):
         return r"\dot{%s}" % printer._print(self.args[0])
 
@@ -41,8 +41,12 @@ class Equation:
     __slots__ = ("lhs", "rhs", "origin", "origin_class", "label", "index")
 
     def __init__(self, lhs, rhs=0, label: str | None = None):
-        self.lhs = sympify_value(lhs)
-        self.rhs = sympify_value(rhs)
+        self.lhs = _side(lhs, lhs, rhs)
+        self.rhs = _side(rhs, lhs, rhs)
+        _check_not_trivial(self.lhs, self.rhs)
+        if label is not None and not isinstance(label, str):
+            raise _invalid(f"the label of ac.Eq({_text(lhs)}, {_text(rhs)}) must be a "
+                           f"string, not {label!r}")
         self.label = label
         self.origin = None
         self.origin_class = None
@@ -63,14 +67,55 @@ def Eq(lhs, rhs=0, label: str | None = None) -> Equation:
 
 def sympify_value(value):
     """Turn numbers, Symbols and objects with ``_sympy_`` (signal ports) into sympy."""
+    if isinstance(value, (str, list, tuple, dict, set)):
+        # sympify would parse a string into symbols the model does not have
+        raise _invalid(f"cannot use {value!r} (a {type(value).__name__}) in an equation; "
+                       "use variables, parameters, numbers and acausal functions")
     try:
         return sp.sympify(value, strict=True)
     except sp.SympifyError:
         pass
     if hasattr(value, "_sympy_"):
         return value._sympy_()
-    raise TypeError(f"cannot use {value!r} (a {type(value).__name__}) in an equation; "
-                    "use variables, parameters, numbers and acausal functions")
+    raise _invalid(f"cannot use {value!r} (a {type(value).__name__}) in an equation; "
+                   "use variables, parameters, numbers and acausal functions")
+
+
+_NON_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
+
+
+def _invalid(message: str):
+    from .component import InvalidEquation   # component.py imports this module
+    return InvalidEquation(message)
+
+
+def _text(value) -> str:
+    return sp.sstr(value) if isinstance(value, sp.Basic) else repr(value)
+
+
+def _side(value, lhs, rhs) -> sp.Expr:
+    """One side of an equation: a finite value, not a relation or a logical value."""
+    expr = sympify_value(value)
+    if not isinstance(expr, sp.Expr):
+        raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}): {_text(expr)} is a relation or "
+                       "a logical value, not a value (ac.if_else(condition, a, b) chooses "
+                       "between values)")
+    if expr.has(*_NON_FINITE):
+        raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}) contains a value that is not a "
+                       f"finite number ({_text(expr)})")
+    return expr
+
+
+def _check_not_trivial(lhs: sp.Expr, rhs: sp.Expr) -> None:
+    """Eq(1, 1) and Eq(x, x) determine nothing; Eq(1, 2) never holds.  (Cheap tests only:
+    flattening rejects any equation whose residual involves no variable.)"""
+    constant = not (lhs.free_symbols or rhs.free_symbols or lhs.has(der) or rhs.has(der))
+    if lhs == rhs or (constant and lhs - rhs == 0):
+        raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}) holds whatever the variables "
+                       "are (both sides are the same): it determines nothing")
+    if constant:
+        raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}) can never hold: it involves no "
+                       "variable and its sides differ")
 
 
 def if_else(condition, then, otherwise):
@@ -79,8 +124,26 @@ def if_else(condition, then, otherwise):
     The relation in ``condition`` becomes a zero-crossing function: it is frozen while
     the integrator steps and switched only at located events.
     """
-    cond = condition if isinstance(condition, sp.Basic) else sp.sympify(condition)
+    cond = _condition(condition, "if_else()")
     return sp.Piecewise((sympify_value(then), cond), (sympify_value(otherwise), True))
+
+
+def _condition(condition, where: str):
+    """A relation or a logical combination of relations (a Python bool is one too)."""
+    if isinstance(condition, bool) or isinstance(condition, sp.Basic):
+        cond = sp.sympify(condition)
+        if _is_logical(cond):
+            return cond
+    raise _invalid(f"{where} takes a condition such as x > 0 (a relation), "
+                   f"not {_text(condition)}")
+
+
+def _is_logical(cond) -> bool:
+    # a sympy Symbol is also a Boolean, but a variable is not a condition
+    if isinstance(cond, (sp.core.relational.Relational, sp.logic.boolalg.BooleanAtom)):
+        return True
+    return (isinstance(cond, sp.logic.boolalg.BooleanFunction)
+            and all(_is_logical(a) for a in cond.args))
 
 
 def sign(x):
@@ -114,7 +177,10 @@ class Reinit:
         self.variable = sympify_value(variable)
         self.value = sympify_value(value)
         if not isinstance(self.variable, sp.Symbol):
-            raise TypeError(f"reinit() takes a variable, got {variable!r}")
+            raise _invalid(f"reinit() takes a variable, got {_text(variable)}")
+        if not isinstance(self.value, sp.Expr) or self.value.has(*_NON_FINITE):
+            raise _invalid(f"reinit({self.variable}, ...) takes a finite value, "
+                           f"got {_text(self.value)}")
 
     def __repr__(self):
         return f"reinit({self.variable}, {self.value})"
@@ -136,11 +202,11 @@ class When:
     __slots__ = ("condition", "actions", "origin", "origin_class")
 
     def __init__(self, condition, *actions):
-        self.condition = condition if isinstance(condition, sp.Basic) else sp.sympify(condition)
+        self.condition = _condition(condition, "when()")
         self.actions = list(actions)
         for a in self.actions:
             if not isinstance(a, Reinit):
-                raise TypeError(f"when() takes reinit(...) actions, got {a!r}")
+                raise _invalid(f"when() takes reinit(...) actions, got {a!r}")
         self.origin = None
         self.origin_class = None
 
