@@ -12,15 +12,50 @@ The solver vector is then z = [states, iteration variables], and everything else
 computed from z by the assignments.  With dynamic state selection the roles of states
 and dummies change at run time, so no causalization is done (the full form: every
 variable in z).
+
+Tearing must not trade numerical stability for size.  The inner assignments of a torn
+block are a forward substitution, and along a chain (a resistor ladder torn at the
+source end) each link can compute a small quantity as the difference of large ones: the
+solution decays along the chain while the errors of the iteration variables and the
+round-off grow, geometrically, so no Newton method converges on the torn residual.  So
+every torn block is checked numerically with the coefficient values at the compile-time
+point (:class:`~acausal.compiler.numeric.CoefficientValues`): along the assignments the
+sensitivities to the iteration variables T are propagated twice,
+
+    s_v = -(sum_{u != v} a_eu s_u) / a_ev,      m_v = (sum_{u != v} |a_eu| m_u) / |a_ev|,
+
+signed and in absolute values (s_T = m_T = the unit vectors).  ``m_v / |s_v|`` is how
+much of v's relative accuracy the chain cancels away, whatever the units of v and T (a
+pressure computed from a volume flow through beta/V = 1e9 is no cancellation).  The signed
+sensitivities also say how far an error of the iteration variables, which Newton
+controls only on their own scale, spreads to the inner variables, which nobody checks:
+``|s_v| scale_T / scale_v``.  The scales are those that equilibrate the block's own
+coefficient matrix (Ruiz, "A scaling algorithm to equilibrate both rows and columns
+norms in matrices", RAL-TR-2001-034: rows and columns scaled alternately until every
+one has a largest entry of one), so that units do not count (a flow of 1e-4 m3/s and a
+pressure of 1e7 Pa are each on their own scale) while a genuine geometric growth does:
+a resistor ladder torn at its source end carries the guessed node voltage to the far end
+multiplied by 11 per section, 1e40 over 40 sections.  A block whose cancellation exceeds ``CANCELLATION_LIMIT``, whose
+spread exceeds ``SPREAD_LIMIT``, or that has more than ``TEAR_LIMIT`` equations, is not
+torn: all its variables join the solver vector and all
+its equations are rows of F, solved by the integrator's sparse LU as one linear system
+per Newton iteration (as OpenModelica keeps a sparse solver for large systems).  The
+report says which blocks and why.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from .blt import blt
 from .graph import LINEAR_PARAM, Structure
 from .states import index1_matching
 from .tearing import tear
+
+CANCELLATION_LIMIT = 1e6    # a torn chain may cancel at most this factor of accuracy
+SPREAD_LIMIT = 1e8          # ... and spread an iteration variable's error at most this much
+TEAR_LIMIT = 400            # larger algebraic blocks are solved whole (sparse LU)
 
 __all__ = ["Causalization", "causalize", "full_form"]
 
@@ -35,8 +70,12 @@ class Causalization:
     causal: bool = True
 
 
-def causalize(reduction) -> Causalization:
-    """The causal form for a static state selection (see the module docstring)."""
+def causalize(reduction, values=None) -> Causalization:
+    """The causal form for a static state selection (see the module docstring).
+
+    ``values``: a :class:`~acausal.compiler.numeric.CoefficientValues` for the
+    conditioning check of torn blocks (None: no check).
+    """
     s: Structure = reduction.structure
     states = reduction.states
     _, eq_to_var = index1_matching(reduction.pantelides, reduction.selection)
@@ -48,13 +87,103 @@ def causalize(reduction) -> Causalization:
                            "torn": False, "solved": "explicit"})
             continue
         t = tear(s, block.eqs, block.vars)
+        why = _untearable(s, block, t, values)
+        entry = {"size": len(block.eqs), "equations": block.eqs, "variables": block.vars,
+                 "solved": "newton"}
+        if why:
+            z += list(block.vars)
+            residuals += list(block.eqs)
+            report.append({**entry, "torn": False, "not_torn": why})
+            continue
         z += t.iteration_vars
         residuals += t.residual_eqs
         assignments += [(v, e) for e, v in t.inner]
-        report.append({"size": len(block.eqs), "equations": block.eqs, "variables": block.vars,
-                       "torn": len(block.eqs) > 1, "iteration_variables": t.iteration_vars,
-                       "solved": "newton"})
+        report.append({**entry, "torn": len(block.eqs) > 1,
+                       "iteration_variables": t.iteration_vars})
     return Causalization(z, len(states), assignments, residuals, report)
+
+
+def _untearable(s, block, t, values) -> str:
+    """Why the block must be solved whole ('' if its tearing is acceptable)."""
+    if not t.inner:
+        return ""
+    if len(block.eqs) > TEAR_LIMIT:
+        return f"{len(block.eqs)} equations: solved whole by sparse LU (limit {TEAR_LIMIT})"
+    if values is None:
+        return ""
+    scale = equilibrating_scales(s, block, values)
+    loss, spread = chain_growth(s, t, values, lambda v: scale.get(v, 1.0))
+    what = f"tearing to {len(t.iteration_vars)} iteration variable(s)"
+    if loss > CANCELLATION_LIMIT:
+        return (f"{what} cancels a factor {loss:.1e} (> {CANCELLATION_LIMIT:.0e}) of "
+                "accuracy along its assignments: solved whole")
+    if spread > SPREAD_LIMIT:
+        return (f"{what} spreads their errors by {spread:.1e} (> {SPREAD_LIMIT:.0e}) to "
+                "the variables assigned from them: solved whole")
+    return ""
+
+
+def equilibrating_scales(s, block, values, sweeps: int = 20) -> dict:
+    """Column scales c_v of the block's coefficient matrix A such that D_r A D_c has every
+    row and column of largest magnitude about one (Ruiz's iteration, square roots of the
+    row and column maxima, a few sweeps)."""
+    entries = []
+    for e in block.eqs:
+        for v in s.graph[e]:
+            if v in block.vars:
+                a = values.value(e, v)
+                if a:
+                    entries.append((e, v, abs(a)))
+    r = {e: 1.0 for e in block.eqs}
+    c = {v: 1.0 for v in block.vars}
+    for _ in range(sweeps):
+        row_max, col_max = dict.fromkeys(r, 0.0), dict.fromkeys(c, 0.0)
+        for e, v, a in entries:
+            x = r[e] * a * c[v]
+            row_max[e] = max(row_max[e], x)
+            col_max[v] = max(col_max[v], x)
+        if all(abs(x - 1.0) < 0.1 for x in list(row_max.values()) + list(col_max.values())
+               if x > 0):
+            break
+        for e, x in row_max.items():
+            if x > 0:
+                r[e] /= np.sqrt(x)
+        for v, x in col_max.items():
+            if x > 0:
+                c[v] /= np.sqrt(x)
+    return c
+
+
+def chain_growth(s, t, values, scale) -> tuple:
+    """(cancellation, spread) of a torn block (module docstring): the largest
+    ``m_v / |s_v|`` and ``|s_v| scale_T / scale_v`` of its inner variables; inf where a
+    pivot or a coefficient is not a number."""
+    k = len(t.iteration_vars)
+    sens = {v: np.eye(k)[j] for j, v in enumerate(t.iteration_vars)}
+    mags = {v: np.eye(k)[j] for j, v in enumerate(t.iteration_vars)}
+    t_scale = np.array([scale(v) for v in t.iteration_vars])
+    worst, spread = 1.0, 0.0
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        for e, v in t.inner:
+            pivot = values.value(e, v)
+            if not pivot:
+                return np.inf, np.inf
+            acc, mag = np.zeros(k), np.zeros(k)
+            for u in s.graph[e]:
+                if u != v and u in sens:
+                    a = values.value(e, u)
+                    if a is None:
+                        return np.inf, np.inf
+                    acc += a * sens[u]
+                    mag += abs(a) * mags[u]
+            sens[v], mags[v] = -acc / pivot, mag / abs(pivot)
+            lost = np.where(mags[v] > 0, mags[v] / np.abs(sens[v]), 1.0)
+            ratio = float(np.max(lost))
+            if not np.isfinite(ratio):
+                return np.inf, np.inf   # exact cancellation, or beyond floating point
+            worst = max(worst, ratio)
+            spread = max(spread, float(np.max(np.abs(sens[v]) * t_scale)) / scale(v))
+    return worst, spread
 
 
 def full_form(reduction, n_vars: int, n_eqs: int) -> Causalization:

@@ -9,7 +9,7 @@ selection at run time.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from .graph import UNASSIGNED, Structure
 from .pantelides import pantelides
@@ -39,17 +39,25 @@ class IndexReduction:
         return [v for v, dv in self.pairs if dv not in d]
 
 
-def reduce_index(system, s: Structure) -> IndexReduction:
+def reduce_index(system, s: Structure, coefficient=None) -> IndexReduction:
+    """Pantelides, then dummy derivatives; `coefficient` (``(eq, var) -> Fraction | None``,
+    see :func:`acausal.compiler.conversion.coefficient_oracle`) lets state selection
+    check constant blocks by exact rank.
+
+    The index follows Pryce's convention (as :func:`as_written` does): the largest number
+    of differentiations, plus one if some variable has no derivative at all (an
+    algebraic variable, Pryce 2001 eq. (13)).
+    """
     n_orig = s.n_eqs
     result = pantelides(s, differentiate=system.differentiate)
     sr = result.structure
     counts = list(result.diff_counts)[:n_orig]
-    selection = select_states(result)
+    selection = select_states(result, coefficient)
     pairs = [(v, sr.var_to_diff[v]) for v in range(sr.n_vars)
              if sr.var_to_diff[v] is not UNASSIGNED]
-    n_states = len(pairs) - len(selection.dummies)
-    has_algebraic = sr.n_vars - len(pairs) - n_states > 0
-    index = (max(counts) + 1) if counts and max(counts) > 0 else int(has_algebraic)
+    algebraic = any(sr.var_to_diff[v] is UNASSIGNED and sr.diff_to_var[v] is UNASSIGNED
+                    for v in range(sr.n_vars))
+    index = max(counts, default=0) + int(algebraic)
     red = IndexReduction(sr, counts, pairs, sorted(selection.dummies),
                          bool(selection.state_sets), index, selection, result)
     _check_square(system, red)

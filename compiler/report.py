@@ -27,17 +27,45 @@ class IndexReport:
     state_sets: list = field(default_factory=list)
     blocks: list = field(default_factory=list)
     sigma: dict = field(default_factory=dict)
+    conversion: object = None       # compiler.conversion.ConversionResult
     notes: list = field(default_factory=list)
 
     def count(self, stage: str, **numbers) -> None:
         self.counts[stage] = numbers
 
     def fill(self, system, reduction, compiled) -> None:
-        """Collect the per-equation and per-variable facts after all passes ran."""
+        """Collect the per-equation and per-variable facts after all passes ran
+        (``compiled`` is the ModelCode the passes produced)."""
         s = reduction.structure
         names = [sym.name for sym in system.symbols]
         self.index_after_alias = reduction.index
         self.differential_index = self.sigma.get("index_pantelides", reduction.index)
+        conv = self.conversion
+        if conv is not None and conv.changed:
+            # the structural index of the equations as written is not their index: the
+            # converted system's is (Pantelides on it, cross-checked by Sigma below)
+            self.differential_index = reduction.index
+            self.sigma["hidden"] = True
+            self.sigma["after_conversion"] = {
+                "index_sigma": conv.sigma.index, "dof": conv.sigma.dof,
+                "c": conv.sigma.c,
+                "agrees": conv.sigma.index == reduction.index
+                and list(conv.sigma.c) == list(reduction.diff_counts)}
+            self.notes += conv.notes()
+        if conv is not None and conv.numeric_blocks:
+            self.notes.append(
+                f"{len(conv.numeric_blocks)} block(s) of the Sigma-method's system Jacobian "
+                "depend on the variables, so their regularity is not decided at compile "
+                "time (a check at the initial point can evaluate them): "
+                + "; ".join("[" + ", ".join(b.variables[:4])
+                            + (" ..." if len(b.variables) > 4 else "") + "]"
+                            for b in conv.numeric_blocks[:10])
+                + (" ..." if len(conv.numeric_blocks) > 10 else ""))
+        for level, before, after in getattr(reduction.selection, "numeric_changes", []):
+            self.notes.append(
+                f"dummy derivatives at level {level}: the structural choice "
+                f"{', '.join(names_of(system, before))} has a singular constant coefficient "
+                f"matrix; chosen by exact rank instead: {', '.join(names_of(system, after))}")
         self.equations = [{
             "index": k, "text": eq.name(system), "component": eq.component,
             "kind": eq.kind, "order": eq.order,
@@ -58,8 +86,11 @@ class IndexReport:
                 "re-chosen at run time where the constraint Jacobian calls for it")
         self._names = names
         self._graph = [list(vs) for vs in s.graph]
-        self.counts["solver"] = {"unknowns": compiled.n, "states": len(compiled.state_index),
-                                 "zero_crossings": compiled.n_roots}
+        rel = compiled.relations
+        self.counts["solver"] = {
+            "unknowns": len(compiled.names),
+            "states": len(compiled.state_z) + len(compiled.pairs) - len(compiled.dummies),
+            "zero_crossings": rel.n_relations + 2 * rel.n_discrete}
 
     # -- output --------------------------------------------------------------------------
     def as_dict(self) -> dict:
@@ -76,6 +107,7 @@ class IndexReport:
             "state_sets": self.state_sets,
             "blocks": self.blocks,
             "sigma": self.sigma,
+            "conversion": _conversion_dict(self.conversion),
             "timings_s": self.timings,
             "notes": self.notes,
         }
@@ -158,6 +190,16 @@ class IndexReport:
             lines.append(f"  BLT: {len(sizes)} blocks, largest {max(sizes)}, {torn} torn")
         if self.sigma.get("error"):
             lines.append(f"  cross-check of the model as written failed: {self.sigma['error']}")
+        elif self.sigma.get("hidden"):
+            after = self.sigma["after_conversion"]
+            lines.append(f"  the equations as written look like index "
+                         f"{self.sigma['index_sigma']} with {self.sigma['dof']} degrees of "
+                         "freedom to the structural analysis, but hide a singular constant "
+                         "coefficient matrix (notes below)")
+            lines.append(f"  cross-check after conversion, Pryce's Sigma-method: index "
+                         f"{after['index_sigma']}, {after['dof']} degrees of freedom; "
+                         + ("agrees with Pantelides" if after["agrees"]
+                            else "DISAGREES with Pantelides"))
         elif self.sigma:
             lines.append(f"  cross-check, Pryce's Sigma-method: index {self.sigma['index_sigma']}, "
                          f"{self.sigma['dof']} degrees of freedom; "
@@ -170,6 +212,24 @@ class IndexReport:
         total = sum(self.timings.values())
         lines.append(f"  compile time: {total:.3f} s")
         return "\n".join(lines)
+
+
+def _conversion_dict(conv):
+    if conv is None:
+        return None
+    return {"conversions": [{"replaced": c.replaced, "text": c.text,
+                             "terms": [list(t) for t in c.terms], "cancelled": c.columns,
+                             "parameter_dependent": c.parameter_dependent,
+                             "value_before": c.value_before, "value_after": c.value_after}
+                            for c in conv.conversions],
+            "index": conv.index, "dof": conv.sigma.dof if conv.sigma else None,
+            "numeric_blocks": [{"equations": b.equation_names, "variables": b.variables}
+                               for b in conv.numeric_blocks],
+            "error": conv.error}
+
+
+def names_of(system, variables) -> list:
+    return [system.symbols[v].name for v in variables]
 
 
 def _times_differentiated(s, e) -> int:

@@ -27,11 +27,24 @@ Column preference (which derivatives become dummies), in order:
 * then columns whose antiderivative is itself a derivative (keeping declared variables,
   e.g. a velocity ``v`` rather than ``der(x)``, as states);
 * then higher variable index (keeping earlier declared variables as states).
+
+Numeric choice: a structurally nonsingular block can be numerically singular (constant
+coefficients that cancel).  Where every coefficient of a level block (a connected
+component of the level's rows and candidate columns) is LINEAR_CONST / LINEAR_PARAM and
+the optional oracle ``coefficient(eq, var)`` gives its exact rational value, the columns
+are chosen by a greedy on exact ranks instead: in the preference order above, a column
+is taken when it raises the rank of the chosen columns.  This is the greedy algorithm
+of the linear matroid of the block's columns, so it finds a nonsingular choice whenever
+one exists; and since every linearly independent set is structurally independent, it
+keeps the structural choice whenever that one is nonsingular.  The passes stay on
+integers; only the oracle (built by :mod:`acausal.compiler.conversion` from the symbolic
+system and the parameter values) knows numbers.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Union
+from fractions import Fraction
+from typing import Callable, Optional, Union
 
 from .blt import strongly_connected_components
 from .graph import ALWAYS, LINEAR_PARAM, NONLINEAR, UNASSIGNED, Structure
@@ -97,6 +110,9 @@ class StateSelection:
         Per level (level 1 first): ``(equations, dummies selected at that level)``.
     state_sets : list of StateSet
         Blocks where the choice is only locally valid and another choice exists.
+    numeric_changes : list of (int, list, list)
+        ``(level, structural dummies, numeric dummies)`` for every level block where
+        the exact-rank choice replaced a numerically singular structural choice.
     """
 
     dummies: list
@@ -105,6 +121,7 @@ class StateSelection:
     unknowns: list
     levels: list = field(default_factory=list)
     state_sets: list = field(default_factory=list)
+    numeric_changes: list = field(default_factory=list)
 
 
 def _level_columns(s: Structure, rows: list, allowed) -> list:
@@ -184,6 +201,89 @@ def _select(s: Structure, rows: list, cols: list) -> dict:
     return r2c
 
 
+class _RankBasis:
+    """Incremental exact rank of column vectors ``{row: Fraction}`` (row echelon form:
+    every stored vector has a pivot row on which the vectors after it are zero)."""
+
+    def __init__(self):
+        self.basis = []              # (pivot row, vector)
+
+    def add(self, vec: dict) -> bool:
+        """Reduce `vec` by the basis; keep it and return True if it is independent."""
+        vec = {r: x for r, x in vec.items() if x}
+        for piv, b in self.basis:
+            x = vec.get(piv)
+            if x:
+                f = x / b[piv]
+                for r, y in b.items():
+                    z = vec.get(r, 0) - f * y
+                    if z:
+                        vec[r] = z
+                    else:
+                        vec.pop(r, None)
+        if not vec:
+            return False
+        self.basis.append((min(vec), vec))
+        return True
+
+
+def _numeric_block(s: Structure, rows: list, cols: list,
+                   coefficient: Callable) -> Optional[dict]:
+    """Exact coefficients {col: {row: Fraction}} if every entry is constant, else None."""
+    out = {c: {} for c in cols}
+    for e in rows:
+        for v in s.graph[e]:
+            if v not in out:
+                continue
+            if s.coeff[e].get(v, NONLINEAR) > LINEAR_PARAM:
+                return None
+            q = coefficient(e, v)
+            if q is None:
+                return None
+            if q:
+                out[v][e] = Fraction(q)
+    return out
+
+
+def _numeric_choice(s: Structure, level: int, rows: list, cols: list, r2c: dict,
+                    coefficient: Callable, changes: list) -> dict:
+    """Replace the structural choice of every all-constant level block by the greedy on
+    exact ranks (see the module docstring); record the blocks where it differs."""
+    r2c = dict(r2c)
+    for crows, ccols in _components(s, rows, cols):
+        mat = _numeric_block(s, crows, ccols, coefficient)
+        if mat is None:
+            continue
+        basis, chosen = _RankBasis(), []
+        for c in sorted((c for c in ccols if s.state_priority[s.diff_to_var[c]] < ALWAYS),
+                        key=lambda c: _sort_key(s, c)):
+            if len(chosen) == len(crows):
+                break
+            if basis.add(mat[c]):
+                chosen.append(c)
+        if len(chosen) < len(crows):
+            continue                 # singular for every choice: keep the structural one
+        before = sorted(r2c[e] for e in crows if e in r2c)
+        check = _RankBasis()
+        if sorted(chosen) == before or all(check.add(mat[c]) for c in before):
+            continue                 # the structural choice is nonsingular: keep it
+        match = _match_columns(crows, chosen, mat)
+        for e in crows:
+            r2c.pop(e, None)
+        r2c.update(match)
+        changes.append((level, before, sorted(chosen)))
+    return r2c
+
+
+def _match_columns(rows: list, cols: list, mat: dict) -> dict:
+    """rows -> cols along non-zero entries (exists: the chosen block is nonsingular)."""
+    cadj = {c: sorted((e, 0) for e in mat[c]) for c in cols}
+    r2c, c2r = {}, {}
+    for c in cols:
+        _augment_col(c, cadj, r2c, c2r, 0, set())
+    return r2c
+
+
 def _components(s: Structure, rows: list, cols: list) -> list:
     """Connected components (rows, cols) of the level graph, by smallest row."""
     colset, parent = set(cols), {}
@@ -234,13 +334,18 @@ def _state_sets(s: Structure, level: int, rows: list, cols: list, r2c: dict) -> 
     return out
 
 
-def select_states(p: Union[PantelidesResult, Structure]) -> StateSelection:
+def select_states(p: Union[PantelidesResult, Structure],
+                  coefficient: Optional[Callable] = None) -> StateSelection:
     """Choose dummy derivatives and states (Mattsson & Söderlind 1993).
 
     Parameters
     ----------
     p : PantelidesResult or Structure
         The index-reduced structure (``p.structure`` of a PantelidesResult).
+    coefficient : callable, optional
+        ``coefficient(eq, var) -> Fraction | None``: the exact constant coefficient of
+        var in eq, None where it is not constant.  With it, all-constant level blocks
+        are chosen by exact rank (module docstring).
 
     Returns
     -------
@@ -255,12 +360,14 @@ def select_states(p: Union[PantelidesResult, Structure]) -> StateSelection:
     s = p.structure if isinstance(p, PantelidesResult) else p
     rows = sorted(e for e in range(s.n_eqs) if s.diff_to_eq[e] is not UNASSIGNED
                   and s.eq_to_diff[e] is UNASSIGNED)              # step 1
-    allowed, level, dummies, levels, sets = None, 1, [], [], []
+    allowed, level, dummies, levels, sets, changes = None, 1, [], [], [], []
     while rows:
         cols = _level_columns(s, rows, allowed)
         r2c = _select(s, rows, cols)                              # step 2
         if len(r2c) < len(rows):
             _fail(s, rows, cols, r2c)
+        if coefficient is not None:
+            r2c = _numeric_choice(s, level, rows, cols, r2c, coefficient, changes)
         chosen = sorted(r2c.values())
         dummies += chosen
         levels.append((rows, chosen))
@@ -269,7 +376,9 @@ def select_states(p: Union[PantelidesResult, Structure]) -> StateSelection:
                       if s.diff_to_eq[s.diff_to_eq[e]] is not UNASSIGNED)
         allowed = {s.diff_to_var[v] for v in chosen}
         level += 1
-    return _selection(s, dummies, levels, sets)
+    out = _selection(s, dummies, levels, sets)
+    out.numeric_changes = changes
+    return out
 
 
 def _fail(s: Structure, rows: list, cols: list, r2c: dict) -> None:

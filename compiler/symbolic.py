@@ -9,6 +9,8 @@ callback here differentiates the residual symbolically,
     d/dt r(x, der(x), t) = sum_v  dr/dv * der(v)  +  dr/dt,
 
 creating the derivative symbols it needs, and reports the exact incidence back.
+The same time derivative (:meth:`SymbolicSystem.time_derivative`) serves the
+linear-combination conversion (:mod:`acausal.compiler.conversion`).
 """
 from __future__ import annotations
 
@@ -19,7 +21,7 @@ import sympy as sp
 from ..components.symbols import time
 from .derivative import partial
 from .flatten import derivative_symbol
-from .graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, STATE_SELECT,
+from .graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER, STATE_SELECT,
                     UNASSIGNED, Structure)
 
 __all__ = ["SymbolicEquation", "SymbolicSystem", "coefficient_kind"]
@@ -34,6 +36,7 @@ class SymbolicEquation:
     kind: str = "equation"
     derivative_of: int | None = None     # index of the equation this is d/dt of
     order: int = 0                       # how many times differentiated from the source
+    combination: tuple = ()              # (coefficient, name, order) of combined equations
 
     @property
     def where(self) -> str:
@@ -45,8 +48,11 @@ class SymbolicEquation:
         base = self
         while base.derivative_of is not None:
             base = system.equations[base.derivative_of]
-        text = base.text if len(base.text) <= 60 else base.text[:57] + "..."
-        core = f"{text}  [{base.where}]"
+        if base.combination:          # its text names every equation and component
+            core = base.text
+        else:
+            text = base.text if len(base.text) <= 60 else base.text[:57] + "..."
+            core = f"{text}  [{base.where}]"
         if self.order == 0:
             return core
         power = f"^{self.order}" if self.order > 1 else ""
@@ -123,7 +129,12 @@ class SymbolicSystem:
             if x in self.index and d in self.index:
                 var_to_diff[self.index[x]] = self.index[d]
         names = [s.name for s in self.symbols]
-        priority = [STATE_SELECT[info.attrs.state_select] for info in self.base_infos()]
+        # a derivative variable der(x) shares x's hint, but 'always' belongs to x alone:
+        # x and der(x) cannot both be forced to be states where an equation links der(x)
+        # to a declared speed (w = der(phi), with phi and w always states)
+        priority = [min(STATE_SELECT[info.attrs.state_select], PREFER)
+                    if sym not in self.var_info else STATE_SELECT[info.attrs.state_select]
+                    for sym, info in zip(self.symbols, self.base_infos())]
         return Structure(graph=graph, var_to_diff=var_to_diff,
                          eq_to_diff=[UNASSIGNED] * len(graph), coeff=coeff,
                          var_names=names, eq_names=[e.name(self) for e in self.equations],
@@ -138,16 +149,22 @@ class SymbolicSystem:
         """
         self._sync_variables(s)
         eq = self.equations[e]
-        r = eq.residual
-        dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
-        for sym in sorted((q for q in r.free_symbols if q in self.index), key=lambda q: self.index[q]):
-            dr += partial(r, sym) * derivative_symbol(sym, self.derivatives)
-            self._add_symbol(self.derivatives[sym])
+        dr = self.time_derivative(eq.residual)
         self.equations.append(SymbolicEquation(dr, f"d/dt({eq.text})", eq.component,
                                                eq.component_class, eq.kind,
                                                derivative_of=e, order=eq.order + 1))
         self._sync_variables(s)
         return self.incidence(dr)
+
+    def time_derivative(self, r: sp.Expr) -> sp.Expr:
+        """d/dt r = sum_v dr/dv der(v) + dr/dt over the variables v of r, creating the
+        der(v) symbols it needs (appended to ``symbols`` in the order of v)."""
+        dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
+        for sym in sorted((q for q in r.free_symbols if q in self.index),
+                          key=lambda q: self.index[q]):
+            dr += partial(r, sym) * derivative_symbol(sym, self.derivatives)
+            self._add_symbol(self.derivatives[sym])
+        return dr
 
     def _sync_variables(self, s: Structure) -> None:
         """Mirror the derivative variables Pantelides created (indices must agree)."""
