@@ -8,18 +8,24 @@ Write a model as components with ports, connect them like a schematic, and simul
 
 See the README for the modelling language and the design.
 """
-from .components import (Across, Component, Connection, Eq, Equation, ModelError, Parameter,
-                         Port, Signal, Through, Variable, When, connect, der, if_else, no_event, pre,
-                         ref, reinit, sign, time, when)
-from .compiler.model import CompiledModel
+from .components import (Across, Component, Connection, Eq, Equation, InvalidConnection,
+                         InvalidEquation, InvalidHierarchy, InvalidValue, ModelError,
+                         NotInModel, Parameter, Port, Signal, Through, Variable, When,
+                         connect, der, if_else, no_event, pre, ref, reinit, sign, time, when)
+from .errors import InitializationFailed, SimulationError
 from .result import Result
+from .runtime import CompiledModel
 from .simulation import compile, initial_values, simulate
-from .solvers.base import InitializationFailed, SimulationError
-from .analysis import (StateSpace, energy_balance, estimate, is_passive, linearize,
-                       linearize_symbolic, steady_state)
+from .analysis import (ModeWarning, OperatingPointError, StateSpace, SteadyStateError,
+                       TransferFunctionWarning, energy_balance, estimate, is_passive,
+                       linearize, linearize_symbolic, steady_state)
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
-           "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre", "Connection", "if_else", "no_event", "sign", "time",
+           "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre",
+           "Connection", "if_else", "no_event", "sign", "time",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
-           "ModelError", "SimulationError", "InitializationFailed", "linearize", "linearize_symbolic", "StateSpace",
-           "steady_state", "energy_balance", "is_passive", "estimate"]
+           "ModelError", "InvalidValue", "InvalidEquation", "InvalidConnection",
+           "InvalidHierarchy", "NotInModel", "SimulationError", "InitializationFailed",
+           "linearize", "linearize_symbolic", "StateSpace", "steady_state",
+           "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
+           "energy_balance", "is_passive", "estimate"]

@@ -16,7 +16,8 @@ class Result:
     times), ``res.success`` / ``res.message`` (a failed run keeps what it computed).
     """
 
-    def __init__(self, compiled, t, y, stats=None, events=(), success=True, message=""):
+    def __init__(self, compiled, t, y, stats=None, events=(), success=True, message="",
+                 discrete_states=(), discrete_index=()):
         self.compiled = compiled
         self.t = np.asarray(t, dtype=float)
         self._z = np.asarray(y, dtype=float).reshape(len(self.t), -1)
@@ -26,6 +27,9 @@ class Result:
         self.events = list(events)
         self.success = success
         self.message = message
+        # the discrete state (relation and floor values) each point was integrated in
+        self._discrete = [np.asarray(d, dtype=float) for d in discrete_states]
+        self._discrete_index = list(discrete_index)
 
     @property
     def names(self) -> list:
@@ -44,7 +48,8 @@ class Result:
         if sign is None:
             return np.full(len(self.t), k(self.parameters) if callable(k) else k)
         if self._y is None:
-            self._y = _expand(self.compiled, self.t, self._z, self.parameters)
+            self._y = _expand(self.compiled, self.t, self._z, self.parameters,
+                              self._discrete, self._discrete_index)
         return sign * self._y[:, k]
 
     def at(self, name: str, t: float) -> float:
@@ -85,18 +90,22 @@ class Result:
                 f"{len(self.compiled.outputs)} variables, {status}>")
 
 
-def _expand(compiled, t, z, p) -> np.ndarray:
-    """Every variable at every output time, from the solver vector z.
-
-    Relations are evaluated afresh at each point (not frozen), so values computed from
-    if-expressions are those of the branch that holds at that time.
-    """
+def _expand(compiled, t, z, p, discrete, index) -> np.ndarray:
+    """Every variable at every output time, from the solver vector z, each point in the
+    discrete state (relation values) it was integrated in: values computed from
+    if-expressions are those of the branch the integrator used there, so an output never
+    contradicts the trajectory (at an event, the point before it is in the old modes and
+    the point after it in the new)."""
     saved, saved_p = compiled.m.copy(), compiled.p.copy()
     compiled.p[:] = p
+    known = len(index) == len(t) and discrete
     try:
         rows = []
-        for tk, zk in zip(t, z):
-            compiled.init_modes(tk, zk)
+        for k, (tk, zk) in enumerate(zip(t, z)):
+            if known:
+                compiled.m[:] = discrete[index[k]]
+            else:                      # a result without its modes: take them from the point
+                compiled.init_modes(tk, zk)
             rows.append(compiled.expand(tk, zk))
         return np.array(rows).reshape(len(t), -1)
     finally:

@@ -1,14 +1,20 @@
 """The compiler pipeline: the passes by name, in order (as OpenModelica lists its modules).
 
-    flatten -> alias -> balance -> index_reduction (Pantelides) -> state_selection
-            (dummy derivatives) -> assemble (+ BLT report) -> codegen
+    flatten -> discrete (floor/mod frozen) -> alias -> balance -> conversion (Pryce's
+            success test, exact; LC conversion of singular constant blocks) ->
+            index_reduction (Pantelides) -> state_selection (dummy derivatives, exact
+            rank on constant blocks) -> assemble (BLT, tearing checked numerically)
+            -> codegen
 
 Each pass is a function from one plain data structure to the next; the timings and
-counts of every pass go into the index report.
+counts of every pass go into the index report.  The result is a
+:class:`~acausal.compiler.modelcode.ModelCode`: generated code and name maps, run by
+:class:`acausal.runtime.CompiledModel`.
 """
 from __future__ import annotations
 
 import time as _time
+from dataclasses import replace
 
 import numpy as np
 import sympy as sp
@@ -20,24 +26,29 @@ from .codegen import extract_relations, generate
 from .derivative import partial
 from .graph import UNASSIGNED
 from .flatten import flatten
-from .initial import InitialConditions
 from .causalize import causalize, full_form
-from .model import CompiledModel, DynamicStateSelection
+from .conversion import convert_model
+from .discrete import freeze_integer_functions
+from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
+from .numeric import CoefficientValues
 from .reduction import as_written, reduce_index
 from .report import IndexReport
 from .symbolic import SymbolicSystem
 
 __all__ = ["PASSES", "compile_model"]
 
-PASSES = ("flatten", "alias", "balance", "index_reduction", "state_selection",
-          "assemble", "codegen")
+PASSES = ("flatten", "discrete", "alias", "balance", "conversion", "index_reduction",
+          "state_selection", "assemble", "codegen")
 
 
-def compile_model(model: Component) -> CompiledModel:
-    """Compile a model instance to a CompiledModel (see the module docstring)."""
+def compile_model(model: Component) -> ModelCode:
+    """Compile a model instance to generated code and name maps (see the module docstring);
+    :class:`acausal.runtime.CompiledModel` runs it."""
     report = IndexReport(model_name=type(model).__name__)
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
+    discretes = freeze_integer_functions(flat)
+    _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
     if flat.structural_zeros:
         report.notes.append("parameters equal to 0 were evaluated as structural zeros (set a "
@@ -48,17 +59,21 @@ def compile_model(model: Component) -> CompiledModel:
     report.aliases = aliases
     report.count("alias", equations=len(reduced.equations), variables=len(reduced.variables))
     system = SymbolicSystem.from_flat(reduced)
+    system.parameters |= {d.symbol for d in discretes}   # constant between events
     structure = system.structure()
     clock("balance", check_balance, system, structure, reduced, aliases,
           (len(flat.equations), len(flat.variables)))
     report.sigma = clock("index_as_written", as_written, flat)
-    reduction = clock("index_reduction", reduce_index, system, structure)
+    report.conversion = clock("conversion", convert_model, system, structure, reduced)
+    reduction = clock("index_reduction", reduce_index, system, report.conversion.structure,
+                      report.conversion.coefficient)
     report.reduction = reduction
     report.count("index_reduction", equations=len(system.equations),
                  variables=len(system.symbols))
-    compiled = clock("codegen", _assemble, system, reduction, reduced, flat, aliases, report)
-    report.fill(system, reduction, compiled)
-    return compiled
+    out = clock("codegen", _assemble, system, reduction, reduced, flat, aliases, report,
+                discretes)
+    report.fill(system, reduction, out)
+    return out
 
 
 class _Clock:
@@ -72,10 +87,31 @@ class _Clock:
         return out
 
 
-def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledModel:
+def _reinit_targets_are_states(flat) -> None:
+    """A variable that a when-clause re-initializes must be a state (Modelica 3.6, sec.
+    8.3.6: tools treat it as stateSelect = always), so state selection keeps it one,
+    wherever index reduction could otherwise put the states (the motor side of a gear)."""
+    from ..components.component import ModelError
+    targets = {act.variable for w in flat.whens for act in w.actions}
+    for k, v in enumerate(flat.variables):
+        if v.symbol in targets:
+            if v.attrs.state_select == "never":
+                raise ModelError(f"reinit({v.name}) in {v.where}: the variable has "
+                                 "state_select='never', but only a state can be re-initialized")
+            flat.variables[k] = replace(v, attrs=replace(v.attrs, state_select="always"))
+
+
+def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> ModelCode:
     syms = system.symbols
-    caus = full_form(reduction, len(syms), len(system.equations)) if reduction.dynamic \
-        else causalize(reduction)
+    if reduction.dynamic:
+        caus = full_form(reduction, len(syms), len(system.equations))
+    else:
+        values = CoefficientValues(system, reduced.parameters, discretes)
+        caus = causalize(reduction, values)
+        untorn = [b for b in caus.blocks if b.get("not_torn")]
+        for b in untorn[:5]:
+            report.notes.append(f"algebraic block of {b['size']} equations not torn "
+                                f"({b['not_torn']}), e.g. {syms[b['variables'][0]].name}")
     report.blocks = caus.blocks
     z_syms = [syms[v] for v in caus.z]
     assigned = [(syms[v], solve_linear(system.equations[e].residual, syms[v]))
@@ -91,48 +127,167 @@ def _assemble(system, reduction, reduced, flat, aliases, report) -> CompiledMode
     init_rows, init_text, n_mandatory = _initial_rows(system, reduced, reduction, caus)
     when_rows, targets, owners = _when_rows(reduced.whens, z_syms, caus, pairs)
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows)]
-    exprs, crossings, modes = extract_relations([e for _, e in assigned] + rows + init_rows
-                                                + when_rows)
+    exprs, crossings, modes, origin = extract_relations(
+        [e for _, e in assigned] + rows + init_rows + when_rows)
     parts = np.split(np.array(exprs, dtype=object), np.cumsum(sizes)[:-1])
     assigned = [(a, e) for (a, _), e in zip(assigned, parts[0])]
     rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
-    relation_ops = [type(r).__name__ for r in modes.values()]
     zeros = set(reduced.structural_zeros)
     params = [p for p in reduced.parameters if _is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
-    code = generate(rows, z_syms, psyms, len(modes), crossings, assigned, outputs=syms)
-    init_code = generate(init_rows, z_syms, psyms, len(modes), None, assigned)
-    nominal = [_nominal(system, v) for v in caus.z]
-    cm = CompiledModel(code, [q.name for q in z_syms], [p.name for p in params],
-                       [float(p.value) for p in params], n_res, state_z, pairs, dummies,
-                       _dynamic(reduction) if reduction.dynamic else None, nominal,
-                       report=report,
-                       meta={"relations": relation_ops, "n_all": len(syms),
-                             "equation_names": [system.equations[e].name(system)
-                                                for e in caus.residual_eqs],
-                             "modes": modes, "causal": caus.causal,
-                             "structural_zeros": sorted(zeros)})
-    cm.outputs = _output_map(flat, aliases, {q: k for k, q in enumerate(syms)}, psyms)
-    cm.start = np.array([_start(system, v) for v in caus.z])
-    cm.initial_conditions = InitialConditions(init_code, init_text)
-    cm.initial_conditions.choose_rows(code, n_res, n_mandatory, reduction.n_states, cm.n)
-    cm.set_time_relations(*_time_relations(crossings, psyms))
+    dsyms = [d.symbol for d in discretes]
+    rel_list = list(modes.values())
+    code = generate(rows, z_syms, psyms, len(modes), crossings + [d.argument for d in discretes],
+                    assigned, outputs=syms, discretes=dsyms,
+                    scales=[sp.Abs(r.lhs) + sp.Abs(r.rhs) for r in rel_list])
+    init_code = generate(init_rows, z_syms, psyms, len(modes), None, assigned, discretes=dsyms)
+    names = [q.name for q in z_syms]
+    relations = RelationInfo(
+        ops=[type(r).__name__ for r in rel_list],
+        texts=[_relation_text(r, k, origin, system, caus, assigned, init_text, reduced)
+               for k, r in enumerate(rel_list)],
+        nominal=[_relation_nominal(system, g, assigned) for g in crossings],
+        discrete_texts=[d.text for d in discretes],
+        time_linear=_time_linear(crossings + [d.argument for d in discretes], assigned,
+                                 set(psyms) | set(dsyms)))
+    initial = InitialCode(init_code, init_text, choose_initial_rows(
+        code, init_code, n_res, n_mandatory, reduction.n_states, len(z_syms), init_text))
+    out = ModelCode(
+        code, names, [p.name for p in params], [float(p.value) for p in params], n_res,
+        state_z, pairs, dummies, [_nominal(system, v) for v in caus.z],
+        [_start(system, v) for v in caus.z],
+        _output_map(flat, aliases, {q: k for k, q in enumerate(syms)}, psyms),
+        relations, initial, report=report,
+        dynamic=_dynamic(reduction) if reduction.dynamic else None,
+        meta={"n_all": len(syms), "causal": caus.causal,
+              "assigned_names": [a.name for a, _ in assigned],
+              "equation_names": [system.equations[e].name(system) for e in caus.residual_eqs],
+              "structural_zeros": sorted(zeros)})
     if reduced.whens:
-        cm.set_whens(generate(when_rows, z_syms, psyms, len(modes), None, assigned),
-                     len(reduced.whens), targets, owners)
-    return cm
+        out.whens = WhenCode(generate(when_rows, z_syms, psyms, len(modes), None, assigned,
+                                      discretes=dsyms),
+                             len(reduced.whens), targets, owners,
+                             [f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} "
+                              f"({w.origin_class})]" for w in reduced.whens])
+    return out
 
 
-def _time_relations(crossings, psyms):
-    """Zero-crossing functions of time and parameters only (steps, ramps, pulses), as one
-    vectorized numpy function f(t_array, p) -> rows: their events are known in advance."""
+def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -> str:
+    """The relation as written, with the equation it is part of."""
+    i = origin[k]
+    n_a, n_r = len(assigned), len(caus.residual_eqs)
+    if i < n_a:
+        where = system.equations[caus.assignments[i][1]].name(system)
+    elif i < n_a + n_r:
+        where = system.equations[caus.residual_eqs[i - n_a]].name(system)
+    elif i - n_a - n_r - (len(caus.z[: caus.n_states]) if caus.causal else 0) < len(init_text):
+        where = "initial conditions"
+    else:
+        where = "a when-clause"
+    return f"{sp.sstr(rel)}  in {where}"
+
+
+def _relation_nominal(system, g, assigned) -> float:
+    """The largest nominal value among the variables a relation reads (1 if none is set):
+    the scale below which its value counts as zero."""
+    expr_of = dict(assigned)
+    seen, stack, noms = set(), list(g.free_symbols), [1.0]
+    while stack:
+        q = stack.pop()
+        if q in seen:
+            continue
+        seen.add(q)
+        info = system.var_info.get(q)
+        if info is not None and info.attrs.nominal:
+            noms.append(abs(float(info.attrs.nominal)))
+        if q in expr_of:
+            stack.extend(expr_of[q].free_symbols)
+    return max(noms)
+
+
+def _time_linear(items, assigned, frozen) -> list:
+    """Indices of the items (relations' lhs - rhs, floor arguments) that are functions of
+    time alone, linear in it, with coefficients of parameters and frozen values: their
+    next zero is known before the integrator gets there (exact time events)."""
     from ..components.symbols import time
-    allowed = set(psyms) | {time}
-    idx = [k for k, g in enumerate(crossings) if g.free_symbols <= allowed and g.has(time)]
-    if not idx:
-        return [], None
-    f = sp.lambdify([time, psyms], [crossings[k] + 0 * time for k in idx], modules="numpy")
-    return idx, f
+    explicit = {}
+    allowed = set(frozen) | {time}
+    for a, e in assigned:                     # assignments that depend on time alone
+        if e.free_symbols <= allowed | set(explicit):
+            explicit[a] = e.xreplace(explicit)
+    out = []
+    for k, g in enumerate(items):
+        if not g.free_symbols <= allowed | set(explicit):
+            continue
+        g = g.xreplace(explicit)
+        if not g.has(time) or g.has(sp.Piecewise):
+            continue
+        slope = sp.diff(g, time)
+        if not slope.has(time) and slope != 0:
+            out.append(k)
+    return out
+
+
+def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z,
+                        descriptions) -> np.ndarray:
+    """The mandatory initial rows, then those optional start-value rows (in state order)
+    that complete a perfect matching of [G; initial rows] onto z (Modelica's rule: start
+    values fix the states that nothing else determines)."""
+    from ..errors import InitializationFailed
+    from .structure import _match
+    keep = model_code.jac_rows < n_res
+    adj = _adjacency(model_code.jac_rows[keep], model_code.jac_cols[keep], n_res)
+    i_adj = _adjacency(init_code.jac_rows, init_code.jac_cols, init_code.n_rows)
+    adj += i_adj[:n_mandatory]
+    l2r, r2l = _match(adj, n_z)
+    if min(l2r, default=0) < 0:
+        bad = [descriptions[k - n_res] for k, v in enumerate(l2r) if v < 0 and k >= n_res]
+        raise InitializationFailed(
+            "the initial conditions contradict the model equations structurally "
+            "(they determine the same variables twice): " + "; ".join(bad or ["(model)"]))
+    chosen = list(range(n_mandatory))
+    for k in range(n_mandatory, init_code.n_rows):
+        if len(chosen) == n_states:
+            break
+        adj.append(i_adj[k])
+        l2r.append(-1)
+        if _augment(len(adj) - 1, adj, l2r, r2l):
+            chosen.append(k)
+        else:
+            adj.pop()
+            l2r.pop()
+    return np.array(chosen, dtype=np.int64)
+
+
+def _augment(root, adj, l2r, r2l) -> bool:
+    """One augmenting path from row ``root`` (iterative Kuhn search); flips it if found."""
+    seen, stack, parent = {root}, [(root, iter(adj[root]))], {}
+    while stack:
+        u, it = stack[-1]
+        v = next(it, None)
+        if v is None:
+            stack.pop()
+            continue
+        w = r2l[v]
+        if w < 0:
+            while True:             # flip the path back to the root
+                prev = l2r[u]
+                l2r[u], r2l[v] = v, u
+                if u == root:
+                    return True
+                u, v = parent[u], prev
+        if w not in seen:
+            seen.add(w)
+            parent[w] = u
+            stack.append((w, iter(adj[w])))
+    return False
+
+
+def _adjacency(rows, cols, n_rows) -> list:
+    adj = [[] for _ in range(n_rows)]
+    for r, c in zip(rows.tolist(), cols.tolist()):
+        adj[r].append(c)
+    return [sorted(set(a)) for a in adj]
 
 
 def _when_rows(whens, z_syms, caus, pairs):
@@ -162,21 +317,17 @@ def solve_linear(residual, x):
     return -residual.xreplace({x: 0}) / c
 
 
-def _dynamic(reduction) -> DynamicStateSelection:
+def _dynamic(reduction) -> DynamicSets:
     s = reduction.structure
     sel = reduction.selection
     level_rows = {r for rows, _ in sel.levels for r in rows}
     row_vars = {r: [v for v in s.graph[r] if s.diff_to_var[v] is not UNASSIGNED]
                 for r in level_rows}
-    weights = [_SELECT_WEIGHT[s.state_priority[s.diff_to_var[v]]]
-               if s.diff_to_var[v] is not UNASSIGNED else 1.0 for v in range(s.n_vars)]
-    return DynamicStateSelection(sel.levels, row_vars, list(s.var_to_diff),
-                                 list(s.diff_to_var), weights, s.var_names)
-
-
-# Column weights for the runtime choice of dummies: a large weight makes a column (the
-# derivative of a variable the user would rather not have as a state) a likely pivot.
-_SELECT_WEIGHT = {0: 1e6, 1: 1e2, 2: 1.0, 3: 1e-2, 4: 0.0}
+    priority = list(s.state_priority)
+    return DynamicSets([list(rows) for rows, _ in sel.levels], row_vars,
+                       [(-1 if d is UNASSIGNED else d) for d in s.var_to_diff],
+                       [(-1 if d is UNASSIGNED else d) for d in s.diff_to_var],
+                       priority, [s.order(v) for v in range(s.n_vars)], s.var_names)
 
 
 def _is_number(value) -> bool:
@@ -220,7 +371,7 @@ def _output_map(flat, aliases, index, psyms) -> dict:
 
 def _initial_rows(system, reduced, reduction, caus):
     """Initial equations and fixed starts (mandatory), then a start-value row for every
-    other state (optional: :func:`acausal.compiler.initial.choose_rows` keeps those that
+    other state (optional: :func:`choose_initial_rows` keeps those that
     make the initial system structurally nonsingular)."""
     rows = [e.residual for e in reduced.initial_equations]
     text = [f"initial equation {e.text} [{e.where}]" for e in reduced.initial_equations]
@@ -233,7 +384,7 @@ def _initial_rows(system, reduced, reduction, caus):
             text.append(f"{sym.name} = {info.attrs.start} (fixed start value) [{info.where}]")
             fixed.add(k)
     if len(rows) > needed:
-        from .initial import InitializationFailed
+        from ..errors import InitializationFailed
         raise InitializationFailed(
             f"the initial problem is over-specified: {len(rows)} initial conditions for "
             f"{needed} states ({', '.join(system.symbols[v].name for v in reduction.states)}); "

@@ -17,6 +17,9 @@ What a problem provides (numbered, so integrators can cite it)
    the iteration matrix (for sparse LU), or None for dense.
 5. ``algebraic``: bool mask, True where y'_i appears in no equation.
 6. ``nominal``: positive array; error weights use ``rtol*|y_i| + atol*nominal_i``.
+   Optional ``self_scaled``: bool mask of algebraic components without a nominal of
+   their own (derivatives solved as unknowns); the local error test gives them an
+   absolute term of at least ``rtol*max|y_i|`` seen so far.
 7. ``names``: the user's name of each y_i (for messages).
 8. Events (optional, ``n_roots > 0``): ``roots(t, y, yp) -> ndarray(n_roots)`` are the
    zero-crossing functions; while integrating, the discrete state (modes, relations) is
@@ -54,6 +57,19 @@ What a problem provides (numbered, so integrators can cite it)
    without an event; returning True means the problem changed its formulation (e.g.
    another choice of states), and the driver re-initializes and restarts the BDF
    there as after an event.
+12. ``reinitialize(t, y, yp, rtol=, atol=) -> (y, yp)`` (optional): the problem's own
+   consistent re-initialization after an event (it replaces ``YA_YDP_INIT``).
+13. Oriented roots and the discrete state (optional).  A problem with
+   ``oriented_roots = True`` returns zero-crossing functions that are >= 0 while its
+   discrete state agrees with the solution: the driver arms every one with reference
+   sign +1 (also where it is 0) and reports a crossing where one becomes negative; such a
+   problem settles its discrete state completely in ``handle_event`` (its own event
+   iteration), so the driver does not iterate on the functions' signs.  ``arm(t, y, yp, resolution)``
+   (optional) is called whenever the functions are (re)armed, with the time to within
+   which the driver locates a crossing.  ``discrete_state()``
+   (optional) returns a copy of the discrete state: the driver records, for every output
+   point, the state it was computed in (``SolverOutput.discrete_states`` and
+   ``discrete_index``), so that results are evaluated in the modes that were integrated.
 
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
@@ -72,6 +88,8 @@ from dataclasses import dataclass, field
 from typing import Sequence
 
 import numpy as np
+
+from ..errors import InitializationFailed, SimulationError
 
 __all__ = ["DAEProblem", "EventAction", "SolverStats", "SolverOutput", "SimulationError",
            "InitializationFailed"]
@@ -148,42 +166,8 @@ class SolverOutput:
     message: str
     stats: SolverStats
     event_times: list = field(default_factory=list)
-
-
-class SimulationError(RuntimeError):
-    """A simulation stopped before t_end.
-
-    Carries ``t`` (where it stopped), ``reason``, ``variables`` (the names that dominated
-    the error or the singular block, a best guess when so said) and ``partial`` (what
-    was computed so far: a SolverOutput, or a Result once the model layer wraps it).
-    """
-
-    def __init__(self, message: str, t: float | None = None,
-                 variables: Sequence[str] = (), partial=None):
-        super().__init__(message)
-        self.t = t
-        self.reason = message
-        self.variables = list(variables)
-        self.partial = partial
-
-
-class InitializationFailed(RuntimeError):
-    """No consistent initial values could be computed.
-
-    Carries ``t``, ``variables`` (names of the unknowns whose Newton corrections stayed
-    largest; derivatives are written ``der(x)``), ``equations`` (labels of the largest
-    remaining residuals, from ``problem.equation_names`` or ``"residual i"``) and
-    ``residual`` (the final residual vector).
-    """
-
-    def __init__(self, message: str, t: float | None = None,
-                 variables: Sequence[str] = (), equations: Sequence[str] = (),
-                 residual=None):
-        super().__init__(message)
-        self.t = t
-        self.variables = list(variables)
-        self.equations = list(equations)
-        self.residual = residual
+    discrete_states: list = field(default_factory=list)   # snapshots (item 13)
+    discrete_index: list = field(default_factory=list)    # per point: its snapshot
 
 
 def equation_label(problem: DAEProblem, i: int) -> str:

@@ -33,7 +33,13 @@ Orders 3-5 are not A-stable.  ``max_order`` (DASSL's ``maxord``) caps the order;
 on a weakly damped mode rather than by accuracy (Hindmarsh's stability limit
 detection, as in CVODE, where it is off by default too: :mod:`acausal.solvers.stald`).
 
-Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``; with
+Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``.  In the
+local error test an algebraic component the problem marks ``self_scaled`` (contract
+item 6: a derivative in y, which has no nominal of its own) is judged on its own scale:
+its absolute term is at least ``rtol * max|y_i|`` over the run so far (Simulink's
+"auto" absolute tolerance), in the error test and in the Newton convergence test -- a
+pressure rate of 1e9 Pa/s crossing zero would otherwise be held to an absolute
+1e-8 Pa/s and stall the step size.  Everything else keeps the plain rule.  With
 ``suppress_alg`` the algebraic components are left out of the error test (but not of
 the Newton convergence test), as IDA's ``suppressalg``.
 """
@@ -44,6 +50,7 @@ import math
 import numpy as np
 
 from .base import DAEProblem, SolverStats
+from .first_step import initial_step, probed_step
 from .linalg import LinearSolver, SingularMatrixError, make_linear_solver
 from .stald import StabilityLimitDetector
 
@@ -157,7 +164,8 @@ class BDF:
     def restart(self, t0: float, y0, yp0, first_step: float | None = None,
                 t_stop: float | None = None, probe: bool = False) -> None:
         """Start afresh at order 1 from a consistent point (after events); with
-        ``probe`` (and no ``first_step``) the first step comes from :meth:`_probe`."""
+        ``probe`` (and no ``first_step``) the first step is probed
+        (:func:`~acausal.solvers.first_step.probed_step`)."""
         if t_stop is not None:
             self.t_stop = float(t_stop)
         self.tn = float(t0)
@@ -166,11 +174,17 @@ class BDF:
         self.yp = np.array(yp0, dtype=float)
         self.phi[:] = 0.0
         self.phi[0] = self.y
+        # the problem's formulation may have changed since the last start (another
+        # choice of states): which components are algebraic is read again here
+        self._alg = np.asarray(self.problem.algebraic, bool).copy()
+        scaled = getattr(self.problem, "self_scaled", None)
+        self._self_scaled = np.zeros(self.n, bool) if scaled is None else \
+            np.asarray(scaled, bool) & self._alg
         self._update_weights()
-        h = self._initial_step() if first_step is None else float(first_step)
+        h = initial_step(self) if first_step is None else float(first_step)
         h = min(h, self.max_step, max(self.t_stop - self.tn, 0.0) or h)
         if probe and first_step is None and h > 0:
-            h = self._probe(h)
+            h = probed_step(self, h)
         self.phi[1] = h * self.yp
         self.hh, self.kk, self.kused, self.hused = h, 1, 0, 0.0
         self.psi[0] = h
@@ -184,51 +198,16 @@ class BDF:
         if self.stald is not None:
             self.stald.reset()
 
-    def _initial_step(self) -> float:
-        """IDA's first step: 0.001 of the interval, and at most 0.5/||y'0||_wrms."""
-        span = self.t_stop - self.tn if np.isfinite(self.t_stop) else 1.0
-        h = 1e-3 * abs(span) if span > 0 else 1e-6
-        ypnorm = self._wrms(self.yp, self.ewt_err)
-        if ypnorm > 0.5 / h:
-            h = 0.5 / ypnorm
-        return h
-
-    def _probe(self, h0: float) -> float:
-        """First step from one trial backward-Euler step of size ``h0``.
-
-        IDA's heuristic bounds only the first-order change ``h ||y'||``, while the
-        error of the first (order-1) step is ``h^2 ||y''|| / 2``: after an event at a
-        tight tolerance it starts far too small and the step then needs many doublings,
-        each with a new iteration matrix.  One corrector iteration from the predictor
-        ``(y + h0 y', y')`` gives the correction ``d ~ h0^2 y''`` for the differential
-        components (and ``h0 y'`` for the algebraic ones, whose derivative it also
-        supplies, so that the predictor of the real first step is second order too);
-        the step is then chosen for an error of about 1/8 of the tolerance, never
-        below ``h0`` nor above the IDA bound ``0.001 |t_stop - t|``.
-        """
-        p, st = self.problem, self.stats
-        t1, y1 = self.tn + h0, self.y + h0 * self.yp
-        try:
-            st.jacobian_evaluations += 1
-            st.lu_factorizations += 1
-            self.lin.factor(p.jacobian(t1, y1, self.yp, 1.0 / h0))
-            st.residual_evaluations += 1
-            d = -self.lin.solve(p.residual(t1, y1, self.yp))
-        except Exception:   # only an estimate: the real first step will report it
-            return h0
-        alg = np.asarray(p.algebraic, bool)
-        if alg.all() or not np.all(np.isfinite(d)):
-            return h0
-        dif_err = self._wrms(np.where(alg, 0.0, d), self.ewt)
-        self.yp = self.yp + np.where(alg, d / h0, 0.0)
-        span = self.t_stop - self.tn if np.isfinite(self.t_stop) else np.inf
-        # y'' = 0 (a linear stretch): only the IDA interval bound applies
-        h = 0.5 * h0 / math.sqrt(dif_err) if dif_err > 0.0 else np.inf
-        return float(max(min(h, 1e-3 * span, self.max_step), h0))
-
     def _update_weights(self) -> None:
-        self.ewt = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
-        self.ewt_err = self.ewt if self.err_mask is None else self.ewt * self.err_mask
+        y = np.abs(self.phi[0])
+        peak = getattr(self, "_peak", None)
+        self._peak = y.copy() if peak is None or peak.shape != y.shape else np.maximum(peak, y)
+        floor = np.where(self._self_scaled, np.maximum(self.atol, self.rtol * self._peak),
+                         self.atol)
+        self.ewt = 1.0 / (self.rtol * y + floor)
+        self.ewt_err = self.ewt.copy()
+        if self.err_mask is not None:
+            self.ewt_err *= self.err_mask
 
     @staticmethod
     def _wrms(v: np.ndarray, w: np.ndarray) -> float:
@@ -317,15 +296,35 @@ class BDF:
                 fresh = True
             ok, ee, last = self._corrector_loop(tnew, ypred, yppred, cj)
             if ok:
+                if self.cjratio != 1.0 and self._alg.any():
+                    ee = self._unscaled_correction(tnew, ypred, yppred, cj, ee)
                 return ee
             if fresh:
                 raise _NewtonFail(last)
             call_setup = True   # a stale matrix may be the cause: retry with a new one
 
+    def _unscaled_correction(self, tnew, ypred, yppred, cj, ee):
+        """One more Newton correction, not scaled.  The rows of an algebraic equation do
+        not contain cj, so in them the stale matrix is exact and an unscaled correction
+        satisfies a linear constraint exactly; the scaled ones leave it off by the factor
+        2/(1+cjratio) times the last correction, at every step (a Dirichlet row
+        u0 - 1 = 0 drifting off 1 by a few rtol, and dense and sparse LU steering on
+        that noise differently)."""
+        self.stats.residual_evaluations += 1
+        self.stats.newton_iterations += 1
+        delta = self.lin.solve(self.problem.residual(tnew, ypred + ee, yppred + cj * ee))
+        if np.all(np.isfinite(delta)):
+            ee = ee - delta
+        return ee
+
     def _corrector_loop(self, tnew, ypred, yppred, cj):
         st = self.stats
         F = self.problem.residual
         ewt = self.ewt
+        # IDA's scalesol: with a matrix factored at cjold, the correction of a
+        # differential component is about cjold/cj too large, which 2/(1+cjratio)
+        # corrects (on the whole correction: scaling only part of a coupled correction
+        # distorts it, and leaves lightly damped modes undamped)
         scale = 2.0 / (1.0 + self.cjratio) if self.cjratio != 1.0 else 1.0
         ee = None
         oldnrm = 0.0
@@ -457,7 +456,14 @@ class BDF:
                                   f"t={saved_t:.17g} (h={self.hh:.3g})", saved_t,
                                   self.hh, self._last_fail)
             self.kmax = self.max_order   # lift a stability cap: this order fails accuracy
-            if nef == 1:
+            if self.nst == 0:
+                # the first step, order 1 from a consistent point: its error is
+                # h^2 |y''| / 2 to leading order, so the estimate says how far to cut
+                # (IDA's floor of 1/4 per failure would need ~10 failures to recover
+                # from a first step 1e5 too large, when y'(t0) = 0 but y'' is not)
+                rr = 0.9 * (2.0 * err_k + 1e-4) ** -0.5
+                self._shrink(max(1e-3, min(0.9, rr)))
+            elif nef == 1:
                 self.kk = knew
                 err_knew = err_k if knew == kk else err_km1
                 rr = 0.9 * (2.0 * err_knew + 1e-4) ** (-1.0 / (self.kk + 1))

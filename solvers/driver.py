@@ -2,7 +2,8 @@
 
 :func:`integrate` owns everything that is not a BDF step:
 
-* consistent initialization (:mod:`acausal.solvers.initialization`);
+* consistent initialization (:mod:`acausal.solvers.initialization`, or the problem's
+  own ``reinitialize`` after events, contract item 12);
 * state events: after each accepted step the zero-crossing functions are compared with
   their signs at the previous point; a change is located on the BDF interpolant by the
   Illinois variant of regula falsi over all crossing functions at once, as IDA's
@@ -136,7 +137,12 @@ class _Run:
         te = sorted({float(x) for x in getattr(problem, "time_events", ()) or ()})
         self.time_events = [x for x in te if self.t0 < x < self.tf]
         self.n_roots = int(getattr(problem, "n_roots", 0) or 0)
+        self.oriented = bool(getattr(problem, "oriented_roots", False))
         self.bdf_options = {}
+        # the discrete state of every output point (contract item 13): snapshots taken
+        # when it may have changed, and for each point the snapshot it was computed in
+        self.keeps_discrete = callable(getattr(problem, "discrete_state", None))
+        self.snapshots, self.snapshot_of = [], []
 
     # ------------------------------------------------------------------ main loop
     def go(self, y0, yp0, first_step, initialize) -> SolverOutput:
@@ -145,12 +151,13 @@ class _Run:
         yp = np.zeros(p.n) if yp0 is None else np.array(yp0, dtype=float)
         if initialize:
             y, yp = consistent_initial(p, self.t0, y, yp, rtol=self.rtol, atol=self.atol)
+        self._snapshot()
         self._emit_point(self.t0, y, yp)
+        self._arm_roots(self.t0, y, yp)
         self.solver = BDF(p, self.t0, y, yp, rtol=self.rtol, atol=self.atol,
                           max_step=self.max_step, first_step=first_step,
                           suppress_alg=self.suppress_alg, t_stop=self._next_stop(self.t0),
                           stats=self.stats, **self.bdf_options)
-        self._arm_roots(self.t0, y, yp)
         while self.solver.t < self.tf:
             stop = self._advance()
             if stop is not None:
@@ -186,8 +193,9 @@ class _Run:
             hit = self._find_crossing()
             if hit is not None:
                 return self._state_event(*hit)
-        self._emit_step(s.t_prev, s.t, s.y, s.yp)
-        if s.t < self.tf and s.t == s.t_stop:
+        at_event = s.t < self.tf and s.t == s.t_stop
+        self._emit_step(s.t_prev, s.t, s.y, s.yp, before_event=at_event)
+        if at_event:
             return self._time_event(s.t)
         self._after_step(s)
         return None
@@ -212,15 +220,19 @@ class _Run:
                     self._append(t, y, yp)
                 self.i_eval += 1
 
-    def _emit_step(self, t_lo, t_hi, y_hi, yp_hi) -> None:
-        """Output for the accepted interval (t_lo, t_hi]."""
+    def _emit_step(self, t_lo, t_hi, y_hi, yp_hi, snapshot=None, before_event=False) -> None:
+        """Output for the accepted interval (t_lo, t_hi] (computed in ``snapshot``,
+        default the current discrete state).  A requested time exactly at an event that
+        ends the interval is left for the point after the event (results are
+        right-continuous, as a relation ``time >= t_e`` says)."""
         if self.t_eval is None:
-            self._append(t_hi, y_hi, yp_hi)
+            self._append(t_hi, y_hi, yp_hi, snapshot)
             return
         ev, s = self.t_eval, self.solver
-        while self.i_eval < ev.size and ev[self.i_eval] <= t_hi:
+        while self.i_eval < ev.size and (ev[self.i_eval] < t_hi or (
+                ev[self.i_eval] == t_hi and not before_event)):
             if ev[self.i_eval] >= t_lo:
-                self._append(ev[self.i_eval], *s.interpolate(ev[self.i_eval]))
+                self._append(ev[self.i_eval], *s.interpolate(ev[self.i_eval]), snapshot)
             self.i_eval += 1
 
     def _emit_eval_rest(self) -> None:
@@ -230,11 +242,20 @@ class _Run:
                 self._append(self.t_eval[self.i_eval], self.solver.y, self.solver.yp)
                 self.i_eval += 1
 
-    def _append(self, t, y, yp) -> None:
+    def _append(self, t, y, yp, snapshot=None) -> None:
         # the solver hands out fresh arrays for every point, so no copies are needed
         self.ts.append(float(t))
         self.ys.append(y)
         self.yps.append(yp)
+        if self.keeps_discrete:
+            self.snapshot_of.append(len(self.snapshots) - 1 if snapshot is None else snapshot)
+
+    def _snapshot(self) -> None:
+        """Record the problem's discrete state (it may have changed at an event)."""
+        if self.keeps_discrete:
+            state = self.problem.discrete_state()
+            if not self.snapshots or not np.array_equal(self.snapshots[-1], state):
+                self.snapshots.append(state)
 
     def _output(self, success: bool, message: str) -> SolverOutput:
         n = self.problem.n
@@ -244,7 +265,8 @@ class _Run:
         y = np.array(self.ys) if self.ys else np.empty((0, n))
         yp = np.array(self.yps) if self.yps else np.empty((0, n))
         return SolverOutput(np.array(self.ts), y, yp, success, message, self.stats,
-                            list(self.event_times))
+                            list(self.event_times), list(self.snapshots),
+                            list(self.snapshot_of))
 
     # ------------------------------------------------------------------ failures
     def _error(self, message, t, variables) -> SimulationError:
@@ -284,16 +306,21 @@ class _Run:
     def _arm_roots(self, t, y, yp) -> None:
         """Reference signs after a (re)start.
 
-        A function that is exactly zero stays unarmed until a step ends where it is
-        not.  A function that has just crossed sits a little beyond zero (the event is
-        placed at the far end of the final bracket), so if the new dynamics take it
+        Oriented functions (contract item 8) are >= 0 while the problem's discrete state
+        holds, so every one is armed with reference sign +1, also where it is zero.
+        Otherwise a function that is exactly zero stays unarmed until a step ends where
+        it is not.  A function that has just crossed sits a little beyond zero (the event
+        is placed at the far end of the final bracket), so if the new dynamics take it
         straight back, that is a genuine crossing and is reported as such, as a
         relation changing back would be in Modelica semantics.
         """
         if not self.n_roots:
             return
+        arm = getattr(self.problem, "arm", None)
+        if arm is not None:
+            arm(t, y, yp, self._ttol(t))
         g0 = self._signed_roots(t, y, yp)
-        self.sign_ref = np.sign(g0)
+        self.sign_ref = np.ones_like(g0) if self.oriented else np.sign(g0)
         self.g_prev = g0
 
     def _ttol(self, t: float) -> float:
@@ -341,6 +368,7 @@ class _Run:
         s = self.solver
         y, yp = s.interpolate(t_e)
         t_prev = s.t_prev
+        before = len(self.snapshots) - 1
         y_new, yp_new, action, changed = self._iterate_event(t_e, y, yp, crossed)
         # A relation flipping straight back after the previous event (a ball leaving
         # the floor, a heater's threshold left behind) changes nothing: it is the same
@@ -348,7 +376,7 @@ class _Run:
         echo = (not changed and not action.stop and bool(self.event_times)
                 and t_e - self.event_times[-1] <= _ECHO_TTOLS * self._ttol(t_e))
         if not (echo and self.t_eval is None):
-            self._emit_step(t_prev, t_e, y, yp)
+            self._emit_step(t_prev, t_e, y, yp, snapshot=before, before_event=True)
         if changed:
             # only events that change something can chatter
             self.state_event_times.append(t_e)
@@ -367,6 +395,10 @@ class _Run:
             self.event_times.append(t_e)
             if self.t_eval is None:
                 self._append(t_e, y, yp)
+        if self.t_eval is not None:          # requested times at the event: after it
+            while self.i_eval < self.t_eval.size and self.t_eval[self.i_eval] <= t_e:
+                self._append(self.t_eval[self.i_eval], y, yp)
+                self.i_eval += 1
         if action.stop:
             return action.message or f"stopped by the model at t={t_e:.10g}"
         self.solver.restart(t_e, y, yp, t_stop=self._next_stop(t_e), probe=True)
@@ -385,7 +417,10 @@ class _Run:
                 y = np.array(action.y, dtype=float)
             if changed:
                 y, yp = self._reinit(t, y, yp)
-            if action.stop or not changed or not self.n_roots:
+            if changed:
+                self._snapshot()
+            # a problem with oriented roots does its own event iteration (item 13)
+            if action.stop or not changed or not self.n_roots or self.oriented:
                 return y, yp, action, any_change
             g_after = self._signed_roots(t, y, yp)
             crossed = (np.sign(g_after) != np.sign(g_before)) & (g_before != 0)
@@ -397,7 +432,10 @@ class _Run:
                           f"state keeps changing)", t, ())
 
     def _reinit(self, t, y, yp):
+        own = getattr(self.problem, "reinitialize", None)
         try:
+            if own is not None:
+                return own(t, y, yp, rtol=self.rtol, atol=self.atol)
             return reinitialize(self.problem, t, y, yp, rtol=self.rtol, atol=self.atol)
         except InitializationFailed as exc:
             raise self._error(f"re-initialization after the event at t={t:.10g} "

@@ -1,9 +1,11 @@
 """Time signals as expressions, shared by signal sources of every domain.
 
-Each function returns a symbolic expression of ``time``; its relations become zero
-crossings (events), so steps and pulse edges are located exactly.  The pulse uses a
-smooth crossing function, ``cos(theta - pi w) - cos(pi w)`` with theta the phase, which
-changes sign at both edges of every period without any ``mod``.
+Each function returns a symbolic expression of ``time``.  Its relations are linear in
+time between events, so the runtime knows every edge before the integrator reaches it
+(exact time events, :mod:`acausal.runtime.modes`): a step, the corners of a ramp, and
+both edges of every pulse, however short the pulse and however long the run.  The pulse
+reads its phase through ``mod`` (a frozen floor value, Modelica semantics), which
+switches at the start of every period.
 """
 import sympy as sp
 
@@ -31,7 +33,9 @@ def sine(amplitude, f, phase, start):
 
 def pulse(amplitude, width, period, start):
     """Rectangular pulses: ``amplitude`` during the first fraction ``width`` of every
-    ``period`` after ``start``, 0 otherwise (0 < width < 1)."""
-    theta = 2 * sp.pi * (ac.time - start) / period
-    high = sp.cos(theta - sp.pi * width) >= sp.cos(sp.pi * width)
-    return ac.if_else(ac.time >= start, ac.if_else(high, amplitude, 0), 0)
+    ``period`` after ``start``, 0 otherwise (0 < width < 1)::
+
+        phase = mod(time - start, period),   high while phase < width * period
+    """
+    phase = sp.Mod(ac.time - start, period)
+    return ac.if_else(ac.time >= start, ac.if_else(phase < width * period, amplitude, 0), 0)

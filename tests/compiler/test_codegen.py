@@ -33,9 +33,11 @@ def test_chain_rule_through_assignments():
 
 def test_relations_become_modes_and_zero_crossings():
     x = sp.Symbol("x")
-    exprs, crossings, modes = extract_relations([sp.Piecewise((1, x > 2), (0, True))])
+    exprs, crossings, modes, origin = extract_relations(
+        [x, sp.Piecewise((1, x > 2), (0, True))])
     assert crossings == [x - 2] and len(modes) == 1
-    assert not exprs[0].has(sp.StrictGreaterThan)
+    assert origin == [1]              # the relation comes from the second expression
+    assert not exprs[1].has(sp.StrictGreaterThan)
 
 
 def test_compiled_jacobian_matches_finite_differences():
@@ -61,7 +63,9 @@ def test_squares_and_reciprocals_in_products_print_with_parentheses():
     x, a = sp.symbols("x a")
     code = generate([3 * x / a**2 - 1 / (x * a)], [x], [a])
     val = code.residual(0.0, np.array([2.0]), np.array([5.0]), [], np.empty(1))[0]
-    assert val == pytest.approx(3 * 2.0 / 25.0 - 1 / 10.0, rel=1e-15)
+    # the printer may order the operations as it likes (a few roundings); the misprint
+    # x/a*a would give 5.9 instead of 0.14
+    assert val == pytest.approx(3 * 2.0 / 25.0 - 1 / 10.0, rel=1e-12)
 
 
 def test_power_rule_is_finite_where_the_base_vanishes():
@@ -69,4 +73,4 @@ def test_power_rule_is_finite_where_the_base_vanishes():
     x = sp.Symbol("x")
     code = generate([(x - 1) ** sp.Rational(3, 2)], [x], [])
     val = code.jacobian(0.0, np.array([1.0]), np.array([]), [], np.empty(1))[0]
-    assert val == 0.0
+    assert val == 0.0        # exact: u = 1 - 1 = 0 and sqrt(0) = 0 in IEEE arithmetic

@@ -83,6 +83,6 @@ def test_result_csv_and_names(tmp_path):
     res.to_csv(path, names=["C1.v"])
     data = np.loadtxt(path, delimiter=",", skiprows=1)
     assert data.shape == (11, 2) and np.allclose(data[:, 1], res["C1.v"])
-    assert res.stats["steps"] > 0
+    assert res.stats["steps"] > 0            # the statistics are reported (any run steps)
     with pytest.raises(KeyError, match="C1.vv"):
         res["C1.vv"]

@@ -106,14 +106,17 @@ def test_two_inertias_through_ideal_gear_reflected_inertia():
     assert not rep.state_sets                  # the constraint is linear: a global choice
     assert len(compiled.states) == 2           # one position and one speed
     t = np.linspace(0, 2, 41)
-    res = ac.simulate(compiled, t_end=2.0, rtol=1e-8, t_eval=t)
+    # phi starts at 0: its error is controlled by atol there, so ask for an atol that
+    # makes the relative comparison below meaningful from the first output point on
+    res = ac.simulate(compiled, t_end=2.0, rtol=1e-8, atol=1e-12, t_eval=t)
     a1 = 2.0 / (0.5 + 3.0 / 4.0**2)            # (J1 + J2/n^2) dw1/dt = T
     assert np.allclose(res["J1.phi"], 0.5 * a1 * t**2, rtol=1e-7, atol=1e-12)
     assert np.allclose(res["J2.phi"], 0.5 * a1 * t**2 / 4.0, rtol=1e-7, atol=1e-12)
     # power in = power out through the gear
     p_a = res["gear.flange_a.tau"] * res["J1.w"]
     p_b = res["gear.flange_b.tau"] * res["J2.w"]
-    assert np.allclose(p_a + p_b, 0.0, atol=1e-9)
+    # a sum of two powers that cancel: judged on the size of the power transmitted
+    assert np.max(np.abs(p_a + p_b)) < 1e-9 * np.max(np.abs(p_a))
 
 
 class CapacitorOnSource(ac.Component):

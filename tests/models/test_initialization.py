@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.initial import InitializationFailed
+from acausal import InitializationFailed
 from acausal.library import rotational as rot
 from acausal.library.electrical import ConstantVoltage, Ground
 from acausal.library.electromechanical import DCMotor

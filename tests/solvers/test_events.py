@@ -16,14 +16,15 @@ def test_bounce_times_match_closed_form():
     t_exact = ball.bounce_times(10.0, 4)
     assert len(out.event_times) == 4
     np.testing.assert_allclose(out.event_times, t_exact, rtol=0, atol=1e-8)
-    # each event appears before and after: same time, velocity reversed and damped
+    # each event appears before and after: same time (the located time, stored twice,
+    # so == is exact), velocity reversed and damped
     for te in out.event_times:
         k = np.flatnonzero(out.t == te)
         assert k.size == 2
         v_before, v_after = out.y[k[0], 1], out.y[k[1], 1]
         assert v_before < 0 and v_after == pytest.approx(-0.8 * v_before, rel=1e-12)
     assert out.y[:, 0].min() > -1e-8        # the ball never goes through the floor
-    assert out.stats.events == 4
+    assert out.stats.events == 4            # the bounces in [0, 8]: fixed by the physics
 
 
 def test_bouncing_ball_t_eval_output():
@@ -96,9 +97,12 @@ class StepInput(DAEProblem):
 
 def test_time_event_stops_exactly_and_restarts():
     out = integrate(StepInput(), (0.0, 3.0), [0.0], rtol=1e-8, atol=1e-10)
-    assert out.event_times == [1.0]
+    assert out.event_times == [1.0]         # a listed time is hit exactly, not located
     k = np.flatnonzero(out.t == 1.0)
-    assert k.size == 2 and out.yp[k[0], 0] == 0.0 and out.yp[k[1], 0] == 1.0
+    # before the edge y and y' are sums of zeros, hence exactly 0; after it y' = u comes
+    # out of the re-initialization's linear solve: 1 to rounding
+    assert k.size == 2 and out.yp[k[0], 0] == 0.0
+    assert out.yp[k[1], 0] == pytest.approx(1.0, rel=1e-12)
     np.testing.assert_allclose(out.y[:, 0], np.maximum(out.t - 1.0, 0.0), atol=1e-9)
 
 
@@ -245,5 +249,7 @@ class PulseIntegral(DAEProblem):
 def test_next_time_event_drives_periodic_edges():
     out = integrate(PulseIntegral(), (0.0, 1.0), [0.0], rtol=1e-10, atol=1e-12)
     edges = [0.1, 0.175, 0.35, 0.425, 0.6, 0.675, 0.85, 0.925]
-    np.testing.assert_allclose(out.event_times, edges, atol=1e-14)
+    # the driver stops at the times next_time_event computes, which differ from these
+    # literals by the rounding of start + (j + e) period
+    np.testing.assert_allclose(out.event_times, edges, rtol=1e-12, atol=0)
     assert out.y[-1, 0] == pytest.approx(2.0 * 4 * 0.075, abs=1e-10)

@@ -1,0 +1,105 @@
+"""What the compiler hands to the runtime: generated code and name maps, nothing that runs.
+
+:func:`acausal.compiler.pipeline.compile_model` returns a :class:`ModelCode`; the runtime
+(:class:`acausal.runtime.CompiledModel`) is built from it.  Everything here is plain data
+(arrays, lists, names) or generated functions of ``(t, z, p, m, out)``; the compiler never
+imports the solvers, and the runtime never sees sympy.
+
+The solver vector ``z`` (see the README's design section): in the causal form the states
+(first ``n_states`` entries) and the tearing variables; in the full form every variable.
+``m`` is the discrete state: ``n_relations`` relation values (1.0 true, 0.0 false) followed
+by ``n_discrete`` frozen floor values.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["ModelCode", "RelationInfo", "WhenCode", "DynamicSets", "InitialCode"]
+
+
+@dataclass
+class RelationInfo:
+    """The relations of discontinuous expressions and the frozen floor values.
+
+    ``ops[k]``: the sympy class name of relation k (``StrictGreaterThan``, ``GreaterThan``,
+    ``StrictLessThan``, ``LessThan``); ``texts[k]``: the relation as written, with the
+    component it comes from; ``nominal[k]``: the largest nominal value of the variables in
+    it (the floor of its own scale).  ``discrete_texts[j]``: ``floor(u)`` as written.
+    ``time_linear``: indices into the roots rows (relations, then floor arguments) of the
+    items that are linear in time with coefficients frozen between events: their next
+    crossing is known in advance (time events).
+    """
+
+    ops: list = field(default_factory=list)
+    texts: list = field(default_factory=list)
+    nominal: list = field(default_factory=list)
+    discrete_texts: list = field(default_factory=list)
+    time_linear: list = field(default_factory=list)
+
+    @property
+    def n_relations(self) -> int:
+        return len(self.ops)
+
+    @property
+    def n_discrete(self) -> int:
+        return len(self.discrete_texts)
+
+
+@dataclass
+class WhenCode:
+    """When-clauses: rows ``0..n_when-1`` of ``code`` are the conditions (1/0), then one
+    reinit value per action, applied to ``z[targets[k]]`` when clause ``owners[k]`` fires."""
+
+    code: object
+    n_when: int
+    targets: list
+    owners: list
+    texts: list
+
+
+@dataclass
+class DynamicSets:
+    """Data for dynamic state selection (see :mod:`acausal.runtime.dynamic`): the level
+    rows, the derivative variables in each row, the derivative maps (-1: none), each
+    variable's state_select priority (0 never .. 4 always) and derivative order."""
+
+    levels: list
+    row_vars: dict
+    var_to_diff: list
+    diff_to_var: list
+    priority: list
+    orders: list
+    names: list
+
+
+@dataclass
+class InitialCode:
+    """Initial-condition rows over z; ``rows`` are those kept (mandatory rows, then the
+    start-value rows a structural matching chose), ``descriptions`` label every row."""
+
+    code: object
+    descriptions: list
+    rows: np.ndarray
+
+
+@dataclass
+class ModelCode:
+    code: object                      # GeneratedCode: residual, jacobian, roots, scales, expand
+    names: list                       # name of each z entry
+    param_names: list
+    param_values: list
+    n_res: int                        # rows of the model equations proper
+    state_z: list                     # causal form: the states, der(s) computed by the code
+    pairs: list                       # full form: (s, der(s)) links
+    dummies: list                     # full form: derivative variables without a link
+    nominal: list
+    start: list
+    outputs: dict                     # every variable's name -> (sign, index into expand)
+    relations: RelationInfo
+    initial: InitialCode
+    whens: WhenCode | None = None
+    dynamic: DynamicSets | None = None
+    report: object = None
+    meta: dict = field(default_factory=dict)

@@ -1,0 +1,41 @@
+"""The runtime layer: a compiled model running, between the generated code and the solvers.
+
+The compiler (:mod:`acausal.compiler`) emits code and name maps
+(:class:`~acausal.compiler.modelcode.ModelCode`) and never imports the solvers; the
+solvers (:mod:`acausal.solvers`) integrate a :class:`~acausal.solvers.base.DAEProblem`
+and never see names.  Everything a model needs while it runs lives here, in one place:
+
+What the runtime provides (numbered, so the code can cite it)
+--------------------------------------------------------------
+1. ``CompiledModel`` (:mod:`.model`): the DAEProblem of the solver contract (residual,
+   iteration matrix, pattern, algebraic mask, nominal values, names), built from the
+   ModelCode, with the user's parameter values ``p`` (``set_parameters`` by name).
+2. The discrete state (:mod:`.modes`): relation values and frozen floor values, changed
+   only at events.  Each relation is judged on its own scale.  The zero-crossing
+   functions given to the integrator are *oriented* (``oriented_roots = True``): they
+   are >= 0 while the discrete state agrees with the solution, with a hysteresis in the
+   relation's own units frozen when the driver arms them (``arm``).
+3. Events (``handle_event``): what crossed takes its value just after the event (the
+   side the dynamics choose where a relation sits at zero); contradicted relations are
+   settled (event iteration); when-clauses (:mod:`.events`) fire on their false -> true
+   edge and re-initialize states.
+4. Time events (``next_time_event``): relations and floor values of time alone that are
+   linear in time between events (steps, ramps, pulses, samplers) switch at times known
+   in advance; the integrator lands on them exactly.  They also stay in the
+   zero-crossing functions: no relation is ever left out of the search.
+5. Dynamic state selection (:mod:`.dynamic`, ``after_step``): dummy derivatives re-chosen
+   by scaled pivoting where the structural choice is only locally valid.
+6. Initialization, one path (:mod:`.initial`): ``initialize(t0)`` gives consistent
+   (z, z') -- initial equations, fixed starts, start values of the free states, relations
+   settled by a fixed point, and z' of *every* unknown; ``reinitialize`` does the same
+   after an event with the states kept.  ``simulate``, the analyses and exports all use
+   it.
+7. The discrete state of every output point (``discrete_state``/``set_discrete_state``):
+   results are evaluated in the modes the integrator used there, never recomputed.
+8. Failures in the generated code (a ``sqrt`` of a negative, a division by zero) make
+   the point unusable (NaN, which Newton and the integrator treat as a failed iterate)
+   and are kept in words in ``evaluation_errors``, naming the equation.
+"""
+from .model import CompiledModel
+
+__all__ = ["CompiledModel"]

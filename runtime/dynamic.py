@@ -1,0 +1,163 @@
+"""Dynamic state selection: dummy derivatives re-chosen numerically while the model runs.
+
+Mattsson, Olsson & Elmqvist, "Dynamic selection of states in Dymola", Modelica Workshop
+2000, on the levels of Mattsson & Söderlind's dummy-derivative procedure (SIAM J. Sci.
+Comput. 14(3), 1993).  The levels are fixed by the structure: level 1 rows are the tops
+of the differentiated equation chains, each next level the equations they were
+differentiated from; a level's candidate columns are the highest derivatives (level 1)
+or the antiderivatives of the dummies picked one level up (MS93 step 3).
+
+Which candidates become dummies is decided on the level's Jacobian block, *scaled*:
+
+    B = D_r  J_level  D_c,    (D_c)_jj = nominal_b(j),
+
+with ``nominal_b(j)`` the nominal value of the base variable whose derivative chain
+column j belongs to (picking column j as a dummy makes that variable algebraic) and D_r
+scaling every row to a largest entry of one, so that neither the units of an equation
+nor those of a variable decide.  Columns are picked greedily, Businger-Golub style (QR
+with column pivoting: the column of largest remaining norm, then orthogonalization);
+among columns within ``TIE`` of the largest, the user's state_select hint decides (a
+variable to avoid as a state is a dummy first), then the derivative order (a
+higher-order antiderivative becomes the dummy, so declared positions and speeds stay
+states, and a rod's elongation is not computed as the difference of its end positions),
+then the column norm.  (Scaling columns by the variables' current magnitudes was tried
+and rejected: a velocity passing through zero then flips the choice for no geometric
+reason, and a double pendulum switched 34 times instead of twice.)
+
+Hysteresis: the current dummies are kept unless the best choice is clearly better
+conditioned (|det| of the scaled block), and the search runs again only when the current
+choice's quality -- |det| of its columns over the product of the norms of the whole
+rows, a Hadamard ratio that sees a row's chosen entries shrink next to its alternatives
+-- has fallen to half its value at the last search.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["DynamicStateSelection"]
+
+TIE = 0.5              # columns within this factor of the best count as tied
+_DEGRADED = 0.5        # search again once the Hadamard ratio has halved since the last one
+_ALWAYS = 4            # state_select index of "always" (never a dummy)
+
+
+class DynamicStateSelection:
+    """The run-time choice of dummy derivatives (module docstring).
+
+    Parameters
+    ----------
+    sets : acausal.compiler.modelcode.DynamicSets
+    nominal : array of the nominal value of every variable (full form: z is every
+        variable, so indices agree).
+    """
+
+    def __init__(self, sets, nominal):
+        self.levels = [list(rows) for rows in sets.levels]
+        self.row_vars = sets.row_vars
+        self.var_to_diff = list(sets.var_to_diff)
+        self.diff_to_var = list(sets.diff_to_var)
+        self.priority = list(sets.priority)
+        self.orders = list(sets.orders)
+        self.names = sets.names
+        self.nominal = np.asarray(nominal, dtype=float)
+        self.base = self._bases()
+        self.switches = []                    # (time, new dummies)
+        self.entry = {}
+        self._reference = []
+
+    def _bases(self) -> list:
+        out = []
+        for v in range(len(self.var_to_diff)):
+            b = v
+            while self.diff_to_var[b] >= 0:
+                b = self.diff_to_var[b]
+            out.append(b)
+        return out
+
+    def bind(self, jac_rows, jac_cols) -> None:
+        """Locate the level blocks in the generated Jacobian's value array (once)."""
+        wanted = {r for rows in self.levels for r in rows}
+        self.entry = {(int(r), int(c)): k for k, (r, c) in enumerate(zip(jac_rows, jac_cols))
+                      if r in wanted}
+
+    def choose(self, vals, z, current: set, hysteresis: float) -> set:
+        """The dummies for Jacobian values ``vals`` (at the point z): ``current`` unless
+        clearly worse."""
+        scale = self.nominal
+        ratios = [_quality(b, keep) for b, _, keep in self._blocks(vals, scale, current)]
+        if current and len(ratios) == len(self._reference) and all(
+                r >= _DEGRADED * r0 for r, r0 in zip(ratios, self._reference)):
+            return current
+        dummies, allowed = set(), None
+        for rows in self.levels:
+            cols = self._columns(rows, allowed)
+            block = self._block(vals, scale, rows, cols)
+            pick = self._pivot(block, cols, len(rows))
+            keep = [k for k, c in enumerate(cols) if c in current]
+            if len(keep) == len(rows) and _well_enough(block, keep, pick, hysteresis):
+                pick = keep
+            chosen = [cols[k] for k in pick]
+            dummies.update(chosen)
+            allowed = {self.diff_to_var[c] for c in chosen}
+        self._reference = [_quality(b, keep) for b, _, keep in self._blocks(vals, scale, dummies)]
+        return dummies
+
+    def _columns(self, rows, allowed):
+        return sorted({v for r in rows for v in self.row_vars[r]
+                       if (v in allowed if allowed is not None else self.var_to_diff[v] < 0)})
+
+    def _block(self, vals, scale, rows, cols):
+        block = np.zeros((len(rows), len(cols)))
+        for i, r in enumerate(rows):
+            for j, c in enumerate(cols):
+                k = self.entry.get((r, c))
+                if k is not None:
+                    block[i, j] = vals[k] * scale[self.base[c]]
+        peak = np.abs(block).max(axis=1, keepdims=True)
+        return block / np.where(peak > 0, peak, 1.0)
+
+    def _pivot(self, block, cols, k) -> list:
+        """Greedy column pivoting with the preference order of the module docstring."""
+        R = block.copy()
+        free = [j for j, c in enumerate(cols) if self.priority[self.diff_to_var[c]] < _ALWAYS]
+        chosen = []
+        for _ in range(k):
+            norms = {j: float(np.linalg.norm(R[:, j])) for j in free if j not in chosen}
+            if not norms:
+                break
+            best = max(norms.values())
+            tied = [j for j, n in norms.items() if n >= TIE * best and n > 0]
+            if not tied:
+                tied = list(norms)
+            j = min(tied, key=lambda j: (self.priority[self.diff_to_var[cols[j]]],
+                                         -self.orders[self.diff_to_var[cols[j]]],
+                                         -norms[j], j))
+            chosen.append(j)
+            q = R[:, j] / (np.linalg.norm(R[:, j]) or 1.0)
+            R -= np.outer(q, q @ R)
+        return sorted(chosen)
+
+    def _blocks(self, vals, scale, dummies):
+        allowed = None
+        for rows in self.levels:
+            cols = self._columns(rows, allowed)
+            keep = [k for k, c in enumerate(cols) if c in dummies]
+            if len(keep) != len(rows):
+                yield np.zeros((len(rows), len(rows))), cols, list(range(len(rows)))
+                return
+            yield self._block(vals, scale, rows, cols), cols, keep
+            allowed = {self.diff_to_var[cols[k]] for k in keep}
+
+
+def _quality(B, keep) -> float:
+    """|det| of the chosen columns over the product of the *whole* rows' norms (a
+    Hadamard ratio that sees a row's chosen entries shrink next to its alternatives)."""
+    norms = np.prod(np.linalg.norm(B, axis=1))
+    return abs(np.linalg.det(B[:, keep])) / norms if norms > 0 else 0.0
+
+
+def _well_enough(block, keep, best, hysteresis):
+    """Keep the current dummies unless the best choice is clearly better conditioned."""
+    cur = abs(np.linalg.det(block[:, keep]))
+    new = abs(np.linalg.det(block[:, best]))
+    return cur >= hysteresis * new

@@ -1,0 +1,203 @@
+"""Events: the iteration that settles the discrete state at an instant, and when-clauses.
+
+Event iteration (Modelica Language Specification 3.6, sec. 8.6): at an event the items
+that crossed take their value just after it (:mod:`acausal.runtime.modes`); when-clauses
+whose condition became true fire; then, repeatedly, the algebraic unknowns are solved
+again with the new discrete state (the states are continuous through the event) and the
+relations the new solution contradicts are switched, until nothing changes.
+
+That fixed point can cycle where relations are on an algebraic unknown whose value
+depends on the modes: a Karnopp element locking up, whose curve parameter
+(``tau = sat(sa, F_s)``, ``a = sa - sat(sa, F_s)``) is solved in the saturated mode on
+one side, contradicts it, is solved in the other saturated mode, contradicts that, and
+so on, never trying the unsaturated mode between them.  A curve-parameter law is
+continuous in its parameter (that is why it is written so, as the MSL's ideal diode
+is), so once a discrete state repeats, the algebraic equations are solved with those
+relations *evaluated at every Newton iterate* (a semismooth Newton method on the
+continuous piecewise-smooth system; Qi & Sun 1993), and the discrete state is taken from
+the solution.  Relations that sit at zero at the event keep the value the event gave
+them (their side was decided by the dynamics).
+
+When-clauses (sec. 8.3.5-8.3.6): the body of ``when c`` runs at the instant c becomes
+true; ``reinit(x, e)`` restarts the state x from e, evaluated with the values just
+before the event (``pre``).  A clause fires when its condition, evaluated with the
+discrete state before and after the event, goes from false to true.  At
+initialization no clause fires.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import InitializationFailed
+from ..solvers.base import EventAction
+from ..solvers.linalg import SingularMatrixError
+from ..solvers.newton import damped_newton
+
+__all__ = ["WhenClauses", "iterate_event"]
+
+_ROUNDS = 20          # solve-and-settle rounds at one instant before giving up
+
+
+class WhenClauses:
+    """The when-clauses of a model (see :class:`acausal.compiler.modelcode.WhenCode`)."""
+
+    def __init__(self, whens):
+        self.code = whens.code
+        self.n_when = int(whens.n_when)
+        self.targets = np.asarray(whens.targets, dtype=np.int64)
+        self.owners = np.asarray(whens.owners, dtype=np.int64)
+        self.texts = list(whens.texts)
+        self.log = []                     # (time, indices of the clauses that fired)
+
+    def values(self, t, z, p, m) -> np.ndarray:
+        return self.code.residual(t, z, p, m, np.empty(self.code.n_rows))
+
+    def fire(self, t, z, p, m_before, m_after):
+        """New z if some clause fired between the two discrete states, else None."""
+        before = self.values(t, z, p, m_before)
+        after = self.values(t, z, p, m_after)
+        fired = (before[: self.n_when] < 0.5) & (after[: self.n_when] > 0.5)
+        if not fired.any():
+            return None
+        new = z.copy()
+        act = fired[self.owners]
+        new[self.targets[act]] = before[self.n_when:][act]    # values before the event
+        self.log.append((t, np.flatnonzero(fired).tolist()))
+        return new
+
+
+def iterate_event(model, t, z, zp, crossed) -> EventAction:
+    """Settle the discrete state of ``model`` at the event (t, z); see the module
+    docstring.  ``crossed``: the oriented zero-crossing functions that went negative
+    (all False at a time event)."""
+    disc, p = model.discrete, model.p
+    m_old = model.m.copy()
+    R = disc.n_rel
+    crossed = np.asarray(crossed, dtype=bool)
+    items = np.concatenate([crossed[:R], crossed[R::2] | crossed[R + 1::2]])
+    res = model.resolution
+
+    def rates(zz=z, zzp=zp):
+        return model.rates(t, zz, zzp)
+
+    if items.any():
+        disc.settle(t, z, p, items, rates, res)
+    else:
+        disc.settle_time_items(t, z, p)
+    fired = False
+    if model.whens is not None:
+        new = model.whens.fire(t, z, p, m_old, model.m)
+        if new is not None:
+            z, fired = new, True
+            zp_new = np.zeros(model.n)
+            zp_new[model.state_index] = model.state_derivatives(t, z)
+            disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), res)
+    decided = _at_zero(model, t, z, zp)      # their side was chosen by the dynamics
+    seen = [model.m.copy()]
+    for _ in range(_ROUNDS):
+        z = _solve_algebraic(model, t, z)
+        bad = disc.contradicted(t, z, p) & ~decided
+        if not bad.any():
+            break
+        disc.settle(t, z, p, bad, lambda zz=z: model.rates(t, zz, np.zeros(model.n)))
+        if any(np.array_equal(model.m, m) for m in seen):
+            z = _solve_live(model, t, z, decided)
+            break
+        seen.append(model.m.copy())
+    else:
+        raise _unsettled(model, t, seen)
+    changed = fired or not np.array_equal(m_old, model.m)
+    return EventAction(y=z if changed else None, changed=changed)
+
+
+def _at_zero(model, t, z, zp) -> np.ndarray:
+    """Items that sit at zero at the event point (within the event band)."""
+    disc = model.discrete
+    v = disc.values(t, z, model.p)
+    band = 2.0 * (2.0 * disc.tolerance(t, z, model.p, v)
+                  + np.nan_to_num(np.abs(model.rates(t, z, zp)), posinf=0.0) * model.resolution)
+    return np.abs(disc._distance(v)) <= band
+
+
+def _solve_algebraic(model, t, z) -> np.ndarray:
+    """G(t, z) = 0 for the algebraic unknowns, states held, discrete state frozen."""
+    alg = np.flatnonzero(model.algebraic)
+    if not alg.size:
+        return z
+    z = z.copy()
+
+    def F(za):
+        zz = z.copy()
+        zz[alg] = za
+        return model.G(t, zz)
+
+    def J(za):
+        zz = z.copy()
+        zz[alg] = za
+        return model.dG_dy(t, zz).tocsc()[:, alg]
+
+    w = 1.0 / (1e-8 * np.abs(z[alg]) + 1e-8 * model.nominal[alg])
+    try:
+        out = damped_newton(F, J, z[alg], weights=w, tol=1e-3, max_iter=30)
+    except SingularMatrixError:
+        return z
+    if out.converged:
+        z[alg] = out.x
+    return z
+
+
+def _solve_live(model, t, z, decided) -> np.ndarray:
+    """The algebraic unknowns with the undecided relations following every iterate, then
+    the discrete state taken from the solution (module docstring)."""
+    disc, p = model.discrete, model.p
+    alg = np.flatnonzero(model.algebraic)
+    free = ~decided
+    zeros = np.zeros(disc.n_rel + disc.n_disc)
+    z = z.copy()
+
+    def follow(zz):
+        before = model.m.copy()
+        disc.settle(t, zz, p, free, lambda: zeros)
+        return before
+
+    def F(za):
+        zz = z.copy()
+        zz[alg] = za
+        follow(zz)
+        return model.G(t, zz)
+
+    def J(za):
+        zz = z.copy()
+        zz[alg] = za
+        follow(zz)
+        return model.dG_dy(t, zz).tocsc()[:, alg]
+
+    if alg.size:
+        w = 1.0 / (1e-8 * np.abs(z[alg]) + 1e-8 * model.nominal[alg])
+        try:
+            out = damped_newton(F, J, z[alg], weights=w, tol=1e-3, max_iter=50)
+        except SingularMatrixError:
+            out = None
+        if out is None or not out.converged:
+            raise InitializationFailed(
+                f"event at t = {t:.10g}: no consistent discrete state; the relations "
+                "keep switching: " + "; ".join(_names(model, free)), t)
+        z[alg] = out.x
+    follow(z)
+    bad = disc.contradicted(t, z, p) & free
+    if bad.any():
+        raise InitializationFailed(
+            f"event at t = {t:.10g}: no consistent discrete state; contradicted: "
+            + "; ".join(disc.describe(k) for k in np.flatnonzero(bad)[:5]), t)
+    return z
+
+
+def _names(model, mask) -> list:
+    return [model.discrete.describe(k) for k in np.flatnonzero(mask)[:5]]
+
+
+def _unsettled(model, t, seen) -> InitializationFailed:
+    flips = np.flatnonzero(np.any(np.diff(np.array(seen), axis=0) != 0, axis=0))
+    return InitializationFailed(
+        f"event iteration at t = {t:.10g} did not settle after {_ROUNDS} rounds: "
+        + "; ".join(model.discrete.describe(k) for k in flips[:5]), t)

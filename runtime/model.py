@@ -1,0 +1,302 @@
+"""CompiledModel: a compiled model at run time, the DAEProblem the integrator solves.
+
+Formulation (see the README's design section for why).  The generated code returns
+``n_res`` residual rows G(t, z) followed, in the causal form, by der(s) of the code-linked
+states ``state_z``; in the full form every variable, derivative variables der(x)
+included, is part of z and each selected state s has a *linking row*.  So
+
+    F = [ G(t, z);  z'[state_z] - D(t, z);  z'[link_s] - z[link_d] ]
+
+and a dummy derivative (Mattsson & Söderlind 1993) is a derivative variable without a
+linking row.  Dynamic state selection (:mod:`acausal.runtime.dynamic`) only changes
+which links are active; the generated code and the vector z stay the same.
+
+The discrete state (relation values and frozen floor values, :mod:`.modes`), when-clauses
+(:mod:`.events`), exact time events, dynamic state selection and the one initialization
+path (:mod:`.initial`) are all reached from here, through the items of the solver
+contract (:mod:`acausal.solvers.base`) and the runtime's own, in ``acausal.runtime``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import scipy.sparse as sps
+
+from ..solvers.base import DAEProblem
+from .diagnostics import failing_statement
+from .dynamic import DynamicStateSelection
+from .events import WhenClauses, iterate_event
+from .initial import InitialConditions, initialize, reinitialize
+from .modes import DiscreteState
+
+__all__ = ["CompiledModel"]
+
+_DOMAIN_ERRORS = (ValueError, ZeroDivisionError, OverflowError, TypeError)
+_MODE_ROUNDS = 10               # relations read through other relations' values, settled in turn
+
+
+class CompiledModel(DAEProblem):
+    """F(t, z, z') for the solver, with the user's names, parameters and discrete state.
+
+    Built by :func:`acausal.compile` from the compiler's
+    :class:`~acausal.compiler.modelcode.ModelCode`.  ``compiled.report`` is the index
+    report; ``param_names``/``p`` the tunable parameters; ``outputs`` maps every
+    variable's name to where its value comes from; ``states`` names the states.
+    """
+
+    oriented_roots = True
+
+    def __init__(self, mc):
+        super().__init__(len(mc.names), mc.names)
+        self.model_code = mc
+        self.code = code = mc.code
+        self.param_names = list(mc.param_names)
+        self.p = np.asarray(mc.param_values, dtype=float)
+        self.n_res = int(mc.n_res)
+        self.state_z = np.asarray(mc.state_z, dtype=np.int64)
+        self.pair_s = np.asarray([a for a, _ in mc.pairs], dtype=np.int64)
+        self.pair_d = np.asarray([b for _, b in mc.pairs], dtype=np.int64)
+        self.dummies = set(mc.dummies)
+        self.nominal = np.asarray(mc.nominal, dtype=float)
+        # derivatives solved as unknowns have no nominal: scaled by their own size
+        self.self_scaled = np.array([str(n).startswith("der(") for n in self.names], bool)
+        self.start = np.asarray(mc.start, dtype=float)
+        self.outputs = mc.outputs
+        self.report = mc.report
+        self.meta = mc.meta
+        self.discrete = DiscreteState(mc.relations, code.roots, code.scales)
+        self.n_roots = self.discrete.n_roots
+        self.whens = WhenClauses(mc.whens) if mc.whens is not None else None
+        self.initial = InitialConditions(mc.initial)
+        self.dynamic = None
+        if mc.dynamic is not None:
+            self.dynamic = DynamicStateSelection(mc.dynamic, self.nominal)
+            self.dynamic.bind(code.jac_rows, code.jac_cols)
+        self._res_entries = code.jac_rows < self.n_res
+        self._der_entries = ~self._res_entries
+        self.evaluation_errors = []        # what failed in the generated code, in words
+        self.resolution = 0.0             # how precisely the driver locates crossings
+        self._z_ref = self.start.copy()    # a point for time-event predictions
+        self._update_links()
+
+    # -- the discrete state -----------------------------------------------------------
+    @property
+    def m(self) -> np.ndarray:
+        """Relation values (1.0/0.0) then frozen floor values, read by the generated code."""
+        return self.discrete.m
+
+    @m.setter
+    def m(self, value) -> None:
+        self.discrete.m[:] = value
+
+    def discrete_state(self) -> np.ndarray:
+        return self.discrete.m.copy()
+
+    def set_discrete_state(self, m) -> None:
+        self.discrete.m[:] = m
+
+    def relations(self, t, z) -> np.ndarray:
+        """lhs - rhs of every relation (unoriented)."""
+        return self.discrete.values(t, z, self.p)[: self.discrete.n_rel]
+
+    def contradicted(self, t, z) -> np.ndarray:
+        """Relations (then floor values) whose frozen value the point (t, z) clearly
+        contradicts, each judged on its own scale."""
+        return self.discrete.contradicted(t, z, self.p)
+
+    def relation_text(self, k) -> str:
+        return self.discrete.describe(k)
+
+    def init_modes(self, t, z) -> None:
+        """Every relation takes its value at (t, z); one exactly at zero takes the value
+        it has there (>= and <= hold).  For analysis at a given point.  Repeated while the
+        values change: a relation may read a variable that others' values determine (a
+        flow through a valve whose opening is clipped by another relation)."""
+        zeros = np.zeros(self.discrete.n_rel + self.discrete.n_disc)
+        for _ in range(_MODE_ROUNDS):
+            if not self.discrete.set_all(t, z, self.p, lambda: zeros):
+                return
+
+    # -- the linking rows --------------------------------------------------------------
+    def _update_links(self):
+        active = np.array([d not in self.dummies for d in self.pair_d], dtype=bool)
+        self.link_s = self.pair_s[active] if len(active) else self.pair_s
+        self.link_d = self.pair_d[active] if len(active) else self.pair_d
+        self.state_index = np.concatenate([self.state_z, self.link_s]).astype(np.int64)
+        self.algebraic = np.ones(self.n, dtype=bool)
+        self.algebraic[self.state_index] = False
+        r0 = self.n_res + len(self.state_z)
+        rows_link = r0 + np.arange(len(self.link_s))
+        c = self.code
+        self.jac_pattern = (
+            np.concatenate([c.jac_rows, self.n_res + np.arange(len(self.state_z)), rows_link,
+                            rows_link]),
+            np.concatenate([c.jac_cols, self.state_z, self.link_s, self.link_d]))
+
+    @property
+    def states(self) -> list:
+        return [self.names[k] for k in self.state_index]
+
+    @property
+    def equation_names(self) -> list:
+        """A label for every residual row (messages about singular or failing rows)."""
+        names = list(self.meta.get("equation_names", []))
+        names += [f"der({self.names[k]}) (state derivative)" for k in self.state_z]
+        names += [f"der({self.names[s]}) = {self.names[d]}" for s, d in
+                  zip(self.link_s, self.link_d)]
+        return names
+
+    # -- evaluation of the generated code ------------------------------------------------
+    def _call(self, fn, t, z, size):
+        try:
+            return fn(t, z, self.p, self.m, np.empty(size))
+        except _DOMAIN_ERRORS as exc:
+            # outside a function's domain (sqrt of a negative, ...): the point is unusable,
+            # which Newton treats as a failed iterate; the words are kept for the message
+            what = failing_statement(self.code.source, exc, self.equation_names,
+                                     self.meta.get("assigned_names", [])) or "the model"
+            note = f"evaluating {what} at t = {t:.6g} failed: {type(exc).__name__}: {exc}"
+            if note not in self.evaluation_errors:
+                self.evaluation_errors.append(note)
+            return np.full(size, np.nan)
+
+    def _rows(self, t, z):
+        return self._call(self.code.residual, t, z, self.code.n_rows)
+
+    def state_derivatives(self, t, z) -> np.ndarray:
+        """der(s) of every state, in the order of ``state_index``."""
+        out = self._rows(t, z)
+        return np.concatenate([out[self.n_res:], z[self.link_d]])
+
+    def G(self, t, z):
+        return self._rows(t, z)[: self.n_res]
+
+    def residual(self, t, z, zp):
+        out = self._rows(t, z)
+        F = np.empty(self.n)
+        F[: self.n_res] = out[: self.n_res]
+        k = self.n_res + len(self.state_z)
+        F[self.n_res:k] = zp[self.state_z] - out[self.n_res:]
+        F[k:] = zp[self.link_s] - z[self.link_d]
+        return F
+
+    def _jac_values(self, t, z):
+        return self._call(self.code.jacobian, t, z, len(self.code.jac_rows))
+
+    def jacobian(self, t, z, zp, cj):
+        c = self.code
+        vals = self._jac_values(t, z)
+        vals[self._der_entries] *= -1.0
+        n_sz, n_l = len(self.state_z), len(self.link_s)
+        rows_link = self.n_res + n_sz + np.arange(n_l)
+        rows = np.concatenate([c.jac_rows, self.n_res + np.arange(n_sz), rows_link, rows_link])
+        cols = np.concatenate([c.jac_cols, self.state_z, self.link_s, self.link_d])
+        data = np.concatenate([vals, np.full(n_sz, cj), np.full(n_l, cj), -np.ones(n_l)])
+        return sps.csc_matrix((data, (rows, cols)), shape=(self.n, self.n))
+
+    def dG_dy(self, t, z):
+        c = self.code
+        vals = self._jac_values(t, z)
+        keep = self._res_entries
+        return sps.csr_matrix((vals[keep], (c.jac_rows[keep], c.jac_cols[keep])),
+                              shape=(self.n_res, self.n))
+
+    def expand(self, t, z) -> np.ndarray:
+        """All variables of the reduced system (states, assigned and torn) from z."""
+        if self.code.expand is None:
+            return z
+        return self._call(self.code.expand, t, z, self.meta["n_all"])
+
+    # -- events (solver contract item 8) --------------------------------------------------
+    def roots(self, t, z, zp):
+        return self.discrete.oriented(t, z, self.p)
+
+    def arm(self, t, z, zp, resolution: float = 0.0) -> None:
+        """The driver (re)arms the zero-crossing functions; ``resolution`` is how
+        precisely (in time) it locates a crossing."""
+        self._z_ref = np.array(z, dtype=float)
+        self.resolution = float(resolution)
+        zp = np.zeros(self.n) if zp is None else zp
+        self.discrete.arm(t, z, self.p, lambda: self.rates(t, z, zp), self.resolution)
+
+    def rates(self, t, z, zp) -> np.ndarray:
+        """d/dt of every relation's g and floor argument along (1, z'), by a forward
+        difference on a step small on the solution's own scale."""
+        w = np.abs(zp) / (np.abs(z) + self.nominal)
+        fastest = float(np.max(w, initial=0.0))
+        dt = 1e-8 * (1.0 + abs(t))
+        if fastest * dt > 1e-8:
+            dt = 1e-8 / fastest
+        v0 = self.discrete.values(t, z, self.p)
+        v1 = self.discrete.values(t + dt, z + dt * zp, self.p)
+        with np.errstate(invalid="ignore"):
+            return (v1 - v0) / dt
+
+    def handle_event(self, t, z, zp, crossed):
+        """Settle the discrete state at the event and fire when-clauses
+        (:func:`acausal.runtime.events.iterate_event`)."""
+        return iterate_event(self, t, z, zp, crossed)
+
+    def next_time_event(self, t):
+        """The next time a relation or floor value of time alone switches (exact)."""
+        t_min = t + 64 * np.finfo(float).eps * max(1.0, abs(t))
+        return self.discrete.next_time_event(t, self._z_ref, self.p, t_min)
+
+    # -- initialization (runtime contract) ------------------------------------------------
+    def initialize(self, t0: float):
+        """Consistent (z, z') at t0, discrete state settled (:mod:`.initial`)."""
+        return initialize(self, t0)
+
+    def reinitialize(self, t, z, zp, rtol=1e-6, atol=1e-6):
+        """After an event: states kept, algebraic unknowns and every z' made consistent."""
+        return reinitialize(self, t, z, zp, rtol=rtol, atol=atol)
+
+    # -- dynamic state selection ------------------------------------------------------------
+    def reselect_states(self, t, z, hysteresis=0.5) -> bool:
+        """Re-choose the dummy derivatives; True when the choice (and so F) changed."""
+        if self.dynamic is None:
+            return False
+        vals = self._jac_values(t, z)
+        if not np.all(np.isfinite(vals)):
+            return False
+        new = self.dynamic.choose(vals, z, self.dummies, hysteresis)
+        if new == self.dummies:
+            return False
+        self.dummies = new
+        self.dynamic.switches.append((t, sorted(self.names[d] for d in new)))
+        self._update_links()
+        return True
+
+    def after_step(self, t, z, zp) -> bool:
+        """Called by the driver after each accepted step: offsets of items armed at zero
+        are released once they have left it, and states are re-chosen (dynamic state
+        selection)."""
+        if self.n_roots:
+            self.discrete.release(t, z, self.p)
+        return self.reselect_states(t, z)
+
+    # -- parameters ---------------------------------------------------------------------------
+    def set_parameters(self, values: dict) -> None:
+        """Change tunable parameters by name, e.g. ``{"R1.R": 5.0}``."""
+        for name, value in values.items():
+            if name not in self.param_names:
+                zeros = self.meta.get("structural_zeros", ())
+                why = (" (it was 0 at compile time and was evaluated as a structural zero: "
+                       "compile with a non-zero value to tune it)") if name in zeros else ""
+                close = [n for n in self.param_names if n.split(".")[-1] == name.split(".")[-1]]
+                hint = f"; parameters with that name: {', '.join(close[:6])}" if close else ""
+                raise KeyError(f"the model has no tunable parameter '{name}'{why}{hint}")
+            self.p[self.param_names.index(name)] = _real_value(name, value)
+
+
+def _real_value(name, value) -> float:
+    from ..components.component import ModelError
+    if isinstance(value, (bool, np.bool_, complex, np.complexfloating)) or \
+            not isinstance(value, (int, float, np.number)):
+        raise ModelError(f"parameter '{name}' must be a real number, got {value!r} "
+                         f"({type(value).__name__})")
+    x = float(value)
+    if not math.isfinite(x):
+        raise ModelError(f"parameter '{name}' must be finite, got {value!r}")
+    return x

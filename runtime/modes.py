@@ -1,0 +1,268 @@
+"""The discrete state between events: relation values and frozen floor values.
+
+Modelica semantics (Modelica Language Specification 3.6, sec. 8.5): a relation in an
+if-expression keeps the value it had at the last event while the integrator steps; it
+changes only at an event, located where its zero-crossing function ``g = lhs - rhs``
+crosses zero.  The same holds for ``floor(u)`` (:mod:`acausal.compiler.discrete`), held at
+an integer ``n`` until ``u`` leaves ``[n, n+1)``.
+
+Each relation is judged on its *own* scale, never on another one's: its value is "at zero"
+when ``|g| <= ZERO_RTOL (|lhs| + |rhs|) + ZERO_NOMINAL nominal``, with ``nominal`` the
+largest nominal value of the variables it reads.  A spool position of 1e-3 m next to
+pressures of 1e7 Pa is judged on millimetres.
+
+The functions handed to the integrator are *oriented*: for relation k
+
+    r_k = s_k g_k + h_k,     s_k = +1 if the frozen value holds for g > 0, else -1,
+
+so ``r_k >= 0`` exactly while the frozen value agrees with the sign of g, up to ``h_k``,
+the zero tolerance above evaluated where r is (a relation's scale near its crossing is
+not the one it had far from it).  ``h_k > 0`` where the frozen value holds on a closed
+side (``x >= 0`` holding, ``x > 0`` not holding): a value sitting at exactly zero is no
+event, leaving it by more than the tolerance is.  ``h_k < 0`` on an open side (``x > 0``
+holding): the switch comes when x gets within the tolerance of zero, as it must for a
+value that only touches zero (``p -> 1`` under ``p < 1`` with ``p' = sqrt(1 - p)``).  The
+integrator looks for ``r_k`` becoming negative.  A relation that sits at zero when it is
+armed therefore still watches the side it is frozen on: if the solution leaves zero to
+the other side, that is an event (a spool that starts at exactly 0 and then moves).  For
+a floor value ``n``: ``u - n + h`` and ``n + 1 - u + h``.
+
+At an event the relations that crossed take the value they have just after it: the sign
+of g where it is clearly non-zero, else the sign of its rate dg/dt along the solution
+(the side the dynamics choose), else the value of the relation at exactly zero.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["DiscreteState", "ZERO_RTOL", "ZERO_NOMINAL"]
+
+ZERO_RTOL = 1e-10        # at zero: within this fraction of the relation's |lhs| + |rhs| ...
+ZERO_NOMINAL = 1e-12     # ... plus this fraction of the nominal of the variables it reads
+
+_UPWARD = {"StrictGreaterThan": True, "GreaterThan": True,
+           "StrictLessThan": False, "LessThan": False}
+_STRICT = {"StrictGreaterThan": True, "GreaterThan": False,
+           "StrictLessThan": True, "LessThan": False}
+
+
+class DiscreteState:
+    """Relation values and floor values of one model, with their zero-crossing functions.
+
+    Parameters
+    ----------
+    info : acausal.compiler.modelcode.RelationInfo
+    roots, scales : generated functions ``f(t, z, p, m, out)`` (relations' g, then the
+        floor arguments u; and the relations' magnitudes |lhs| + |rhs|).
+    """
+
+    def __init__(self, info, roots, scales):
+        self.info = info
+        self.n_rel, self.n_disc = info.n_relations, info.n_discrete
+        self.upward = np.array([_UPWARD[op] for op in info.ops], dtype=bool)
+        self.strict = np.array([_STRICT[op] for op in info.ops], dtype=bool)
+        self.nominal = np.asarray(info.nominal, dtype=float)
+        self._roots, self._scales = roots, scales
+        self.m = np.zeros(self.n_rel + self.n_disc)
+        self.offset = np.zeros(self.n_rel + 2 * self.n_disc)
+        self.time_linear = np.asarray(info.time_linear, dtype=np.int64)
+        # items whose switching time is predicted exactly (time events) are only a
+        # safety net in the zero-crossing search: they never switch ahead of that time
+        self._timed = np.zeros(self.n_rel + self.n_disc, dtype=bool)
+        self._timed[self.time_linear] = True
+
+    @property
+    def n_roots(self) -> int:
+        return self.n_rel + 2 * self.n_disc
+
+    # -- values ------------------------------------------------------------------------
+    def values(self, t, z, p) -> np.ndarray:
+        """g of every relation, then u of every floor value (unoriented)."""
+        return self._roots(t, z, p, self.m, np.empty(self.n_rel + self.n_disc))
+
+    def tolerance(self, t, z, p, v=None) -> np.ndarray:
+        """Per item, the distance from zero below which it counts as zero (``v``: the
+        values at (t, z) if already computed)."""
+        scale = self._scales(t, z, p, self.m, np.empty(self.n_rel))
+        tol_rel = ZERO_RTOL * np.abs(scale) + ZERO_NOMINAL * self.nominal
+        u = (self.values(t, z, p) if v is None else v)[self.n_rel:]
+        tol_disc = ZERO_RTOL * (np.abs(u) + 1.0)
+        return np.concatenate([tol_rel, tol_disc])
+
+    def truth(self, g) -> np.ndarray:
+        """The relations' values for g (>, >=, <, <= as declared)."""
+        up = np.where(self.strict, g > 0, g >= 0)
+        down = np.where(self.strict, g < 0, g <= 0)
+        return np.where(self.upward, up, down)
+
+    def relation_modes(self) -> np.ndarray:
+        return self.m[: self.n_rel] > 0.5
+
+    # -- the integrator's view -----------------------------------------------------------
+    def arm(self, t, z, p, rates, resolution: float) -> None:
+        """Arm at a (re)start.  An item settled at zero by its rate may sit a hair on the
+        other side of zero (the event point lies within the band of :meth:`settle`); its
+        function is raised by that much until a step ends with the item on its own side
+        (:meth:`release`), so that the start is not reported as a crossing.  A function further below zero than the band is a real
+        contradiction and stays negative."""
+        self.offset[:] = 0.0
+        r = self.oriented(t, z, p)
+        low = r < 0
+        if not low.any():
+            return
+        v = self.values(t, z, p)
+        tol = self.tolerance(t, z, p, v)
+        vdot = np.nan_to_num(np.abs(rates()), posinf=0.0)
+        band = 2.0 * (2.0 * tol + vdot * resolution)
+        band = np.concatenate([band[: self.n_rel], np.repeat(band[self.n_rel:], 2)])
+        fix = low & (-r <= band)
+        self.offset[fix] = -2.0 * r[fix]
+
+    def release(self, t, z, p) -> None:
+        """After an accepted step: an item that has left zero on its own side no longer
+        needs the offset it was armed with."""
+        if self.offset.any():
+            raw = self.oriented(t, z, p) - self.offset
+            self.offset[raw >= 0] = 0.0
+
+    def oriented(self, t, z, p) -> np.ndarray:
+        """r >= 0 while the frozen values agree with the solution (module docstring)."""
+        v = self.values(t, z, p)
+        tol = self.tolerance(t, z, p, v)
+        g, u = v[: self.n_rel], v[self.n_rel:]
+        holds = self.relation_modes()
+        holds_up = np.where(holds, self.upward, ~self.upward)
+        # the frozen value holds on a closed side (g >= 0 for a relation >= 0 that holds,
+        # or for a strict one that does not): switch once g is beyond zero by its
+        # tolerance; on an open side (a strict relation that holds) switch when g comes
+        # within its tolerance of zero, as a value that merely touches zero must
+        closed = (holds != self.strict) | self._timed[: self.n_rel]
+        r = np.empty(self.n_roots)
+        r[: self.n_rel] = np.where(holds_up, g, -g) + np.where(closed, 1.0, -1.0) * tol[: self.n_rel]
+        n, tol_u = self.m[self.n_rel:], tol[self.n_rel:]
+        r[self.n_rel::2] = u - n + tol_u                 # floor(u) = n on [n, n + 1)
+        r[self.n_rel + 1::2] = n + 1.0 - u + np.where(self._timed[self.n_rel:], tol_u, -tol_u)
+        return r + self.offset
+
+    # -- changing the discrete state -------------------------------------------------------
+    def contradicted(self, t, z, p) -> np.ndarray:
+        """Items (relations, then floor values) whose frozen value clearly disagrees with
+        the solution at (t, z): beyond zero on the wrong side."""
+        v = self.values(t, z, p)
+        tol = self.tolerance(t, z, p)
+        g, u = v[: self.n_rel], v[self.n_rel:]
+        tol_g, tol_u = tol[: self.n_rel], tol[self.n_rel:]
+        bad_rel = (np.abs(g) > tol_g) & (self.truth(g) != self.relation_modes())
+        n = self.m[self.n_rel:]
+        bad_disc = (u < n - tol_u) | (u >= n + 1.0 + tol_u)
+        return np.concatenate([bad_rel, bad_disc])
+
+    def settle(self, t, z, p, which, rates, resolution: float = 0.0) -> bool:
+        """Items in ``which`` take their value just after t; True if any changed.
+
+        ``rates()`` returns d/dt of ``values`` along the solution.  At an event located
+        to within ``resolution`` in time, an item counts as at zero within its tolerance,
+        its hysteresis and ``|rate| resolution`` (where the crossing may lie).
+        """
+        if not which.any():
+            return False
+        before = self.m.copy()
+        v = self.values(t, z, p)
+        band = self.tolerance(t, z, p, v)
+        vdot = None
+        if resolution > 0.0:
+            # the crossing lies within the hysteresis (= tolerance) and |rate| resolution
+            vdot = rates()
+            band = 2.0 * (2.0 * band + np.nan_to_num(np.abs(vdot), posinf=0.0) * resolution)
+        tol = band
+        at_zero = which & (np.abs(self._distance(v)) <= band)
+        if vdot is None and at_zero.any():
+            vdot = rates()
+        for k in np.flatnonzero(which):
+            if k < self.n_rel:
+                self.m[k] = float(self._relation_after(k, v[k], tol[k], at_zero[k], vdot))
+            else:
+                self.m[k] = self._floor_after(v[k], tol[k], at_zero[k], vdot, k)
+        return not np.array_equal(before, self.m)
+
+    def set_all(self, t, z, p, rates, resolution: float = 0.0) -> bool:
+        """Every item takes its value just after t (the start, or after a reinit)."""
+        return self.settle(t, z, p, np.ones(self.n_rel + self.n_disc, dtype=bool), rates,
+                           resolution)
+
+    def _distance(self, v) -> np.ndarray:
+        """Distance of each item from its switching point (g; u from the nearest integer)."""
+        u = v[self.n_rel:]
+        return np.concatenate([v[: self.n_rel], u - np.round(u)])
+
+    def _relation_after(self, k, g, tol, at_zero, vdot) -> bool:
+        if not at_zero:
+            return self._holds(k, g)
+        rate = vdot[k] if vdot is not None else 0.0
+        if rate != 0.0 and math.isfinite(rate):
+            return (rate > 0) == bool(self.upward[k])
+        return not bool(self.strict[k])           # exactly at zero: >= and <= hold
+
+    def _holds(self, k, g) -> bool:
+        if self.upward[k]:
+            return g > 0 or (g == 0 and not self.strict[k])
+        return g < 0 or (g == 0 and not self.strict[k])
+
+    def _floor_after(self, u, tol, at_zero, vdot, k) -> float:
+        if not at_zero:
+            return float(math.floor(u))
+        whole = float(round(u))
+        rate = vdot[k] if vdot is not None else 0.0
+        return whole - 1.0 if rate < 0 else whole
+
+    # -- time events -------------------------------------------------------------------------
+    def next_time_event(self, t, z, p, t_min) -> float | None:
+        """The first time after ``t_min`` at which a time-linear item reaches its switching
+        point with the discrete state as it is (exact: the item is linear in time)."""
+        if not self.time_linear.size:
+            return None
+        v0, slopes = self._slopes(t, z, p)
+        best = None
+        for k in self.time_linear:
+            a0, slope = v0[k], slopes[k]
+            if slope == 0.0 or not math.isfinite(slope):
+                continue
+            if k < self.n_rel:
+                target = 0.0
+            else:
+                n = self.m[k]
+                target = n + 1.0 if slope > 0 else n
+            te = t + (target - a0) / slope
+            if te > t_min and (best is None or te < best):
+                best = te
+        return best
+
+    def settle_time_items(self, t, z, p) -> bool:
+        """At a time event: the time-linear items take their value just after t, decided by
+        the sign of their (exact) slope where they sit at zero."""
+        if not self.time_linear.size:
+            return False
+        which = np.zeros(self.n_rel + self.n_disc, dtype=bool)
+        which[self.time_linear] = True
+        slope = np.zeros(self.n_rel + self.n_disc)
+        slope[self.time_linear] = self._slopes(t, z, p)[1][self.time_linear]
+        return self.settle(t, z, p, which, lambda: slope)
+
+    def _slopes(self, t, z, p):
+        """Values at t and the slopes of the time-linear items (exact for them: a
+        difference over a unit of time; a shorter one if another row fails there)."""
+        v0 = self.values(t, z, p)
+        for dt in (1.0, 1e-6 * (1.0 + abs(t))):
+            try:
+                with np.errstate(all="ignore"):
+                    return v0, (self.values(t + dt, z, p) - v0) / dt
+            except (ValueError, ZeroDivisionError, OverflowError):
+                continue
+        return v0, np.zeros_like(v0)
+
+    def describe(self, k) -> str:
+        if k < self.n_rel:
+            return self.info.texts[k]
+        return self.info.discrete_texts[k - self.n_rel]
