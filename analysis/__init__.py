@@ -2,9 +2,11 @@
 from .energy import (EnergyBalance, Passivity, energy_balance, is_passive,
                      register_dissipation, register_storage)
 from .estimate import Estimate, estimate
-from .linearize import linearize
-from .operating import OperatingPoint, SteadyStateError, steady_state
+from .linearize import ModeWarning, linearize
+from .modes import ModeConflict
+from .operating import OperatingPoint, OperatingPointError, SteadyStateError, steady_state
 from .sensitivity import output_sensitivities, simulate_sensitivities
+from .realization import TransferFunctionWarning
 from .statespace import Margins, StateSpace
 from .symbolic import SymbolicStateSpace, linearize_symbolic
 
@@ -12,4 +14,5 @@ __all__ = ["linearize", "linearize_symbolic", "steady_state", "estimate", "energ
            "is_passive", "register_storage", "register_dissipation", "OperatingPoint",
            "SteadyStateError", "StateSpace", "Margins", "Estimate", "EnergyBalance",
            "Passivity", "SymbolicStateSpace", "simulate_sensitivities",
-           "output_sensitivities"]
+           "output_sensitivities", "OperatingPointError", "ModeConflict", "ModeWarning",
+           "TransferFunctionWarning"]

@@ -1,27 +1,52 @@
 """Energy audit along a simulation, and a numerical passivity check.
 
-Stored energy and dissipated power are declared per component class in a registry
-(``register_storage`` / ``register_dissipation``) as functions of the component's own
-variable and parameter names, so library files need not change:
+Every component owns its energy (the Modelica Standard Library's ``lossPower`` idea).
+A component class says what it is with any of
 
-    register_storage(Capacitor, lambda v, p: 0.5 * p("C") * v("v")**2)
+* ``stored_energy(self)``: the energy it stores, an expression in its own variables and
+  parameters (``self.C * self.v**2 / 2``);
+* ``loss_power(self)``: the power it dissipates, >= 0 for a passive element
+  (``self.v * self.i``; ``ac.der(x)`` may appear);
+* ``created_power(self)``, rarely: power its equations create beyond what its stored
+  energy accounts for, where the model has no exact energy function (a constant-beta
+  chamber with a moving piston); booked in the balance and listed, not a violation;
+* ``energy_role``: ``"source"`` (it delivers power from outside the model: voltage,
+  torque, pressure sources, a fixed temperature) or ``"lossless"`` (a transducer, an
+  ideal gear, a joint, a sensor, a ground: the power into its ports sums to zero).
 
-The audit of a model (Egeland & Gravdahl 2.3, the energy functions of (2.58), (3.32),
-(3.93), (4.66), (4.91)) checks, at every output time,
+(:mod:`.energy_terms` evaluates them.)  The audit (Egeland & Gravdahl 2.3, the energy
+functions of (2.58), (3.32), (3.93), (4.66), (4.91)) classifies *every* leaf component
+of the model -- storage, dissipation, source, lossless, or unclassified -- and checks,
+at every output time,
 
-    dE/dt = P_in - P_diss
+    dE/dt = P_in + P_created - P_diss                                  (the balance)
 
-with E the sum of the registered storages, P_diss of the registered dissipations, and
-P_in the power that enters through the model's own ports plus the power delivered by
-every leaf component that has neither (sources; lossless transducers and sensors
-deliver none).  Port power is effort x flow (``Port.effort``/``Port.flow``); a heat
-port's energy flow is its heat flow.
+with E the sum of the stored energies, P_diss of the loss powers, P_created of the
+created powers and P_in the power delivered by the sources and unclassified leaves and
+through the model's own ports.
+A component that declares energy is not descended into (a composite may declare its
+own); one that does not is, down to its leaves.  A leaf without power ports (a signal
+block) carries no power.  Per-audit overrides (``storage=``, ``dissipation=``, by
+component path) and class overrides (:func:`register_storage`,
+:func:`register_dissipation`) take precedence, as functions ``fn(v, p)`` of the
+component's variable and parameter values.
 
-dE/dt is not differenced from the output grid: at each output point the consistent
-z' of the DAE is computed (states from the model, the algebraic part from
-G_z z' + G_t = 0), and every variable's time derivative is a central difference along
-(1, z'), accurate to round-off, so the residual measures the model and the solver's
-accuracy, not the output spacing.
+Beyond the balance the audit judges each component on its own, relative to the power
+scale of the run (the largest power any term carries, at least the stored energy per
+run time), and lists as ``violations``:
+
+* a dissipative element whose loss power is negative (it delivers power: a friction
+  law of the wrong sign, a negative resistance);
+* a lossless element whose net port power is not ~0;
+* a classified component whose own balance P_ports + P_created,c = dE_c/dt + P_loss,c
+  fails (its declaration does not match its equations);
+* an unclassified component (its power is booked as delivered, and named).
+
+dE/dt is not differenced from the output grid: at each output point the consistent z'
+of the DAE is computed (states from the model, the algebraic part from
+G_z z' + G_t = 0), every variable's rate is a central difference along (1, z'), and the
+stored energies are differentiated by the chain rule, so the residual measures the
+model and the solver's accuracy, not the output spacing.
 
 Passivity (Egeland & Gravdahl 2.4, (2.82), (2.149)): a component with storage S >= 0
 is passive when the power into its ports is at least dS/dt along every motion;
@@ -29,169 +54,173 @@ is passive when the power into its ports is at least dS/dt along every motion;
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..components.component import Component, Port
-from ..ports import HeatPort
-from ..ports.base import SignalPort
-from .operating import constant_value
+from ..components.component import Component, Connection, Port, flatten_equation_list
+from .energy_terms import (Trajectory, find_component, leaf_port_power, port_power,
+                           power_ports, storage_rate, symbolic_term)
 
 __all__ = ["energy_balance", "is_passive", "register_storage", "register_dissipation",
-           "EnergyBalance", "Passivity"]
+           "classify", "EnergyBalance", "Passivity", "Violation", "ROLES"]
+
+ROLES = ("storage", "dissipation", "storage+dissipation", "source", "lossless",
+         "no power", "unclassified")
 
 _STORAGE: dict = {}
 _DISSIPATION: dict = {}
 
 
 def register_storage(cls, fn) -> None:
-    """Declare the stored energy of a component class: ``fn(v, p) -> energy``, where
-    ``v("name")`` gives the component's variable (``v("der(x)")`` its derivative) and
-    ``p("name")`` its parameter values."""
+    """Override the stored energy of a component class for every audit:
+    ``fn(v, p) -> energy``, where ``v("name")`` gives the component's variable
+    (``v("der(x)")`` its derivative) and ``p("name")`` its parameter values.  For a class
+    of your own, prefer a ``stored_energy`` method (module docstring)."""
     _STORAGE[cls] = fn
 
 
 def register_dissipation(cls, fn) -> None:
-    """Declare the dissipated power (>= 0) of a component class, as for storage."""
+    """Override the dissipated power (>= 0) of a component class, as for storage.  For
+    a class of your own, prefer a ``loss_power`` method (module docstring)."""
     _DISSIPATION[cls] = fn
 
 
-def _lookup(registry, component):
-    _load_library_entries()
+def _registered(registry, component):
     for klass in type(component).__mro__:
         if klass in registry:
             return registry[klass]
     return None
 
 
-_LOADED = []
+# -- what each component declares -------------------------------------------------------------
+@dataclass
+class _Entry:
+    """A component's declaration: its role and how to evaluate its terms."""
+
+    component: Component
+    role: str
+    storage: object = None        # callable(trajectory) -> (E, dE/dt) arrays
+    loss: object = None           # callable(trajectory) -> P_loss array
+    created: object = None        # callable(trajectory) -> P_created array
 
 
-def _load_library_entries():
-    """The library's entries, registered on first use (the library imports late)."""
-    if _LOADED:
-        return
-    _LOADED.append(True)
-    from ..library import electrical as el, rotational as rot, thermal as th
-    from ..library import translational as tr
-    half = 0.5
-    register_storage(el.Capacitor, lambda v, p: half * p("C") * v("v") ** 2)
-    register_storage(el.Inductor, lambda v, p: half * p("L") * v("i") ** 2)
-    register_dissipation(el.Resistor, lambda v, p: v("v") * v("i"))
-    register_storage(rot.Inertia, lambda v, p: half * p("J") * v("w") ** 2)
-    register_storage(rot.Spring, lambda v, p: half * p("c") * (v("phi_rel") - p("phi_rel0")) ** 2)
-    register_storage(rot.SpringDamper,
-                     lambda v, p: half * p("c") * (v("phi_rel") - p("phi_rel0")) ** 2)
-    register_dissipation(rot.SpringDamper, lambda v, p: p("d") * v("der(phi_rel)") ** 2)
-    register_dissipation(rot.Damper, lambda v, p: v("tau") * v("der(phi_rel)"))
-    register_storage(tr.Mass, lambda v, p: half * p("m") * v("v") ** 2)
-    register_storage(tr.Spring, lambda v, p: half * p("c") * (v("s_rel") - p("s_rel0")) ** 2)
-    register_storage(tr.SpringDamper,
-                     lambda v, p: half * p("c") * (v("s_rel") - p("s_rel0")) ** 2)
-    register_dissipation(tr.SpringDamper, lambda v, p: p("d") * v("der(s_rel)") ** 2)
-    register_dissipation(tr.Damper, lambda v, p: v("f") * v("der(s_rel)"))
-    register_storage(th.HeatCapacitor, lambda v, p: p("C") * v("T"))
-    try:
-        from ..library import hydraulics as hy
-    except ImportError:
-        return
-    if hasattr(hy, "Volume"):     # W_p = V p^2 / (2 beta)  (4.66)
-        register_storage(hy.Volume, lambda v, p: p("V") * v("p") ** 2 / (2 * p("beta")))
-    for name in ("LaminarOrifice", "TurbulentOrifice"):
-        if hasattr(hy, name):
-            register_dissipation(getattr(hy, name), lambda v, p: v("dp") * v("q"))
+def _declared(comp, storage, dissipation):
+    """The _Entry of a component that declares something, else None."""
+    s_fn = (storage or {}).get(comp.path) or _registered(_STORAGE, comp)
+    d_fn = (dissipation or {}).get(comp.path) or _registered(_DISSIPATION, comp)
+    cls = type(comp)
+    s_sym = getattr(cls, "stored_energy", None) if s_fn is None else None
+    d_sym = getattr(cls, "loss_power", None) if d_fn is None else None
+    role = getattr(cls, "energy_role", None)
+    store = _accessor_storage(s_fn, comp) if s_fn else (
+        _symbolic_storage(comp) if callable(s_sym) else None)
+    loss = _accessor_term(d_fn, comp) if d_fn else (
+        _symbolic_loss(comp) if callable(d_sym) else None)
+    if store is None and loss is None and role is None:
+        return None
+    if store is not None or loss is not None:
+        role = "+".join(k for k, f in (("storage", store), ("dissipation", loss)) if f)
+    elif role not in ("source", "lossless"):
+        raise ValueError(f"{cls.__name__}.energy_role = {role!r}: a class declares "
+                         "'source' or 'lossless' (storage and dissipation are declared by "
+                         "stored_energy() and loss_power() methods)")
+    made = getattr(cls, "created_power", None)
+    created = (lambda traj: symbolic_term(traj, comp.created_power(), comp.path)) \
+        if callable(made) else None
+    return _Entry(comp, role, store, loss, created)
 
 
-# -- the trajectory: every variable and its time derivative ----------------------------------
-class _Trajectory:
-    """Values and time derivatives of every variable of a result, by name."""
-
-    def __init__(self, result, model: Component):
-        self.result, self.model = result, model
-        self.c = result.compiled
-        self.X, self.Xdot = _values_and_rates(self.c, result.t, result._z)
-        self._params = _parameter_values(self.c)
-
-    def value(self, name: str, rate: bool = False) -> np.ndarray:
-        if name.startswith("der(") and name.endswith(")"):
-            return self.value(name[4:-1], rate=True)
-        sign, k = self.c.outputs[name]
-        if sign is None:
-            return np.full(len(self.result.t), 0.0 if rate else constant_value(self.c, k))
-        return sign * (self.Xdot if rate else self.X)[:, k]
-
-    def parameter(self, component: Component, name: str) -> float:
-        """The value the simulation used: tunable parameters from the compiled model,
-        bindings (``ref``) followed up to the parameter they name."""
-        key = f"{component.path}.{name}" if component.path else name
-        for _ in range(64):
-            if key in self._params:
-                return self._params[key]
-            value = component.parameter_value(name)
-            if not hasattr(value, "name"):
-                return float(value)
-            key = value.name
-            path, _, name = key.rpartition(".")
-            component = _find(self.model, path) if path else self.model
-        raise ValueError(f"parameter binding chain too deep at '{key}'")
-
-    def accessors(self, component, rate=False, h=0.0):
-        """v(name), p(name) for a component; with ``h``, values shifted by h x rate."""
-        prefix = f"{component.path}." if component.path else ""
-
-        def v(name):
-            if name.startswith("der("):
-                return self.value(f"der({prefix}{name[4:-1]})")
-            x = self.value(prefix + name)
-            return x + h * self.value(prefix + name, rate=True) if h else x
-
-        return v, (lambda name: self.parameter(component, name))
+def _symbolic_storage(comp):
+    return lambda traj: storage_rate(traj, comp.stored_energy(), comp.path)
 
 
-def _parameter_values(c) -> dict:
-    return dict(zip(c.param_names, c.p.tolist()))
+def _symbolic_loss(comp):
+    return lambda traj: symbolic_term(traj, comp.loss_power(), comp.path)
 
 
-def _values_and_rates(c, t, Z):
-    saved = c.m.copy()
-    X, Xd = [], []
-    try:
-        for tk, zk in zip(t, Z):
-            c.init_modes(tk, zk)
-            zdot = _consistent_rate(c, tk, zk)
-            h = 1e-6 * (1.0 + abs(tk))
-            X.append(c.expand(tk, zk))
-            ahead, behind = c.expand(tk + h, zk + h * zdot), c.expand(tk - h, zk - h * zdot)
-            Xd.append((ahead - behind) / (2 * h))
-    finally:
-        c.m[:] = saved
-    return np.array(X).reshape(len(t), -1), np.array(Xd).reshape(len(t), -1)
+def _accessor_term(fn, comp):
+    return lambda traj: np.broadcast_to(fn(*traj.accessors(comp)), traj.t.shape).astype(float)
 
 
-def _consistent_rate(c, t, z):
-    """z' with x' from the model and a' from G_a a' = -(G_x x' + G_t)."""
-    zdot = np.zeros(c.n)
-    S = np.asarray(c.state_index, dtype=int)
-    zdot[S] = c.state_derivatives(t, z)
-    alg = np.flatnonzero(c.algebraic)
-    if alg.size:
-        Gz = c.dG_dy(t, z).toarray()
-        h = 1e-7 * (1.0 + abs(t))
-        Gt = (c.G(t + h, z) - c.G(t - h, z)) / (2 * h)
-        zdot[alg] = np.linalg.solve(Gz[:, alg], -(Gz[:, S] @ zdot[S] + Gt))
-    return zdot
+def _accessor_storage(fn, comp):
+    def evaluate(traj):
+        v, p = traj.accessors(comp)
+        h = 1e-6
+        vp, _ = traj.accessors(comp, h=h)
+        vm, _ = traj.accessors(comp, h=-h)
+        E = np.broadcast_to(fn(v, p), traj.t.shape).astype(float)
+        return E, (fn(vp, p) - fn(vm, p)) / (2 * h)
+    return evaluate
 
 
-# -- the audit -----------------------------------------------------------------------------
+def classify(model: Component, storage=None, dissipation=None) -> dict:
+    """{component path: role} of every component the audit books (see ``ROLES``):
+    declared components (not descended into) and the leaves below undeclared ones."""
+    if model._path is None:
+        model._bind("")
+    return {e.component.path: e.role for e in _entries(model, storage, dissipation)}
+
+
+def _entries(root, storage=None, dissipation=None):
+    """Declared components and leaves, in the model's declaration order."""
+    out = []
+    for child in root.children().values():
+        if isinstance(child, Port):
+            continue
+        entry = _declared(child, storage, dissipation)
+        subs = [c for c in child.children().values() if not isinstance(c, Port)]
+        if entry is not None:
+            out.append(entry)
+        elif subs and _structural(child):
+            out.extend(_entries(child, storage, dissipation))
+        else:
+            out.append(_Entry(child, "unclassified" if power_ports(child) else "no power"))
+    return out
+
+
+def _structural(comp) -> bool:
+    """A composite whose power ports are all connected to its parts: its power flows
+    through them (a DCMotor).  One that writes its ports into its own equations (a line
+    whose sub-components only hold variables) is a leaf of its own."""
+    ports = power_ports(comp)
+    if not ports:
+        return True
+    connected = {id(p) for item in flatten_equation_list(comp.equations())
+                 if isinstance(item, Connection) for p in item.ports}
+    return all(id(p) in connected for p in ports)
+
+
+# -- the audit ------------------------------------------------------------------------------
+@dataclass
+class Violation:
+    """One component that breaks what it declares: ``kind`` is "negative loss",
+    "not lossless", "inconsistent declaration" or "unclassified"; ``worst`` the
+    offending power [W] at time ``t`` (for "unclassified", its largest delivered power)."""
+
+    kind: str
+    path: str
+    worst: float
+    t: float
+    message: str
+
+    def __str__(self):
+        return self.message
+
+
 @dataclass
 class EnergyBalance:
     """dE/dt = P_in - P_diss along a simulation (see the module docstring).
 
     Arrays over ``t``: ``E`` (total stored), ``dE_dt``, ``P_in``, ``P_diss``,
-    ``residual`` = dE/dt - (P_in - P_diss); dicts by component path: ``stored``,
-    ``dissipated``, ``sources`` (power delivered by each unregistered leaf), ``ports``
-    (power into the model through each of its own ports).
+    ``residual`` = dE/dt - (P_in + P_created - P_diss); dicts by component path: ``stored``,
+    ``dissipated``, ``sources`` (power delivered by each source and each unclassified
+    leaf), ``ports`` (power into the model through each of its own ports), ``lossless``
+    (net power into each lossless element, ~0), ``created`` (``created_power``, with
+    its sum ``P_created``).  ``roles`` classifies every booked
+    component, ``unclassified`` lists those that declare nothing, ``violations`` what
+    breaks its declaration (judged against ``tol`` x ``power_scale``); ``ok`` is True
+    when there are none and the balance closes to the same tolerance.
     """
 
     t: np.ndarray
@@ -204,14 +233,48 @@ class EnergyBalance:
     dissipated: dict
     sources: dict
     ports: dict
+    roles: dict = field(default_factory=dict)
+    lossless: dict = field(default_factory=dict)
+    unclassified: list = field(default_factory=list)
+    violations: list = field(default_factory=list)
+    power_scale: float = 0.0
+    tol: float = 1e-6
+    created: dict = field(default_factory=dict)
+    P_created: np.ndarray = None
+
+    @property
+    def ok(self) -> bool:
+        return not self.violations and self.balance_closes
+
+    @property
+    def balance_closes(self) -> bool:
+        """max |residual| <= tol x power scale."""
+        return bool(np.max(np.abs(self.residual), initial=0.0) <= self.tol * self.power_scale)
 
     def relative_residual(self) -> float:
         """max |residual| / max(max |E|, ...) : the worst imbalance per unit of energy
         scale (for a decaying system, the initial energy)."""
         return float(np.max(np.abs(self.residual)) / max(np.max(np.abs(self.E)), 1e-300))
 
+    def summary(self) -> str:
+        """The audit in words: the balance, each role, each violation."""
+        lines = [f"energy balance: max |dE/dt - (P_in + P_created - P_diss)| = "
+                 f"{np.max(np.abs(self.residual), initial=0.0):.3g} W, power scale "
+                 f"{self.power_scale:.3g} W ({'closes' if self.balance_closes else 'FAILS'})"]
+        for role in ROLES:
+            paths = [p for p, r in self.roles.items() if r == role]
+            if paths:
+                lines.append(f"  {role}: {', '.join(paths)}")
+        if self.created:
+            lines.append(f"  created by model equations (no exact energy function): "
+                         f"{', '.join(self.created)}, up to "
+                         f"{np.max(np.abs(self.P_created), initial=0.0):.3g} W")
+        lines += [f"  VIOLATION {v}" for v in self.violations]
+        return "\n".join(lines)
 
-def energy_balance(result, model: Component, *, storage=None, dissipation=None) -> EnergyBalance:
+
+def energy_balance(result, model: Component, *, storage=None, dissipation=None,
+                   tol: float = 1e-6) -> EnergyBalance:
     """Energy audit of a simulation result.
 
     Parameters
@@ -222,100 +285,103 @@ def energy_balance(result, model: Component, *, storage=None, dissipation=None) 
         The model instance that was simulated (its instance tree gives the components).
     storage, dissipation : dict, optional
         Extra or overriding entries ``{component path: fn(v, p)}`` for this audit.
+    tol : float
+        Violations and the balance are judged against tol x the power scale of the run.
 
     Returns
     -------
     EnergyBalance
     """
-    _bind(model, result)
-    traj = _Trajectory(result, model)
-    stored, dissipated, sources = {}, {}, {}
-    for comp in _components(model, storage, dissipation):
-        s, d = _entries(comp, storage, dissipation)
-        if s is not None:
-            stored[comp.path] = (s, comp)
-        if d is not None:
-            dissipated[comp.path] = d(*traj.accessors(comp))
-        if s is None and d is None:
-            power = _port_power(traj, comp)
-            if np.max(np.abs(power), initial=0.0) > 0.0:
-                sources[comp.path] = -power
-    sources = _significant(sources)
-    E, dE = _storage_and_rate(traj, stored)
-    ports = {p.path: _one_port_power(traj, p) for p in _ports(model)}
-    P_in = sum(sources.values(), np.zeros(len(result.t))) + sum(ports.values(),
-                                                                 np.zeros(len(result.t)))
-    P_diss = sum(dissipated.values(), np.zeros(len(result.t)))
-    return EnergyBalance(result.t, E, dE, P_in, P_diss, dE - (P_in - P_diss),
-                         {k: fn(*traj.accessors(c)) for k, (fn, c) in stored.items()},
-                         dissipated, sources, ports)
+    _bind(model)
+    traj = Trajectory(result, model)
+    n = len(result.t)
+    stored, rates, dissipated, sources, lossless, own = {}, {}, {}, {}, {}, {}
+    created = {}
+    entries = _entries(model, storage, dissipation)
+    for e in entries:
+        path = e.component.path
+        if e.storage is not None:
+            stored[path], rates[path] = e.storage(traj)
+        if e.loss is not None:
+            dissipated[path] = e.loss(traj)
+        if e.created is not None:
+            created[path] = e.created(traj)
+        if e.role in ("source", "unclassified", "lossless") or \
+                e.storage is not None or e.loss is not None:
+            own[path] = leaf_port_power(traj, e.component)
+        if e.role in ("source", "unclassified"):
+            sources[path] = -own[path]
+        elif e.role == "lossless":
+            lossless[path] = own[path]
+    ports = {p.path: port_power(traj, p) for p in power_ports(model)}
+    zero = np.zeros(n)
+    E, dE = sum(stored.values(), zero), sum(rates.values(), zero)
+    P_in = sum(sources.values(), zero) + sum(ports.values(), zero)
+    P_diss = sum(dissipated.values(), zero)
+    P_created = sum(created.values(), zero)
+    scale = _power_scale(traj.t, E, [dE, P_in, P_diss], rates, dissipated, own, ports)
+    roles = {e.component.path: e.role for e in entries}
+    unclassified = [p for p, r in roles.items() if r == "unclassified"]
+    violations = _violations(traj.t, roles, rates, dissipated, created, own, scale, tol)
+    return EnergyBalance(result.t, E, dE, P_in, P_diss, dE - (P_in + P_created - P_diss),
+                         stored, dissipated, sources, ports, roles, lossless, unclassified,
+                         violations, scale, tol, created, P_created)
 
 
-def _significant(sources):
-    """Drop leaves whose power is round-off (an EMF's v i - tau w, a sensor's)."""
-    peak = max((np.max(np.abs(p)) for p in sources.values()), default=0.0)
-    return {k: p for k, p in sources.items() if np.max(np.abs(p)) > 1e-10 * peak}
+def _power_scale(t, E, totals, *dicts) -> float:
+    """The largest power any term carries; for a model that hardly moves (a pendulum
+    hanging at rest) at least its stored energy per run time, so that the round-off of
+    powers near zero is not judged against itself."""
+    peaks = [np.max(np.abs(a), initial=0.0) for a in totals]
+    peaks += [np.max(np.abs(a), initial=0.0) for d in dicts for a in d.values()]
+    span = float(t[-1] - t[0]) if len(t) > 1 else 0.0
+    floor = np.max(np.abs(E), initial=0.0) / span if span > 0 else 0.0
+    return float(max(peaks + [floor]))
 
 
-def _bind(model, result):
-    if model._path is None:            # a fresh instance of the simulated model's class
-        model._bind("")
-
-
-def _entries(comp, storage, dissipation):
-    s = (storage or {}).get(comp.path) or _lookup(_STORAGE, comp)
-    d = (dissipation or {}).get(comp.path) or _lookup(_DISSIPATION, comp)
-    return s, d
-
-
-def _components(root, storage=None, dissipation=None):
-    """Registered components (not descended into) and unregistered leaves."""
+def _violations(t, roles, rates, dissipated, created, own, scale, tol):
+    """Each component judged on its own declaration (module docstring)."""
+    limit = tol * scale
     out = []
-    for child in root.children().values():
-        if isinstance(child, Port):
+    zero = np.zeros(len(t))
+    for path, role in roles.items():
+        if role == "unclassified":
+            k = int(np.argmax(np.abs(own[path])))
+            out.append(Violation("unclassified", path, float(-own[path][k]), float(t[k]),
+                                 f"'{path}' declares neither stored energy, loss power nor "
+                                 "a role (source, lossless): its power is booked as "
+                                 f"delivered (up to {abs(own[path][k]):.3g} W)"))
             continue
-        s, d = _entries(child, storage, dissipation)
-        subs = [c for c in child.children().values() if not isinstance(c, Port)]
-        if s is not None or d is not None or not subs:
-            out.append(child)
-        else:
-            out.extend(_components(child, storage, dissipation))
+        if path in dissipated:
+            k = int(np.argmin(dissipated[path]))
+            if dissipated[path][k] < -limit:
+                out.append(Violation("negative loss", path, float(dissipated[path][k]),
+                                     float(t[k]), f"'{path}' is dissipative but its loss "
+                                     f"power is {dissipated[path][k]:.3g} W at t = {t[k]:.6g}"
+                                     ": it delivers power"))
+        if role == "lossless":
+            k = int(np.argmax(np.abs(own[path])))
+            if abs(own[path][k]) > limit:
+                out.append(Violation("not lossless", path, float(own[path][k]), float(t[k]),
+                                     f"'{path}' is declared lossless but takes "
+                                     f"{own[path][k]:.3g} W through its ports at "
+                                     f"t = {t[k]:.6g}"))
+        elif role not in ("source", "no power"):
+            gap = own[path] + created.get(path, zero) - rates.get(path, zero) \
+                - dissipated.get(path, zero)
+            k = int(np.argmax(np.abs(gap)))
+            if abs(gap[k]) > limit:
+                out.append(Violation("inconsistent declaration", path, float(gap[k]),
+                                     float(t[k]), f"'{path}': its port power differs from "
+                                     f"dE/dt + P_loss by {gap[k]:.3g} W at t = {t[k]:.6g} "
+                                     "(its stored_energy/loss_power do not match its "
+                                     "equations)"))
     return out
 
 
-def _ports(comp):
-    return [c for c in comp.children().values()
-            if isinstance(c, Port) and not isinstance(c, SignalPort)]
-
-
-def _one_port_power(traj, port):
-    flow = traj.value(_qualified(port.path, port.flow))
-    if isinstance(port, HeatPort):
-        return flow                        # a heat flow is already an energy flow
-    return traj.value(_qualified(port.path, port.effort)) * flow
-
-
-def _qualified(path, name):
-    if name.startswith("der("):
-        return f"der({path}.{name[4:-1]})"
-    return f"{path}.{name}"
-
-
-def _port_power(traj, comp):
-    return sum((_one_port_power(traj, p) for p in _ports(comp)), np.zeros(len(traj.result.t)))
-
-
-def _storage_and_rate(traj, stored):
-    n = len(traj.result.t)
-    E, dE = np.zeros(n), np.zeros(n)
-    h = 1e-6
-    for fn, comp in stored.values():
-        v, p = traj.accessors(comp)
-        E += fn(v, p)
-        vp, _ = traj.accessors(comp, h=h)
-        vm, _ = traj.accessors(comp, h=-h)
-        dE += (fn(vp, p) - fn(vm, p)) / (2 * h)
-    return E, dE
+def _bind(model):
+    if model._path is None:            # a fresh instance of the simulated model's class
+        model._bind("")
 
 
 # -- passivity -------------------------------------------------------------------------------
@@ -338,30 +404,21 @@ class Passivity:
 def is_passive(result, model: Component, component: str, *, tol: float = 1e-6) -> Passivity:
     """Check the dissipation inequality P_ports >= dS/dt of one component along a run.
 
-    ``S`` is the sum of the registered storages inside the component (0 if none).
+    ``S`` is the sum of the stored energies declared inside the component (0 if none).
     Passive means the inequality holds at every output time to ``tol`` relative to the
     largest power involved (Egeland & Gravdahl (2.82) in differential form (2.149)).
     A simulation shows one motion only: a True answer is evidence, a False one a proof.
     """
-    _bind(model, result)
-    comp = _find(model, component)
-    traj = _Trajectory(result, model)
-    supply = _port_power(traj, comp)
-    parts = [c for c in _components(comp) if _lookup(_STORAGE, c) is not None]
-    if _lookup(_STORAGE, comp) is not None:
-        parts = [comp]
-    _, dS = _storage_and_rate(traj, {c.path: (_lookup(_STORAGE, c), c) for c in parts})
+    _bind(model)
+    comp = find_component(model, component)
+    traj = Trajectory(result, model)
+    supply = leaf_port_power(traj, comp)
+    own = _declared(comp, None, None)
+    parts = [own] if own is not None else _entries(comp)
+    dS = np.zeros(len(result.t))
+    for e in parts:
+        if e.storage is not None:
+            dS = dS + e.storage(traj)[1]
     margin = supply - dS
     scale = max(np.max(np.abs(supply)), np.max(np.abs(dS)), 1e-300)
     return Passivity(bool(np.min(margin) >= -tol * scale), result.t, supply, dS, margin)
-
-
-def _find(model, path):
-    comp = model
-    for part in path.split("."):
-        children = comp.children()
-        if part not in children:
-            raise KeyError(f"no component '{path}' in the model ({part} not in "
-                           f"{sorted(children)})")
-        comp = children[part]
-    return comp

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.optimize as so
 
-from ..compiler.model import CompiledModel
+from ..runtime import CompiledModel
 from ..solvers.base import SimulationError
 
 __all__ = ["estimate", "Estimate"]

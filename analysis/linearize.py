@@ -21,17 +21,38 @@ Inputs are parameters, top-level RealInput ports (driven from a parameter in a
 harness, see :mod:`.operating`), or variables that a source drives: such a variable is
 perturbed through the source's parameter that shifts it additively (its ``offset``,
 a ``Constant``'s ``k``, a ``ConstantVoltage``'s ``V``).
+
+A model may differentiate its input (a ship whose rudder term is K (T_a delta' +
+delta), a position imposed on a mass).  A top-level input is driven as
+u = k + rate (t - t_ref) + accel (t - t_ref)^2 / 2, so F_u' and F_u'' are the
+derivatives by ``rate`` and ``accel`` at t = t_ref, and the linearization
+x' = A x + B u + B1 u' + B2 u'' is brought to state-space form in the state
+xi = x - (B1 + A B2) u - B2 u' (B + A B1 + A^2 B2, D + C B1 + C A B2); an output that
+follows u' or u'' directly has no proper transfer function and is refused.  A
+parameter's derivative is 0 to the compiler: when ``linearize`` compiles the model
+itself (a Component), each parameter named as an input is therefore *driven* the same
+way (its component rebuilt with the parameter a variable, ``plant.driven_class``),
+unless another parameter is bound to it; a CompiledModel's parameters are constant
+perturbations.
 """
 from __future__ import annotations
+
+import warnings
 
 import numpy as np
 
 from ..components.component import Component
-from .operating import (OperatingPoint, _compile_plant, _modes_at, as_plant,
-                        operating_point, parameters_set, top_level_inputs)
+from .modes import describe_items, mode_values, relations_at_switch
+from .operating import OperatingPoint, OperatingPointError, operating_point
+from .plant import as_plant, compile_plant, parameters_set, top_level_inputs
 from .statespace import StateSpace
 
-__all__ = ["linearize", "linear_residual"]
+__all__ = ["linearize", "linear_residual", "ModeWarning"]
+
+
+class ModeWarning(UserWarning):
+    """The operating point sits where a relation switches (a kink of the model): the
+    linearization is that of the mode named in the message (``StateSpace.modes``)."""
 
 
 def linearize(model, inputs=(), outputs=(), at=None, *, t: float = 0.0) -> StateSpace:
@@ -58,7 +79,20 @@ def linearize(model, inputs=(), outputs=(), at=None, *, t: float = 0.0) -> State
     -------
     StateSpace
         With the selected states of the compiled model (``compiled.state_index``) and
-        the user's names for states, inputs and outputs.
+        the user's names for states, inputs and outputs; ``modes`` gives the value of
+        every relation it was linearized in.
+
+    Raises
+    ------
+    OperatingPointError
+        If the operating point contradicts the modes it would be linearized in, or no
+        consistent point is found (names the relations).
+
+    Warns
+    -----
+    ModeWarning
+        If the point sits exactly where a relation switches and the two sides give
+        different Jacobians; the message says which side was taken.
 
     Notes
     -----
@@ -69,7 +103,11 @@ def linearize(model, inputs=(), outputs=(), at=None, *, t: float = 0.0) -> State
     """
     values = at if isinstance(at, dict) else {}
     source = at if isinstance(at, OperatingPoint) else (at[0] if isinstance(at, tuple) else model)
-    plant = as_plant(source, _input_values(model, values))
+    if isinstance(source, Component):
+        # parameters taken as inputs are driven, so that their derivatives are seen
+        plant = compile_plant(source, _input_values(model, values) or {}, driven=list(inputs))
+    else:
+        plant = as_plant(source)
     try:
         return _linearize(plant, list(inputs), list(outputs), at, values, t)
     except _NoDrivingParameter:
@@ -78,7 +116,7 @@ def linearize(model, inputs=(), outputs=(), at=None, *, t: float = 0.0) -> State
     # the sources' offsets were 0, i.e. structural zeros: compile them tunable
     zeros = plant.compiled.meta.get("structural_zeros", ())
     offsets = [plant.external(n) for n in zeros if n.endswith(".offset")]
-    plant = _compile_plant(source, values, offsets)
+    plant = compile_plant(source, values, offsets, driven=list(inputs))
     return _linearize(plant, list(inputs), list(outputs), at, values, t)
 
 
@@ -87,10 +125,35 @@ def _linearize(plant, inputs, outputs, at, values, t):
     params = {k: v for k, v in values.items() if plant.parameter_index(k) is not None}
     with parameters_set(plant, params):
         op = operating_point(plant, at, t)
-        with _modes_at(c, op.t, op.z):
+        with op.in_modes():
+            _check_modes(plant, op)
+            kinks = relations_at_switch(c, op.t, op.z)
             A, B, C, D = _matrices(plant, op, inputs, outputs)
+            modes = mode_values(c, plant.prefix)
     states = [plant.external(c.names[k]) for k in c.state_index]
-    return StateSpace(A, B, C, D, states, inputs, outputs)
+    sys = StateSpace(A, B, C, D, states, inputs, outputs)
+    sys.modes = modes
+    if kinks:
+        said = [f"{text} (taken as {_mode_word(modes[text])})"
+                for text in describe_items(c, kinks, plant.prefix)]
+        warnings.warn("the operating point sits where relations switch, so the model has a "
+                      "kink there; linearized in the mode " + "; ".join(said),
+                      ModeWarning, stacklevel=3)
+    return sys
+
+
+def _check_modes(plant, op):
+    """An operating point must satisfy the modes it is linearized in."""
+    c = plant.compiled
+    bad = np.flatnonzero(c.contradicted(op.t, op.z))
+    if bad.size:
+        names = describe_items(c, bad, plant.prefix)
+        raise OperatingPointError("the operating point contradicts the modes it would be "
+                                  "linearized in: " + "; ".join(names), names)
+
+
+def _mode_word(value):
+    return ("true" if value else "false") if isinstance(value, bool) else f"{value:g}"
 
 
 class _NoDrivingParameter(ValueError):
@@ -108,25 +171,83 @@ def _matrices(plant, op, inputs, outputs):
     t, z = op.t, op.z
     S = np.asarray(c.state_index, dtype=int)
     alg = np.flatnonzero(c.algebraic)
+    ns, m = len(S), len(inputs)
     cols = [_input_column(plant, name, t, z) for name in inputs]
-    Fp = np.column_stack([_dF_dp(c, t, z, k) / g for k, g in cols]) if cols \
-        else np.zeros((c.n, 0))
+    # the columns of u, then of u' and u'' (top-level inputs only: see _InputValue)
+    rate_cols = [_rate_columns(plant, name) for name in inputs]
+    with _rates_at(c, rate_cols, t):
+        Fp = np.column_stack([_dF_dp(c, t, z, k) / g for k, g in cols]
+                             + [_dF_dp(c, t, z, k) if k is not None else np.zeros(c.n)
+                                for order in (0, 1) for k in (r[order] for r in rate_cols)]) \
+            if cols else np.zeros((c.n, 0))
+        Hp = _expand_columns(c, t, z, cols, rate_cols)
     J0, E = linear_residual(c, t, z)
     M = np.hstack([E[:, S], J0[:, alg]])
     W = -np.linalg.solve(M, np.hstack([J0[:, S], Fp]))
-    ns = len(S)
-    Zx, Zp = np.zeros((c.n, ns)), np.zeros((c.n, len(inputs)))
+    Zx, Zp = np.zeros((c.n, ns)), np.zeros((c.n, 3 * m))
     Zx[S] = np.eye(ns)
     Zx[alg], Zp[alg] = W[ns:, :ns], W[ns:, ns:]
-    A, B = W[:ns, :ns], W[:ns, ns:]
+    A, Bs = W[:ns, :ns], W[:ns, ns:]
     H = _dexpand_dz(c, t, z)
-    Hp = np.column_stack([_dexpand_dp(c, t, z, k) / g for k, g in cols]) if cols \
-        else np.zeros((H.shape[0], 0))
     rows = [_output_row(plant, name) for name in outputs]
     C = np.array([s * (H[k] @ Zx) if s is not None else np.zeros(ns) for s, k in rows])
-    D = np.array([s * (H[k] @ Zp + Hp[k]) if s is not None else _dconst_dp(c, k, cols)
-                  for s, k in rows])
-    return A, B, C.reshape(len(outputs), ns), D.reshape(len(outputs), len(inputs))
+    Ds = np.array([s * (H[k] @ Zp + Hp[k]) if s is not None
+                   else np.concatenate([_dconst_dp(c, k, cols), np.zeros(2 * m)])
+                   for s, k in rows])
+    C, Ds = C.reshape(len(outputs), ns), Ds.reshape(len(outputs), 3 * m)
+    B, D = _absorb_input_derivatives(A, C, Bs, Ds, m, inputs)
+    return A, B, C, D
+
+
+def _rate_columns(plant, name):
+    """(rate, accel, t_ref) parameter indices of a top-level input, else Nones."""
+    names = plant.input_rates.get(name)
+    if names is None:
+        return (None, None, None)
+    return tuple(plant.compiled.param_names.index(q) for q in names)
+
+
+class _rates_at:
+    """t_ref of the harness inputs set to t (so that rate and accel act only as der(u)
+    and der(u, 2) there), restored after."""
+
+    def __init__(self, c, rate_cols, t):
+        self.c, self.idx, self.t = c, [r[2] for r in rate_cols if r[2] is not None], t
+
+    def __enter__(self):
+        self.saved = self.c.p[self.idx].copy()
+        self.c.p[self.idx] = self.t
+
+    def __exit__(self, *exc):
+        self.c.p[self.idx] = self.saved
+
+
+def _expand_columns(c, t, z, cols, rate_cols):
+    """d expand / d (u, u', u''), the output part of every input column."""
+    n_all = len(c.expand(t, z))
+    out = [_dexpand_dp(c, t, z, k) / g for k, g in cols]
+    out += [_dexpand_dp(c, t, z, k) if k is not None else np.zeros(n_all)
+            for order in (0, 1) for k in (r[order] for r in rate_cols)]
+    return np.column_stack(out) if out else np.zeros((n_all, 0))
+
+
+def _absorb_input_derivatives(A, C, Bs, Ds, m, inputs):
+    """x' = A x + B u + B1 u' + B2 u'',  y = C x + D u + D1 u' + D2 u''  in the state
+    xi = x - (B1 + A B2) u - B2 u':  xi' = A xi + (B + A B1 + A^2 B2) u and
+    y = C xi + (D + C B1 + C A B2) u, provided D1 + C B2 = 0 and D2 = 0 (else the
+    output follows the derivative of the input: no proper transfer function)."""
+    B, B1, B2 = Bs[:, :m], Bs[:, m:2 * m], Bs[:, 2 * m:]
+    D, D1, D2 = Ds[:, :m], Ds[:, m:2 * m], Ds[:, 2 * m:]
+    if not (B1.any() or B2.any() or D1.any() or D2.any()):
+        return B, D
+    improper = np.abs(D1 + C @ B2) + np.abs(D2)
+    scale = np.abs(D) + np.abs(C @ B1) + np.abs(C @ A @ B2) + 1e-300
+    if np.any(improper > 1e-6 * np.max(scale, axis=0, keepdims=True)):
+        j = int(np.argmax(np.max(improper / np.max(scale, axis=0, keepdims=True), axis=0)))
+        raise ValueError(f"an output follows the derivative of input '{inputs[j]}' "
+                         "directly: the linearization has no proper transfer function "
+                         "(choose an output behind a state, or the input's integral)")
+    return B + A @ B1 + A @ A @ B2, D + C @ B1 + C @ A @ B2
 
 
 def linear_residual(compiled, t, z):

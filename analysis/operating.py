@@ -13,6 +13,13 @@ Steady state (Egeland & Gravdahl 1.2.3): der(x) = 0 for every state, i.e.
 F(t, z, z' = 0) = 0, solved by damped Newton with a Newton-homotopy fallback.  A
 singular Jacobian at the solution means the equilibrium is not isolated (a free angle,
 a floating potential) or does not exist; the error names the states in the null space.
+
+Modes.  Every operating point carries the modes (relation and floor values, ``m``) it
+was computed in, and satisfies them: equilibria and consistent points are found by a
+mode search (:mod:`.modes`) that switches the relations a solution contradicts and
+solves again, and a point for which no consistent mode is found raises
+:class:`OperatingPointError` (:class:`SteadyStateError` for an equilibrium) naming the
+relations.  Values read from a point (``op["limit.y"]``) are evaluated in its modes.
 """
 from __future__ import annotations
 
@@ -21,33 +28,45 @@ from contextlib import contextmanager
 import numpy as np
 import scipy.sparse as sps
 
-from ..compiler.model import CompiledModel
-from ..components.component import Component
-from ..components.declarations import Parameter
-from ..components.symbols import Eq
-from ..ports import RealInput, RealOutput
+from ..runtime import CompiledModel
 from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton, homotopy
+from .modes import ModeConflict, NoSolution, mode_values, search_modes
+from .plant import Plant, as_plant, constant_value
 
-__all__ = ["OperatingPoint", "SteadyStateError", "steady_state", "operating_point",
-           "make_consistent", "constant_value"]
+__all__ = ["OperatingPoint", "OperatingPointError", "SteadyStateError", "steady_state",
+           "operating_point", "make_consistent", "consistent_point", "constant_value"]
 
 
-class SteadyStateError(ValueError):
-    """No isolated equilibrium: none found, or a singular Jacobian (names the states)."""
+class OperatingPointError(ValueError):
+    """No consistent operating point: the algebraic equations have no solution, or no
+    mode of the relations is consistent with its own solution (``relations`` names
+    them, in the user's words)."""
+
+    def __init__(self, message: str, relations=()):
+        super().__init__(message)
+        self.relations = list(relations)
+
+
+class SteadyStateError(OperatingPointError):
+    """No isolated equilibrium: none found, a singular Jacobian (names the states), or
+    no mode of the relations that the equilibrium satisfies (names the relations)."""
 
 
 class OperatingPoint:
-    """A consistent point (t, z) of a compiled model, readable by variable name.
+    """A consistent point (t, z) of a compiled model in modes m, readable by name.
 
-    ``op["J.w"]`` is any variable's value there; ``op.states`` maps the state names to
-    their values; ``op.inputs`` the values of the top-level inputs.
+    ``op["J.w"]`` is any variable's value there (evaluated in the point's modes);
+    ``op.states`` maps the state names to their values; ``op.inputs`` the values of the
+    top-level inputs; ``op.modes`` the value of every relation ({text: bool}).
+    ``m`` None means the modes the point itself gives (``init_modes``).
     """
 
-    def __init__(self, plant, t: float, z: np.ndarray):
+    def __init__(self, plant, t: float, z: np.ndarray, m=None):
         self.plant = plant
         self.t = float(t)
         self.z = np.asarray(z, dtype=float)
+        self.m = None if m is None else np.array(m, dtype=float)
 
     @property
     def compiled(self) -> CompiledModel:
@@ -60,8 +79,20 @@ class OperatingPoint:
         sign, k = c.outputs[self.plant.internal(name)]
         if sign is None:
             return constant_value(c, k)
-        with _modes_at(c, self.t, self.z):
+        with self.in_modes():
             return float(sign * c.expand(self.t, self.z)[k])
+
+    def in_modes(self):
+        """Context: the compiled model in this point's modes (the caller's restored)."""
+        if self.m is None:
+            return _modes_at(self.compiled, self.t, self.z)
+        return modes_set(self.compiled, self.m)
+
+    @property
+    def modes(self) -> dict:
+        """{relation text: value} of the modes this point is in."""
+        with self.in_modes():
+            return mode_values(self.compiled, self.plant.prefix)
 
     @property
     def states(self) -> dict:
@@ -74,136 +105,6 @@ class OperatingPoint:
 
     def __repr__(self):
         return f"<OperatingPoint t={self.t:g} states={self.states}>"
-
-
-# -- the model behind the user's object ------------------------------------------------------
-class Plant:
-    """A compiled model and the translation of the user's names into its names.
-
-    ``input_params`` maps each top-level RealInput of the user's component to the
-    parameter of the harness that drives it.
-    """
-
-    def __init__(self, compiled, prefix: str = "", input_params=None):
-        self.compiled = compiled
-        self.prefix = prefix
-        self.input_params = dict(input_params or {})
-
-    def internal(self, name: str) -> str:
-        if name in self.input_params:
-            return self.input_params[name]
-        if name.startswith("der(") and name.endswith(")"):
-            return f"der({self.internal(name[4:-1])})"
-        return self.prefix + name
-
-    def external(self, name: str) -> str:
-        if name.startswith("der(") and name.endswith(")"):
-            return f"der({self.external(name[4:-1])})"
-        return name[len(self.prefix):] if name.startswith(self.prefix) else name
-
-    def parameter_index(self, name: str):
-        """Index into ``compiled.p`` of a parameter or top-level input, else None."""
-        internal = self.internal(name)
-        names = self.compiled.param_names
-        return names.index(internal) if internal in names else None
-
-
-def as_plant(model, values=None) -> Plant:
-    """The Plant for a Component, CompiledModel, Result, OperatingPoint or Plant."""
-    if isinstance(model, Plant):
-        return model
-    if isinstance(model, OperatingPoint):
-        return model.plant
-    if isinstance(model, CompiledModel):
-        return Plant(model)
-    if hasattr(model, "compiled") and hasattr(model, "_z"):      # a Result
-        return Plant(model.compiled)
-    if isinstance(model, Component):
-        return _compile_plant(model, values or {})
-    raise TypeError(f"expected a Component or a CompiledModel, got {type(model).__name__}")
-
-
-def top_level_inputs(model: Component) -> list:
-    """Names of the RealInput ports declared directly on a component."""
-    return [name for name, child in model.children().items() if isinstance(child, RealInput)]
-
-
-class _InputValue(Component):
-    """Drives a top-level input from a parameter (so linearize can perturb it)."""
-
-    y = RealOutput()
-    k = Parameter(1.0, description="value of the input")
-
-    def equations(self):
-        return [Eq(self.y, self.k)]
-
-
-class _Harness(Component):
-    """The user's model with each top-level RealInput driven by an ``_InputValue``."""
-
-    def __init__(self, plant, values):
-        super().__init__()
-        self.plant = plant
-        self._inputs = list(values)
-        for k, name in enumerate(self._inputs):
-            setattr(self, f"input{k}", _InputValue(k=float(values[name])))
-
-    def equations(self):
-        return [_connect(getattr(self, f"input{k}").y, getattr(self.plant, name))
-                for k, name in enumerate(self._inputs)]
-
-
-def _connect(a, b):
-    from ..components.component import connect
-    return connect(a, b)
-
-
-def _compile_plant(model: Component, values: dict, unfreeze=()) -> Plant:
-    """Compile ``model`` (in a harness if it has top-level inputs).
-
-    Parameters equal to 0 are structural zeros of the compiled model (not tunable), so
-    the parameters to be perturbed (``unfreeze``, the harness's input values) are
-    compiled as 1 and set to their value afterwards; they enter the equations
-    additively, so the structure does not depend on the value.
-    """
-    from ..simulation import compile as compile_model
-    names = top_level_inputs(model)
-    vals = {n: float(values.get(n, values.get(f"{n}.signal", 0.0))) for n in names}
-    mods = {}
-    for path in unfreeze:
-        _nested_set(mods, path.split("."), 1.0)
-    root = type(model)(*model._init_call[0], **_merged(model._init_call[1], mods))
-    if not names:
-        plant = Plant(compile_model(root))
-    else:
-        compiled = compile_model(_Harness(root, {n: 1.0 for n in names}))
-        params = {n: f"input{k}.k" for k, n in enumerate(names)}
-        params.update({f"{n}.signal": p for n, p in params.items()})
-        plant = Plant(compiled, "plant.", params)
-        for n in names:
-            compiled.p[plant.parameter_index(n)] = vals[n]
-    for path in unfreeze:
-        plant.compiled.p[plant.parameter_index(path)] = 0.0
-    return plant
-
-
-def _nested_set(d, keys, value):
-    for k in keys[:-1]:
-        d = d.setdefault(k, {})
-    d[keys[-1]] = value
-
-
-def _merged(a: dict, b: dict) -> dict:
-    out = dict(a)
-    for k, v in b.items():
-        out[k] = _merged(out[k], v) if isinstance(v, dict) and isinstance(out.get(k), dict) \
-            else v
-    return out
-
-
-def constant_value(compiled, k) -> float:
-    """The value of a variable the compiler fixed: a number, or a function of p."""
-    return float(k(compiled.p)) if callable(k) else float(k)
 
 
 # -- consistency -------------------------------------------------------------------------------
@@ -219,46 +120,63 @@ def _modes_at(compiled, t, z):
 
 
 @contextmanager
-def parameters_set(plant: Plant, values: dict):
-    """Temporarily set parameters (and top-level inputs) by the user's names."""
-    c = plant.compiled
-    saved = c.p.copy()
+def modes_set(compiled, m):
+    """The modes ``m`` for the duration, the caller's restored."""
+    saved = compiled.m.copy()
     try:
-        for name, v in values.items():
-            k = plant.parameter_index(name)
-            if k is None:
-                raise KeyError(f"the model has no parameter or input '{name}'")
-            c.p[k] = float(v)
+        compiled.m[:] = m
         yield
     finally:
-        c.p[:] = saved
+        compiled.m[:] = saved
 
 
-def make_consistent(compiled, t: float, z: np.ndarray) -> np.ndarray:
-    """Solve G(t, z) = 0 for the non-state part of z, the states held."""
+def make_consistent(compiled, t: float, z: np.ndarray, modes=None) -> np.ndarray:
+    """Solve G(t, z) = 0 for the non-state part of z, the states held, in modes that
+    the solution satisfies (see :func:`consistent_point`)."""
+    return consistent_point(compiled, t, z, modes)[0]
+
+
+def consistent_point(compiled, t: float, z: np.ndarray, modes=None, prefix: str = ""):
+    """(z, m): G(t, z) = 0 solved for the non-state part of z with the states held, and
+    the modes m it satisfies, by a mode search from ``modes`` (default: those of the
+    given point).  Raises OperatingPointError naming the relations if none is found."""
     alg = np.flatnonzero(compiled.algebraic)
-    if alg.size == 0:
-        return z.copy()
-    z = z.copy()
-
-    def fun(za):
-        z[alg] = za
-        return compiled.G(t, z)
-
-    def jac(za):
-        z[alg] = za
-        return compiled.dG_dy(t, z)[:, alg]
-
+    z = np.array(z, dtype=float)
     w = 1.0 / (1e-10 * np.abs(z[alg]) + 1e-10 * compiled.nominal[alg])
-    with _modes_at(compiled, t, z):
-        out = damped_newton(fun, jac, z[alg], weights=w, tol=1.0, max_iter=50)
+
+    def solve(guess):
+        if alg.size == 0:
+            return guess.copy()
+        zz = guess.copy()
+
+        def fun(za):
+            zz[alg] = za
+            return compiled.G(t, zz)
+
+        def jac(za):
+            zz[alg] = za
+            return compiled.dG_dy(t, zz)[:, alg]
+
+        try:
+            out = damped_newton(fun, jac, guess[alg], weights=w, tol=1.0, max_iter=50)
+            if not out.converged:
+                out = homotopy(fun, jac, guess[alg], weights=w, tol=1.0)
+        except SingularMatrixError as err:
+            raise NoSolution(f"singular Jacobian of the algebraic equations: {err}") from None
+        zz[alg] = out.x
         if not out.converged:
-            out = homotopy(fun, jac, z[alg], weights=w, tol=1.0)
-    if not out.converged:
-        raise ValueError(f"the algebraic variables could not be made consistent at t = {t}: "
-                         f"{out.message}")
-    z[alg] = out.x
-    return z
+            raise NoSolution(out.message, zz.copy())
+        return zz.copy()
+
+    try:
+        z, m, _ = search_modes(compiled, t, z, solve, modes=modes, prefix=prefix)
+    except NoSolution as err:
+        raise OperatingPointError(f"the algebraic variables could not be made consistent "
+                                  f"at t = {t}: {err.message}") from None
+    except ModeConflict as err:
+        raise OperatingPointError(f"no consistent operating point at t = {t}: {err}",
+                                  err.relations) from None
+    return z, m
 
 
 # -- operating points ------------------------------------------------------------------------
@@ -281,7 +199,7 @@ def operating_point(plant: Plant, at=None, t: float = 0.0) -> OperatingPoint:
         z[_z_index(plant, name)] = v * _z_sign(plant, name)
     if c.dynamic is not None:
         c.reselect_states(t, z, hysteresis=1.0)
-    return OperatingPoint(plant, t, make_consistent(c, t, z))
+    return OperatingPoint(plant, t, *consistent_point(c, t, z, prefix=plant.prefix))
 
 
 def _start_values(compiled, t):
@@ -296,13 +214,17 @@ def _from_result(plant, result, t):
     c = plant.compiled
     z_t = result._z
     k = int(np.argmin(np.abs(result.t - t)))
+    modes = None
     if abs(result.t[k] - t) <= 1e-12 * max(1.0, abs(t)):
         z = z_t[k].copy()
+        # the modes the integrator used at that output point, where the result has them
+        if len(result._discrete_index) == len(result.t) and result._discrete:
+            modes = result._discrete[result._discrete_index[k]]
     else:
         z = np.array([np.interp(t, result.t, z_t[:, j]) for j in range(z_t.shape[1])])
     if c.dynamic is not None:
         c.reselect_states(t, z, hysteresis=1.0)
-    return OperatingPoint(plant, t, make_consistent(c, t, z))
+    return OperatingPoint(plant, t, *consistent_point(c, t, z, modes, plant.prefix))
 
 
 def _z_index(plant, name):
@@ -348,14 +270,19 @@ def steady_state(model, *, hold=(), t: float = 0.0, inputs=None, parameters=None
     ------
     SteadyStateError
         If Newton's method and the homotopy fail (the message lists the derivatives
-        that could not be driven to zero), or if the Jacobian at the solution is
-        singular (the message names the states of the null space).
+        that could not be driven to zero), if the Jacobian at the solution is
+        singular (the message names the states of the null space), or if no mode of
+        the relations is consistent with its own equilibrium (the message, and the
+        error's ``relations``, name the relations that kept being contradicted).
 
     Notes
     -----
     Solves F(t, z, 0) = 0 of the compiled model, i.e. the index-reduced equations with
     every state derivative zero (Egeland & Gravdahl 1.2.3, the equilibrium of
-    x' = f(x, u)).  Rows and columns of the held states are left out.
+    x' = f(x, u)).  Rows and columns of the held states are left out.  The relations
+    are frozen in the modes of the start point, then switched where the solution
+    contradicts them, until the equilibrium satisfies the modes it was computed in
+    (:mod:`acausal.analysis.modes`); the point's ``modes`` lists them.
     """
     plant = as_plant(model, inputs)
     c = plant.compiled
@@ -370,7 +297,8 @@ def steady_state(model, *, hold=(), t: float = 0.0, inputs=None, parameters=None
     for name, v in (guess or {}).items():
         z0[_z_index(plant, name)] = v * _z_sign(plant, name)
     held = [_z_index(plant, h) for h in hold]
-    return OperatingPoint(plant, t, _solve_steady(plant, t, z0, held, tol))
+    z, m = _solve_steady(plant, t, z0, held, tol)
+    return OperatingPoint(plant, t, z, m)
 
 
 def _steady_system(c, t, z0, held):
@@ -395,11 +323,13 @@ def _steady_system(c, t, z0, held):
 
 
 def _solve_steady(plant, t, z0, held, tol):
+    """(z, m): the equilibrium and the modes it satisfies (mode search, :mod:`.modes`)."""
     c = plant.compiled
     fun, jac, full, cols = _steady_system(c, t, z0, held)
-    x0 = z0[cols]
-    w = 1.0 / (1e-10 * np.abs(x0) + 1e-10 * c.nominal[cols])
-    with _modes_at(c, t, z0):
+    w = 1.0 / (1e-10 * np.abs(z0[cols]) + 1e-10 * c.nominal[cols])
+
+    def solve(guess):
+        x0 = guess[cols]
         try:
             out = damped_newton(fun, jac, x0, weights=w, tol=1.0, max_iter=100)
             if not out.converged:
@@ -408,31 +338,44 @@ def _solve_steady(plant, t, z0, held, tol):
             out = None
         if out is None or not out.converged or \
                 np.max(np.abs(out.residual), initial=0.0) > 1e-8 * max(1.0, np.abs(x0).max()):
-            _raise_singular(plant, jac(x0 if out is None else out.x).toarray(), cols)
-            raise SteadyStateError(_no_equilibrium(plant, t, full(out.x)))
-        _raise_singular(plant, jac(out.x).toarray(), cols)
-    return full(out.x)
+            x = x0 if out is None else out.x
+            raise NoSolution(_singular_message(plant, jac(x).toarray(), cols)
+                             or _no_equilibrium(plant, t, full(x)), full(x))
+        return full(out.x)
+
+    try:
+        z, m, _ = search_modes(c, t, z0, solve, prefix=plant.prefix)
+    except NoSolution as err:
+        raise SteadyStateError(err.message) from None
+    except ModeConflict as err:
+        raise SteadyStateError(f"no steady state that satisfies the modes it is computed "
+                               f"in: {err}", err.relations) from None
+    with modes_set(c, m):
+        message = _singular_message(plant, jac(z[cols]).toarray(), cols)
+    if message:
+        raise SteadyStateError(message)
+    return z, m
 
 
-def _raise_singular(plant, J, cols):
-    """A (numerically) singular steady-state Jacobian: name the null-space variables."""
+def _singular_message(plant, J, cols):
+    """For a (numerically) singular steady-state Jacobian, the message naming the
+    null-space variables; None if it is regular."""
     if J.size == 0:
-        return
+        return None
     Js = J / np.maximum(np.abs(J).max(axis=1, keepdims=True), 1e-300)   # row scaling
     _, s, Vt = np.linalg.svd(Js)
     if s[-1] > 1e-10 * s[0]:
-        return
+        return None
     c = plant.compiled
     v = np.abs(Vt[-1])
     involved = [cols[k] for k in np.argsort(-v) if v[k] > 1e-3 * v.max()]
     states = [plant.external(c.names[j]) for j in involved if j in set(c.state_index)]
     others = [plant.external(c.names[j]) for j in involved if j not in set(c.state_index)]
-    raise SteadyStateError(
-        "the steady-state equations der(x) = 0 are singular: the equilibrium is not "
-        "isolated or does not exist. States in the null space: "
-        + (", ".join(states) or "none") + (f" (with {', '.join(others)})" if others else "")
-        + ". Hold a drifting state at a given value with hold=[...], or fix the free "
-        "quantity (a Fixed flange, a Ground)")
+    return ("the steady-state equations der(x) = 0 are singular: the equilibrium is not "
+            "isolated or does not exist. States in the null space: "
+            + (", ".join(states) or "none") + (f" (with {', '.join(others)})" if others else "")
+            + ". Hold a drifting state at a given value with hold=[...], or fix the free "
+            "quantity (a Fixed flange, a Ground)")
 
 
 def _no_equilibrium(plant, t, z):

@@ -41,7 +41,7 @@ class ForwardSensitivity(DAEProblem):
         self.algebraic = np.tile(c.algebraic, k + 1)
         self.nominal = np.tile(c.nominal, k + 1)
         self.n_roots = c.n_roots
-        self.time_events = getattr(c, "time_events", ())
+        self.oriented_roots = getattr(c, "oriented_roots", False)
         if hasattr(c, "next_time_event"):
             self.next_time_event = c.next_time_event
         rows, cols = c.jac_pattern
@@ -81,6 +81,11 @@ class ForwardSensitivity(DAEProblem):
     def roots(self, t, y, yp):
         n = self.c.n
         return self.c.roots(t, y[:n], None if yp is None else yp[:n])
+
+    def arm(self, t, y, yp, resolution=0.0):
+        n = self.c.n
+        if hasattr(self.c, "arm"):
+            self.c.arm(t, y[:n], None if yp is None else yp[:n], resolution)
 
     def handle_event(self, t, y, yp, crossed):
         n = self.c.n

@@ -2,18 +2,23 @@
 
 What a control engineer asks of a linearized model (Egeland & Gravdahl 1.3, 2.1):
 
-* poles (eigenvalues of A) and transmission zeros (finite generalized eigenvalues of the
-  Rosenbrock pencil of a minimal realization, Emami-Naeini & Van Dooren 1982);
+* poles (eigenvalues of A) and transmission zeros (the invariant zeros of the Rosenbrock
+  pencil of a minimal realization, by the reduction of Emami-Naeini & Van Dooren 1982);
 * transfer functions H(s) = C (sI - A)^-1 B + D as numerator/denominator polynomials
   (Egeland & Gravdahl (1.57)), after removing the uncontrollable and unobservable
-  modes (Kalman decomposition by orthogonal Krylov bases, Varga 2017 ch. 2), so that a
-  motor's free angle does not leave a pole at s = 0 in its speed transfer function;
+  modes (Kalman decomposition by the orthogonal staircase form, Varga 2017 ch. 2), so
+  that a motor's free angle does not leave a pole at s = 0 in its speed transfer
+  function, and checked against the state-space frequency response;
 * step, impulse and frequency responses, Bode plots, and the gain and phase margins of
   a loop transfer function (Egeland & Gravdahl 2.1.4), computed from the polynomials:
   the phase crossovers are the real roots of Im N(jw) D(-jw) and the gain crossovers
   those of |N(jw)|^2 - |D(jw)|^2, so no frequency grid can miss one;
 * unity or dynamic feedback, series connection, and conversion to and from
   ``scipy.signal`` objects.
+
+Every rank decision is made on the balanced system, relative to its own norm
+(:mod:`.realization`): ill-scaled and closed-loop models give the same answers as
+well-scaled ones.
 """
 from __future__ import annotations
 
@@ -21,7 +26,10 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.signal as ss
 
-__all__ = ["StateSpace", "Margins"]
+from .realization import (TransferFunctionWarning, frequency_response, invariant_zeros,
+                          minimal_realization, scaled, tf_polynomials)
+
+__all__ = ["StateSpace", "Margins", "TransferFunctionWarning"]
 
 
 class Margins:
@@ -112,57 +120,52 @@ class StateSpace:
     def minimal(self, tol: float | None = None) -> "StateSpace":
         """A minimal realization: the controllable and observable part (Kalman).
 
-        The state names of the result are those of the original states that weigh most
-        in each new coordinate (the new states are orthonormal combinations of the old).
+        Computed on the balanced system (:mod:`.realization`), with rank decisions
+        relative to its own norm (``tol``, default n 1e-10), so the units of the states
+        do not change the answer.  The new states are x = T x_m with T a diagonal
+        scaling times orthonormal columns; each is named after the original state that
+        weighs most in it (in the balanced coordinates).
         """
         if self.n_states == 0:
             return self
-        V = _krylov_basis(self.A, self.B, tol)
-        A, B, C = V.T @ self.A @ V, V.T @ self.B, self.C @ V
-        W = _krylov_basis(A.T, C.T, tol)
-        T = V @ W
-        names = [self.states[int(np.argmax(np.abs(T[:, k])))] for k in range(T.shape[1])]
-        return StateSpace(W.T @ A @ W, W.T @ B, C @ W, self.D, names, self.inputs, self.outputs)
+        A, B, C, _, Q = minimal_realization(self.A, self.B, self.C, self.D, tol)
+        names = [self.states[int(np.argmax(np.abs(Q[:, k])))] for k in range(Q.shape[1])]
+        return StateSpace(A, B, C, self.D, names, self.inputs, self.outputs)
 
     def zeros(self) -> np.ndarray:
-        """Transmission zeros of a square system (finite zeros of the Rosenbrock pencil of
-        a minimal realization).  Select a square sub-system with ``select`` first."""
+        """Transmission zeros of a square system: the invariant zeros of a minimal
+        realization (Emami-Naeini & Van Dooren 1982, see :mod:`.realization`).  Select
+        a square sub-system with ``select`` first.  A channel that is identically zero
+        has no zeros defined: ValueError."""
         if self.n_outputs != self.n_inputs:
             raise ValueError(f"transmission zeros need as many outputs as inputs (this "
                              f"system has {self.n_outputs} outputs, {self.n_inputs} inputs); "
                              "choose channels with select(outputs=..., inputs=...)")
+        if self.n_inputs == 0:
+            return np.zeros(0, complex)
         sys = self.minimal()
-        n, m = sys.n_states, sys.n_inputs
-        M = np.block([[sys.A, sys.B], [sys.C, sys.D]])
-        N = np.zeros_like(M)
-        N[:n, :n] = np.eye(n)
-        alpha, beta = sla.eig(M, N, right=False, homogeneous_eigvals=True)
-        finite = np.abs(beta) > 1e-10 * np.maximum(np.abs(alpha), 1.0)
-        return _sorted(alpha[finite] / beta[finite]) if m else np.zeros(0, complex)
+        return _sorted(invariant_zeros(sys.A, sys.B, sys.C, sys.D))
 
     # -- transfer functions -----------------------------------------------------------------
     def tf(self, output=None, input=None, minimal: bool = True):  # noqa: A002 (control naming)
         """Numerator and denominator of one transfer function, highest power first.
 
         ``minimal=True`` cancels the modes the channel cannot see (exactly, by a minimal
-        realization, not by matching roots), so the degree is that of the channel.
-        The denominator is monic.
+        realization, not by matching roots), so the degree is that of the channel;
+        ``minimal=False`` keeps every mode of A (common factors stay in num and den).
+        The denominator is monic.  num = k prod(s - z_i) from the invariant zeros and
+        the first non-zero Markov parameter, rather than ss2tf's difference of
+        characteristic polynomials, whose cancelled leading terms leave round-off
+        coefficients behind.  The result is checked against the state-space frequency
+        response; if it does not match, the numerator is recomputed by interpolation
+        and a ``TransferFunctionWarning`` is issued (:mod:`.realization`).
         """
         sys = self.select([_default(output, self.outputs, "output")],
                           [_default(input, self.inputs, "input")])
         if minimal:
             sys = sys.minimal()
-        if sys.n_states == 0:
-            return np.array([sys.D[0, 0]]), np.array([1.0])
-        # num = k prod(s - z_i): the zeros from the pencil and k the first non-zero Markov
-        # parameter, rather than ss2tf's difference of characteristic polynomials, whose
-        # cancelled leading terms leave round-off coefficients behind
-        z = sys.zeros()
-        r = sys.n_states - len(z)
-        k = sys.D[0, 0] if r == 0 else \
-            (sys.C @ np.linalg.matrix_power(sys.A, r - 1) @ sys.B)[0, 0]
-        return np.real_if_close(k * np.poly(z)).real if len(z) else np.array([k]), \
-            np.real(np.poly(sys.A))
+        return tf_polynomials(sys.A, sys.B, sys.C, sys.D,
+                              what=f"{sys.outputs[0]} / {sys.inputs[0]}")
 
     def transfer_functions(self, minimal: bool = True) -> dict:
         """Every channel's (num, den), keyed by (output name, input name)."""
@@ -170,20 +173,25 @@ class StateSpace:
 
     def dcgain(self) -> np.ndarray:
         """H(0) = D - C A^-1 B (p x m) of a minimal realization (so that modes the
-        outputs do not see, such as a free angle, do not make A singular)."""
+        outputs do not see, such as a free angle, do not make A singular).  A pole at
+        s = 0 that the outputs do see makes H(0) infinite: ValueError."""
         sys = self.minimal()
         if sys.n_states == 0:
             return sys.D.copy()
-        return sys.D - sys.C @ np.linalg.solve(sys.A, sys.B)
+        A, B, C, D, _, bu, cy = scaled(sys.A, sys.B, sys.C, sys.D)
+        poles = np.linalg.eigvals(A)
+        if np.min(np.abs(poles)) <= 1e3 * np.finfo(float).eps * np.linalg.norm(A, 2):
+            raise ValueError("dcgain: a pole at s = 0 is seen by the outputs, H(0) is "
+                             f"infinite (poles {sys.poles()})")
+        H0 = D - C @ np.linalg.solve(A, B)
+        return H0 / cy[:, None] / bu
 
     def freqresp(self, w) -> np.ndarray:
-        """H(j w) for each w: shape (len(w), p, m), or (len(w),) for one channel."""
+        """H(j w) for each w: shape (len(w), p, m), or (len(w),) for one channel.
+        Evaluated on the balanced system, so ill-scaled states cost no accuracy."""
         w = np.atleast_1d(np.asarray(w, dtype=float))
-        n = self.n_states
-        H = np.empty((len(w), self.n_outputs, self.n_inputs), dtype=complex)
-        for k, wk in enumerate(w):
-            X = np.linalg.solve(1j * wk * np.eye(n) - self.A, self.B) if n else 0.0
-            H[k] = self.C @ X + self.D
+        A, B, C, D, _, bu, cy = scaled(self.A, self.B, self.C, self.D)
+        H = frequency_response(A, B, C, D, w) / cy[None, :, None] / bu[None, None, :]
         return H[:, 0, 0] if H.shape[1:] == (1, 1) else H
 
     # -- time responses ---------------------------------------------------------------------
@@ -246,8 +254,11 @@ class StateSpace:
         return w, mag, phase
 
     def _frequency_grid(self):
-        mags = np.abs(np.concatenate([self.poles(), self.zeros()
-                                      if self.n_inputs == self.n_outputs else []]))
+        try:
+            zeros = self.zeros() if self.n_inputs == self.n_outputs else []
+        except ValueError:                 # a channel that is identically zero
+            zeros = []
+        mags = np.abs(np.concatenate([self.poles(), zeros]))
         mags = mags[mags > 0]
         lo = np.log10(mags.min()) - 2 if mags.size else -2
         hi = np.log10(mags.max()) + 2 if mags.size else 2
@@ -318,7 +329,15 @@ class StateSpace:
 
     @classmethod
     def from_tf(cls, num, den, **names) -> "StateSpace":
-        """From a SISO numerator and denominator, highest power first."""
+        """From a SISO numerator and denominator, highest power first (a constant
+        gives a static system without states)."""
+        den = np.trim_zeros(np.atleast_1d(np.asarray(den, dtype=float)), "f")
+        if len(den) == 1:
+            k = np.atleast_1d(np.asarray(num, dtype=float))
+            if len(np.trim_zeros(k, "f")) > 1:
+                raise ValueError("from_tf: num has a higher degree than den (improper)")
+            return cls(np.zeros((0, 0)), np.zeros((0, 1)), np.zeros((1, 0)),
+                       [[k[-1] / den[0]]], **names)
         A, B, C, D = ss.tf2ss(num, den)
         return cls(A, B, C, D, **names)
 
@@ -361,31 +380,6 @@ def _default(key, names, what):
 def _sorted(values):
     v = np.asarray(values, dtype=complex)
     return v[np.lexsort((v.imag, v.real))]
-
-
-def _krylov_basis(A, B, tol):
-    """Orthonormal basis of the controllable subspace span[B, AB, A^2 B, ...].
-
-    A new direction is kept when its part orthogonal to the basis is not small against
-    the vector it came from (relative ``tol``) and above the round-off of the product
-    (a multiple of eps ||A||): a small but genuine coupling (rad/s from Pa in a
-    hydraulic drive) is kept, cancellation noise is not.
-    """
-    n = A.shape[0]
-    rel = tol if tol is not None else max(n, 1) * 1e-10
-    noise = 1e3 * np.finfo(float).eps
-    V = np.zeros((n, 0))
-    raw, ref = B, np.linalg.norm(B, 2)
-    while V.shape[1] < n and ref > 0:
-        new = raw - V @ (V.T @ raw)           # twice: one Gram-Schmidt pass loses digits
-        new = new - V @ (V.T @ new)
-        U, s, _ = np.linalg.svd(new, full_matrices=False)
-        keep = U[:, s > max(rel * np.linalg.norm(raw, 2), noise * ref)]
-        if keep.shape[1] == 0:
-            break
-        V = np.hstack([V, keep])
-        raw, ref = A @ keep, np.linalg.norm(A, 2)
-    return V
 
 
 def _static(k, p, m):

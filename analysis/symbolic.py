@@ -28,7 +28,7 @@ from ..compiler.flatten import flatten
 from ..compiler.pipeline import solve_linear
 from ..compiler.reduction import reduce_index
 from ..compiler.symbolic import SymbolicSystem
-from .operating import _Harness, top_level_inputs
+from .plant import _Harness, top_level_inputs
 from .statespace import StateSpace
 
 __all__ = ["linearize_symbolic", "SymbolicStateSpace"]

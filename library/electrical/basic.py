@@ -13,6 +13,8 @@ class Ground(ac.Component):
 
     p = Pin()
 
+    energy_role = "lossless"  # v = 0: takes no power
+
     def equations(self):
         return [ac.Eq(self.p.v, 0)]
 
@@ -21,6 +23,10 @@ class Resistor(OnePort):
     """Ideal linear resistor, Ohm's law:  v = R i."""
 
     R = ac.Parameter(1.0, unit="Ohm", min=0, description="resistance")
+
+    def loss_power(self):
+        """P_loss = v i = R i^2 (to the environment)."""
+        return self.v * self.i
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.v, self.R * self.i)]
@@ -32,6 +38,10 @@ class Capacitor(OnePort):
     C = ac.Parameter(1.0, unit="F", min=0, description="capacitance")
     v = ac.Variable(start=0.0, unit="V", description="voltage drop p.v - n.v")
 
+    def stored_energy(self):
+        """W = C v^2 / 2."""
+        return self.C * self.v**2 / 2
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.C * ac.der(self.v), self.i)]
 
@@ -41,6 +51,10 @@ class Inductor(OnePort):
 
     L = ac.Parameter(1.0, unit="H", min=0, description="inductance")
     i = ac.Variable(start=0.0, unit="A", description="current from p to n")
+
+    def stored_energy(self):
+        """W = L i^2 / 2."""
+        return self.L * self.i**2 / 2
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.L * ac.der(self.i), self.v)]
@@ -61,6 +75,8 @@ class HeatingResistor(OnePort):
     heatPort = HeatPort()
     R = ac.Variable(unit="Ohm", description="resistance at the port temperature")
 
+    energy_role = "lossless"  # v i leaves as heat through heatPort
+
     def equations(self):
         return [*super().equations(),
                 ac.Eq(self.R, self.R_ref * (1 + self.alpha * (self.heatPort.T - self.T_ref))),
@@ -75,6 +91,8 @@ class IdealTransformer(TwoPort):
     """
 
     n = ac.Parameter(1.0, description="turns ratio N1/N2")
+
+    energy_role = "lossless"  # v1 i1 + v2 i2 = 0
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.v1, self.n * self.v2),
@@ -94,6 +112,8 @@ class IdealOpAmp(ac.Component):
     in_n = Pin()
     out = Pin()
 
+    energy_role = "source"  # the output stage is fed by a supply outside the model
+
     def equations(self):
         return [ac.Eq(self.in_p.v, self.in_n.v), ac.Eq(self.in_p.i, 0), ac.Eq(self.in_n.i, 0)]
 
@@ -110,6 +130,10 @@ class _IdealSwitch(OnePort):
     Goff = ac.Parameter(1e-5, unit="S", min=0, description="conductance when open")
     control = RealInput()
     s = ac.Variable(start=0.0, description="curve parameter (i when closed, v when open)")
+
+    def loss_power(self):
+        """P_loss = v i = s^2 Ron (closed), s^2 Goff (open)."""
+        return self.v * self.i
 
     def closed(self):
         raise NotImplementedError

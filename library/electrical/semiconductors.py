@@ -23,6 +23,10 @@ class Diode(OnePort):
     Maxexp = ac.Parameter(15.0, min=1, description="above v/Vt = Maxexp: linear continuation")
     R = ac.Parameter(1e8, unit="Ohm", min=0, description="parallel leakage resistance")
 
+    def loss_power(self):
+        """P_loss = v i >= 0 (the characteristic lies in the first and third quadrants)."""
+        return self.v * self.i
+
     def equations(self):
         x = self.v / self.Vt
         tangent = sp.exp(self.Maxexp) * (1 + x - self.Maxexp)
@@ -47,6 +51,10 @@ class IdealDiode(OnePort):
     Goff = ac.Parameter(1e-5, unit="S", min=0, description="conductance when blocking")
     Vknee = ac.Parameter(0.0, unit="V", min=0, description="forward threshold voltage")
     s = ac.Variable(start=0.0, description="curve parameter (i when on, v when off)")
+
+    def loss_power(self):
+        """P_loss = v i >= 0 (the characteristic lies in the first and third quadrants)."""
+        return self.v * self.i
 
     def equations(self):
         off = self.s < 0

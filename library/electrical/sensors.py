@@ -13,6 +13,8 @@ class PotentialSensor(ac.Component):
     p = PositivePin()
     phi = RealOutput()
 
+    energy_role = "lossless"  # an ideal sensor takes no power
+
     def equations(self):
         return [ac.Eq(self.p.i, 0), ac.Eq(self.phi, self.p.v)]
 
@@ -21,6 +23,8 @@ class VoltageSensor(TwoPin):
     """v_out = p.v - n.v, with no current through the sensor."""
 
     v_out = RealOutput()
+
+    energy_role = "lossless"  # an ideal sensor takes no power
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.p.i, 0), ac.Eq(self.n.i, 0),
@@ -33,6 +37,8 @@ class CurrentSensor(ac.Component):
     p = PositivePin()
     n = NegativePin()
     i_out = RealOutput()
+
+    energy_role = "lossless"  # an ideal sensor takes no power
 
     def equations(self):
         return [ac.Eq(self.p.v, self.n.v), ac.Eq(0, self.p.i + self.n.i),
@@ -51,6 +57,8 @@ class PowerSensor(ac.Component):
     pv = PositivePin()
     nv = NegativePin()
     power = RealOutput()
+
+    energy_role = "lossless"  # an ideal sensor takes no power
 
     def equations(self):
         return [ac.Eq(self.pc.v, self.nc.v), ac.Eq(0, self.pc.i + self.nc.i),

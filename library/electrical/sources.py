@@ -21,6 +21,8 @@ class ConstantVoltage(OnePort):
 
     V = ac.Parameter(1.0, unit="V", description="source voltage")
 
+    energy_role = "source"  # delivers -v i
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.v, self.V)]
 
@@ -30,6 +32,8 @@ class _VoltageSource(OnePort):
 
     offset = ac.Parameter(0.0, unit="V", description="voltage before startTime")
     startTime = ac.Parameter(0.0, unit="s", description="time the signal starts")
+
+    energy_role = "source"  # delivers -v i
 
     def signal(self):
         raise NotImplementedError
@@ -43,6 +47,8 @@ class _CurrentSource(OnePort):
 
     offset = ac.Parameter(0.0, unit="A", description="current before startTime")
     startTime = ac.Parameter(0.0, unit="s", description="time the signal starts")
+
+    energy_role = "source"  # delivers -v i
 
     def signal(self):
         raise NotImplementedError
@@ -78,6 +84,8 @@ class SineVoltage(OnePort):
     phase = ac.Parameter(0.0, unit="rad", description="phase")
     offset = ac.Parameter(0.0, unit="V", description="offset")
 
+    energy_role = "source"  # delivers -v i
+
     def equations(self):
         wave = self.V * sp.sin(2 * sp.pi * self.f * ac.time + self.phase)
         return [*super().equations(), ac.Eq(self.v, self.offset + wave)]
@@ -99,6 +107,8 @@ class SignalVoltage(OnePort):
 
     v_ref = RealInput()
 
+    energy_role = "source"  # delivers -v i
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.v, self.v_ref)]
 
@@ -107,6 +117,8 @@ class ConstantCurrent(OnePort):
     """Ideal source of constant current:  i = I."""
 
     I = ac.Parameter(1.0, unit="A", description="source current")
+
+    energy_role = "source"  # delivers -v i
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.i, self.I)]
@@ -157,6 +169,8 @@ class SignalCurrent(OnePort):
     """Current set by a signal:  i = i_ref (flowing from p to n through the source)."""
 
     i_ref = RealInput()
+
+    energy_role = "source"  # delivers -v i
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.i, self.i_ref)]

@@ -22,6 +22,8 @@ class EMF(OnePort):
     w = ac.Variable(unit="rad/s", description="shaft speed")
     tau = ac.Variable(unit="N.m", description="motor torque")
 
+    energy_role = "lossless"  # v i = tau w
+
     def equations(self):
         return [*super().equations(),
                 ac.Eq(self.w, ac.der(self.flange.phi)),

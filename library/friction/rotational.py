@@ -5,6 +5,8 @@ Each element sits between flange_a and flange_b like a damper: with flange_a on 
 flange_b against the relative angular velocity w (f v >= 0 for the static laws), and -tau on
 flange_a.
 """
+import sympy as sp
+
 import acausal as ac
 
 from ._models import _Dahl, _ElastoPlastic, _Karnopp, _LuGre, _Stribeck
@@ -27,6 +29,10 @@ class StribeckFriction(_Stribeck, PartialRotationalFriction):
     F_s = ac.Parameter(1.5, unit="N.m", min=0, description="static (break-away) friction")
     v_s = ac.Parameter(0.01, unit="rad/s", min=0, description="Stribeck velocity")
     F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous coefficient")
+
+    def loss_power(self):
+        """tau w >= 0: friction opposes the relative motion (stuck: w = 0)."""
+        return self.tau * self.w
 
     def equations(self):
         return [*super().equations(), *self.law(self.w, self.tau)]
@@ -54,6 +60,10 @@ class KarnoppFriction(_Karnopp, PartialRotationalFriction):
     a = ac.Variable(unit="rad/s2", description="relative acceleration")
     sa = ac.Variable(start=0.0, description="curve parameter (applied torque when stuck)")
 
+    def loss_power(self):
+        """tau w >= 0: friction opposes the relative motion (stuck: w = 0)."""
+        return self.tau * self.w
+
     def equations(self):
         return [*super().equations(), *self.law(self.w, self.tau)]
 
@@ -69,6 +79,14 @@ class DahlFriction(_Dahl, PartialRotationalFriction):
     F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")
     sigma = ac.Parameter(1e3, unit="N.m/rad", min=0, description="rest stiffness")
     F = ac.Variable(start=0.0, unit="N.m", description="friction state")
+
+    def stored_energy(self):
+        """The bristles' elastic energy F^2 / (2 sigma)."""
+        return self.F**2 / (2 * self.sigma)
+
+    def loss_power(self):
+        """tau w - d/dt F^2/(2 sigma) = |w| F^2 / F_c >= 0  (from (5.35))."""
+        return sp.Abs(self.w) * self.F**2 / self.F_c
 
     def equations(self):
         return [*super().equations(), *self.law(self.w, self.tau)]
@@ -94,6 +112,15 @@ class LuGreFriction(_LuGre, PartialRotationalFriction):
     z = ac.Variable(start=0.0, unit="rad", description="mean bristle deflection")
     z_dot = ac.Variable(unit="rad/s", description="der(z)")
 
+    def stored_energy(self):
+        """The bristles' elastic energy sigma_0 z^2 / 2."""
+        return self.sigma_0 * self.z**2 / 2
+
+    def loss_power(self):
+        """tau w - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
+        sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
+        return self.tau * self.w - self.sigma_0 * self.z * self.z_dot
+
     def equations(self):
         return [*super().equations(), *self.law(self.w, self.tau)]
 
@@ -118,6 +145,15 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialRotationalFriction):
     z_b = ac.Parameter(5e-6, unit="rad", min=0, description="break-away deflection, < F_c/sigma_0")
     z = ac.Variable(start=0.0, unit="rad", description="elastic (pre-sliding) deflection")
     z_dot = ac.Variable(unit="rad/s", description="der(z)")
+
+    def stored_energy(self):
+        """The bristles' elastic energy sigma_0 z^2 / 2."""
+        return self.sigma_0 * self.z**2 / 2
+
+    def loss_power(self):
+        """tau w - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
+        sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
+        return self.tau * self.w - self.sigma_0 * self.z * self.z_dot
 
     def equations(self):
         return [*super().equations(), *self.law(self.w, self.tau)]

@@ -5,6 +5,8 @@ Each element sits between flange_a and flange_b like a damper: with flange_a on 
 flange_b against the relative velocity v (f v >= 0 for the static laws), and -f on
 flange_a.
 """
+import sympy as sp
+
 import acausal as ac
 
 from ._models import _Dahl, _ElastoPlastic, _Karnopp, _LuGre, _Stribeck
@@ -27,6 +29,10 @@ class StribeckFriction(_Stribeck, PartialTranslationalFriction):
     F_s = ac.Parameter(1.5, unit="N", min=0, description="static (break-away) friction")
     v_s = ac.Parameter(0.01, unit="m/s", min=0, description="Stribeck velocity")
     F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous coefficient")
+
+    def loss_power(self):
+        """f v >= 0: friction opposes the relative motion (stuck: v = 0)."""
+        return self.f * self.v
 
     def equations(self):
         return [*super().equations(), *self.law(self.v, self.f)]
@@ -54,6 +60,10 @@ class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
     a = ac.Variable(unit="m/s2", description="relative acceleration")
     sa = ac.Variable(start=0.0, description="curve parameter (applied force when stuck)")
 
+    def loss_power(self):
+        """f v >= 0: friction opposes the relative motion (stuck: v = 0)."""
+        return self.f * self.v
+
     def equations(self):
         return [*super().equations(), *self.law(self.v, self.f)]
 
@@ -69,6 +79,14 @@ class DahlFriction(_Dahl, PartialTranslationalFriction):
     F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")
     sigma = ac.Parameter(1e3, unit="N/m", min=0, description="rest stiffness")
     F = ac.Variable(start=0.0, unit="N", description="friction state")
+
+    def stored_energy(self):
+        """The bristles' elastic energy F^2 / (2 sigma)."""
+        return self.F**2 / (2 * self.sigma)
+
+    def loss_power(self):
+        """f v - d/dt F^2/(2 sigma) = |v| F^2 / F_c >= 0  (from (5.35))."""
+        return sp.Abs(self.v) * self.F**2 / self.F_c
 
     def equations(self):
         return [*super().equations(), *self.law(self.v, self.f)]
@@ -94,6 +112,15 @@ class LuGreFriction(_LuGre, PartialTranslationalFriction):
     z = ac.Variable(start=0.0, unit="m", description="mean bristle deflection")
     z_dot = ac.Variable(unit="m/s", description="der(z)")
 
+    def stored_energy(self):
+        """The bristles' elastic energy sigma_0 z^2 / 2."""
+        return self.sigma_0 * self.z**2 / 2
+
+    def loss_power(self):
+        """f v - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
+        sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
+        return self.f * self.v - self.sigma_0 * self.z * self.z_dot
+
     def equations(self):
         return [*super().equations(), *self.law(self.v, self.f)]
 
@@ -118,6 +145,15 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialTranslationalFriction):
     z_b = ac.Parameter(5e-6, unit="m", min=0, description="break-away deflection, < F_c/sigma_0")
     z = ac.Variable(start=0.0, unit="m", description="elastic (pre-sliding) deflection")
     z_dot = ac.Variable(unit="m/s", description="der(z)")
+
+    def stored_energy(self):
+        """The bristles' elastic energy sigma_0 z^2 / 2."""
+        return self.sigma_0 * self.z**2 / 2
+
+    def loss_power(self):
+        """f v - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
+        sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
+        return self.f * self.v - self.sigma_0 * self.z * self.z_dot
 
     def equations(self):
         return [*super().equations(), *self.law(self.v, self.f)]

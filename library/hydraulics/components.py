@@ -28,6 +28,10 @@ class Volume(PartialOnePort):
     p = ac.Variable(start=0.0, unit="Pa", nominal=1e6, state_select="prefer",
                     description="pressure in the volume")
 
+    def stored_energy(self):
+        """W_p = V p^2 / (2 beta)  (Egeland & Gravdahl (4.66))."""
+        return self.V * self.p**2 / (2 * self.beta)
+
     def equations(self):
         return [ac.Eq(self.p, self.port.p),
                 ac.Eq(self.V / self.beta * ac.der(self.p), self.port.q)]
@@ -50,6 +54,17 @@ class PistonVolume(PartialOnePort):
                     description="pressure in the volume")
     V = ac.Variable(unit="m3", description="current volume")
 
+    def stored_energy(self):
+        """V p^2 / (2 beta)  (Egeland & Gravdahl (4.66) at the current volume)."""
+        return self.V * self.p**2 / (2 * self.beta)
+
+    def created_power(self):
+        """p^2 der(V) / (2 beta): the constant-beta chamber with a moving boundary,
+        (V/beta) der(p) = q - der(V), has no exact energy function: with
+        W = V p^2/(2 beta), dW/dt exceeds the power into its ports by this much (a
+        fraction p/(2 beta) of the piston power)."""
+        return self.p**2 * ac.der(self.V) / (2 * self.beta)
+
     def equations(self):
         return [ac.Eq(self.p, self.port.p),
                 ac.Eq(self.V, self.V0 + self.A * self.flange.s),
@@ -62,6 +77,10 @@ class LaminarOrifice(PartialTwoPort):
 
     C_l = ac.Parameter(1e-11, unit="m3/(s.Pa)", min=0, description="laminar flow coefficient")
 
+    def loss_power(self):
+        """dp q >= 0: a restriction only throttles."""
+        return self.dp * self.q
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.q, self.C_l * self.dp)]
 
@@ -73,6 +92,10 @@ class _RegularizedOrifice(PartialTwoPort):
     rho = ac.Parameter(900.0, unit="kg/m3", min=0, description="oil density")
     nu = ac.Parameter(30e-6, unit="m2/s", min=0, description="kinematic viscosity")
     Re_tr = ac.Parameter(1000.0, min=0, description="transition Reynolds number")
+
+    def loss_power(self):
+        """dp q >= 0: a restriction only throttles."""
+        return self.dp * self.q
 
     def _law(self, A):
         return orifice_flow(A, self.dp, self.C_d, self.rho, self.nu, self.Re_tr)
@@ -120,6 +143,10 @@ class ReliefValve(PartialTwoPort):
                           description="flow gain above the cracking pressure")
     G_closed = ac.Parameter(1e-14, unit="m3/(s.Pa)", min=0, description="leakage when closed")
 
+    def loss_power(self):
+        """dp q >= 0: a restriction only throttles."""
+        return self.dp * self.q
+
     def equations(self):
         opening = ac.if_else(self.dp > self.p_crack, self.G_open * (self.dp - self.p_crack), 0)
         return [*super().equations(), ac.Eq(self.q, opening + self.G_closed * self.dp)]
@@ -146,6 +173,12 @@ class _DisplacementMachine(ac.Component):
     C_e = ac.Parameter(0.0, unit="m3/(s.Pa)", min=0, description="external leakage coefficient")
     w = ac.Variable(start=0.0, unit="rad/s", description="shaft speed")
     tau = ac.Variable(unit="N.m", description="torque from the fluid on the shaft")
+
+    def loss_power(self):
+        """The leakage, C_i (p_a - p_b)^2 + C_e (p_a^2 + p_b^2): the ideal machine
+        converts D (p_a - p_b) w without loss."""
+        pa, pb = self.port_a.p, self.port_b.p
+        return self.C_i * (pa - pb)**2 + self.C_e * (pa**2 + pb**2)
 
     def displacement(self):
         raise NotImplementedError
@@ -228,6 +261,20 @@ class Cylinder(ac.Component):
     p_b = ac.Variable(start=0.0, unit="Pa", nominal=1e6, state_select="prefer",
                       description="pressure in chamber b")
 
+    def stored_energy(self):
+        """(V_a p_a^2 + V_b p_b^2) / (2 beta) at the current chamber volumes."""
+        Va, Vb = self.V_a0 + self.A_a * self.x, self.V_b0 - self.A_b * self.x
+        return (Va * self.p_a**2 + Vb * self.p_b**2) / (2 * self.beta)
+
+    def loss_power(self):
+        """Leakage C_i (p_a - p_b)^2 + C_e (p_a^2 + p_b^2)."""
+        pa, pb = self.p_a, self.p_b
+        return self.C_i * (pa - pb)**2 + self.C_e * (pa**2 + pb**2)
+
+    def created_power(self):
+        """p^2 der(V)/(2 beta) of each chamber (see ``PistonVolume.created_power``)."""
+        return (self.A_a * self.p_a**2 - self.A_b * self.p_b**2) * self.v / (2 * self.beta)
+
     def equations(self):
         pa, pb, leak = self.p_a, self.p_b, self.C_i * (self.p_a - self.p_b)
         return [ac.Eq(self.x, self.flange.s), ac.Eq(self.v, ac.der(self.x)),
@@ -256,6 +303,18 @@ class SingleActingCylinder(ac.Component):
     v = ac.Variable(start=0.0, unit="m/s", description="piston speed")
     p = ac.Variable(start=0.0, unit="Pa", nominal=1e6, state_select="prefer",
                     description="chamber pressure")
+
+    def stored_energy(self):
+        """(V_0 + A x) p^2 / (2 beta)."""
+        return (self.V_0 + self.A * self.x) * self.p**2 / (2 * self.beta)
+
+    def loss_power(self):
+        """Leakage C_e p^2."""
+        return self.C_e * self.p**2
+
+    def created_power(self):
+        """p^2 der(V)/(2 beta) (see ``PistonVolume.created_power``)."""
+        return self.A * self.p**2 * self.v / (2 * self.beta)
 
     def equations(self):
         return [ac.Eq(self.x, self.flange.s), ac.Eq(self.v, ac.der(self.x)),

@@ -67,6 +67,18 @@ class LumpedLine(_LineData):
     p_start = ac.Parameter(0.0, unit="Pa", description="initial pressure along the line")
     q_start = ac.Parameter(0.0, unit="m3/s", description="initial flow along the line")
 
+    def stored_energy(self):
+        """sum (A h / beta) p_i^2 / 2 over the volumes + (h rho / A) q_j^2 / 2 over the
+        pipes (compression and kinetic energy, Egeland & Gravdahl (4.66), (4.91))."""
+        h = self._h()
+        return (sum(self.A * h / self.beta * v.p**2 / 2 for v in self.volumes)
+                + sum(h * self.rho / self.A * pipe.q**2 / 2 for pipe in self.pipes))
+
+    def loss_power(self):
+        """Laminar friction, sum (h rho / A) B q_j^2 over the pipes."""
+        h = self._h()
+        return sum(h * self.rho / self.A * self._B() * pipe.q**2 for pipe in self.pipes)
+
     def __init__(self, n=10, form="impedance", **mods):
         super().__init__(**mods)
         if form not in _FORMS:
@@ -140,6 +152,33 @@ class ModalLine(_LineData):
     p_k = w' + B w (b_N B for the antisymmetric ones).  The poles are those of the
     distributed line with linear friction, s = -B/2 +- j sqrt((k pi/T)^2 - B^2/4).
     """
+
+    def _section_terms(self):
+        """Per section, with c_k = 4 sigma_k Z_0 T, K = (k pi)^2, damping b (B for the
+        symmetric sections, b_N B for the antisymmetric ones), the port power
+        2 q p_k = (2/c_k) (T^2 w'' + B T^2 w' + K w)(w' + b w) splits into
+        d/dt of S_k = (T^2 (w' + b w)^2 + (K + b (B - b) T^2) w^2) / c_k and
+        the loss (2/c_k) ((B - b) T^2 w'^2 + b K w^2); the mean pressure stores
+        T p_m^2 / (2 Z_0).  With b_N > 1 the antisymmetric sections are not passive
+        at high frequency (w'^2 (B - b) < 0), a property of the truncated expansion."""
+        c = sp.sqrt(self.beta / self.rho)
+        T, Z0, B = self.L / c, self.rho * c / self.A, self._B()
+        store, loss = T * self.mean.p**2 / (2 * Z0), 0
+        for k, (mode, sigma) in enumerate(zip(self.modes, self.sigma), start=1):
+            b = B if k % 2 == 0 else self.b_N * B
+            K, ck = (k * sp.pi)**2, 4 * float(sigma) * Z0 * T
+            w, wd = mode.w, mode.w_dot
+            store += (T**2 * (wd + b * w)**2 + (K + b * (B - b) * T**2) * w**2) / ck
+            loss += 2 * ((B - b) * T**2 * wd**2 + b * K * w**2) / ck
+        return store, loss
+
+    def stored_energy(self):
+        """Mean pressure and modal sections (see ``_section_terms``)."""
+        return self._section_terms()[0]
+
+    def loss_power(self):
+        """Friction in the modal sections (see ``_section_terms``)."""
+        return self._section_terms()[1]
 
     def __init__(self, N=8, window="riemann", **mods):
         super().__init__(**mods)

@@ -12,6 +12,8 @@ class PressureSensor(PartialOnePort):
 
     p = RealOutput()
 
+    energy_role = "lossless"  # an ideal sensor takes no power
+
     def equations(self):
         return [ac.Eq(self.port.q, 0), ac.Eq(self.p, self.port.p)]
 
@@ -22,6 +24,8 @@ class RelativePressureSensor(ac.Component):
     port_a = FluidPort()
     port_b = FluidPort()
     p_rel = RealOutput()
+
+    energy_role = "lossless"  # an ideal sensor takes no power
 
     def equations(self):
         return [ac.Eq(self.port_a.q, 0), ac.Eq(self.port_b.q, 0),
@@ -34,6 +38,8 @@ class FlowSensor(ac.Component):
     port_a = FluidPort()
     port_b = FluidPort()
     q = RealOutput()
+
+    energy_role = "lossless"  # an ideal sensor takes no power
 
     def equations(self):
         return [ac.Eq(self.port_a.p, self.port_b.p), ac.Eq(0, self.port_a.q + self.port_b.q),

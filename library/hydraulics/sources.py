@@ -14,6 +14,8 @@ class FixedPressure(PartialOnePort):
 
     p = ac.Parameter(0.0, unit="Pa", description="pressure (0 for a return tank)")
 
+    energy_role = "source"  # a supply or tank outside the model
+
     def equations(self):
         return [ac.Eq(self.port.p, self.p)]
 
@@ -22,6 +24,8 @@ class PressureSource(PartialOnePort):
     """Pressure set by a signal:  port.p = p_ref."""
 
     p_ref = RealInput()
+
+    energy_role = "source"  # a supply or tank outside the model
 
     def equations(self):
         return [ac.Eq(self.port.p, self.p_ref)]
@@ -32,6 +36,8 @@ class ConstantFlow(PartialOnePort):
 
     q0 = ac.Parameter(1e-4, unit="m3/s", description="delivered flow")
 
+    energy_role = "source"  # a supply or tank outside the model
+
     def equations(self):
         return [ac.Eq(self.port.q, -self.q0)]
 
@@ -40,6 +46,8 @@ class FlowSource(PartialOnePort):
     """Flow set by a signal, delivered into the connected circuit:  port.q = -q_ref."""
 
     q_ref = RealInput()
+
+    energy_role = "source"  # a supply or tank outside the model
 
     def equations(self):
         return [ac.Eq(self.port.q, -self.q_ref)]

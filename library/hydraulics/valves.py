@@ -47,6 +47,11 @@ class FourWayValve(_OrificeData):
     q_2 = ac.Variable(start=0.0, unit="m3/s", nominal=1e-4,
                       description="flow back from the load")
 
+    def loss_power(self):
+        """sum of p q over the four ports: the orifices only throttle."""
+        return sum(port.p * port.q for port in (self.port_s, self.port_r, self.port_1,
+                                                 self.port_2))
+
     def areas(self):
         raise NotImplementedError
 
@@ -114,6 +119,10 @@ class PressureCompensatedValve(_OrificeData, PartialTwoPort):
     p_c = ac.Variable(start=0.0, unit="Pa", nominal=1e6, description="pressure between spools")
     x_c = ac.Variable(start=1e-3, unit="m", nominal=1e-3, description="compensator opening")
 
+    def loss_power(self):
+        """dp q: the two orifices in series only throttle."""
+        return self.dp * self.q
+
     def equations(self):
         free = (self.F_c0 - self.A_c * (self.p_c - self.port_b.p)) / self.K_c
         clipped = ac.if_else(free < 0, 0, ac.if_else(free > self.x_c_max, self.x_c_max, free))
@@ -146,6 +155,10 @@ class BalanceValve(_OrificeData, PartialTwoPort):
     b = ac.Parameter(0.01, unit="m", min=0, description="area gradient")
     A_ch = ac.Parameter(1e-4, unit="m2", min=0, description="check valve area")
     x_v = ac.Variable(start=0.0, unit="m", nominal=1e-3, description="spool opening")
+
+    def loss_power(self):
+        """dp q (the pilot port takes no flow)."""
+        return self.dp * self.q + self.port_p.p * self.port_p.q
 
     def equations(self):
         A_r = self.A - self.A_p

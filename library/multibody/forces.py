@@ -16,6 +16,8 @@ class Rod(PartialLineForce):
 
     L = ac.Parameter(1.0, unit="m", min=0, description="rod length")
 
+    energy_role = "lossless"  # rigid: f der(s) = 0
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.s, self.L)]
 
@@ -26,6 +28,10 @@ class Spring(PartialLineForce):
     c = ac.Parameter(1.0e3, unit="N/m", min=0, description="spring constant")
     s_unstretched = ac.Parameter(0.0, unit="m", min=0, description="unstretched length")
 
+    def stored_energy(self):
+        """c (s - s_unstretched)^2 / 2."""
+        return self.c * (self.s - self.s_unstretched)**2 / 2
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.f, self.c * (self.s - self.s_unstretched))]
 
@@ -34,6 +40,10 @@ class Damper(PartialLineForce):
     """Linear damper:  f = d der(s)."""
 
     d = ac.Parameter(1.0, unit="N.s/m", min=0, description="damping constant")
+
+    def loss_power(self):
+        """f der(s) = d der(s)^2."""
+        return self.f * ac.der(self.s)
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.f, self.d * ac.der(self.s))]
@@ -45,6 +55,14 @@ class SpringDamper(PartialLineForce):
     c = ac.Parameter(1.0e3, unit="N/m", min=0, description="spring constant")
     d = ac.Parameter(1.0, unit="N.s/m", min=0, description="damping constant")
     s_unstretched = ac.Parameter(0.0, unit="m", min=0, description="unstretched length")
+
+    def stored_energy(self):
+        """c (s - s_unstretched)^2 / 2."""
+        return self.c * (self.s - self.s_unstretched)**2 / 2
+
+    def loss_power(self):
+        """d der(s)^2."""
+        return self.d * ac.der(self.s)**2
 
     def equations(self):
         return [*super().equations(),

@@ -35,6 +35,8 @@ class Revolute(PartialTwoFrames):
                     description="relative angular velocity")
     a = ac.Variable(unit="rad/s2", description="relative angular acceleration")
 
+    energy_role = "lossless"  # an ideal joint: the flange takes what the frames give
+
     def equations(self):
         a, b = self.frame_a, self.frame_b
         return [ac.Eq(b.x, a.x), ac.Eq(b.y, a.y),
@@ -68,6 +70,8 @@ class Prismatic(PartialTwoFrames):
     v = ac.Variable(start=0.0, unit="m/s", state_select="prefer",
                     description="relative velocity along e")
     a = ac.Variable(unit="m/s2", description="relative acceleration along e")
+
+    energy_role = "lossless"  # an ideal joint: the flange takes what the frames give
 
     def equations(self):
         a, b = self.frame_a, self.frame_b

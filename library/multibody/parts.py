@@ -42,6 +42,8 @@ class FixedFrame(PartialOneFrame):
     y0 = ac.Parameter(0.0, unit="m", description="y position in the world frame")
     phi0 = ac.Parameter(0.0, unit="rad", description="fixed angle")
 
+    energy_role = "lossless"  # fixed in the world: does no work
+
     def equations(self):
         return [ac.Eq(self.frame.x, self.x0),
                 ac.Eq(self.frame.y, self.y0),
@@ -68,6 +70,12 @@ class Body(PartialOneFrame):
     vx = ac.Variable(start=0.0, unit="m/s", description="velocity in x")
     vy = ac.Variable(start=0.0, unit="m/s", description="velocity in y")
     w = ac.Variable(start=0.0, unit="rad/s", description="angular velocity")
+
+    def stored_energy(self):
+        """Kinetic and potential energy m (vx^2 + vy^2)/2 + J w^2/2 + m g y
+        (Egeland & Gravdahl (7.34))."""
+        return (self.m * (self.vx**2 + self.vy**2) / 2 + self.J * self.w**2 / 2
+                + self.m * self.g * self.y)
 
     def equations(self):
         f = self.frame
@@ -98,6 +106,10 @@ class PointMass(PartialOneFrame):
     vx = ac.Variable(start=0.0, unit="m/s", description="velocity in x")
     vy = ac.Variable(start=0.0, unit="m/s", description="velocity in y")
 
+    def stored_energy(self):
+        """Kinetic and potential energy m (vx^2 + vy^2)/2 + m g y."""
+        return self.m * (self.vx**2 + self.vy**2) / 2 + self.m * self.g * self.y
+
     def equations(self):
         f = self.frame
         return [ac.Eq(self.x, f.x), ac.Eq(self.y, f.y), ac.Eq(f.phi, 0),
@@ -119,6 +131,8 @@ class FixedTranslation(PartialTwoFrames):
 
     rx = ac.Parameter(1.0, unit="m", description="x of frame_b in frame_a")
     ry = ac.Parameter(0.0, unit="m", description="y of frame_b in frame_a")
+
+    energy_role = "lossless"  # a rigid massless bar
 
     def equations(self):
         a, b = self.frame_a, self.frame_b

@@ -16,6 +16,8 @@ class Fixed(PartialElementaryOneFlange):
 
     phi0 = ac.Parameter(0.0, unit="rad", description="fixed angle of the housing")
 
+    energy_role = "lossless"  # the housing does not move
+
     def equations(self):
         return [ac.Eq(self.flange.phi, self.phi0)]
 
@@ -32,6 +34,10 @@ class Inertia(PartialTwoFlanges):
     w = ac.Variable(start=0.0, unit="rad/s", description="absolute angular velocity")
     a = ac.Variable(unit="rad/s2", description="absolute angular acceleration")
 
+    def stored_energy(self):
+        """Kinetic energy J w^2 / 2  (Egeland & Gravdahl (3.32))."""
+        return self.J * self.w**2 / 2
+
     def equations(self):
         return [ac.Eq(self.phi, self.flange_a.phi),
                 ac.Eq(self.phi, self.flange_b.phi),
@@ -46,6 +52,10 @@ class Spring(PartialCompliant):
     c = ac.Parameter(1.0e5, unit="N.m/rad", min=0, description="spring constant")
     phi_rel0 = ac.Parameter(0.0, unit="rad", description="unstretched spring angle")
 
+    def stored_energy(self):
+        """c (phi_rel - phi_rel0)^2 / 2."""
+        return self.c * (self.phi_rel - self.phi_rel0)**2 / 2
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0))]
 
@@ -54,6 +64,10 @@ class Damper(PartialCompliant):
     """Linear torsional damper:  tau = d der(phi_rel)."""
 
     d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
+
+    def loss_power(self):
+        """tau der(phi_rel) = d der(phi_rel)^2."""
+        return self.tau * ac.der(self.phi_rel)
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.tau, self.d * ac.der(self.phi_rel))]
@@ -65,6 +79,14 @@ class SpringDamper(PartialCompliant):
     c = ac.Parameter(1.0e5, unit="N.m/rad", min=0, description="spring constant")
     d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
     phi_rel0 = ac.Parameter(0.0, unit="rad", description="unstretched spring angle")
+
+    def stored_energy(self):
+        """c (phi_rel - phi_rel0)^2 / 2."""
+        return self.c * (self.phi_rel - self.phi_rel0)**2 / 2
+
+    def loss_power(self):
+        """d der(phi_rel)^2."""
+        return self.d * ac.der(self.phi_rel)**2
 
     def equations(self):
         return [*super().equations(),
@@ -83,6 +105,8 @@ class IdealGear(PartialTwoFlanges):
 
     n = ac.Parameter(1.0, description="gear ratio flange_a.phi / flange_b.phi")
 
+    energy_role = "lossless"  # an ideal transformer of motion: power in = power out
+
     def equations(self):
         return [ac.Eq(self.flange_a.phi, self.n * self.flange_b.phi),
                 ac.Eq(0, self.n * self.flange_a.tau + self.flange_b.tau)]
@@ -96,6 +120,8 @@ class IdealGearR2T(PartialElementaryRotationalToTranslational):
 
     ratio = ac.Parameter(1.0, unit="rad/m", description="flangeR.phi / flangeT.s")
 
+    energy_role = "lossless"  # an ideal transformer of motion: power in = power out
+
     def equations(self):
         return [ac.Eq(self.flangeR.phi, self.ratio * self.flangeT.s),
                 ac.Eq(0, self.ratio * self.flangeR.tau + self.flangeT.f)]
@@ -108,6 +134,8 @@ class IdealRollingWheel(PartialElementaryRotationalToTranslational):
     """
 
     radius = ac.Parameter(0.3, unit="m", min=0, description="wheel radius")
+
+    energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
         return [ac.Eq(self.flangeT.s, self.radius * self.flangeR.phi),
@@ -125,6 +153,8 @@ class RackAndPinion(PartialElementaryRotationalToTranslational):
     """
 
     r = ac.Parameter(0.05, unit="m", min=0, description="pinion radius")
+
+    energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
         return [ac.Eq(self.flangeT.s, self.r * self.flangeR.phi),
@@ -149,6 +179,12 @@ class ElasticGearWithDeadzone(PartialTwoFlanges):
     delta = ac.Parameter(0.01, unit="rad", min=0, description="half width of the dead zone")
     phi = ac.Variable(unit="rad", description="gear deflection, motor side")
     tau = ac.Variable(unit="N.m", description="gear torque on the motor side T_gm")
+
+    def stored_energy(self):
+        """K (|phi| - delta)^2 / 2 outside the dead zone, 0 inside."""
+        phi, d = self.phi, self.delta
+        return ac.if_else(phi > d, self.K * (phi - d)**2 / 2,
+                          ac.if_else(phi < -d, self.K * (phi + d)**2 / 2, 0))
 
     def equations(self):
         phi, d = self.phi, self.delta
@@ -254,6 +290,8 @@ class GearWithBacklash(PartialTwoFlanges):
     a_c = ac.Variable(unit="rad/s2", description="der(w_c)")
     tau = ac.Variable(unit="N.m", description="torque of the gear on the load (flange_b)")
     sa = ac.Variable(start=0.0, unit="N.m", description="curve parameter (contact torque)")
+
+    energy_role = "lossless"  # rigid: tau w_rel = 0; impacts lose energy at events
 
     def upper(self):
         """Relation: in the contact band at phi_rel = +delta."""

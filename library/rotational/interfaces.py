@@ -42,6 +42,8 @@ class PartialElementaryOneFlange(ac.Component):
 class PartialAbsoluteSensor(PartialElementaryOneFlange):
     """Measures an absolute quantity of one flange and exerts no torque:  flange.tau = 0."""
 
+    energy_role = "lossless"  # an ideal sensor takes no power
+
     def equations(self):
         return [ac.Eq(self.flange.tau, 0)]
 
@@ -51,6 +53,8 @@ class PartialRelativeSensor(PartialTwoFlanges):
 
         0 = flange_a.tau + flange_b.tau
     """
+
+    energy_role = "lossless"  # an ideal sensor takes no power
 
     def equations(self):
         return [ac.Eq(0, self.flange_a.tau + self.flange_b.tau)]

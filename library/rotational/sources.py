@@ -22,6 +22,8 @@ class ConstantTorque(PartialElementaryOneFlange):
 
     tau_constant = ac.Parameter(1.0, unit="N.m", description="driving torque")
 
+    energy_role = "source"  # drives the flange from outside the model
+
     def equations(self):
         return [ac.Eq(self.flange.tau, -self.tau_constant)]
 
@@ -33,6 +35,8 @@ class StepTorque(PartialElementaryOneFlange):
     offsetTorque = ac.Parameter(0.0, unit="N.m", description="torque before the step")
     startTime = ac.Parameter(0.0, unit="s", description="time of the step")
 
+    energy_role = "source"  # drives the flange from outside the model
+
     def equations(self):
         tau = self.offsetTorque + signals.step(self.stepTorque, self.startTime)
         return [ac.Eq(self.flange.tau, -tau)]
@@ -43,6 +47,8 @@ class Torque(PartialElementaryOneFlange):
 
     tau = RealInput()
 
+    energy_role = "source"  # drives the flange from outside the model
+
     def equations(self):
         return [ac.Eq(self.flange.tau, -self.tau)]
 
@@ -52,6 +58,8 @@ class _SpeedSource(PartialElementaryOneFlange):
 
     phi = ac.Variable(start=0.0, unit="rad", description="angle of the flange")
     w = ac.Variable(unit="rad/s", description="speed of the flange")
+
+    energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
         return [ac.Eq(self.phi, self.flange.phi), ac.Eq(self.w, ac.der(self.phi))]
@@ -84,6 +92,8 @@ class Position(PartialElementaryOneFlange):
     """
 
     phi_ref = RealInput()
+
+    energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
         return [ac.Eq(self.flange.phi, self.phi_ref)]

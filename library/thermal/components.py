@@ -15,6 +15,10 @@ class HeatCapacitor(PartialElementaryOnePort):
     C = ac.Parameter(1.0, unit="J/K", min=0, description="heat capacity")
     T = ac.Variable(start=293.15, unit="K", nominal=300.0, description="temperature")
 
+    def stored_energy(self):
+        """Internal energy C T (relative to T = 0 K)."""
+        return self.C * self.T
+
     def equations(self):
         return [ac.Eq(self.T, self.port.T), ac.Eq(self.C * ac.der(self.T), self.port.Q_flow)]
 
@@ -24,6 +28,8 @@ class ThermalConductor(Element1D):
 
     G = ac.Parameter(1.0, unit="W/K", min=0, description="thermal conductance")
 
+    energy_role = "lossless"  # heat in at one port leaves at the other
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.Q_flow, self.G * self.dT)]
 
@@ -32,6 +38,8 @@ class ThermalResistor(Element1D):
     """Lumped thermal resistance:  dT = R Q_flow."""
 
     R = ac.Parameter(1.0, unit="K/W", min=0, description="thermal resistance")
+
+    energy_role = "lossless"  # heat in at one port leaves at the other
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.dT, self.R * self.Q_flow)]
@@ -44,6 +52,8 @@ class Convection(Element1D):
     """
 
     Gc = ac.Parameter(1.0, unit="W/K", min=0, description="convective thermal conductance")
+
+    energy_role = "lossless"  # heat in at one port leaves at the other
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.Q_flow, self.Gc * self.dT)]

@@ -12,6 +12,8 @@ class TemperatureSensor(PartialElementaryOnePort):
 
     T = RealOutput()
 
+    energy_role = "lossless"  # an ideal sensor takes no heat
+
     def equations(self):
         return [ac.Eq(self.port.Q_flow, 0), ac.Eq(self.T, self.port.T)]
 
@@ -25,6 +27,8 @@ class HeatFlowSensor(ac.Component):
     port_a = HeatPort()
     port_b = HeatPort()
     Q_flow = RealOutput()
+
+    energy_role = "lossless"  # an ideal sensor takes no heat
 
     def equations(self):
         return [ac.Eq(self.port_a.T, self.port_b.T),

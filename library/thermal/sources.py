@@ -16,6 +16,8 @@ class FixedTemperature(PartialElementaryOnePort):
 
     T = ac.Parameter(293.15, unit="K", description="fixed temperature")
 
+    energy_role = "source"  # an environment outside the model
+
     def equations(self):
         return [ac.Eq(self.port.T, self.T)]
 
@@ -24,6 +26,8 @@ class PrescribedTemperature(PartialElementaryOnePort):
     """Temperature set by a signal:  port.T = T."""
 
     T = RealInput()
+
+    energy_role = "source"  # an environment outside the model
 
     def equations(self):
         return [ac.Eq(self.port.T, self.T)]
@@ -34,6 +38,8 @@ class FixedHeatFlow(PartialElementaryOnePort):
 
     Q_flow = ac.Parameter(0.0, unit="W", description="heat flow rate delivered")
 
+    energy_role = "source"  # an environment outside the model
+
     def equations(self):
         return [ac.Eq(self.port.Q_flow, -self.Q_flow)]
 
@@ -42,6 +48,8 @@ class PrescribedHeatFlow(PartialElementaryOnePort):
     """Heat flow set by a signal, into the connected component:  port.Q_flow = -Q_flow."""
 
     Q_flow = RealInput()
+
+    energy_role = "source"  # an environment outside the model
 
     def equations(self):
         return [ac.Eq(self.port.Q_flow, -self.Q_flow)]

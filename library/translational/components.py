@@ -14,6 +14,8 @@ class Fixed(PartialElementaryOneFlange):
 
     s0 = ac.Parameter(0.0, unit="m", description="fixed position of the housing")
 
+    energy_role = "lossless"  # the housing does not move
+
     def equations(self):
         return [ac.Eq(self.flange.s, self.s0)]
 
@@ -29,6 +31,10 @@ class Mass(PartialTwoFlanges):
     v = ac.Variable(start=0.0, unit="m/s", description="absolute velocity")
     a = ac.Variable(unit="m/s2", description="absolute acceleration")
 
+    def stored_energy(self):
+        """Kinetic energy m v^2 / 2  (Egeland & Gravdahl (2.58))."""
+        return self.m * self.v**2 / 2
+
     def equations(self):
         return [ac.Eq(self.s, self.flange_a.s),
                 ac.Eq(self.s, self.flange_b.s),
@@ -43,6 +49,10 @@ class Spring(PartialCompliant):
     c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")
     s_rel0 = ac.Parameter(0.0, unit="m", description="unstretched length")
 
+    def stored_energy(self):
+        """c (s_rel - s_rel0)^2 / 2  (Egeland & Gravdahl (2.58))."""
+        return self.c * (self.s_rel - self.s_rel0)**2 / 2
+
     def equations(self):
         return [*super().equations(), ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0))]
 
@@ -51,6 +61,10 @@ class Damper(PartialCompliant):
     """Linear damper:  f = d der(s_rel)."""
 
     d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
+
+    def loss_power(self):
+        """f der(s_rel) = d der(s_rel)^2  (Egeland & Gravdahl (2.60))."""
+        return self.f * ac.der(self.s_rel)
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.f, self.d * ac.der(self.s_rel))]
@@ -62,6 +76,14 @@ class SpringDamper(PartialCompliant):
     c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")
     d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
     s_rel0 = ac.Parameter(0.0, unit="m", description="unstretched length")
+
+    def stored_energy(self):
+        """c (s_rel - s_rel0)^2 / 2."""
+        return self.c * (self.s_rel - self.s_rel0)**2 / 2
+
+    def loss_power(self):
+        """d der(s_rel)^2."""
+        return self.d * ac.der(self.s_rel)**2
 
     def equations(self):
         return [*super().equations(),
@@ -126,6 +148,11 @@ class MassWithStop(PartialTwoFlanges):
     a = ac.Variable(unit="m/s2", description="absolute acceleration")
     f_app = ac.Variable(unit="N", description="force applied by the rest of the model")
     f_stop = ac.Variable(unit="N", description="force of the stops on the mass")
+
+    def stored_energy(self):
+        """m v^2 / 2; the rigid stops do no work (v = 0 in contact), impacts lose
+        energy at events."""
+        return self.m * self.v**2 / 2
 
     def at_max(self):
         """Relation: in the contact band at s_max."""

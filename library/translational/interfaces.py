@@ -37,12 +37,16 @@ class PartialElementaryOneFlange(ac.Component):
 class PartialAbsoluteSensor(PartialElementaryOneFlange):
     """Measures an absolute quantity of one flange and exerts no force:  flange.f = 0."""
 
+    energy_role = "lossless"  # an ideal sensor takes no power
+
     def equations(self):
         return [ac.Eq(self.flange.f, 0)]
 
 
 class PartialRelativeSensor(PartialTwoFlanges):
     """Measures between two flanges and is force-free as a whole:  0 = flange_a.f + flange_b.f."""
+
+    energy_role = "lossless"  # an ideal sensor takes no power
 
     def equations(self):
         return [ac.Eq(0, self.flange_a.f + self.flange_b.f)]

@@ -17,6 +17,8 @@ class ConstantForce(PartialElementaryOneFlange):
 
     f_constant = ac.Parameter(1.0, unit="N", description="driving force")
 
+    energy_role = "source"  # drives the flange from outside the model
+
     def equations(self):
         return [ac.Eq(self.flange.f, -self.f_constant)]
 
@@ -28,6 +30,8 @@ class StepForce(PartialElementaryOneFlange):
     offsetForce = ac.Parameter(0.0, unit="N", description="force before the step")
     startTime = ac.Parameter(0.0, unit="s", description="time of the step")
 
+    energy_role = "source"  # drives the flange from outside the model
+
     def equations(self):
         f = self.offsetForce + signals.step(self.stepForce, self.startTime)
         return [ac.Eq(self.flange.f, -f)]
@@ -38,6 +42,8 @@ class Force(PartialElementaryOneFlange):
 
     f = RealInput()
 
+    energy_role = "source"  # drives the flange from outside the model
+
     def equations(self):
         return [ac.Eq(self.flange.f, -self.f)]
 
@@ -47,6 +53,8 @@ class _SpeedSource(PartialElementaryOneFlange):
 
     s = ac.Variable(start=0.0, unit="m", description="position of the flange")
     v = ac.Variable(unit="m/s", description="speed of the flange")
+
+    energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
         return [ac.Eq(self.s, self.flange.s), ac.Eq(self.v, ac.der(self.s))]
@@ -78,6 +86,8 @@ class Position(PartialElementaryOneFlange):
     """
 
     s_ref = RealInput()
+
+    energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
         return [ac.Eq(self.flange.s, self.s_ref)]
