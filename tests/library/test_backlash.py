@@ -99,7 +99,8 @@ def test_free_flight_impact_and_contact_against_closed_form():
     assert res.success
     segments, impacts = reference([0.0, 0.2], [0.5, -0.5], 0.4)
     assert len(impacts) == 2            # -delta at sqrt(2 J_a n delta/T), then +delta
-    assert abs(impacts[0][0] - math.sqrt(2 * J_A * N * DELTA / 0.5)) < 1e-15
+    t_first = math.sqrt(2 * J_A * N * DELTA / 0.5)
+    assert abs(impacts[0][0] - t_first) < 1e-12 * t_first     # two roundings of one root
     _check_against_reference(res, segments, impacts, 1e-8)
     t, tau = res.t, res["gear.tau"]
     # contact (3.122)-(3.123): the load is driven by n T_m through J_b + n^2 J_a and
@@ -107,7 +108,12 @@ def test_free_flight_impact_and_contact_against_closed_form():
     first = (t > impacts[0][0] + 1e-6) & (t < 0.2)
     assert np.allclose(tau[first], J_B * N * 0.5 / J_TOT, rtol=1e-9, atol=0)
     free = (t > 0.2) & (t < impacts[1][0] - 1e-6)
-    assert np.all(tau[free] == 0.0) and np.ptp(res["load.w"][free]) < 1e-12
+    # tau is an unknown of the solver's linear systems, zero up to their rounding: judged
+    # against the contact torque; under a constant torque the states are polynomials that
+    # BDF integrates exactly, so the load keeps its speed to rounding of that speed
+    tau_contact = J_B * N * 0.5 / J_TOT
+    assert np.max(np.abs(tau[free])) < 1e-12 * tau_contact
+    assert np.ptp(res["load.w"][free]) < 1e-12 * np.max(np.abs(res["load.w"][free]))
     second = t > impacts[1][0] + 1e-6
     assert np.allclose(tau[second], -J_B * N * 0.5 / J_TOT, rtol=1e-9, atol=0)
     # the release at t = 0.2 is the torque reversal itself
@@ -128,12 +134,13 @@ def test_impacts_conserve_angular_momentum_and_stop_the_relative_motion():
         assert abs(wa[before] - wa_ref) < 3e-8 and abs(wb[before] - wb_ref) < 1e-8
         assert abs(w_rel[before]) > 0.1                      # they do hit
         assert abs(L[after] - L[before]) < 1e-13 * abs(L[before])
-        assert abs(w_rel[after]) < 1e-14
+        assert abs(w_rel[after]) < 1e-12 * abs(w_rel[before])   # the reinit sets 0
         assert abs(wb[after] - wb_plus) < 1e-8 and abs(wa[after] - wa_plus) < 3e-8
         # the energy of the relative motion is what the plastic impact loses
         E = 0.5 * J_A * wa**2 + 0.5 * J_B * wb**2
         J_eff = N**2 * J_A * J_B / J_TOT
-        assert abs((E[before] - E[after]) - 0.5 * J_eff * w_rel[before]**2) < 1e-12
+        lost = E[before] - E[after]         # a difference of energies of size E[before]
+        assert abs(lost - 0.5 * J_eff * w_rel[before]**2) < 1e-12 * E[before]
 
 
 def test_square_wave_drive_example_stays_in_the_dead_zone():
@@ -146,9 +153,10 @@ def test_square_wave_drive_example_stays_in_the_dead_zone():
     _check_against_reference(res, segments, impacts, 1e-8)
     phi_rel = res["gear.phi_rel"]
     assert np.max(np.abs(phi_rel)) - DELTA < 1e-8
-    # in contact the teeth sit at the flank to round-off
+    # in contact the teeth sit at the flank: the impact's reinit puts them there and
+    # a_rel = (tau - sa)/J_eff vanishes to rounding, far below the tolerance rtol delta
     contact = np.abs(res["gear.tau"]) > 0
-    assert np.max(np.abs(np.abs(phi_rel[contact]) - DELTA)) < 1e-12
+    assert np.max(np.abs(np.abs(phi_rel[contact]) - DELTA)) < 1e-10 * DELTA
 
 
 class WavyDrive(ac.Component):
@@ -170,13 +178,14 @@ class WavyDrive(ac.Component):
 def test_contact_follows_the_reduced_rigid_model_under_a_varying_torque():
     """After the impact, (J_b + n^2 J_a) w_b' = n T_m(t) (3.12), (3.123), by solve_ivp
     from the post-impact state the impact law gives."""
-    res = ac.simulate(WavyDrive(), t_end=1.0, rtol=1e-10)
+    rtol = 1e-10
+    res = ac.simulate(WavyDrive(), t_end=1.0, rtol=rtol)
     assert res.success and len(res.events) == 1
     T = lambda t: 0.5 + 0.3 * np.sin(2 * np.pi * 0.8 * t)
     # free flight of the motor alone (load at rest) up to phi_a = n delta
     free = solve_ivp(lambda t, y: [y[1], T(t) / J_A], (0, 1), [0.0, 0.0], rtol=1e-12,
                      atol=1e-14, events=lambda t, y: y[0] - N * DELTA, dense_output=True)
-    t_c, (pa_c, wa_c) = free.t_events[0][0], free.y_events[0][0]
+    t_c, wa_c = free.t_events[0][0], free.y_events[0][0][1]
     assert abs(res.events[0] - t_c) < 1e-8
     w_plus = N * J_A * wa_c / J_TOT                          # momentum kept, w_rel = 0
     ref = solve_ivp(lambda t, y: [y[1], N * T(t) / J_TOT], (t_c, 1.0), [0.0, w_plus],
@@ -189,10 +198,14 @@ def test_contact_follows_the_reduced_rigid_model_under_a_varying_torque():
     assert close(res["load.w"][after], w_b)
     assert close(res["load.phi"][after], phi_b)
     assert close(res["motor.w"][after], N * w_b)
-    assert np.all(res["gear.phi_rel"][after] == res["gear.phi_rel"][after][0])
-    assert abs(res["gear.phi_rel"][after][0] + DELTA) < 1e-15
+    # at the flank as in the square-wave test: set there by the reinit, and a_rel stays
+    # zero to rounding (not exactly: that depends on the pivoting of the linear solves)
+    assert np.max(np.abs(res["gear.phi_rel"][after] + DELTA)) < 1e-10 * DELTA
     before = t < t_c - 1e-6
     assert np.max(np.abs(res["motor.w"][before] - free.sol(t[before])[1])) < 1e-8
-    # the load is computed from the gear's states (phi_c, w_c, phi_rel, w_rel): at
-    # rest to round-off
-    assert np.max(np.abs(res["load.w"][before])) < 1e-13
+    # the load is at rest: load.w = w_c + (n^2 J_a/J_tot) w_rel, the difference of two
+    # states of equal size that the solver integrates separately, each to its Newton
+    # tolerance (a fraction of rtol): zero to rtol on their scale, not to rounding
+    # (observed: 2e-14 to 1.1e-13 rad/s, for states of 0.15 rad/s)
+    scale = np.max(np.abs(res["gear.w_c"][before]))
+    assert np.max(np.abs(res["load.w"][before])) < rtol * scale

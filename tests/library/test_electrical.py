@@ -1,7 +1,6 @@
 """Electrical components, sources and sensors against closed forms, equivalent circuits
 and scipy's solve_ivp (rtol 1e-10) on the hand-written circuit equations."""
 import numpy as np
-import pytest
 from scipy.integrate import solve_ivp
 
 import acausal as ac
@@ -75,7 +74,10 @@ def test_ideal_opamp_inverting_amplifier_and_integrator():
     assert np.max(np.abs(res["amplifier.out.v"] + 3.0 * v_in)) < 1e-9
     v_int = -(1 - np.cos(w * t)) / w / (1e4 * 1e-6)
     assert np.max(np.abs(res["integrator.out.v"] - v_int)) < 1e-7 * 6.4
-    assert np.max(np.abs(res["amplifier.in_n.v"])) < 1e-12     # virtual ground
+    # virtual ground, the op-amp's equation v_n = v_p = 0: judged on the scale of the
+    # potentials around it (the input's 1 V), to 10 rtol (the solver resolves its
+    # unknowns to a fraction of rtol)
+    assert np.max(np.abs(res["amplifier.in_n.v"])) < 1e-9 * np.max(np.abs(v_in))
 
 
 class TransformerWithLoad(ac.Component):
@@ -118,7 +120,8 @@ def test_ideal_transformer_is_lossless_and_reflects_impedance():
     res = ac.simulate(TransformerWithLoad(), t_end=0.06, rtol=1e-10, t_eval=t)
     ref = ac.simulate(ReflectedLoad(), t_end=0.06, rtol=1e-10, t_eval=t)
     tr = "transformer."
-    assert np.max(np.abs(res[tr + "v1"] - 10.0 * res[tr + "v2"])) < 1e-9
+    v1 = np.max(np.abs(res[tr + "v1"]))                # 230 V: bounds relative to it
+    assert np.max(np.abs(res[tr + "v1"] - 10.0 * res[tr + "v2"])) < 1e-9 * v1
     p1, p2 = res[tr + "v1"] * res[tr + "i1"], res[tr + "v2"] * res[tr + "i2"]
     assert np.max(np.abs(p1 + p2)) < 1e-9 * np.max(np.abs(p1))
     assert np.max(np.abs(10.0 * res["C.v"] - ref["C.v"])) < 1e-7 * 230.0
@@ -201,7 +204,8 @@ def test_signal_voltage_rc_and_sensors():
     i = res["ammeter.i_out.signal"]
     assert np.allclose(i, res["R.i"], atol=1e-12)
     stored = 1e-3 * res["C.v"] * res["der(C.v)"]
-    assert np.max(np.abs(res["meter.power.signal"] - (100.0 * i**2 + stored))) < 1e-9
+    power = res["meter.power.signal"]
+    assert np.max(np.abs(power - (100.0 * i**2 + stored))) < 1e-9 * np.max(np.abs(power))
 
 
 class ChargedBySignalCurrent(ac.Component):
@@ -318,4 +322,5 @@ def test_ideal_switches_close_and_open():
     tau = (1e3 + 2e-5) * 1e-3
     charging = 2.0 * (1 - np.exp(-(np.clip(t, 0.5, 2.0) - 0.5) / tau))
     assert np.max(np.abs(res["C.v"] - charging)) < 1e-7 * 2.0
-    assert np.max(np.abs(res["R.i"][t > 2.0])) < 1e-12
+    # open with Goff = 0: no current, judged on the charging current 2 V/1 kOhm
+    assert np.max(np.abs(res["R.i"][t > 2.0])) < 1e-9 * 2.0 / 1e3

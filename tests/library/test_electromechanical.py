@@ -232,4 +232,6 @@ def test_two_motors_energy_balance_3_115():
     assert np.max(np.abs(balance)) < 1e-7 * np.max(res["E_in"])
     # phi_i = theta_i - theta_L/n_b (3.110) is the spring twist (sign: phi_rel = -phi_i)
     phi1 = res["motor1.phi"] - res["load.phi"] / 0.1
-    assert np.max(np.abs(phi1 + res["gear1_elasticity.phi_rel"])) < 1e-9
+    # a difference of angles of up to 0.3 rad: judged on their scale (10 rtol)
+    scale = np.max(np.abs(res["motor1.phi"]))
+    assert np.max(np.abs(phi1 + res["gear1_elasticity.phi_rel"])) < 1e-9 * scale

@@ -36,6 +36,8 @@ def test_karnopp_stick_slip_times_and_exact_sticking():
     # first stick phase: the spring force reaches F_s at t_1 = F_s/(k V)
     t1 = F_S / (K * V)
     assert np.min(np.abs(events - t1)) < 1e-9
+    # exact on every machine: stuck, der(v) = sa - sat(sa, F_s) is sa - sa = 0 and its
+    # Jacobian row has an exact zero for sa, so every update of v and x is a sum of zeros
     assert np.all(v[t < t1] == 0.0) and np.all(x[t < t1] == 0.0)
     # the slide, by solve_ivp on m x'' = k (V t - x) - F_f(v), until v = 0
     stop = lambda _, y: y[1]
@@ -48,14 +50,17 @@ def test_karnopp_stick_slip_times_and_exact_sticking():
     assert abs(stops[0] - t2) < 1e-6 and np.min(np.abs(events - t2)) < 1e-6
     stuck_at = np.flatnonzero(t >= stops[0])[0]
     assert abs(x[stuck_at] - x2) < 1e-7
-    # stuck again, v = 0 exactly, until the spring force is back at F_s
+    # stuck again, v = 0 exactly (the reinit at the band, then as above), until the
+    # spring force is back at F_s
     t3 = t2 + (F_S - K * (V * t2 - x2)) / (K * V)
     second = (t > stops[0]) & (t < t3 - 1e-6)
     assert np.all(v[second] == 0.0) and np.ptp(x[second]) == 0.0
     assert np.min(np.abs(events - t3)) < 1e-6 and abs(starts[1] - t3) < 1e-2
-    # while stuck the friction force is the spring force (sat(F_a, F_s) of (5.22))
+    # while stuck the friction force is the spring force (sat(F_a, F_s) of (5.22)): it
+    # is the curve parameter sa, an unknown resolved to the Newton tolerance, a fraction
+    # of rtol (1e-8) of the force; so judged on F_s to rtol, not to rounding
     spring = K * (V * t - x)
-    assert np.max(np.abs(res["friction.f"][second] - spring[second])) < 1e-9
+    assert np.max(np.abs(res["friction.f"][second] - spring[second])) < 1e-8 * F_S
 
 
 class TorqueRampOnBearing(ac.Component):
@@ -77,7 +82,8 @@ class TorqueRampOnBearing(ac.Component):
 def test_rotational_karnopp_breaks_away_at_F_s():
     res = ac.simulate(TorqueRampOnBearing(), t_end=1.0, rtol=1e-8, max_step=1e-2)
     t, w = res.t, res["rotor.w"]
-    assert np.all(w[t < 0.5 - 1e-9] == 0.0)           # 2 t < F_s = 1 N m: stuck
+    assert np.all(w[t < 0.5 - 1e-9] == 0.0)           # 2 t < F_s = 1 N m: stuck (exact,
+                                                      # as in the stick-slip test)
     assert np.min(np.abs(np.array(res.events) - 0.5)) < 1e-9
     assert w[-1] > 0.0
 
@@ -128,7 +134,8 @@ def test_elastoplastic_presliding_is_elastic_and_sliding_is_stribeck():
     res = ac.simulate(DrivenFriction(element, v=1e-5), t_end=0.4, rtol=1e-10,
                       t_eval=np.linspace(0, 0.4, 41))
     x = 1e-5 * res.t                                          # up to 4e-6 < z_b
-    assert np.max(np.abs(res["element.z"] - x)) < 1e-15
+    # dz/dt = v exactly (alpha = 0): BDF integrates the line to rounding of z's size
+    assert np.max(np.abs(res["element.z"] - x)) < 1e-12 * np.max(x)
     assert np.max(np.abs(res["element.f"] - (sigma_0 * x + (sigma_1 + sigma_2) * 1e-5))) < 1e-9
     element = ftr.ElastoPlasticFriction(F_c=1.0, F_s=1.5, v_s=0.01, sigma_0=sigma_0,
                                         sigma_1=sigma_1, sigma_2=sigma_2, z_b=5e-6,

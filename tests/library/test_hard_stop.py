@@ -24,14 +24,18 @@ def test_mass_rests_at_the_stop_and_leaves_when_the_force_reverses():
     assert np.min(np.abs(events - t_hit)) < 1e-8
     before = t < t_hit - 1e-6
     assert np.max(np.abs(s[before] - s1(t[before]))) < 1e-8
-    # resting: the force pushes in until t = pi/w = 1 s; v = 0 and s = s_max exactly
-    rest = (t > t_hit + 1e-9) & (t <= 1.0)
+    # resting: the force pushes in until t = pi/w = 1 s, where the release is located
+    # (to the event tolerance, on either side of 1); v = 0 and s = s_max exactly
+    t_release = events[np.argmin(np.abs(events - 1.0))]
+    rest = (t > t_hit + 1e-9) & (t < t_release)
     assert rest.sum() > 3
+    # exact on every machine: the hit's reinit sets v = 0 and s = s_max (e = 0: s_max
+    # - 0 * 2 eps), and resting der(v) = (f_app + f_stop)/m = (f - f)/m = 0 exactly
     assert np.all(v[rest] == 0.0) and np.all(s[rest] == S_MAX)
-    assert np.max(np.abs(res["mass.f_stop"][rest] + F0 * np.sin(OMEGA * t[rest]))) < 1e-12
+    stop_force = res["mass.f_stop"][rest]
+    assert np.max(np.abs(stop_force + F0 * np.sin(OMEGA * t[rest]))) < 1e-12 * F0
     # released at the reversal: an event at 1 s, moving from then on, on the closed form
     # v = F0/(m w) (cos(w) - cos(wt)), s = s_max - F0/(m w) ((t - 1) + sin(wt)/w)
-    t_release = events[np.argmin(np.abs(events - 1.0))]
     assert abs(t_release - 1.0) < 1e-11
     after = t > t_release
     assert np.all(v[after] < 0.0)
@@ -46,8 +50,11 @@ def test_example_stays_between_the_stops():
     assert res.success
     s = res["mass.s"]
     assert s.min() >= -0.3 - 1e-12 and s.max() <= 0.1 + 1e-12
-    at_stop = (s == 0.1) | (s == -0.3)
-    assert np.all(res["mass.v"][at_stop] == 0.0)
+    # resting at a stop (put there exactly by a reinit, pushed into it: a stop force),
+    # v = 0 exactly; just after a release s can still equal the stop to the last bit
+    # while v is already a few ulps, so the stop force, not s, tells who rests
+    resting = ((s == 0.1) | (s == -0.3)) & (res["mass.f_stop"] != 0.0)
+    assert resting.any() and np.all(res["mass.v"][resting] == 0.0)
 
 
 class FreeFlight(ac.Component):
@@ -70,6 +77,8 @@ def test_restitution_reverses_the_velocity_exactly():
     for lo, hi, expected in [(0, 0.5, 1.0), (0.5, 2.5, -0.5), (2.5, 6.5, 0.25),
                              (6.5, 7.0, -0.125)]:
         inside = (t > lo + 1e-6) & (t < hi - 1e-6)
+        # exact: e = 0.5 and v0 = 1 make each reinit -e v a power of two, and with no
+        # force der(v) = 0 exactly between the hits
         assert inside.any() and np.all(v[inside] == expected)
 
 
@@ -97,5 +106,6 @@ def test_rebounds_end_at_rest_on_the_stop():
     assert np.max(np.abs(np.array(res.events) - t_hits)) < 5e-8
     t, s, v = res.t, res["mass.s"], res["mass.v"]
     rest = t > t_hits[-1] + 1e-9
-    assert np.all(v[rest] == 0.0) and np.all(s[rest] == 0.5)
-    assert np.all(res["mass.f_stop"][rest] == -1.0)
+    assert np.all(v[rest] == 0.0) and np.all(s[rest] == 0.5)    # the plastic hit's reinit
+    # the stop's reaction to the push: computed, so judged to rounding of the push's 1 N
+    assert np.max(np.abs(res["mass.f_stop"][rest] + 1.0)) < 1e-12 * 1.0

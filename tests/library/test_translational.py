@@ -34,7 +34,8 @@ def test_spring_and_damper_in_parallel_equal_spring_damper():
     t = np.linspace(0, 10, 201)
     a = ac.simulate(SpringAndDamperSeparately(), t_end=10, rtol=1e-10, t_eval=t)
     b = ac.simulate(SpringDamperCombined(), t_end=10, rtol=1e-10, t_eval=t)
-    assert np.max(np.abs(a["mass.s"] - b["mass.s"])) < 1e-9
+    # two formulations of one ODE: they agree to the global error, 10-100 rtol of x0
+    assert np.max(np.abs(a["mass.s"] - b["mass.s"])) < 1e-8 * 0.1
 
 
 class MassSpringDamperWithLoss(MassSpringDamper):
@@ -53,8 +54,10 @@ def test_mass_spring_damper_energy_balance_2_60():
     res = ac.simulate(MassSpringDamperWithLoss(), t_end=10, rtol=1e-12, t_eval=t)
     x, v, a = res["mass.s"], res["mass.v"], res["mass.a"]
     V = 0.5 * 1.0 * v**2 + 0.5 * 4.0 * x**2                      # (2.58)
-    # pointwise: dV/dt = m v a + k x v = -d v^2  (2.60)
-    assert np.max(np.abs(1.0 * v * a + 4.0 * x * v + 0.4 * v**2)) < 1e-9
+    # pointwise: dV/dt = m v a + k x v = -d v^2  (2.60), terms that cancel: judged on
+    # the size of the spring's power
+    power = np.max(np.abs(4.0 * x * v))
+    assert np.max(np.abs(1.0 * v * a + 4.0 * x * v + 0.4 * v**2)) < 1e-8 * power
     # integrated along the solution: V(t) + E_d(t) = V(0)
     assert np.max(np.abs(V + res["E_d"] - V[0])) < 1e-8 * V[0]
     assert res["E_d"][-1] > 0.9 * V[0]
