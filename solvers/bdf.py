@@ -33,13 +33,14 @@ Orders 3-5 are not A-stable.  ``max_order`` (DASSL's ``maxord``) caps the order;
 on a weakly damped mode rather than by accuracy (Hindmarsh's stability limit
 detection, as in CVODE, where it is off by default too: :mod:`acausal.solvers.stald`).
 
-Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``.  In the
-local error test an algebraic component the problem marks ``self_scaled`` (contract
-item 6: a derivative in y, which has no nominal of its own) is judged on its own scale:
-its absolute term is at least ``rtol * max|y_i|`` over the run so far (Simulink's
-"auto" absolute tolerance), in the error test and in the Newton convergence test -- a
-pressure rate of 1e9 Pa/s crossing zero would otherwise be held to an absolute
-1e-8 Pa/s and stall the step size.  Everything else keeps the plain rule.  With
+Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``.  A
+component the problem marks ``self_scaled`` (contract item 6: a derivative solved as an
+algebraic unknown, which has no nominal of its own) has weight 0 in the error test and
+the Newton test, as it would have in the torn form, where it is computed from the other
+unknowns and not part of y: its accuracy is that of the quantities it is computed from.
+A derivative that is 0 at t0 while moving at 1e6 per second could otherwise only be
+held to an absolute atol below its own round-off, and the step size would collapse.
+With
 ``suppress_alg`` the algebraic components are left out of the error test (but not of
 the Newton convergence test), as IDA's ``suppressalg``.
 """
@@ -180,6 +181,8 @@ class BDF:
         scaled = getattr(self.problem, "self_scaled", None)
         self._self_scaled = np.zeros(self.n, bool) if scaled is None else \
             np.asarray(scaled, bool) & self._alg
+        if self._self_scaled.all():
+            self._self_scaled[:] = False
         self._update_weights()
         h = initial_step(self) if first_step is None else float(first_step)
         h = min(h, self.max_step, max(self.t_stop - self.tn, 0.0) or h)
@@ -199,12 +202,9 @@ class BDF:
             self.stald.reset()
 
     def _update_weights(self) -> None:
-        y = np.abs(self.phi[0])
-        peak = getattr(self, "_peak", None)
-        self._peak = y.copy() if peak is None or peak.shape != y.shape else np.maximum(peak, y)
-        floor = np.where(self._self_scaled, np.maximum(self.atol, self.rtol * self._peak),
-                         self.atol)
-        self.ewt = 1.0 / (self.rtol * y + floor)
+        self.ewt = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
+        if self._self_scaled.any():
+            self.ewt[self._self_scaled] = 0.0
         self.ewt_err = self.ewt.copy()
         if self.err_mask is not None:
             self.ewt_err *= self.err_mask
