@@ -162,7 +162,9 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> M
         meta={"n_all": len(syms), "causal": caus.causal,
               "assigned_names": [a.name for a, _ in assigned],
               "equation_names": [system.equations[e].name(system) for e in caus.residual_eqs],
-              "structural_zeros": sorted(zeros)})
+              "structural_zeros": sorted(zeros),
+              "parameter_bounds": {p.name: (p.min, p.max) for p in params
+                                   if p.min is not None or p.max is not None}})
     if reduced.whens:
         out.whens = WhenCode(generate(when_rows, z_syms, psyms, len(modes), None, assigned,
                                       discretes=dsyms),

@@ -11,13 +11,18 @@ from __future__ import annotations
 import re
 import traceback
 
-__all__ = ["failing_statement"]
+__all__ = ["DOMAIN_ERRORS", "failing_statement"]
 
 _GENERATED = "<acausal generated>"
 
 
+# what generated code raises outside a function's domain (sqrt(-1), 1/0, exp(1e3))
+DOMAIN_ERRORS = (ValueError, ZeroDivisionError, OverflowError, TypeError)
+
+
 def failing_statement(source: str, exc: BaseException, row_names, assigned_names):
-    """A phrase naming what failed (``"equation 'R1.v = R1.R*R1.i' ..."``), or None."""
+    """A phrase naming what failed (``"evaluating equation 'R1.v = R1.R*R1.i' ..."``,
+    ``"computing der(x)"``), or None."""
     line_no = None
     for frame in traceback.extract_tb(exc.__traceback__):
         if frame.filename == _GENERATED:
@@ -48,4 +53,4 @@ def failing_statement(source: str, exc: BaseException, row_names, assigned_names
 
 def _row(k, row_names):
     name = row_names[k] if k < len(row_names) else f"row {k}"
-    return f"equation {name}"
+    return f"evaluating equation {name}"

@@ -39,6 +39,7 @@ import scipy.sparse as sps
 from ..errors import InitializationFailed
 from ..solvers.initialization import solve_with_fallback
 from ..solvers.linalg import LinearSolver, SingularMatrixError
+from .diagnostics import DOMAIN_ERRORS, failing_statement
 
 __all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives"]
 
@@ -108,11 +109,20 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
     init = model.initial
 
     def F(z):
-        return np.concatenate([model.G(t0, z), init.residual(t0, z, model.p, model.m)])
+        try:
+            extra = init.residual(t0, z, model.p, model.m)
+        except DOMAIN_ERRORS as exc:
+            _note_evaluation(model, init, t0, exc)
+            extra = np.full(init.n, np.nan)
+        return np.concatenate([model.G(t0, z), extra])
 
     def J(z):
-        return sps.vstack([model.dG_dy(t0, z),
-                           init.jacobian(t0, z, model.p, model.m, model.n)]).tocsc()
+        try:
+            extra = init.jacobian(t0, z, model.p, model.m, model.n)
+        except DOMAIN_ERRORS as exc:
+            _note_evaluation(model, init, t0, exc)
+            extra = sps.csr_matrix(np.full((init.n, model.n), np.nan))
+        return sps.vstack([model.dG_dy(t0, z), extra]).tocsc()
 
     weights = 1.0 / (_NEWTON_RTOL * np.abs(z_guess) + _NEWTON_RTOL * model.nominal)
     model.evaluation_errors.clear()
@@ -179,6 +189,17 @@ def consistent_derivatives(model, t: float, z: np.ndarray) -> np.ndarray:
         # fails at this point; said in the report, z'_A left at 0
         _note_singular(model, t, err, alg)
     return zp
+
+
+def _note_evaluation(model, init, t, exc) -> None:
+    """An initial equation outside a function's domain (sqrt of a negative start
+    value): kept in the user's words for the failure message."""
+    what = failing_statement(init.code.source, exc, init.all_descriptions,
+                             model.meta.get("assigned_names", [])) or \
+        "evaluating the initial equations"
+    note = f"{what} failed at t = {t:.6g}: {type(exc).__name__}: {exc}"
+    if note not in model.evaluation_errors:
+        model.evaluation_errors.append(note)
 
 
 def _note_singular(model, t, err, alg) -> None:

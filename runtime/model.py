@@ -23,8 +23,9 @@ import math
 import numpy as np
 import scipy.sparse as sps
 
+from ..components.component import InvalidValue, NotInModel
 from ..solvers.base import DAEProblem
-from .diagnostics import failing_statement
+from .diagnostics import DOMAIN_ERRORS, failing_statement
 from .dynamic import DynamicStateSelection
 from .events import WhenClauses, iterate_event
 from .initial import InitialConditions, initialize, reinitialize
@@ -32,7 +33,6 @@ from .modes import DiscreteState
 
 __all__ = ["CompiledModel"]
 
-_DOMAIN_ERRORS = (ValueError, ZeroDivisionError, OverflowError, TypeError)
 _MODE_ROUNDS = 10               # relations read through other relations' values, settled in turn
 
 
@@ -151,12 +151,13 @@ class CompiledModel(DAEProblem):
     def _call(self, fn, t, z, size):
         try:
             return fn(t, z, self.p, self.m, np.empty(size))
-        except _DOMAIN_ERRORS as exc:
+        except DOMAIN_ERRORS as exc:
             # outside a function's domain (sqrt of a negative, ...): the point is unusable,
             # which Newton treats as a failed iterate; the words are kept for the message
             what = failing_statement(self.code.source, exc, self.equation_names,
-                                     self.meta.get("assigned_names", [])) or "the model"
-            note = f"evaluating {what} at t = {t:.6g} failed: {type(exc).__name__}: {exc}"
+                                     self.meta.get("assigned_names", [])) \
+                or "evaluating the model"
+            note = f"{what} failed at t = {t:.6g}: {type(exc).__name__}: {exc}"
             if note not in self.evaluation_errors:
                 self.evaluation_errors.append(note)
             return np.full(size, np.nan)
@@ -286,17 +287,22 @@ class CompiledModel(DAEProblem):
                        "compile with a non-zero value to tune it)") if name in zeros else ""
                 close = [n for n in self.param_names if n.split(".")[-1] == name.split(".")[-1]]
                 hint = f"; parameters with that name: {', '.join(close[:6])}" if close else ""
-                raise KeyError(f"the model has no tunable parameter '{name}'{why}{hint}")
-            self.p[self.param_names.index(name)] = _real_value(name, value)
+                raise NotInModel(f"the model has no tunable parameter '{name}'{why}{hint}")
+            x = _real_value(name, value)
+            lo, hi = self.meta.get("parameter_bounds", {}).get(name, (None, None))
+            if (lo is not None and x < lo) or (hi is not None and x > hi):
+                raise InvalidValue(f"parameter '{name}' = {x!r} is outside its range "
+                                   f"[{'-inf' if lo is None else lo}, "
+                                   f"{'inf' if hi is None else hi}]")
+            self.p[self.param_names.index(name)] = x
 
 
 def _real_value(name, value) -> float:
-    from ..components.component import ModelError
     if isinstance(value, (bool, np.bool_, complex, np.complexfloating)) or \
             not isinstance(value, (int, float, np.number)):
-        raise ModelError(f"parameter '{name}' must be a real number, got {value!r} "
+        raise InvalidValue(f"parameter '{name}' must be a real number, got {value!r} "
                          f"({type(value).__name__})")
     x = float(value)
     if not math.isfinite(x):
-        raise ModelError(f"parameter '{name}' must be finite, got {value!r}")
+        raise InvalidValue(f"parameter '{name}' must be finite, got {value!r}")
     return x

@@ -1,0 +1,96 @@
+"""Bad input to ``simulate`` and to a compiled model: a typed error in the user's names,
+nothing dropped silently (the model-building side is in test_bad_input.py).
+
+Each case names what is wrong: the argument, the parameter, or the equation whose
+evaluation fails at the start values.
+"""
+import math
+import re
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import acausal as ac
+from acausal.components import InvalidValue, NotInModel
+from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
+
+
+class RC(ac.Component):
+    """A 1 V source charging C1 = 10 mF through R1 = 1 Ohm: v_C = 1 - exp(-t / (R C))."""
+
+    src = ConstantVoltage(V=1.0)
+    R1 = Resistor()
+    C1 = Capacitor(C=1e-2)
+    gnd = Ground()
+
+    def equations(self):
+        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
+                ac.connect(self.C1.n, self.src.n, self.gnd.p)]
+
+
+class Decay(ac.Component):
+    """x' = -k x with k >= 0 declared."""
+
+    k = ac.Parameter(1.0, min=0.0)
+    x = ac.Variable(start=1.0)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), -self.k * self.x)]
+
+
+class SqrtOfStart(ac.Component):
+    """x' = -sqrt(x) started at x = -1: outside sqrt's domain at t = 0."""
+
+    x = ac.Variable(start=-1.0)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), -sp.sqrt(self.x))]
+
+
+def _raises(exc, text):
+    return pytest.raises(exc, match=re.escape(text))
+
+
+@pytest.mark.parametrize("kwargs, text", [
+    (dict(n_points=0), "n_points must be an integer >= 2, got 0"),
+    (dict(t_eval=[0.0, 2.0]), "t_eval has 1 time(s) outside [t_start, t_end]"),
+    (dict(t_eval=[0.0, 0.06, 0.03]), "t_eval must be sorted"),
+    (dict(t_eval=[0.0, math.nan, 0.1]), "t_eval has non-finite entries at positions [1]"),
+    (dict(rtol=-1.0), "rtol must be > 0"),
+    (dict(t_start=0.2), "t_end = 0.1 must be after t_start = 0.2"),
+], ids=["n_points=0", "t_eval outside", "t_eval unsorted", "t_eval NaN", "rtol<0",
+        "t_end<t_start"])
+def test_bad_simulate_arguments_are_refused_by_name(kwargs, text):
+    with _raises(ValueError, text):
+        ac.simulate(RC(), t_end=0.1, **kwargs)
+
+
+@pytest.mark.parametrize("value, exc, text", [
+    ("abc", InvalidValue, "parameter 'R1.R' must be a real number, got 'abc' (str)"),
+    (math.nan, InvalidValue, "parameter 'R1.R' must be finite, got nan"),
+    (True, InvalidValue, "parameter 'R1.R' must be a real number, got True (bool)"),
+])
+def test_bad_parameter_values_at_run_time(value, exc, text):
+    with _raises(exc, text):
+        ac.simulate(RC(), t_end=0.1, parameters={"R1.R": value})
+
+
+def test_unknown_parameter_names_the_ones_that_exist():
+    with _raises(NotInModel, "no tunable parameter 'R9.R'; parameters with that name: R1.R"):
+        ac.simulate(RC(), t_end=0.1, parameters={"R9.R": 1.0})
+
+
+def test_parameter_outside_its_declared_range_at_run_time():
+    with _raises(InvalidValue, "parameter 'k' = -1.0 is outside its range [0.0, inf]"):
+        ac.simulate(Decay(), t_end=1.0, parameters={"k": -1.0})
+    res = ac.simulate(Decay(), t_end=1.0, rtol=1e-8, parameters={"k": 2.0})
+    assert res.success
+    assert abs(res["x"][-1] - np.exp(-2.0)) < 1e-6 * np.exp(-2.0)
+
+
+def test_a_start_value_outside_a_functions_domain_names_the_equation():
+    with pytest.raises(ac.InitializationFailed) as err:
+        ac.simulate(SqrtOfStart(), t_end=1.0)
+    msg = str(err.value)
+    assert "der(x)" in msg and "math domain error" in msg and "t = 0" in msg
