@@ -12,9 +12,9 @@ potentials, capacitor voltages and inductor currents to 1e-5 of their scale; the
 of states must be the network's order (one per capacitor of the forest and per
 inductor).
 
-There is no slow-test marker in this repository, so only sizes that compile in minutes
-run here; ``random_netlist(2000, seed=2000)`` builds the 2000-component network of the
-same family for a manual run (``SIZES``).
+There is no slow-test marker in this repository, so only sizes that compile in under a
+minute run here; ``benchmarks/random_network.py`` runs the 2000-component network of the
+same family (``random_netlist(2000, seed=2000)``), which takes minutes to compile.
 """
 import numpy as np
 import pytest
