@@ -38,11 +38,9 @@ component the problem marks ``self_scaled`` (contract item 6: a derivative solve
 algebraic unknown, which has no nominal of its own) has weight 0 in the error test and
 the Newton test, as it would have in the torn form, where it is computed from the other
 unknowns and not part of y: its accuracy is that of the quantities it is computed from.
-A derivative that is 0 at t0 while moving at 1e6 per second could otherwise only be
-held to an absolute atol below its own round-off, and the step size would collapse.
-With
-``suppress_alg`` the algebraic components are left out of the error test (but not of
-the Newton convergence test), as IDA's ``suppressalg``.
+(One 0 at t0 and moving at 1e6/s would be held to atol, below its own round-off.)  With
+``suppress_alg`` the algebraic components are left out of the error test (not of the
+Newton test), as IDA's ``suppressalg``.
 """
 from __future__ import annotations
 
@@ -179,10 +177,8 @@ class BDF:
         # choice of states): which components are algebraic is read again here
         self._alg = np.asarray(self.problem.algebraic, bool).copy()
         scaled = getattr(self.problem, "self_scaled", None)
-        self._self_scaled = np.zeros(self.n, bool) if scaled is None else \
-            np.asarray(scaled, bool) & self._alg
-        if self._self_scaled.all():
-            self._self_scaled[:] = False
+        self._self_scaled = self._alg & (False if scaled is None else np.asarray(scaled, bool))
+        self._self_scaled &= not self._self_scaled.all()
         self._update_weights()
         h = initial_step(self) if first_step is None else float(first_step)
         h = min(h, self.max_step, max(self.t_stop - self.tn, 0.0) or h)
