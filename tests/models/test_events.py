@@ -4,6 +4,7 @@ import sympy as sp
 import pytest
 
 import acausal as ac
+from acausal.library import rotational as rot
 from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
 
 G, E = 9.81, 0.8
@@ -58,6 +59,36 @@ def test_reinit_of_a_non_state_is_an_error_naming_it():
 
     with pytest.raises(ac.ModelError, match=r"reinit\(y.*not a state"):
         ac.compile(Bad())
+
+
+class GearedReinit(ac.Component):
+    """A 2 N·m torque on a motor inertia (0.01 kg m2), an ideal gear n = 4 and a load
+    inertia (0.5 kg m2), from rest; at t = 0.5 s the load speed is reset to 0.  The
+    structural state choice would put the states on the motor side; a variable that a
+    when-clause re-initializes is made a state instead."""
+
+    torque = rot.ConstantTorque(tau_constant=2.0)
+    motor = rot.Inertia(J=0.01)
+    gear = rot.IdealGear(n=4.0)
+    load = rot.Inertia(J=0.5)
+
+    def equations(self):
+        return [ac.connect(self.torque.flange, self.motor.flange_a),
+                ac.connect(self.motor.flange_b, self.gear.flange_a),
+                ac.connect(self.gear.flange_b, self.load.flange_a),
+                ac.when(ac.time > 0.5, ac.reinit(self.load.w, 0.0))]
+
+
+def test_reinit_behind_a_gear_makes_the_load_speed_a_state():
+    """Load acceleration n tau / (J_load + n^2 J_motor) = 12.12 rad/s2 before and after
+    the reset, so w_load(1) = 12.12 * 0.5 and w_motor = n w_load."""
+    assert "load.w" in ac.compile(GearedReinit()).report.states
+    res = ac.simulate(GearedReinit(), t_end=1.0, rtol=1e-8)
+    assert res.success and np.allclose(res.events, [0.5])
+    a = 4.0 * 2.0 / (0.5 + 16 * 0.01)
+    assert abs(res["load.w"][-1] - 0.5 * a) < 1e-6 * 0.5 * a
+    assert abs(res["motor.w"][-1] - 4 * 0.5 * a) < 1e-6 * 2 * a
+    assert np.max(np.abs(res["motor.w"] - 4 * res["load.w"])) < 1e-9 * 4 * a
 
 
 class DelayedStep(ac.Component):
