@@ -207,6 +207,11 @@ class IndexReport:
                             "DISAGREES with Pantelides on: "
                             + ", ".join(self.sigma["disagreements"]) +
                             " (hidden cancellation or a structural singularity?)"))
+            if self.sigma["dof"] != len(self.states) and not self.state_sets:
+                lines.append(f"  note: the Sigma-method counts {self.sigma['dof']} degrees "
+                             "of freedom in the equations as written; the model has "
+                             f"{len(self.states)} states after alias elimination, structural "
+                             "zeros and index reduction")
         for note in self.notes:
             lines.append(f"  note: {note}")
         total = sum(self.timings.values())

@@ -32,6 +32,7 @@ from ..errors import InitializationFailed
 from ..solvers.base import EventAction
 from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton
+from .initial import algebraic_system
 
 __all__ = ["WhenClauses", "iterate_event"]
 
@@ -121,21 +122,10 @@ def _at_zero(model, t, z, zp) -> np.ndarray:
 
 def _solve_algebraic(model, t, z) -> np.ndarray:
     """G(t, z) = 0 for the algebraic unknowns, states held, discrete state frozen."""
-    alg = np.flatnonzero(model.algebraic)
+    z = z.copy()
+    alg, F, J = algebraic_system(model, t, z)
     if not alg.size:
         return z
-    z = z.copy()
-
-    def F(za):
-        zz = z.copy()
-        zz[alg] = za
-        return model.G(t, zz)
-
-    def J(za):
-        zz = z.copy()
-        zz[alg] = za
-        return model.dG_dy(t, zz).tocsc()[:, alg]
-
     w = 1.0 / (1e-8 * np.abs(z[alg]) + 1e-8 * model.nominal[alg])
     try:
         out = damped_newton(F, J, z[alg], weights=w, tol=1e-3, max_iter=30)

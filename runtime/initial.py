@@ -41,7 +41,8 @@ from ..solvers.initialization import solve_with_fallback
 from ..solvers.linalg import LinearSolver, SingularMatrixError
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 
-__all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives"]
+__all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives",
+           "algebraic_system"]
 
 _MODE_ITERATIONS = 10   # solves with updated relation values before giving up
 _NEWTON_RTOL = 1e-6     # Newton's weights for initialization (steps below 1e-5 of this)
@@ -139,19 +140,9 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
 def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-6):
     """After an event: the states kept, G(t, z) = 0 solved for the algebraic unknowns,
     then consistent z' of every unknown."""
-    alg = np.flatnonzero(model.algebraic)
     z = np.array(z, dtype=float)
+    alg, F, J = algebraic_system(model, t, z)
     if alg.size:
-        def F(za):
-            zz = z.copy()
-            zz[alg] = za
-            return model.G(t, zz)
-
-        def J(za):
-            zz = z.copy()
-            zz[alg] = za
-            return model.dG_dy(t, zz).tocsc()[:, alg]
-
         atol_v = atol * model.nominal[alg]
         weights = 1.0 / (rtol * np.abs(z[alg]) + atol_v)
         model.evaluation_errors.clear()
@@ -160,6 +151,24 @@ def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-
                                      [model.names[i] for i in alg],
                                      lambda k: _row_name(model, k), t)
     return z, consistent_derivatives(model, t, z)
+
+
+def algebraic_system(model, t: float, z: np.ndarray):
+    """``(alg, F, J)``: G(t, z) = 0 as a function of the algebraic unknowns ``z[alg]``
+    alone, the states (and the discrete state) held at their values in ``z``."""
+    alg = np.flatnonzero(model.algebraic)
+
+    def F(za):
+        zz = z.copy()
+        zz[alg] = za
+        return model.G(t, zz)
+
+    def J(za):
+        zz = z.copy()
+        zz[alg] = za
+        return model.dG_dy(t, zz).tocsc()[:, alg]
+
+    return alg, F, J
 
 
 def consistent_derivatives(model, t: float, z: np.ndarray) -> np.ndarray:

@@ -8,51 +8,15 @@ import acausal as ac
 from acausal.analysis import (ModeWarning, OperatingPoint, OperatingPointError,
                               SteadyStateError, linearize, steady_state)
 from acausal.library import rotational as rot
-from acausal.library import thermal as th
-from acausal.library.blocks import Constant, Feedback, Gain, Limiter
 from acausal.library.friction.rotational import StribeckFriction
 
-# C T' = Q - G (T - T_amb),  Q = clip(K_p (T_set - T), 0, Q_max)
-C_TH, G, K_P, Q_MAX, T_AMB = 5e3, 10.0, 100.0, 1e3, 293.15
-
-
-class Heater(ac.Component):
-    body = th.HeatCapacitor(C=C_TH, T={"start": T_AMB})
-    loss = th.ThermalConductor(G=G)
-    ambient = th.FixedTemperature(T=T_AMB)
-    heater = th.PrescribedHeatFlow()
-    sensor = th.TemperatureSensor()
-    set_point = Constant(k=323.15)
-    error = Feedback()
-    gain = Gain(k=K_P)
-    limit = Limiter(uMax=Q_MAX, uMin=0.0)
-
-    def equations(self):
-        return [ac.connect(self.body.port, self.loss.port_a, self.heater.port, self.sensor.port),
-                ac.connect(self.loss.port_b, self.ambient.port),
-                ac.connect(self.set_point.y, self.error.u1),
-                ac.connect(self.sensor.T, self.error.u2),
-                ac.connect(self.error.y, self.gain.u),
-                ac.connect(self.gain.y, self.limit.u),
-                ac.connect(self.limit.y, self.heater.Q_flow)]
-
-
-def heater_equilibrium(t_set):
-    """The unsaturated balance K_p (T_set - T) = G (T - T_amb), else a limit's."""
-    T = (K_P * t_set + G * T_AMB) / (K_P + G)
-    Q = K_P * (t_set - T)
-    if Q > Q_MAX:
-        return T_AMB + Q_MAX / G, Q_MAX
-    if Q < 0.0:
-        return T_AMB, 0.0
-    return T, Q
-
+from ..heater import C_TH, G, K_P, Q_MAX, T_AMB, LimitedHeater, heater_equilibrium
 
 # start saturated high / unsaturated / far above; equilibria unsaturated / high / low
 @pytest.mark.parametrize("t_set, t_start", [(323.15, T_AMB), (420.0, 415.0),
                                             (280.0, 400.0), (323.15, 500.0)])
 def test_heater_equilibrium_is_in_the_limiter_mode_it_satisfies(t_set, t_start):
-    model = Heater(set_point={"k": t_set}, body={"T": {"start": t_start}})
+    model = LimitedHeater(set_point={"k": t_set}, body={"T": {"start": t_start}})
     op = steady_state(model)
     T, Q = heater_equilibrium(t_set)
     assert op["body.T"] == pytest.approx(T, rel=1e-12)
@@ -66,11 +30,11 @@ def test_heater_equilibrium_is_in_the_limiter_mode_it_satisfies(t_set, t_start):
 
 def test_heater_linearized_in_each_mode():
     """Unsaturated: T' = -(G + K_p)/C T + (K_p/C) T_set; saturated: -G/C and no input."""
-    sys = linearize(Heater(), ["set_point.k"], ["body.T"], at="steady")
+    sys = linearize(LimitedHeater(), ["set_point.k"], ["body.T"], at="steady")
     assert sys.A[0, 0] == pytest.approx(-(G + K_P) / C_TH, rel=1e-9)
     assert sys.B[0, 0] == pytest.approx(K_P / C_TH, rel=1e-9)
     assert list(sys.modes.values()) == [False, False]
-    hot = linearize(Heater(set_point={"k": 420.0}), ["set_point.k"], ["body.T"], at="steady")
+    hot = linearize(LimitedHeater(set_point={"k": 420.0}), ["set_point.k"], ["body.T"], at="steady")
     assert hot.A[0, 0] == pytest.approx(-G / C_TH, rel=1e-9)
     assert abs(hot.B[0, 0]) < 1e-12 * K_P / C_TH
     assert list(hot.modes.values()) == [True, False]
@@ -81,14 +45,14 @@ def test_linearization_at_the_limit_says_which_side_it_took():
     relation and the side, and A is that side's."""
     at_limit = 323.15 - Q_MAX / K_P
     with pytest.warns(ModeWarning, match=r"gain\.y\.signal > limit\.uMax.*taken as"):
-        sys = linearize(Heater(), ["set_point.k"], ["body.T"], at={"body.T": at_limit})
+        sys = linearize(LimitedHeater(), ["set_point.k"], ["body.T"], at={"body.T": at_limit})
     saturated = [v for k, v in sys.modes.items() if "uMax" in k.split(" in ")[0]][0]
     expected = -G / C_TH if saturated else -(G + K_P) / C_TH
     assert sys.A[0, 0] == pytest.approx(expected, rel=1e-9)
 
 
 def test_a_point_that_contradicts_its_modes_is_refused():
-    op = steady_state(Heater())                        # unsaturated, T = 320.4 K
+    op = steady_state(LimitedHeater())                        # unsaturated, T = 320.4 K
     wrong = OperatingPoint(op.plant, op.t, op.z, m=np.array([1.0, 0.0]))
     with pytest.raises(OperatingPointError, match=r"limit\.uMax") as err:
         linearize(op.compiled, ["set_point.k"], ["body.T"], at=wrong)
@@ -96,7 +60,7 @@ def test_a_point_that_contradicts_its_modes_is_refused():
 
 
 def test_linearization_along_a_run_uses_the_modes_of_the_run():
-    model = Heater()
+    model = LimitedHeater()
     res = ac.simulate(model, t_end=2000.0, rtol=1e-8, n_points=201)
     early = linearize(res.compiled, ["set_point.k"], ["body.T"], at=(res, 10.0))
     late = linearize(res.compiled, ["set_point.k"], ["body.T"], at=(res, 2000.0))

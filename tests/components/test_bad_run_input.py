@@ -13,20 +13,9 @@ import sympy as sp
 
 import acausal as ac
 from acausal.components import InvalidValue, NotInModel
-from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
 
+from .test_bad_input import RC      # 1 V charging C1 = 10 mF through R1 = 1 Ohm
 
-class RC(ac.Component):
-    """A 1 V source charging C1 = 10 mF through R1 = 1 Ohm: v_C = 1 - exp(-t / (R C))."""
-
-    src = ConstantVoltage(V=1.0)
-    R1 = Resistor()
-    C1 = Capacitor(C=1e-2)
-    gnd = Ground()
-
-    def equations(self):
-        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
-                ac.connect(self.C1.n, self.src.n, self.gnd.p)]
 
 
 class Decay(ac.Component):

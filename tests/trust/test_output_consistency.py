@@ -27,9 +27,9 @@ import numpy as np
 import acausal as ac
 from acausal.library import electrical as el
 from acausal.library import rotational as rot
-from acausal.library import thermal as th
-from acausal.library.blocks import Constant, Feedback, Gain, Limiter
 from acausal.library.friction.rotational import KarnoppFriction
+
+from ..heater import C_TH, G, K_P, Q_MAX, T_AMB, LimitedHeater
 
 TOL = 5e-3          # of max |a|: far below any sign or branch error, above O(h^2 a'')
 
@@ -81,42 +81,20 @@ def test_friction_outputs_follow_the_integrated_speed():
     assert err < TOL, "-friction.tau/J " + where
 
 
-T_AMB, C_HEAT, G_LOSS = 293.15, 5e3, 10.0
-
-
-class HeaterWithLimiter(ac.Component):
-    """P temperature control through a 0..1 kW Limiter, starting at ambient."""
-
-    body = th.HeatCapacitor(C=C_HEAT, T={"start": T_AMB, "fixed": True})
-    loss = th.ThermalConductor(G=G_LOSS)
-    ambient = th.FixedTemperature(T=T_AMB)
-    heater = th.PrescribedHeatFlow()
-    sensor = th.TemperatureSensor()
-    set_point = Constant(k=323.15)
-    error = Feedback()
-    gain = Gain(k=100.0)
-    limit = Limiter(uMax=1000.0, uMin=0.0)
-
-    def equations(self):
-        return [ac.connect(self.body.port, self.loss.port_a, self.heater.port,
-                           self.sensor.port),
-                ac.connect(self.loss.port_b, self.ambient.port),
-                ac.connect(self.set_point.y, self.error.u1),
-                ac.connect(self.sensor.T, self.error.u2),
-                ac.connect(self.error.y, self.gain.u),
-                ac.connect(self.gain.y, self.limit.u),
-                ac.connect(self.limit.y, self.heater.Q_flow)]
+def HeaterWithLimiter():
+    """P temperature control through a 0..1 kW Limiter, starting at ambient (fixed)."""
+    return LimitedHeater(body={"T": {"start": T_AMB, "fixed": True}})
 
 
 def test_limiter_outputs_follow_the_integrated_temperature():
     res = ac.simulate(HeaterWithLimiter(), t_end=2000.0, rtol=1e-8)
     assert res.success, res.message
-    t_release = -C_HEAT / G_LOSS * np.log(1 - (323.15 - 10.0 - T_AMB) * G_LOSS / 1000.0)
+    t_release = -C_TH / G * np.log(1 - (323.15 - Q_MAX / K_P - T_AMB) * G / Q_MAX)
     assert np.min(np.abs(np.asarray(res.events) - t_release)) < 1e-6 * t_release
     T = res["body.T"]
     err, where = _slope_mismatch(res, T, res["der(body.T)"])
     assert err < TOL, "der(body.T) " + where
-    heat = (res["limit.y.signal"] - G_LOSS * (T - T_AMB)) / C_HEAT
+    heat = (res["limit.y.signal"] - G * (T - T_AMB)) / C_TH
     err, where = _slope_mismatch(res, T, heat)
     assert err < TOL, "(Q - G (T - T_amb))/C " + where
 

@@ -24,46 +24,9 @@ from scipy.optimize import brentq
 import acausal as ac
 from acausal.analysis import SteadyStateError
 from acausal.library import rotational as rot
-from acausal.library import thermal as th
-from acausal.library.blocks import Constant, Feedback, Gain, Limiter
 from acausal.library.friction.rotational import StribeckFriction
 
-T_AMB, G, K_P, Q_MAX, C = 293.15, 10.0, 100.0, 1000.0, 5e3
-
-
-def _heater_equilibrium(t_set):
-    T = (K_P * t_set + G * T_AMB) / (K_P + G)
-    Q = K_P * (t_set - T)
-    if Q > Q_MAX:
-        return T_AMB + Q_MAX / G, Q_MAX
-    if Q < 0.0:
-        return T_AMB, 0.0
-    return T, Q
-
-
-class LimitedHeater(ac.Component):
-    """Heat capacitor, loss to ambient, P controller through a Limiter."""
-
-    body = th.HeatCapacitor(C=C, T={"start": T_AMB})
-    loss = th.ThermalConductor(G=G)
-    ambient = th.FixedTemperature(T=T_AMB)
-    heater = th.PrescribedHeatFlow()
-    sensor = th.TemperatureSensor()
-    set_point = Constant(k=323.15)
-    error = Feedback()
-    gain = Gain(k=K_P)
-    limit = Limiter(uMax=Q_MAX, uMin=0.0)
-
-    def equations(self):
-        return [ac.connect(self.body.port, self.loss.port_a, self.heater.port,
-                           self.sensor.port),
-                ac.connect(self.loss.port_b, self.ambient.port),
-                ac.connect(self.set_point.y, self.error.u1),
-                ac.connect(self.sensor.T, self.error.u2),
-                ac.connect(self.error.y, self.gain.u),
-                ac.connect(self.gain.y, self.limit.u),
-                ac.connect(self.limit.y, self.heater.Q_flow)]
-
+from ..heater import C_TH, G, K_P, Q_MAX, T_AMB, LimitedHeater, heater_equilibrium
 
 # (set point, start temperature): the first starts saturated high with an unsaturated
 # equilibrium, the second starts unsaturated with a saturated equilibrium
@@ -89,10 +52,10 @@ def test_heater_equilibrium_is_consistent_with_the_limiter(t_set, t_start):
 def test_heater_equilibrium_is_the_hand_computed_one(t_set, t_start):
     model = LimitedHeater(set_point={"k": t_set}, body={"T": {"start": t_start}})
     op = ac.steady_state(model)
-    T, Q = _heater_equilibrium(t_set)
+    T, Q = heater_equilibrium(t_set)
     assert op["body.T"] == pytest.approx(T, rel=1e-10)
     assert op["heater.Q_flow.signal"] == pytest.approx(Q, rel=1e-9, abs=1e-9 * Q_MAX)
-    assert abs(op["der(body.T)"]) < 1e-9 * Q_MAX / C
+    assert abs(op["der(body.T)"]) < 1e-9 * Q_MAX / C_TH
 
 
 F_C, F_S, V_S, F_V, J, TAU = 1.0, 1.5, 0.1, 0.5, 0.02, 3.0
