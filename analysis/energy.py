@@ -330,12 +330,16 @@ def energy_balance(result, model: Component, *, storage=None, dissipation=None,
 
 def _power_scale(t, E, totals, *dicts) -> float:
     """The largest power any term carries; for a model that hardly moves (a pendulum
-    hanging at rest) at least its stored energy per run time, so that the round-off of
-    powers near zero is not judged against itself."""
+    hanging at rest) at least the change of its stored energy per run time, and 1e-6 of
+    its stored energy per run time, so that the round-off of powers near zero is not
+    judged against itself.  The change, not the level: an energy measured from a far
+    datum (C T from 0 K, m g y) would otherwise set a scale that hides real violations
+    (a 300 K heat capacitor next to a milliwatt circuit)."""
     peaks = [np.max(np.abs(a), initial=0.0) for a in totals]
     peaks += [np.max(np.abs(a), initial=0.0) for d in dicts for a in d.values()]
     span = float(t[-1] - t[0]) if len(t) > 1 else 0.0
-    floor = np.max(np.abs(E), initial=0.0) / span if span > 0 else 0.0
+    level = max(np.ptp(E) if len(E) else 0.0, 1e-6 * np.max(np.abs(E), initial=0.0))
+    floor = level / span if span > 0 else 0.0
     return float(max(peaks + [floor]))
 
 

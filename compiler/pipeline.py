@@ -163,6 +163,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> M
               "assigned_names": [a.name for a, _ in assigned],
               "equation_names": [system.equations[e].name(system) for e in caus.residual_eqs],
               "structural_zeros": sorted(zeros),
+              "self_scaled": _self_scaled(system, z_syms),
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
                                    if p.min is not None or p.max is not None}})
     if reduced.whens:
@@ -345,6 +346,14 @@ def _nominal(system, k) -> float:
         nom = system.var_info[system.symbols[k]].attrs.nominal
         return float(nom) if nom else 1.0
     return 1.0
+
+
+def _self_scaled(system, z_syms) -> list:
+    """Which solver unknowns are derivatives without a declared nominal: the integrator
+    judges them on their own motion (solvers/base.py, item 6)."""
+    ders = set(system.derivatives.values())
+    return [q in ders and not (q in system.var_info and system.var_info[q].attrs.nominal)
+            for q in z_syms]
 
 
 def _start(system, k) -> float:

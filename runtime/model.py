@@ -59,8 +59,8 @@ class CompiledModel(DAEProblem):
         self.pair_d = np.asarray([b for _, b in mc.pairs], dtype=np.int64)
         self.dummies = set(mc.dummies)
         self.nominal = np.asarray(mc.nominal, dtype=float)
-        # derivatives solved as unknowns have no nominal: scaled by their own size
-        self.self_scaled = np.array([str(n).startswith("der(") for n in self.names], bool)
+        # derivatives solved as unknowns, without a nominal: judged on their own motion
+        self.self_scaled = np.asarray(mc.meta.get("self_scaled", [False] * self.n), bool)
         self.start = np.asarray(mc.start, dtype=float)
         self.outputs = mc.outputs
         self.report = mc.report

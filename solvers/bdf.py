@@ -35,10 +35,11 @@ detection, as in CVODE, where it is off by default too: :mod:`acausal.solvers.st
 
 Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``.  A
 component the problem marks ``self_scaled`` (contract item 6: a derivative solved as an
-algebraic unknown, which has no nominal of its own) has weight 0 in the error test and
-the Newton test, as it would have in the torn form, where it is computed from the other
-unknowns and not part of y: its accuracy is that of the quantities it is computed from.
-(One 0 at t0 and moving at 1e6/s would be held to atol, below its own round-off.)  With
+unknown, without a nominal of its own) has weight 0 in the error and Newton tests, as
+in the torn form, where it is computed from the other unknowns: a solved-whole block is
+strongly connected, so it is judged through the unknowns it determines.  (One that is 0
+at t0 and moves at 1e6/s would otherwise be held to atol, below its own round-off:
+a Newton test on its own motion, |y| + h |y'|, still fails there once h is small.)  With
 ``suppress_alg`` the algebraic components are left out of the error test (not of the
 Newton test), as IDA's ``suppressalg``.
 """
@@ -178,7 +179,8 @@ class BDF:
         self._alg = np.asarray(self.problem.algebraic, bool).copy()
         scaled = getattr(self.problem, "self_scaled", None)
         self._self_scaled = self._alg & (False if scaled is None else np.asarray(scaled, bool))
-        self._self_scaled &= not self._self_scaled.all()
+        if self._self_scaled.all():
+            self._self_scaled[:] = False
         self._update_weights()
         h = initial_step(self) if first_step is None else float(first_step)
         h = min(h, self.max_step, max(self.t_stop - self.tn, 0.0) or h)
@@ -199,8 +201,7 @@ class BDF:
 
     def _update_weights(self) -> None:
         self.ewt = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
-        if self._self_scaled.any():
-            self.ewt[self._self_scaled] = 0.0
+        self.ewt[self._self_scaled] = 0.0
         self.ewt_err = self.ewt.copy()
         if self.err_mask is not None:
             self.ewt_err *= self.err_mask

@@ -151,8 +151,9 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialTranslationalFriction):
         return self.sigma_0 * self.z**2 / 2
 
     def loss_power(self):
-        """f v - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
-        sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
+        """f v - sigma_0 z der(z): the port power less the bristles' storage rate
+        (its sign over a run is what the energy audit checks; Dupont et al. 2002 give
+        the conditions under which the elasto-plastic model is passive)."""
         return self.f * self.v - self.sigma_0 * self.z * self.z_dot
 
     def equations(self):

@@ -7,6 +7,7 @@ import acausal as ac
 from acausal.analysis import energy_balance, register_storage
 from acausal.analysis.energy import classify
 from acausal.library import rotational as rot
+from acausal.library import thermal as th
 from acausal.library import translational as tr
 from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
 from acausal.library.electrical.interfaces import OnePort
@@ -203,3 +204,21 @@ def test_mass_on_a_spring_conserves_energy():
     assert np.max(np.abs(audit.E - E0)) < 1e-7 * E0
     x = x0 * np.cos(np.sqrt(c / m) * res.t)
     assert np.allclose(audit.stored["spring"], 0.5 * c * x**2, rtol=0, atol=1e-6 * E0)
+
+
+class CircuitBesideAWarmBody(Circuit):
+    """The circuit and, unconnected, a 1 kJ/K body at 300 K: C T = 3e5 J stored, constant
+    (its energy is measured from 0 K)."""
+
+    body = th.HeatCapacitor(C=1e3, T={"start": 300.0, "fixed": True})
+
+
+def test_a_violation_is_not_hidden_by_an_energy_far_from_its_datum():
+    """The power scale is set by the change of the stored energy, not its level: the
+    300 K body must not lift the violation limit above the circuit's milliwatts."""
+    model = CircuitBesideAWarmBody()
+    model.other = ClaimsLossless(R=5.0)
+    res = ac.simulate(model, t_end=0.01, rtol=1e-9, atol=1e-12, n_points=41)
+    audit = energy_balance(res, model)
+    assert audit.roles["body"] == "storage"
+    assert [(v.kind, v.path) for v in audit.violations] == [("not lossless", "other")]

@@ -36,7 +36,7 @@ def test_mass_rests_at_the_stop_and_leaves_when_the_force_reverses():
     assert np.max(np.abs(stop_force + F0 * np.sin(OMEGA * t[rest]))) < 1e-12 * F0
     # released at the reversal: an event at 1 s, moving from then on, on the closed form
     # v = F0/(m w) (cos(w) - cos(wt)), s = s_max - F0/(m w) ((t - 1) + sin(wt)/w)
-    assert abs(t_release - 1.0) < 1e-11
+    assert abs(t_release - 1.0) < 1e-11 * 1.0          # of the release time
     after = t > t_release
     assert np.all(v[after] < 0.0)
     ta = t[after]
@@ -49,7 +49,8 @@ def test_example_stays_between_the_stops():
     res = ac.simulate(MassAgainstStop(), t_end=MassAgainstStop.stop_time, rtol=1e-8)
     assert res.success
     s = res["mass.s"]
-    assert s.min() >= -0.3 - 1e-12 and s.max() <= 0.1 + 1e-12
+    travel = 0.1 - (-0.3)
+    assert s.min() >= -0.3 - 2.5e-12 * travel and s.max() <= 0.1 + 2.5e-12 * travel
     # resting at a stop (put there exactly by a reinit, pushed into it: a stop force),
     # v = 0 exactly; just after a release s can still equal the stop to the last bit
     # while v is already a few ulps, so the stop force, not s, tells who rests

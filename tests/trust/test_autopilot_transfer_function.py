@@ -166,7 +166,7 @@ def test_book_poles_of_the_lead_lag_autopilot():
     printed = np.array([-0.5609, -0.0295 - 0.0303j, -0.0295 + 0.0303j])
     assert np.allclose(np.sort_complex(sys.minimal().poles()), np.sort_complex(printed),
                        atol=1e-4)
-    assert np.min(np.abs(sys.poles() + 1.0 / T_1)) < 1e-9
+    assert np.min(np.abs(sys.poles() + 1.0 / T_1)) < 1e-9 / T_1
 
 
 def test_tf_is_the_closed_form_closed_loop(loop):

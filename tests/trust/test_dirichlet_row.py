@@ -8,7 +8,7 @@ Method of lines for u_t = kappa u_xx on [0, 1], kappa = 1e-2, n = 200 nodes:
     row n-1:      u_{n-1} - u_{n-2} = 0               (Neumann, algebraic)
 
 from u = 0 inside and u_0 = 1.  The Dirichlet row is linear with a unit coefficient:
-every Newton correction satisfies it exactly and every interpolant through values
+every Newton correction satisfies it to rounding and every interpolant through values
 u_0 = 1 returns 1, so u_0 - 1 must vanish at round-off level (1e-14, relative to
 u_0 = 1) at every output point; this is the one place where a round-off bound is the
 physics.  The dense and the sparse LU solve the same problem: their trajectories must
