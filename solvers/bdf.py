@@ -453,11 +453,11 @@ class BDF:
                                   f"t={saved_t:.17g} (h={self.hh:.3g})", saved_t,
                                   self.hh, self._last_fail)
             self.kmax = self.max_order   # lift a stability cap: this order fails accuracy
-            if self.nst == 0:
+            if self.nst == 0 and nef <= 3:
                 # the first step, order 1 from a consistent point: its error is
-                # h^2 |y''| / 2 to leading order, so the estimate says how far to cut
-                # (IDA's floor of 1/4 per failure would need ~10 failures to recover
-                # from a first step 1e5 too large, when y'(t0) = 0 but y'' is not)
+                # h^2 |y''| / 2, so the estimate says how far to cut (IDA's 1/4 per
+                # failure needs ~10 failures when y'(t0) = 0 but y'' is not); three
+                # such cuts, then IDA's rule if the error does not scale so
                 rr = 0.9 * (2.0 * err_k + 1e-4) ** -0.5
                 self._shrink(max(1e-3, min(0.9, rr)))
             elif nef == 1:

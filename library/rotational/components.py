@@ -66,8 +66,8 @@ class Damper(PartialCompliant):
     d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
 
     def loss_power(self):
-        """tau der(phi_rel) = d der(phi_rel)^2."""
-        return self.tau * ac.der(self.phi_rel)
+        """d der(phi_rel)^2 (the audit checks it against tau der(phi_rel))."""
+        return self.d * ac.der(self.phi_rel)**2
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.tau, self.d * ac.der(self.phi_rel))]

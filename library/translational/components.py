@@ -63,8 +63,9 @@ class Damper(PartialCompliant):
     d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
 
     def loss_power(self):
-        """f der(s_rel) = d der(s_rel)^2  (Egeland & Gravdahl (2.60))."""
-        return self.f * ac.der(self.s_rel)
+        """d der(s_rel)^2  (Egeland & Gravdahl (2.60); the audit checks it against
+        f der(s_rel))."""
+        return self.d * ac.der(self.s_rel)**2
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.f, self.d * ac.der(self.s_rel))]

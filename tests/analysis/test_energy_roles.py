@@ -222,3 +222,19 @@ def test_a_violation_is_not_hidden_by_an_energy_far_from_its_datum():
     audit = energy_balance(res, model)
     assert audit.roles["body"] == "storage"
     assert [(v.kind, v.path) for v in audit.violations] == [("not lossless", "other")]
+
+
+class DoubleLossResistor(Resistor):
+    """A resistor whose declared loss is twice R i^2."""
+
+    def loss_power(self):
+        return 2 * self.R * self.i**2
+
+
+def test_a_loss_declaration_that_does_not_match_the_port_power_is_flagged():
+    """The resistor's loss is declared in its constitutive form R i^2, so the audit's
+    comparison with the port power v i is a real check, not 0 = 0."""
+    assert _audit().ok
+    audit = _audit(other=DoubleLossResistor(R=1.0))
+    assert [(v.kind, v.path) for v in audit.violations] == [("inconsistent declaration",
+                                                              "other")]

@@ -32,8 +32,7 @@ PHASES = tuple(Phase) if os.environ.get("ACAUSAL_SHRINK") == "1" else \
 def _settings(n):
     return settings(max_examples=n, deadline=None, derandomize=True, database=None,
                     phases=PHASES, report_multiple_bugs=False,
-                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
-                                           HealthCheck.filter_too_much])
+                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 
 
 @st.composite
