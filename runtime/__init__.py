@@ -13,8 +13,10 @@ What the runtime provides (numbered, so the code can cite it)
 2. The discrete state (:mod:`.modes`): relation values and frozen floor values, changed
    only at events.  Each relation is judged on its own scale.  The zero-crossing
    functions given to the integrator are *oriented* (``oriented_roots = True``): they
-   are >= 0 while the discrete state agrees with the solution, with a hysteresis in the
-   relation's own units frozen when the driver arms them (``arm``).
+   are >= 0 while the discrete state agrees with the solution, up to a tolerance in the
+   relation's own units evaluated where the function is; at a (re)start ``arm`` raises
+   the functions of items settled at zero by their rate until a step leaves them on
+   their own side.
 3. Events (``handle_event``): what crossed takes its value just after the event (the
    side the dynamics choose where a relation sits at zero); contradicted relations are
    settled (event iteration); when-clauses (:mod:`.events`) fire on their false -> true
@@ -31,7 +33,9 @@ What the runtime provides (numbered, so the code can cite it)
    after an event with the states kept.  ``simulate``, the analyses and exports all use
    it.
 7. The discrete state of every output point (``discrete_state``/``set_discrete_state``):
-   results are evaluated in the modes the integrator used there, never recomputed.
+   results are evaluated in the modes the integrator used there, not recomputed (the
+   exceptions: a model without states, whose modes are settled at each output point,
+   and a ``Result`` built without recorded modes).
 8. Failures in the generated code (a ``sqrt`` of a negative, a division by zero) make
    the point unusable (NaN, which Newton and the integrator treat as a failed iterate)
    and are kept in words in ``evaluation_errors``, naming the equation.

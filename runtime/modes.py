@@ -105,8 +105,8 @@ class DiscreteState:
         """Arm at a (re)start.  An item settled at zero by its rate may sit a hair on the
         other side of zero (the event point lies within the band of :meth:`settle`); its
         function is raised by that much until a step ends with the item on its own side
-        (:meth:`release`), so that the start is not reported as a crossing.  A function further below zero than the band is a real
-        contradiction and stays negative."""
+        (:meth:`release`), so that the start is not reported as a crossing.  A function
+        further below zero than the band is a real contradiction and stays negative."""
         self.offset[:] = 0.0
         r = self.oriented(t, z, p)
         low = r < 0

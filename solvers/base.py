@@ -62,9 +62,10 @@ What a problem provides (numbered, so integrators can cite it)
 13. Oriented roots and the discrete state (optional).  A problem with
    ``oriented_roots = True`` returns zero-crossing functions that are >= 0 while its
    discrete state agrees with the solution: the driver arms every one with reference
-   sign +1 (also where it is 0) and reports a crossing where one becomes negative; such a
-   problem settles its discrete state completely in ``handle_event`` (its own event
-   iteration), so the driver does not iterate on the functions' signs.  ``arm(t, y, yp, resolution)``
+   sign +1 (also where it is 0) and reports a crossing where one reaches zero or below
+   at the end of a step, located to within the time resolution; such a problem settles
+   its discrete state completely in ``handle_event`` (its own event iteration), so the
+   driver does not iterate on the functions' signs.  ``arm(t, y, yp, resolution)``
    (optional) is called whenever the functions are (re)armed, with the time to within
    which the driver locates a crossing.  ``discrete_state()``
    (optional) returns a copy of the discrete state: the driver records, for every output

@@ -306,7 +306,7 @@ class _Run:
     def _arm_roots(self, t, y, yp) -> None:
         """Reference signs after a (re)start.
 
-        Oriented functions (contract item 8) are >= 0 while the problem's discrete state
+        Oriented functions (contract item 13) are >= 0 while the problem's discrete state
         holds, so every one is armed with reference sign +1, also where it is zero.
         Otherwise a function that is exactly zero stays unarmed until a step ends where
         it is not.  A function that has just crossed sits a little beyond zero (the event
