@@ -417,7 +417,6 @@ class _Run:
                 y = np.array(action.y, dtype=float)
             if changed:
                 y, yp = self._reinit(t, y, yp)
-            if changed:
                 self._snapshot()
             # a problem with oriented roots does its own event iteration (item 13)
             if action.stop or not changed or not self.n_roots or self.oriented:
