@@ -34,7 +34,6 @@ from scipy.integrate import cumulative_simpson
 import acausal as ac
 from acausal.library import translational as tr
 from acausal.library.multibody import Body, FixedFrame, FixedTranslation, Prismatic, Revolute
-from acausal.library.multibody.examples.slider_crank import slider_position
 from acausal.library.rotational import ConstantSpeed
 
 R, L, M_ROD, M_S, W, C, G = 0.1, 0.3, 0.5, 1.0, 10.0, 1e6, 9.81
@@ -45,7 +44,8 @@ F_MAX = (M_S + M_ROD) * R * W**2 * (1 + R / L) + M_ROD * G
 
 
 def rigid_slider(theta):
-    return slider_position(theta, R, L)       # the closed form of the rigid mechanism
+    """The rigid mechanism's closed form, x_s = R cos(theta) + sqrt(L^2 - R^2 sin^2)."""
+    return R * np.cos(theta) + np.sqrt(L**2 - (R * np.sin(theta)) ** 2)
 
 
 class ElasticSliderCrank(ac.Component):
