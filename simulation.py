@@ -3,25 +3,35 @@ from __future__ import annotations
 
 import math
 import warnings
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .compiler.pipeline import compile_model
 from .components.component import Component, ModelError
 from .errors import SimulationError
 from .result import Result
-from .runtime import CompiledModel
+
+if TYPE_CHECKING:
+    from .runtime import CompiledModel
 
 __all__ = ["compile", "simulate", "initial_values"]
 
 
-def compile(model: Component) -> CompiledModel:  # noqa: A001  (the public name is compile)
-    """Flatten, reduce and generate code for a model instance; see ``compiled.report``."""
+def compile(model: Component, backend: str = "auto") -> CompiledModel:  # noqa: A001
+    """Flatten, reduce and generate code for a model instance; see ``compiled.report``.
+
+    ``backend``: ``"c"`` (generated C, compiled once per model into a cache; raises
+    BackendError without a working C compiler), ``"numpy"`` (generated Python), or
+    ``"auto"`` (C when a compiler works, else numpy; ``compiled.backend`` says which)."""
+    # imported here: the compiler brings sympy and the runtime scipy, which importing
+    # acausal (or this module, for its names) does not need
+    from .compiler.pipeline import compile_model
+    from .runtime import CompiledModel
     if isinstance(model, CompiledModel):
         return model
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r} ({type(model).__name__})")
-    return CompiledModel(compile_model(model))
+    return CompiledModel(compile_model(model, backend))
 
 
 def initial_values(compiled: CompiledModel, t0: float = 0.0) -> np.ndarray:
@@ -33,7 +43,8 @@ def initial_values(compiled: CompiledModel, t0: float = 0.0) -> np.ndarray:
 def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              atol: float | None = None, t_eval=None, n_points: int | None = None,
              max_step: float = np.inf, parameters: dict | None = None,
-             max_order: int = 5, raise_on_failure: bool = False) -> Result:
+             max_order: int = 5, raise_on_failure: bool = False,
+             backend: str = "auto") -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -44,6 +55,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     ``success=False`` and the reason in ``message`` (and warns), or raises
     SimulationError if ``raise_on_failure``.  ``max_order`` caps the BDF order (DASSL's
     maxord: 2 helps on weakly damped high-frequency modes that only need to stay bounded).
+    ``backend``: how a Component is compiled (see :func:`compile`).
     """
     t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
     if not t_end > t_start:
@@ -55,7 +67,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
             or not 1 <= max_order <= 5:
         raise ValueError(f"simulate: max_order must be an integer from 1 to 5, got {max_order!r}")
     t_eval = _output_times(t_eval, n_points, t_start, t_end)
-    compiled = compile(model)
+    compiled = compile(model, backend)
     if parameters:
         if not isinstance(parameters, dict):
             raise ValueError("simulate: parameters must be a dict {name: value}")

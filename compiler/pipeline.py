@@ -13,6 +13,7 @@ counts of every pass go into the index report.  The result is a
 """
 from __future__ import annotations
 
+import math
 import time as _time
 from dataclasses import replace
 
@@ -41,13 +42,14 @@ PASSES = ("flatten", "discrete", "alias", "balance", "conversion", "index_reduct
           "state_selection", "assemble", "codegen")
 
 
-def compile_model(model: Component) -> ModelCode:
+def compile_model(model: Component, backend: str = "auto") -> ModelCode:
     """Compile a model instance to generated code and name maps (see the module docstring);
-    :class:`acausal.runtime.CompiledModel` runs it."""
+    :class:`acausal.runtime.CompiledModel` runs it.  ``backend``: ``"c"``, ``"numpy"`` or
+    ``"auto"`` (:func:`acausal.compiler.cbackend.bind`)."""
     report = IndexReport(model_name=type(model).__name__)
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
-    discretes = freeze_integer_functions(flat)
+    discretes = clock("discrete", freeze_integer_functions, flat)
     _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
     if flat.structural_zeros:
@@ -58,9 +60,7 @@ def compile_model(model: Component) -> ModelCode:
     reduced, aliases = clock("alias", eliminate_aliases, flat)
     report.aliases = aliases
     report.count("alias", equations=len(reduced.equations), variables=len(reduced.variables))
-    system = SymbolicSystem.from_flat(reduced)
-    system.parameters |= {d.symbol for d in discretes}   # constant between events
-    structure = system.structure()
+    system, structure = clock("structure", _symbolic_system, reduced, discretes)
     clock("balance", check_balance, system, structure, reduced, aliases,
           (len(flat.equations), len(flat.variables)))
     report.sigma = clock("index_as_written", as_written, flat)
@@ -72,8 +72,16 @@ def compile_model(model: Component) -> ModelCode:
                  variables=len(system.symbols))
     out = clock("codegen", _assemble, system, reduction, reduced, flat, aliases, report,
                 discretes)
-    report.fill(system, reduction, out)
+    clock("report", report.fill, system, reduction, out)
+    from .cbackend import bind
+    clock("c_backend", bind, out, backend, report)
     return out
+
+
+def _symbolic_system(reduced, discretes):
+    system = SymbolicSystem.from_flat(reduced)
+    system.parameters |= {d.symbol for d in discretes}   # constant between events
+    return system, system.structure()
 
 
 class _Clock:
@@ -315,8 +323,21 @@ def _when_rows(whens, z_syms, caus, pairs):
 
 
 def solve_linear(residual, x):
-    """x from residual(x) = 0 when x enters linearly:  x = -r(x=0) / (dr/dx)."""
+    """x from residual(x) = 0 when x enters linearly:  x = -r(x=0) / (dr/dx).
+
+    A sum is split into the terms with and without x (the canonical terms of a sum stay
+    canonical, so no rebuilding of the whole sum is needed: a node balance of n terms
+    costs n)."""
     c = partial(residual, x)
+    if residual.is_Add:
+        rest = [a for a in residual.args if not a.has(x)]
+        if len(rest) == len(residual.args) - 1 and len(residual.args) > 2:
+            r0 = sp.Add._from_args(rest) if len(rest) > 1 else rest[0]
+            if c.is_Number and r0.is_Add:
+                # x = (-1/c) * r0, kept as a product: distributing the number over the
+                # sum would rebuild every term
+                return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
+            return -r0 / c
     return -residual.xreplace({x: 0}) / c
 
 
@@ -366,18 +387,37 @@ def _start(system, k) -> float:
 def _output_map(flat, aliases, index, psyms) -> dict:
     """Every flat variable's name -> (sign, y index), or (None, f) with f(p) its constant
     value (a variable fixed to an expression of parameters)."""
-    out = {}
+    by_name = {s.name: k for s, k in index.items()}
+    out, constant = {}, {}
     for v in flat.variables:
         if v.name in aliases.constants:
             value = sp.sympify(aliases.constants[v.name])
-            out[v.name] = (None, sp.lambdify([psyms], value, modules="math")
-                           if value.free_symbols else float(value))
+            if value.free_symbols:
+                constant[v.name] = value
+            else:
+                out[v.name] = (None, float(value))
             continue
         sign, root = aliases.resolve(v.name)
-        out[v.name] = (float(sign), index[sp.Symbol(root, real=True)])
+        out[v.name] = (float(sign), by_name[root])
+    if constant:
+        out.update({name: (None, f) for name, f in _parameter_functions(constant, psyms)})
     for s, k in index.items():
         out.setdefault(s.name, (1.0, k))
     return out
+
+
+def _parameter_functions(exprs: dict, psyms):
+    """f(p) for each expression of parameters, from one generated module."""
+    from .emit import Emitter
+    pos = {q: k for k, q in enumerate(psyms)}
+    em = Emitter("py", lambda q: f"p[{pos[q]}]")
+    lines = ["import math"]
+    for n, e in enumerate(exprs.values()):
+        lines += [f"def _f{n}(p):"] + ["    " + ln for ln in em.assign("_v", e)]
+        lines.append("    return _v")
+    namespace = {"math": math}
+    exec(compile("\n".join(lines) + "\n", "<acausal constants>", "exec"), namespace)
+    return [(name, namespace[f"_f{n}"]) for n, name in enumerate(exprs)]
 
 
 def _initial_rows(system, reduced, reduction, caus):

@@ -89,6 +89,7 @@ def initialize(model, t0: float):
     for _ in range(_MODE_ITERATIONS):
         z = solve_initial(model, t0, z)
         zp = consistent_derivatives(model, t0, z)
+        _finite_derivatives(model, t0, zp)
         history.append(model.m.copy())
         changed = model.discrete.set_all(t0, z, model.p, lambda: model.rates(t0, z, zp))
         if model.dynamic is not None:
@@ -100,6 +101,19 @@ def initialize(model, t0: float):
         f"initialization at t = {t0}: the relations do not settle (each solution "
         "contradicts the values it was computed with): "
         + "; ".join(model.discrete.describe(k) for k in flipping[:5]), t0)
+
+
+def _finite_derivatives(model, t0, zp) -> None:
+    """The initial point must be inside the domain of the model's functions: a state
+    derivative that cannot be evaluated there (sqrt of a negative start) is an error
+    in the user's words, not a singular matrix later."""
+    bad = np.flatnonzero(~np.isfinite(zp[model.state_index]))
+    if bad.size:
+        names = [model.names[model.state_index[k]] for k in bad[:5]]
+        why = f"; {model.evaluation_errors[0]}" if model.evaluation_errors else ""
+        raise InitializationFailed(
+            f"initialization at t = {t0}: the derivatives of "
+            + ", ".join(f"der({n})" for n in names) + f" are not finite{why}", t0)
 
 
 def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:

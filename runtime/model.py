@@ -65,6 +65,7 @@ class CompiledModel(DAEProblem):
         self.outputs = mc.outputs
         self.report = mc.report
         self.meta = mc.meta
+        self.backend = mc.meta.get("backend", "numpy")   # which code runs: "c" or "numpy"
         self.discrete = DiscreteState(mc.relations, code.roots, code.scales)
         self.n_roots = self.discrete.n_roots
         self.whens = WhenClauses(mc.whens) if mc.whens is not None else None
@@ -133,6 +134,14 @@ class CompiledModel(DAEProblem):
             np.concatenate([c.jac_rows, self.n_res + np.arange(len(self.state_z)), rows_link,
                             rows_link]),
             np.concatenate([c.jac_cols, self.state_z, self.link_s, self.link_d]))
+        # the CSC structure of the pattern, once per choice of links: each entry's slot
+        # (duplicates add up, as in COO), then only the values change from call to call
+        rows, cols = self.jac_pattern
+        key = cols.astype(np.int64) * max(self.n, 1) + rows
+        unique, self._jac_slot = np.unique(key, return_inverse=True)
+        self._jac_indices = (unique % max(self.n, 1)).astype(np.int32)
+        self._jac_indptr = np.searchsorted(unique // max(self.n, 1),
+                                           np.arange(self.n + 1)).astype(np.int32)
 
     @property
     def states(self) -> list:
@@ -186,15 +195,13 @@ class CompiledModel(DAEProblem):
         return self._call(self.code.jacobian, t, z, len(self.code.jac_rows))
 
     def jacobian(self, t, z, zp, cj):
-        c = self.code
         vals = self._jac_values(t, z)
         vals[self._der_entries] *= -1.0
         n_sz, n_l = len(self.state_z), len(self.link_s)
-        rows_link = self.n_res + n_sz + np.arange(n_l)
-        rows = np.concatenate([c.jac_rows, self.n_res + np.arange(n_sz), rows_link, rows_link])
-        cols = np.concatenate([c.jac_cols, self.state_z, self.link_s, self.link_d])
         data = np.concatenate([vals, np.full(n_sz, cj), np.full(n_l, cj), -np.ones(n_l)])
-        return sps.csc_matrix((data, (rows, cols)), shape=(self.n, self.n))
+        data = np.bincount(self._jac_slot, weights=data, minlength=len(self._jac_indices))
+        return sps.csc_matrix((data, self._jac_indices, self._jac_indptr),
+                              shape=(self.n, self.n))
 
     def dG_dy(self, t, z):
         c = self.code

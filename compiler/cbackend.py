@@ -1,0 +1,325 @@
+"""The C backend: the generated functions as C, compiled once per model into a cache.
+
+The same :class:`~acausal.compiler.codegen.Program` that the Python module is printed
+from is printed as C99 (:mod:`acausal.compiler.emit`: the same operations in the same
+order, so both backends agree to rounding), compiled by the system C compiler into a
+shared library named by the hash of its source and the flags, and loaded with ctypes.
+Every generated function keeps the contract ``f(t, y, p, m, out) -> out``.
+
+* Assigned variables and gradient entries live in a work array ``w``, and each function
+  is split into pieces of at most ``PIECE`` statements: the compiler's time stays
+  linear in the model's size (one function of 100k statements is not).
+* Floating point as written: ``-ffp-contract=off`` (no fused multiply-add), no
+  ``-ffast-math``.
+* Outside a function's domain C computes NaN or inf where Python raises; a call whose
+  output is not finite is repeated by the Python function, so the error, its message
+  and the equation it names are those of the numpy backend.
+
+The cache is ``$ACAUSAL_CACHE`` or ``~/.cache/acausal``.  The compiler is ``$CC`` or the
+first of cc, gcc, clang on the path; without one, ``backend="auto"`` uses the numpy
+backend and says so in the index report, and ``backend="c"`` raises
+:class:`BackendError`.
+"""
+from __future__ import annotations
+
+import ctypes
+import hashlib
+import math
+import os
+import shutil
+import subprocess
+import tempfile
+
+import numpy as np
+
+from .codegen import combinations, row_groups
+from .emit import Emitter
+
+__all__ = ["BackendError", "c_source", "build", "attach", "compiler_available", "cache_dir"]
+
+PIECE = 400
+FLAGS = ["-O2", "-fPIC", "-ffp-contract=off"]
+FLAGS_LARGE = ["-O0", "-fPIC", "-ffp-contract=off"]
+LARGE = 200_000            # characters of C above which -O0 and parallel units are used
+UNIT = "/* unit */\n"     # where the source may be split into translation units
+FUNCTIONS = ("residual", "jacobian", "roots", "scales", "expand")
+
+
+class BackendError(RuntimeError):
+    """The C backend was asked for and cannot be built."""
+
+
+def compiler_available() -> str | None:
+    cc = os.environ.get("CC")
+    if cc:
+        return shutil.which(cc)
+    for name in ("cc", "gcc", "clang"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+def cache_dir() -> str:
+    root = os.environ.get("ACAUSAL_CACHE") or os.path.join(
+        os.path.expanduser("~"), ".cache", "acausal")
+    os.makedirs(root, exist_ok=True)
+    return root
+
+
+# -- printing ------------------------------------------------------------------------------
+def c_source(programs: dict) -> tuple[str, dict]:
+    """C for {prefix: Program}; returns (source, {prefix: work size})."""
+    parts = ["#include <math.h>", "", "#define ARGS double t, const double *y, "
+             "const double *p, const double *m, double *out, double *w", "#define PASS t, y, p, m, out, w", ""]
+    sizes = {}
+    for prefix, prog in programs.items():
+        text, n_work = _c_program(prefix, prog)
+        parts.append(text)
+        sizes[prefix] = n_work
+    return "\n".join(parts) + "\n", sizes
+
+
+def _c_program(prefix, prog) -> tuple[str, int]:
+    n_a = len(prog.assigned)
+    slot = {}
+    for k, g in prog.grads.items():
+        for j in g:
+            slot[(k, j)] = n_a + len(slot)
+
+    def ref(q):
+        where = prog.refs[q]
+        if where[0] == "t":
+            return "t"
+        if where[0] == "a":
+            return f"w[{where[1]}]"
+        return f"{where[0]}[{where[1]}]"
+
+    em = Emitter("c", ref)
+    assign = {}
+
+    def prologue(ks):
+        out = []
+        for k in ks:
+            if k not in assign:
+                assign[k] = [em.assign(f"w[{k}]", prog.assigned[k])]
+            out += assign[k]
+        return out
+
+    aliases = {}
+
+    def grad(b, j):
+        name = f"w[{slot[(b, j)]}]"
+        return aliases.get(name, name)
+
+    grads = []
+    for k, g in prog.grads.items():
+        grads.append(combinations(em, list(g.values()), [f"w[{slot[(k, j)]}]" for j in g],
+                                  list(g), grad, aliases))
+    out = []
+    grads = [g for g in grads if g]
+    res = prog.functions["residual"]
+    # the assignments the rows need, once: residual, Jacobian and expand call them
+    base = prog.needed(res)
+    out.append(_c_function(f"{prefix}assigned", prologue(base)))
+    pre = [f"{prefix}assigned"]
+    out.append(_c_function(f"{prefix}residual", _c_rows(em, res), pre))
+    jac = [combinations(em, prog.jac[lo:hi], [f"out[{n}]" for n in range(lo, hi)],
+                        prog.jac_cols[lo:hi], grad) for lo, hi in row_groups(prog)]
+    out.append(_c_function(f"{prefix}jacobian", grads + jac, pre))
+    have = set(base)
+    for name in ("roots", "scales", "expand"):
+        exprs = prog.functions.get(name)
+        if exprs is None:
+            continue
+        need = prog.needed(exprs)
+        if name == "expand":
+            rest = [k for k in need if k not in have]
+            out.append(_c_function(f"{prefix}{name}", prologue(rest) + _c_rows(em, exprs),
+                                   pre))
+        else:
+            out.append(_c_function(f"{prefix}{name}", prologue(need) + _c_rows(em, exprs)))
+    return "\n".join(out), n_a + len(slot)
+
+
+def _c_rows(em, exprs) -> list:
+    return [em.assign(f"out[{k}]", e) for k, e in enumerate(exprs)]
+
+
+def _c_function(name, statements, calls=()) -> str:
+    """One exported function calling ``calls`` and then pieces of at most PIECE
+    statements each; a statement's temporaries are local to its block."""
+    pieces, current, size = [], [], 0
+    for st in statements:
+        current.append(st)
+        size += len(st)
+        if size >= PIECE:
+            pieces.append(current)
+            current, size = [], 0
+    if current:
+        pieces.append(current)
+    lines = []
+    for n, piece in enumerate(pieces):
+        lines += [UNIT, f"void {name}_{n}(ARGS) {{"]
+        for st in piece:
+            if len(st) == 1:
+                lines.append("  " + st[0])
+            else:
+                lines.append("  {")
+                lines += ["    " + ln for ln in st]
+                lines.append("  }")
+        lines.append("}")
+    lines.append(UNIT)
+    lines += [f"void {c}(ARGS);" for c in calls]
+    lines += [f"void {name}_{n}(ARGS);" for n in range(len(pieces))]
+    lines.append(f"void {name}(ARGS) {{")
+    lines += [f"  {c}(PASS);" for c in calls]
+    lines += [f"  {name}_{n}(PASS);" for n in range(len(pieces))]
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
+# -- building and loading ---------------------------------------------------------------------
+def build(source: str) -> str:
+    """The path of the shared library for source, compiled now or found in the cache.
+
+    A large source is compiled without optimization (the straight-line code of a model
+    gains little from it, and the compiler's time grows faster than the source) and in
+    as many translation units as there are processors, compiled in parallel."""
+    cc = compiler_available()
+    if cc is None:
+        raise BackendError("no C compiler found (set CC, or install cc/gcc/clang)")
+    flags = FLAGS_LARGE if len(source) > LARGE else FLAGS
+    key = hashlib.sha256((source + " ".join([os.path.basename(cc)] + flags)).encode())
+    root = cache_dir()
+    lib = os.path.join(root, f"model_{key.hexdigest()[:24]}.so")
+    if os.path.exists(lib):
+        return lib
+    units = _units(source, os.cpu_count() or 1) if len(source) > LARGE else [source]
+    with tempfile.TemporaryDirectory(dir=root) as tmp:
+        objects, procs = [], []
+        for k, text in enumerate(units):
+            src, obj = os.path.join(tmp, f"model{k}.c"), os.path.join(tmp, f"model{k}.o")
+            with open(src, "w") as f:
+                f.write(text)
+            objects.append(obj)
+            procs.append(subprocess.Popen([cc, *flags, "-c", "-o", obj, src],
+                                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                          text=True))
+        for proc in procs:
+            _, err = proc.communicate()
+            if proc.returncode != 0:
+                raise BackendError(f"the C compiler {cc} failed on the generated model:\n"
+                                   + err[-2000:])
+        out = os.path.join(tmp, "model.so")
+        proc = subprocess.run([cc, "-shared", "-o", out, *objects, "-lm"],
+                              capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise BackendError(f"linking the generated model failed:\n{proc.stderr[-2000:]}")
+        os.replace(out, lib)          # atomic: a concurrent build finds a whole file
+    return lib
+
+
+def _units(source: str, n: int) -> list:
+    """The source in n translation units of about equal size (each with the header)."""
+    header, *segments = source.split(UNIT)
+    if n <= 1 or len(segments) < 2:
+        return [source]
+    units = [[] for _ in range(n)]
+    sizes = [0] * n
+    for seg in segments:
+        k = sizes.index(min(sizes))
+        units[k].append(seg)
+        sizes[k] += len(seg)
+    return [header + "".join(u) for u in units if u]
+
+
+class _CFunction:
+    """A compiled function with the contract f(t, y, p, m, out) -> out.
+
+    The arguments are copied into buffers whose addresses are fixed, which costs less
+    than taking the address of each argument array on every call."""
+
+    def __init__(self, fn, fallback, n_work, n_y, n_p, n_m, n_out):
+        self.fn = fn
+        self.fallback = fallback
+        self.bufs = [np.zeros(max(n, 1)) for n in (n_y, n_p, n_m, n_out, n_work)]
+        self.y, self.p, self.m, self.out, _ = self.bufs
+        self.sizes = (n_y, n_p, n_m)
+        self.ptrs = [b.ctypes.data for b in self.bufs]
+
+    def __call__(self, t, y, p, m, out):
+        n_y, n_p, n_m = self.sizes
+        if len(y) != n_y or len(p) != n_p or len(m) < n_m:
+            raise ValueError(f"generated function called with {len(y)} unknowns, "
+                             f"{len(p)} parameters and {len(m)} discrete values; it "
+                             f"reads {n_y}, {n_p} and {n_m}")
+        self.y[:n_y] = y
+        self.p[:n_p] = p
+        self.m[:n_m] = m[:n_m]
+        py, pp, pm, po, pw = self.ptrs
+        self.fn(float(t), py, pp, pm, po, pw)
+        n = len(out)
+        out[:] = self.out[:n]
+        if n and not math.isfinite(out.sum()):
+            # what Python raises (sqrt of a negative, 1/0) or returns there
+            return self.fallback(t, y, p, m, out)
+        return out
+
+
+def attach(code, lib_path: str, prefix: str, n_work: int):
+    """Replace the Python functions of a GeneratedCode by the compiled ones (the Python
+    ones stay as the fallback)."""
+    lib = ctypes.CDLL(lib_path)
+    prog = code.program
+    sizes = (sum(1 for w in prog.refs.values() if w[0] == "y"),
+             sum(1 for w in prog.refs.values() if w[0] == "p"),
+             1 + max((w[1] for w in prog.refs.values() if w[0] == "m"), default=-1))
+    argtypes = [ctypes.c_double] + [ctypes.c_void_p] * 5
+    for name in FUNCTIONS:
+        py = getattr(code, name, None)
+        if py is None:
+            continue
+        fn = getattr(lib, f"{prefix}{name}")
+        fn.argtypes = argtypes
+        fn.restype = None
+        n_out = {"residual": code.n_rows, "jacobian": len(code.jac_rows),
+                 "roots": code.n_roots}.get(name)
+        if n_out is None:
+            n_out = len(code.program.functions[name])
+        setattr(code, name, _CFunction(fn, py, n_work, *sizes, n_out))
+    code.backend = "c"
+    code.library = lib_path
+    return code
+
+
+
+BACKENDS = ("auto", "c", "numpy")
+
+
+def bind(mc, backend: str, report) -> None:
+    """Put the compiled functions behind the ModelCode ``mc`` (model, initial and when
+    code share one library), or keep the Python ones: ``backend`` is ``"c"`` (raise
+    :class:`BackendError` when it cannot be built), ``"numpy"``, or ``"auto"`` (C when a
+    compiler works, else numpy, with the reason in the report)."""
+    if backend not in BACKENDS:
+        raise ValueError(f"backend must be one of {', '.join(map(repr, BACKENDS))}, "
+                         f"got {backend!r}")
+    mc.meta["backend"] = "numpy"
+    if backend == "numpy":
+        return
+    codes = {"f_": mc.code, "i_": mc.initial.code}
+    if mc.whens is not None:
+        codes["w_"] = mc.whens.code
+    try:
+        source, sizes = c_source({k: c.program for k, c in codes.items()})
+        lib = build(source)
+        for prefix, code in codes.items():
+            attach(code, lib, prefix, sizes[prefix])
+    except (BackendError, OSError) as exc:
+        if backend == "c":
+            raise BackendError(str(exc)) from exc
+        report.notes.append(f"the C backend is not available ({str(exc).splitlines()[0]}); "
+                            "the numpy backend runs the model")
+        return
+    mc.meta["backend"] = "c"
