@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
-__all__ = ["SimulationError", "InitializationFailed"]
+__all__ = ["SimulationError", "InitializationFailed", "BackendError"]
 
 
 class SimulationError(RuntimeError):
@@ -44,3 +44,8 @@ class InitializationFailed(RuntimeError):
         self.variables = list(variables)
         self.equations = list(equations)
         self.residual = residual
+
+
+class BackendError(RuntimeError):
+    """``backend="c"`` was asked for and the generated C cannot be built (no C compiler,
+    or the compiler failed); ``backend="auto"`` falls back to numpy instead."""

@@ -32,6 +32,7 @@ import tempfile
 
 import numpy as np
 
+from ..errors import BackendError
 from .codegen import combinations, row_groups
 from .emit import Emitter
 
@@ -43,10 +44,6 @@ FLAGS_LARGE = ["-O0", "-fPIC", "-ffp-contract=off"]
 LARGE = 200_000            # characters of C above which -O0 and parallel units are used
 UNIT = "/* unit */\n"     # where the source may be split into translation units
 FUNCTIONS = ("residual", "jacobian", "roots", "scales", "expand")
-
-
-class BackendError(RuntimeError):
-    """The C backend was asked for and cannot be built."""
 
 
 def compiler_available() -> str | None:
@@ -123,10 +120,10 @@ def _c_program(prefix, prog) -> tuple[str, int]:
     base = prog.needed(res)
     out.append(_c_function(f"{prefix}assigned", prologue(base)))
     pre = [f"{prefix}assigned"]
-    out.append(_c_function(f"{prefix}residual", _c_rows(em, res), pre))
+    out.append(_c_function(f"{prefix}residual", _c_rows(em, res), pre, len(res)))
     jac = [combinations(em, prog.jac[lo:hi], [f"out[{n}]" for n in range(lo, hi)],
                         prog.jac_cols[lo:hi], grad) for lo, hi in row_groups(prog)]
-    out.append(_c_function(f"{prefix}jacobian", grads + jac, pre))
+    out.append(_c_function(f"{prefix}jacobian", grads + jac, pre, len(prog.jac)))
     have = set(base)
     for name in ("roots", "scales", "expand"):
         exprs = prog.functions.get(name)
@@ -136,9 +133,10 @@ def _c_program(prefix, prog) -> tuple[str, int]:
         if name == "expand":
             rest = [k for k in need if k not in have]
             out.append(_c_function(f"{prefix}{name}", prologue(rest) + _c_rows(em, exprs),
-                                   pre))
+                                   pre, len(exprs)))
         else:
-            out.append(_c_function(f"{prefix}{name}", prologue(need) + _c_rows(em, exprs)))
+            out.append(_c_function(f"{prefix}{name}", prologue(need) + _c_rows(em, exprs),
+                                   (), len(exprs)))
     return "\n".join(out), n_a + len(slot)
 
 
@@ -146,7 +144,7 @@ def _c_rows(em, exprs) -> list:
     return [em.assign(f"out[{k}]", e) for k, e in enumerate(exprs)]
 
 
-def _c_function(name, statements, calls=()) -> str:
+def _c_function(name, statements, calls=(), n_out=0) -> str:
     """One exported function calling ``calls`` and then pieces of at most PIECE
     statements each; a statement's temporaries are local to its block."""
     pieces, current, size = [], [], 0
@@ -170,12 +168,14 @@ def _c_function(name, statements, calls=()) -> str:
                 lines.append("  }")
         lines.append("}")
     lines.append(UNIT)
-    lines += [f"void {c}(ARGS);" for c in calls]
+    lines += [f"int {c}(ARGS);" for c in calls]
     lines += [f"void {name}_{n}(ARGS);" for n in range(len(pieces))]
-    lines.append(f"void {name}(ARGS) {{")
+    lines.append(f"int {name}(ARGS) {{")
     lines += [f"  {c}(PASS);" for c in calls]
     lines += [f"  {name}_{n}(PASS);" for n in range(len(pieces))]
-    lines.append("}")
+    # how many outputs are not finite: the caller repeats such a call in Python
+    lines += [f"  int bad = 0;", f"  for (int i = 0; i < {n_out}; ++i) bad += !isfinite(out[i]);",
+              "  return bad;", "}"]
     return "\n".join(lines) + "\n"
 
 
@@ -258,10 +258,9 @@ class _CFunction:
         self.p[:n_p] = p
         self.m[:n_m] = m[:n_m]
         py, pp, pm, po, pw = self.ptrs
-        self.fn(float(t), py, pp, pm, po, pw)
-        n = len(out)
-        out[:] = self.out[:n]
-        if n and not math.isfinite(out.sum()):
+        bad = self.fn(float(t), py, pp, pm, po, pw)
+        out[:] = self.out[:len(out)]
+        if bad:
             # what Python raises (sqrt of a negative, 1/0) or returns there
             return self.fallback(t, y, p, m, out)
         return out
@@ -282,7 +281,7 @@ def attach(code, lib_path: str, prefix: str, n_work: int):
             continue
         fn = getattr(lib, f"{prefix}{name}")
         fn.argtypes = argtypes
-        fn.restype = None
+        fn.restype = ctypes.c_int
         n_out = {"residual": code.n_rows, "jacobian": len(code.jac_rows),
                  "roots": code.n_roots}.get(name)
         if n_out is None:

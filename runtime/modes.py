@@ -72,6 +72,7 @@ class DiscreteState:
         # safety net in the zero-crossing search: they never switch ahead of that time
         self._timed = np.zeros(self.n_rel + self.n_disc, dtype=bool)
         self._timed[self.time_linear] = True
+        self._orientation_key = None
 
     @property
     def n_roots(self) -> int:
@@ -130,21 +131,36 @@ class DiscreteState:
     def oriented(self, t, z, p) -> np.ndarray:
         """r >= 0 while the frozen values agree with the solution (module docstring)."""
         v = self.values(t, z, p)
-        tol = self.tolerance(t, z, p, v)
         g, u = v[: self.n_rel], v[self.n_rel:]
-        holds = self.relation_modes()
-        holds_up = np.where(holds, self.upward, ~self.upward)
-        # the frozen value holds on a closed side (g >= 0 for a relation >= 0 that holds,
-        # or for a strict one that does not): switch once g is beyond zero by its
-        # tolerance; on an open side (a strict relation that holds) switch when g comes
-        # within its tolerance of zero, as a value that merely touches zero must
-        closed = (holds != self.strict) | self._timed[: self.n_rel]
+        sign, side = self._orientation()
         r = np.empty(self.n_roots)
-        r[: self.n_rel] = np.where(holds_up, g, -g) + np.where(closed, 1.0, -1.0) * tol[: self.n_rel]
-        n, tol_u = self.m[self.n_rel:], tol[self.n_rel:]
-        r[self.n_rel::2] = u - n + tol_u                 # floor(u) = n on [n, n + 1)
-        r[self.n_rel + 1::2] = n + 1.0 - u + np.where(self._timed[self.n_rel:], tol_u, -tol_u)
+        if self.n_rel:
+            scale = self._scales(t, z, p, self.m, np.empty(self.n_rel))
+            tol = ZERO_RTOL * np.abs(scale) + ZERO_NOMINAL * self.nominal
+            r[: self.n_rel] = sign * g + side * tol
+        if self.n_disc:
+            n, tol_u = self.m[self.n_rel:], ZERO_RTOL * (np.abs(u) + 1.0)
+            r[self.n_rel::2] = u - n + tol_u                 # floor(u) = n on [n, n + 1)
+            r[self.n_rel + 1::2] = n + 1.0 - u + np.where(self._timed[self.n_rel:], tol_u,
+                                                          -tol_u)
         return r + self.offset
+
+    def _orientation(self):
+        """Per relation, the sign that makes g >= 0 on the side its frozen value holds,
+        and +1 on a closed side, -1 on an open one: the frozen value holds on a closed
+        side (g >= 0 for a relation >= 0 that holds, or for a strict one that does not):
+        switch once g is beyond zero by its tolerance; on an open side (a strict relation
+        that holds) switch when g comes within its tolerance of zero, as a value that
+        merely touches zero must.  Both change only with the discrete state."""
+        key = self.m[: self.n_rel].tobytes()
+        if key != self._orientation_key:
+            holds = self.relation_modes()
+            holds_up = np.where(holds, self.upward, ~self.upward)
+            closed = (holds != self.strict) | self._timed[: self.n_rel]
+            self._orientation_cache = (np.where(holds_up, 1.0, -1.0),
+                                       np.where(closed, 1.0, -1.0))
+            self._orientation_key = key
+        return self._orientation_cache
 
     # -- changing the discrete state -------------------------------------------------------
     def contradicted(self, t, z, p) -> np.ndarray:
