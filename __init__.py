@@ -7,18 +7,29 @@ Write a model as components with ports, connect them like a schematic, and simul
     res["C1.v"]
 
 See the README for the modelling language and the design.
+
+The public names are imported on first use (PEP 562), so ``import acausal`` loads
+neither sympy nor scipy: sympy comes with the first symbol or equation (or a library
+module written with it), scipy with ``compile``, ``simulate`` and the analyses.
 """
-from .components import (Across, Component, Connection, Eq, Equation, InvalidConnection,
-                         InvalidEquation, InvalidHierarchy, InvalidValue, ModelError,
-                         NotInModel, Parameter, Port, Signal, Through, Variable, When,
-                         connect, der, if_else, no_event, pre, ref, reinit, sign, time, when)
-from .errors import InitializationFailed, SimulationError
-from .result import Result
-from .runtime import CompiledModel
-from .simulation import compile, initial_values, simulate
-from .analysis import (ModeWarning, OperatingPointError, StateSpace, SteadyStateError,
-                       TransferFunctionWarning, energy_balance, estimate, is_passive,
-                       linearize, linearize_symbolic, steady_state)
+from __future__ import annotations
+
+import importlib
+
+_EXPORTS = {
+    ".components": ("Across", "Component", "Connection", "Eq", "Equation",
+                    "InvalidConnection", "InvalidEquation", "InvalidHierarchy",
+                    "InvalidValue", "ModelError", "NotInModel", "Parameter", "Port", "Signal",
+                    "Through", "Variable", "When", "connect", "der", "if_else", "no_event",
+                    "pre", "ref", "reinit", "sign", "time", "when"),
+    ".errors": ("BackendError", "InitializationFailed", "SimulationError"),
+    ".result": ("Result",),
+    ".runtime": ("CompiledModel",),
+    ".simulation": ("compile", "initial_values", "simulate"),
+    ".analysis": ("ModeWarning", "OperatingPointError", "StateSpace", "SteadyStateError",
+                  "TransferFunctionWarning", "energy_balance", "estimate", "is_passive",
+                  "linearize", "linearize_symbolic", "steady_state"),
+}
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
            "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre",
@@ -28,4 +39,38 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "InvalidHierarchy", "NotInModel", "SimulationError", "InitializationFailed",
            "linearize", "linearize_symbolic", "StateSpace", "steady_state",
            "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
-           "energy_balance", "is_passive", "estimate"]
+           "energy_balance", "is_passive", "estimate", "BackendError"]
+
+
+def _lazy_exports(namespace: dict, exports: dict, submodules=()) -> tuple:
+    """``(__getattr__, __dir__)`` for the package whose globals are ``namespace``, with
+    public names that live in submodules imported on first use (PEP 562).
+
+    ``exports`` maps a relative submodule name to the names it provides; the first
+    access imports the submodule and binds the name in the package, so later accesses
+    are plain look-ups.  The submodules of ``exports`` and ``submodules`` stay reachable
+    as attributes (``acausal.library.electrical.sources``), as they were when the
+    package imported them eagerly.
+    """
+    package = namespace["__name__"]
+    where = {name: module for module, names in exports.items() for name in names}
+    modules = {m.lstrip(".") for m in exports} | set(submodules)
+
+    def __getattr__(name: str):
+        module = where.get(name)
+        if module is not None:
+            value = getattr(importlib.import_module(module, package), name)
+            namespace[name] = value
+            return value
+        if name in modules:
+            return importlib.import_module(f"{package}.{name}")
+        raise AttributeError(f"module {package!r} has no attribute {name!r}")
+
+    def __dir__():
+        return sorted(set(namespace) | set(where) | modules)
+
+    return __getattr__, __dir__
+
+
+__getattr__, __dir__ = _lazy_exports(globals(), _EXPORTS,
+                                     submodules=("compiler", "ports", "solvers"))

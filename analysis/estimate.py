@@ -21,7 +21,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.optimize as so
 
 from ..runtime import CompiledModel
 from ..solvers.base import SimulationError
@@ -107,11 +106,12 @@ def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=
         compiled, names, scale, t, y, w, rtol)
     x0 = np.clip(np.array(list(start.values())) / scale, lo, hi)
     saved = compiled.p.copy()
+    from scipy.optimize import least_squares
     try:
-        opt = so.least_squares(problem.residual, x0,
-                               jac=lambda x: problem.jacobian(x, diff_step),
-                               bounds=(lo, hi), x_scale="jac", max_nfev=max_nfev,
-                               xtol=1e-12, ftol=1e-12, gtol=1e-12)
+        opt = least_squares(problem.residual, x0,
+                            jac=lambda x: problem.jacobian(x, diff_step),
+                            bounds=(lo, hi), x_scale="jac", max_nfev=max_nfev,
+                            xtol=1e-12, ftol=1e-12, gtol=1e-12)
         return _summary(problem, opt, names, scale, outs)
     finally:
         compiled.p[:] = saved

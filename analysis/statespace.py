@@ -22,12 +22,16 @@ well-scaled ones.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 import scipy.linalg as sla
-import scipy.signal as ss
 
 from .realization import (TransferFunctionWarning, frequency_response, invariant_zeros,
                           minimal_realization, scaled, tf_polynomials)
+
+if TYPE_CHECKING:
+    import scipy.signal
 
 __all__ = ["StateSpace", "Margins", "TransferFunctionWarning"]
 
@@ -317,9 +321,10 @@ class StateSpace:
                           self.inputs, other.outputs)
 
     # -- conversion -------------------------------------------------------------------------
-    def to_scipy(self) -> ss.StateSpace:
+    def to_scipy(self) -> scipy.signal.StateSpace:
         """The ``scipy.signal.StateSpace`` (continuous-time) of the same matrices."""
-        return ss.StateSpace(self.A, self.B, self.C, self.D)
+        import scipy.signal    # slow to import (it brings scipy.stats): only here
+        return scipy.signal.StateSpace(self.A, self.B, self.C, self.D)
 
     @classmethod
     def from_scipy(cls, system, states=None, inputs=None, outputs=None) -> "StateSpace":
@@ -338,7 +343,8 @@ class StateSpace:
                 raise ValueError("from_tf: num has a higher degree than den (improper)")
             return cls(np.zeros((0, 0)), np.zeros((0, 1)), np.zeros((1, 0)),
                        [[k[-1] / den[0]]], **names)
-        A, B, C, D = ss.tf2ss(num, den)
+        from scipy.signal import tf2ss
+        A, B, C, D = tf2ss(num, den)
         return cls(A, B, C, D, **names)
 
     def __repr__(self):

@@ -1,10 +1,20 @@
-"""The modelling language: Component, Parameter, Variable, der, Eq, connect."""
+"""The modelling language: Component, Parameter, Variable, der, Eq, connect.
+
+Components, ports and declarations are plain Python; the symbolic vocabulary
+(``Eq``, ``der``, ``time``, ...) is sympy and is imported on first use, so defining
+component classes does not load sympy (their symbols and equations do).
+"""
 from .component import (Component, Connection, InvalidConnection, InvalidEquation,
                         InvalidHierarchy, InvalidValue, ModelError, NotInModel, Port, connect)
 from .declarations import Across, Parameter, Signal, Through, Variable, ref
-from .symbols import Eq, Equation, When, der, if_else, no_event, pre, reinit, sign, time, when
+from .. import _lazy_exports
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
            "der", "if_else", "no_event", "when", "When", "reinit", "pre", "sign", "time"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".symbols": ("Eq", "Equation", "When", "der", "if_else", "no_event", "pre", "reinit",
+                 "sign", "time", "when"),
+})

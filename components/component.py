@@ -29,12 +29,12 @@ from __future__ import annotations
 import contextvars
 import copy
 from contextlib import contextmanager
-from typing import Iterable
+from typing import TYPE_CHECKING, Iterable
 
-import sympy as sp
+from .declarations import Parameter, Variable, check_parameter_value, is_symbolic, ref
 
-from .declarations import Parameter, Variable, check_parameter_value, ref
-from .symbols import Equation, When
+if TYPE_CHECKING:
+    import sympy
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel"]
@@ -201,7 +201,7 @@ class Component:
         where = f"'{self._path}'" if self._path else "the model"
         return f"{where} ({type(self).__name__})"
 
-    def _symbol(self, name: str) -> sp.Symbol:
+    def _symbol(self, name: str) -> sympy.Symbol:
         active = _COMPILING.get()
         if active is not None and self._root is not active:
             raise _foreign_error(self, name, active)
@@ -212,7 +212,8 @@ class Component:
                     f"{type(self).__name__}.{name} has no name yet: a component's "
                     "variables are named when the model is compiled (acausal.compile)")
             full = f"{self._path}.{name}" if self._path else name
-            sym = sp.Symbol(full, real=True)
+            import sympy    # the first symbol of a model loads sympy, not the class
+            sym = sympy.Symbol(full, real=True)
             self._symbols[name] = sym
         return sym
 
@@ -226,7 +227,7 @@ class Component:
             value = _declarations(type(self))[name].value
         if isinstance(value, ref):
             return self._referenced(name, value)
-        if callable(value) and not isinstance(value, sp.Basic):
+        if callable(value) and not is_symbolic(value):
             try:
                 value = value(self)
             except ModelError:
@@ -234,7 +235,7 @@ class Component:
             except Exception as err:  # the user's function raised: say whose it is
                 raise InvalidValue(f"{self._describe()}: evaluating parameter {name} "
                                    f"raised {type(err).__name__}: {err}") from err
-            if callable(value) and not isinstance(value, sp.Basic):
+            if callable(value) and not is_symbolic(value):
                 raise InvalidValue(f"{self._describe()}: parameter {name} is a function "
                                    f"that returned another function ({value!r})")
             if isinstance(value, ref):
@@ -404,6 +405,7 @@ def _is_component_list(value) -> bool:
 
 def flatten_equation_list(items) -> list:
     """Equations may be returned as nested lists or generators; make one flat list."""
+    from .symbols import Equation, When   # sympy: only models with equations need it
     out = []
     stack = [iter(items if items is not None else [])]
     while stack:

@@ -17,16 +17,24 @@ from __future__ import annotations
 
 import math
 import numbers
+import sys
 from dataclasses import dataclass, fields, replace
 from decimal import Decimal
 
 import numpy as np
-import sympy as sp
 
 __all__ = ["Parameter", "Variable", "Across", "Through", "Signal", "VariableAttributes", "ref",
-           "real_number", "check_parameter_value", "bound_violation"]
+           "real_number", "check_parameter_value", "bound_violation", "is_symbolic"]
 
 _STATE_SELECT = ("never", "avoid", "default", "prefer", "always")
+
+
+def is_symbolic(value) -> bool:
+    """True if ``value`` is a sympy object.  Declarations are checked when a class is
+    created, before any model builds a symbol; sympy is imported only by the first symbol
+    or equation, and until then no value can be a sympy object."""
+    sympy = sys.modules.get("sympy")
+    return sympy is not None and isinstance(value, sympy.Basic)
 
 
 def real_number(value, what: str) -> float:
@@ -34,7 +42,7 @@ def real_number(value, what: str) -> float:
     ``ValueError`` that starts with ``what = value``.  Infinite values pass; NaN does not."""
     if isinstance(value, (bool, np.bool_)):
         raise ValueError(f"{what} = {value!r} is a bool, not a real number")
-    if isinstance(value, sp.Basic):
+    if is_symbolic(value):
         if not value.is_number:
             raise ValueError(f"{what} = {value} is an expression, not a real number")
     elif not isinstance(value, (numbers.Real, Decimal)):
@@ -55,8 +63,9 @@ def check_parameter_value(value, what: str) -> None:
     expression of other parameters (whose symbols flattening checks); else ValueError."""
     if value is None or isinstance(value, ref):
         return
-    if isinstance(value, sp.Basic):
-        if not isinstance(value, sp.Expr):
+    if is_symbolic(value):
+        from sympy import Expr    # already loaded: value is a sympy object
+        if not isinstance(value, Expr):
             raise ValueError(f"{what} = {value} is a relation or a logical value, "
                              "not a real number")
         if value.is_number:

@@ -15,9 +15,11 @@ never holds).  Errors are ``InvalidEquation``; flattening adds the component pat
 from __future__ import annotations
 
 import sympy as sp
+from sympy import S
+from sympy.printing.str import StrPrinter
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "sympify_value",
-           "When", "when", "reinit", "pre"]
+           "When", "when", "reinit", "pre", "text"]
 
 time = sp.Symbol("time", real=True)
 
@@ -38,7 +40,7 @@ class Equation:
     returned the equation is flattened; ``label`` is an optional user name.
     """
 
-    __slots__ = ("lhs", "rhs", "origin", "origin_class", "label", "index")
+    __slots__ = ("lhs", "rhs", "origin", "origin_class", "label", "index", "_text")
 
     def __init__(self, lhs, rhs=0, label: str | None = None):
         self.lhs = _side(lhs, lhs, rhs)
@@ -51,13 +53,103 @@ class Equation:
         self.origin = None
         self.origin_class = None
         self.index = None
+        self._text = None
 
     @property
     def residual(self) -> sp.Expr:
         return self.lhs - self.rhs
 
+    @property
+    def text(self) -> str:
+        """``lhs = rhs`` as written, printed when first asked for (printing is slow)."""
+        if self._text is None:
+            self._text = f"{text(self.lhs)} = {text(self.rhs)}"
+        return self._text
+
     def __repr__(self):
-        return f"{self.lhs} = {self.rhs}"
+        return self.text
+
+
+class _TextPrinter(StrPrinter):
+    """sympy's str printer with a fast path for the term order of sums.
+
+    sympy orders the terms of a sum lexicographically by their monomials, descending
+    (``Expr.as_ordered_terms``), and builds that order through ``Expr.as_terms``, which
+    converts every coefficient to a complex number: most of the time of printing a model.
+    For sums of terms ``c * x1**k1 * x2**k2 ...`` (c a rational or float, x_i symbols of
+    distinct names, k_i integers) the same order is computed here directly, on sparse
+    monomials; any other sum takes sympy's path, so the text is always sympy's.
+    """
+
+    def _print(self, expr, **kwargs) -> str:
+        if type(expr) is sp.Symbol:      # what the dispatch would find: _print_Symbol
+            return expr.name
+        return super()._print(expr, **kwargs)
+
+    def _as_ordered_terms(self, expr, order=None):
+        if (order or self.order) is None and expr.is_Add:
+            terms = _lex_ordered_terms(expr.args)
+            if terms is not None:
+                return terms
+        return super()._as_ordered_terms(expr, order=order)
+
+
+_END = (1,)
+
+
+def _lex_ordered_terms(args):
+    """The terms in sympy's print order, or None if a term is not a monomial of symbols.
+
+    Dense lexicographic order on the exponent vectors over the symbols sorted by name,
+    descending, is reproduced on sparse (symbol rank, exponent) lists: at the first
+    symbol where two monomials differ, the one with the larger exponent comes first
+    (an absent symbol counts as exponent 0).  The key of a factor is (0, rank, -k) for
+    k > 0 and (2, -rank, -k) for k < 0, and ``_END`` closes each list, which makes
+    the tuple order of the keys that order.
+    """
+    if len(args) == 2 and any(a.is_Number for a in args):
+        return None          # sympy's special case "c - x" for a number and a product
+    monomials, gens = [], {}
+    for term in args:
+        coeff, rest = term.as_coeff_Mul()
+        if not (coeff.is_Rational or coeff.is_Float):
+            return None
+        powers = []
+        if rest is not S.One:
+            for f in (rest.args if rest.is_Mul else (rest,)):
+                if type(f) is sp.Symbol and f.is_commutative:
+                    powers.append((f, 1))
+                elif (f.is_Pow and type(f.base) is sp.Symbol and f.base.is_commutative
+                      and f.exp.is_Integer):
+                    powers.append((f.base, int(f.exp)))
+                else:
+                    return None
+        if len({g for g, _ in powers}) < len(powers):
+            return None
+        for g, _ in powers:
+            gens[g] = g.name
+        monomials.append((term, powers))
+    names = sorted(gens.values())
+    if len(set(names)) < len(names):
+        return None          # two symbols of one name: sympy's tie-break is its own
+    rank = {n: k for k, n in enumerate(names)}
+    keyed = []
+    for term, powers in monomials:
+        fac = sorted((rank[g.name], k) for g, k in powers)
+        key = tuple((0, r, -k) if k > 0 else (2, -r, -k) for r, k in fac) + (_END,)
+        keyed.append((key, term))
+    keyed.sort(key=lambda kt: kt[0])
+    if any(a[0] == b[0] for a, b in zip(keyed, keyed[1:])):
+        return None          # equal monomials (an unevaluated sum): sympy's tie-break
+    return [t for _, t in keyed]
+
+
+_PRINTER = _TextPrinter()
+
+
+def text(expr) -> str:
+    """``sympy.sstr(expr)``, the same text, faster on the sums models are made of."""
+    return _PRINTER.doprint(expr)
 
 
 def Eq(lhs, rhs=0, label: str | None = None) -> Equation:

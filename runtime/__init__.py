@@ -40,6 +40,9 @@ What the runtime provides (numbered, so the code can cite it)
    the point unusable (NaN, which Newton and the integrator treat as a failed iterate)
    and are kept in words in ``evaluation_errors``, naming the equation.
 """
-from .model import CompiledModel
+from .. import _lazy_exports
 
 __all__ = ["CompiledModel"]
+
+# CompiledModel brings scipy.sparse; the other runtime modules can be imported without it
+__getattr__, __dir__ = _lazy_exports(globals(), {".model": ("CompiledModel",)})

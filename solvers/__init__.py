@@ -1,8 +1,12 @@
 """DAE integrators: variable-order BDF, consistent initialization and events."""
-from .base import (DAEProblem, EventAction, InitializationFailed, SimulationError,
-                   SolverOutput, SolverStats)
-from .bdf import BDF
-from .driver import integrate
+from .. import _lazy_exports
 
 __all__ = ["BDF", "integrate", "DAEProblem", "SimulationError", "InitializationFailed",
            "SolverOutput", "SolverStats", "EventAction"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".base": ("DAEProblem", "EventAction", "InitializationFailed", "SimulationError",
+              "SolverOutput", "SolverStats"),
+    ".bdf": ("BDF",),
+    ".driver": ("integrate",),
+})

@@ -41,8 +41,6 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 from scipy.linalg import get_lapack_funcs
-from scipy.sparse.csgraph import maximum_bipartite_matching
-from scipy.sparse.linalg import splu
 
 __all__ = ["SPARSE_THRESHOLD", "LinearSolver", "SingularMatrixError", "singular_block",
            "make_linear_solver", "equilibrate"]
@@ -114,6 +112,7 @@ def _structural_defect(S: sp.csr_matrix):
     """Rows and columns left unmatched by a maximum bipartite matching of ``S != 0``."""
     pattern = sp.csr_matrix((np.ones(S.nnz), S.indices, S.indptr), shape=S.shape)
     pattern.eliminate_zeros()
+    from scipy.sparse.csgraph import maximum_bipartite_matching   # diagnostics only
     col_of_row = maximum_bipartite_matching(pattern, perm_type="column")
     row_of_col = maximum_bipartite_matching(pattern, perm_type="row")
     return np.flatnonzero(col_of_row < 0), np.flatnonzero(row_of_col < 0)
@@ -248,6 +247,9 @@ def _pivots_ok(diag) -> bool:
 
 
 def _splu(A):
+    # scipy.sparse.linalg is imported by the first sparse factorization: small systems,
+    # factored densely by LAPACK, never need it
+    from scipy.sparse.linalg import splu
     try:
         return splu(A)
     except RuntimeError:     # exactly singular

@@ -1,12 +1,5 @@
 """Electrical domain: pins, one-ports, basic components, sources and sensors."""
-from .basic import (Capacitor, Ground, HeatingResistor, IdealClosingSwitch, IdealOpAmp,
-                    IdealOpeningSwitch, IdealTransformer, Inductor, Resistor)
-from .interfaces import OnePort, TwoPin, TwoPort
-from .semiconductors import Diode, IdealDiode
-from .sensors import CurrentSensor, PotentialSensor, PowerSensor, VoltageSensor
-from .sources import (ConstantCurrent, ConstantVoltage, PulseCurrent, PulseVoltage,
-                      RampCurrent, RampVoltage, SignalCurrent, SignalVoltage, SineCurrent,
-                      SineVoltage, StepCurrent, StepVoltage)
+from ... import _lazy_exports
 
 __all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Capacitor", "Inductor",
            "HeatingResistor", "IdealTransformer", "IdealOpAmp", "IdealClosingSwitch",
@@ -15,3 +8,15 @@ __all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Capacitor", "I
            "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "PulseCurrent", "SignalCurrent", "PotentialSensor", "VoltageSensor",
            "CurrentSensor", "PowerSensor"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".basic": ("Capacitor", "Ground", "HeatingResistor", "IdealClosingSwitch",
+               "IdealOpAmp", "IdealOpeningSwitch", "IdealTransformer", "Inductor",
+               "Resistor"),
+    ".interfaces": ("OnePort", "TwoPin", "TwoPort"),
+    ".semiconductors": ("Diode", "IdealDiode"),
+    ".sensors": ("CurrentSensor", "PotentialSensor", "PowerSensor", "VoltageSensor"),
+    ".sources": ("ConstantCurrent", "ConstantVoltage", "PulseCurrent", "PulseVoltage",
+                 "RampCurrent", "RampVoltage", "SignalCurrent", "SignalVoltage",
+                 "SineCurrent", "SineVoltage", "StepCurrent", "StepVoltage"),
+})

@@ -1,4 +1,8 @@
 """Electromechanical converters and motors (Egeland & Gravdahl ch. 3)."""
-from .motors import EMF, CurrentControlledDCMotor, DCMotor
+from ... import _lazy_exports
 
 __all__ = ["EMF", "DCMotor", "CurrentControlledDCMotor"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".motors": ("EMF", "CurrentControlledDCMotor", "DCMotor"),
+})

@@ -1,14 +1,6 @@
 """Hydraulics (Egeland & Gravdahl ch. 4): volumes, orifices, valves, motors, pumps,
 cylinders and transmission lines."""
-from .components import (Cylinder, HydraulicMotor, LaminarOrifice, PistonVolume, Pump,
-                         ReliefValve, SingleActingCylinder, TurbulentOrifice, VariableOrifice,
-                         VariablePump, Volume)
-from .interfaces import F_tr, PartialOnePort, PartialTwoPort, orifice_flow
-from .lines import LumpedLine, ModalLine
-from .sensors import FlowSensor, PressureSensor, RelativePressureSensor
-from .sources import ConstantFlow, FixedPressure, FlowSource, PressureSource
-from .valves import (BalanceValve, CriticalCentreValve, FourWayValve, OpenCentreValve,
-                     PressureCompensatedValve)
+from ... import _lazy_exports
 
 __all__ = ["PartialOnePort", "PartialTwoPort", "F_tr", "orifice_flow", "Volume",
            "PistonVolume", "LaminarOrifice", "TurbulentOrifice", "VariableOrifice", "ReliefValve",
@@ -17,3 +9,15 @@ __all__ = ["PartialOnePort", "PartialTwoPort", "F_tr", "orifice_flow", "Volume",
            "PressureCompensatedValve", "BalanceValve", "FixedPressure", "PressureSource",
            "ConstantFlow", "FlowSource", "PressureSensor", "RelativePressureSensor",
            "FlowSensor", "LumpedLine", "ModalLine"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".components": ("Cylinder", "HydraulicMotor", "LaminarOrifice", "PistonVolume", "Pump",
+                    "ReliefValve", "SingleActingCylinder", "TurbulentOrifice",
+                    "VariableOrifice", "VariablePump", "Volume"),
+    ".interfaces": ("F_tr", "PartialOnePort", "PartialTwoPort", "orifice_flow"),
+    ".lines": ("LumpedLine", "ModalLine"),
+    ".sensors": ("FlowSensor", "PressureSensor", "RelativePressureSensor"),
+    ".sources": ("ConstantFlow", "FixedPressure", "FlowSource", "PressureSource"),
+    ".valves": ("BalanceValve", "CriticalCentreValve", "FourWayValve", "OpenCentreValve",
+                "PressureCompensatedValve"),
+})

@@ -1,9 +1,13 @@
 """Planar multibody mechanics (shaped like Modelica PlanarMechanics)."""
-from .forces import Damper, Rod, Spring, SpringDamper
-from .interfaces import PartialLineForce, PartialOneFrame, PartialTwoFrames
-from .joints import Prismatic, Revolute
-from .parts import Body, FixedFrame, FixedTranslation, PointMass
+from ... import _lazy_exports
 
 __all__ = ["PartialOneFrame", "PartialTwoFrames", "PartialLineForce", "FixedFrame", "Body",
            "PointMass", "FixedTranslation", "Revolute", "Prismatic", "Rod", "Spring", "Damper",
            "SpringDamper"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".forces": ("Damper", "Rod", "Spring", "SpringDamper"),
+    ".interfaces": ("PartialLineForce", "PartialOneFrame", "PartialTwoFrames"),
+    ".joints": ("Prismatic", "Revolute"),
+    ".parts": ("Body", "FixedFrame", "FixedTranslation", "PointMass"),
+})

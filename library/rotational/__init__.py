@@ -1,13 +1,5 @@
 """1-D rotational mechanics."""
-from .components import (Damper, ElasticGearWithDeadzone, Fixed, GearWithBacklash, IdealGear,
-                         IdealGearR2T, IdealRollingWheel, Inertia, RackAndPinion, Spring,
-                         SpringDamper)
-from .interfaces import (PartialAbsoluteSensor, PartialCompliant, PartialElementaryOneFlange,
-                         PartialElementaryRotationalToTranslational, PartialRelativeSensor,
-                         PartialTwoFlanges)
-from .sensors import (AngleSensor, PowerSensor, RelAngleSensor, RelSpeedSensor, SpeedSensor,
-                      TorqueSensor)
-from .sources import ConstantSpeed, ConstantTorque, Position, Speed, StepTorque, Torque
+from ... import _lazy_exports
 
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
@@ -16,3 +8,17 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"
            "RackAndPinion", "ElasticGearWithDeadzone", "GearWithBacklash", "ConstantTorque",
            "StepTorque", "Torque", "ConstantSpeed", "Speed", "Position", "AngleSensor",
            "SpeedSensor", "RelAngleSensor", "RelSpeedSensor", "TorqueSensor", "PowerSensor"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".components": ("Damper", "ElasticGearWithDeadzone", "Fixed", "GearWithBacklash",
+                    "IdealGear", "IdealGearR2T", "IdealRollingWheel", "Inertia",
+                    "RackAndPinion", "Spring", "SpringDamper"),
+    ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
+                    "PartialElementaryOneFlange",
+                    "PartialElementaryRotationalToTranslational", "PartialRelativeSensor",
+                    "PartialTwoFlanges"),
+    ".sensors": ("AngleSensor", "PowerSensor", "RelAngleSensor", "RelSpeedSensor",
+                 "SpeedSensor", "TorqueSensor"),
+    ".sources": ("ConstantSpeed", "ConstantTorque", "Position", "Speed", "StepTorque",
+                 "Torque"),
+})

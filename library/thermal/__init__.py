@@ -1,9 +1,14 @@
 """Lumped heat transfer: capacities, conductors, convection, boundary conditions."""
-from .components import Convection, HeatCapacitor, ThermalConductor, ThermalResistor
-from .interfaces import Element1D, PartialElementaryOnePort
-from .sensors import HeatFlowSensor, TemperatureSensor
-from .sources import FixedHeatFlow, FixedTemperature, PrescribedHeatFlow, PrescribedTemperature
+from ... import _lazy_exports
 
 __all__ = ["Element1D", "PartialElementaryOnePort", "HeatCapacitor", "ThermalConductor",
            "ThermalResistor", "Convection", "FixedTemperature", "PrescribedTemperature",
            "FixedHeatFlow", "PrescribedHeatFlow", "TemperatureSensor", "HeatFlowSensor"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".components": ("Convection", "HeatCapacitor", "ThermalConductor", "ThermalResistor"),
+    ".interfaces": ("Element1D", "PartialElementaryOnePort"),
+    ".sensors": ("HeatFlowSensor", "TemperatureSensor"),
+    ".sources": ("FixedHeatFlow", "FixedTemperature", "PrescribedHeatFlow",
+                 "PrescribedTemperature"),
+})

@@ -1,12 +1,19 @@
 """1-D translational mechanics."""
-from .components import Damper, Fixed, Mass, MassWithStop, Spring, SpringDamper
-from .interfaces import (PartialAbsoluteSensor, PartialCompliant, PartialElementaryOneFlange,
-                         PartialRelativeSensor, PartialTwoFlanges)
-from .sensors import ForceSensor, PositionSensor, PowerSensor, RelPositionSensor, SpeedSensor
-from .sources import ConstantForce, ConstantSpeed, Force, Position, Speed, StepForce
+from ... import _lazy_exports
 
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor", "Fixed", "Mass", "MassWithStop",
            "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force",
            "ConstantSpeed", "Speed", "Position", "PositionSensor", "SpeedSensor", "RelPositionSensor",
            "ForceSensor", "PowerSensor"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Spring", "SpringDamper"),
+    ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
+                    "PartialElementaryOneFlange", "PartialRelativeSensor",
+                    "PartialTwoFlanges"),
+    ".sensors": ("ForceSensor", "PositionSensor", "PowerSensor", "RelPositionSensor",
+                 "SpeedSensor"),
+    ".sources": ("ConstantForce", "ConstantSpeed", "Force", "Position", "Speed",
+                 "StepForce"),
+})
