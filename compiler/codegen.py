@@ -1,12 +1,16 @@
-"""Code generation (numpy backend): sympy residuals -> Python functions.
+"""Code generation: what the generated functions compute (:class:`Program`), and its
+Python module (the numpy backend; the C backend prints the same program,
+:mod:`acausal.compiler.cbackend`).
 
-The generated source is plain Python on floats with ``math`` functions, after common
-subexpression elimination (sympy.cse), so nothing symbolic runs at simulation time.
+Each statement is printed on its own by :mod:`acausal.compiler.emit` (common
+subexpressions named within a statement, long sums as balanced groups), so the work is
+linear in the model's size and nothing symbolic runs at simulation time.
 Per model we generate
 
 * ``residual(t, y, p, m, out)``: the residual rows G(t, y, p) = 0;
 * ``jacobian(t, y, p, m, out)``: the values of dG/dy at the fixed sparsity pattern
-  ``(rows, cols)`` taken from the structure (symbolic differentiation per non-zero);
+  ``(rows, cols)``: partial derivatives of each statement, chained through the
+  assignments in forward mode;
 * ``roots(t, y, p, m, out)``: the zero-crossing functions of the relations in
   discontinuous expressions, then the arguments of the frozen floor values;
 * ``scales(t, y, p, m, out)``: the magnitude ``|lhs| + |rhs|`` of each relation, the

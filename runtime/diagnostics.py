@@ -4,7 +4,7 @@ The generated residual is one Python function; when it raises (``sqrt`` of a neg
 start value, a division by zero), the traceback's line in the generated source says which
 statement failed: an ``out[k] = ...`` line is row k, an assignment ``_aK = ...`` is the
 variable the BLT computes there, and a common subexpression ``_cK = ...`` is charged to
-the first row that uses it.
+the first row or assignment that uses it.
 """
 from __future__ import annotations
 
@@ -48,6 +48,10 @@ def failing_statement(source: str, exc: BaseException, row_names, assigned_names
             hit = re.match(r"\s*out\[(\d+)\] = .*\b" + sym + r"\b", later)
             if hit:
                 return _row(int(hit.group(1)), row_names)
+            hit = re.match(r"\s*_a(\d+) = .*\b" + sym + r"\b", later)
+            if hit:
+                k = int(hit.group(1))
+                return f"computing {assigned_names[k] if k < len(assigned_names) else f'_a{k}'}"
     return None
 
 

@@ -112,8 +112,10 @@ def _finite_derivatives(model, t0, zp) -> None:
         names = [model.names[model.state_index[k]] for k in bad[:5]]
         why = f"; {model.evaluation_errors[0]}" if model.evaluation_errors else ""
         raise InitializationFailed(
-            f"initialization at t = {t0}: the derivatives of "
-            + ", ".join(f"der({n})" for n in names) + f" are not finite{why}", t0)
+            f"initialization at t = {t0}: "
+            + ", ".join(f"der({n})" for n in names)
+            + f" {'is' if len(names) == 1 else 'are'} not finite at the initial point{why}",
+            t0)
 
 
 def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
