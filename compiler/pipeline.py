@@ -331,7 +331,10 @@ def solve_linear(residual, x):
     c = partial(residual, x)
     if residual.is_Add:
         rest = [a for a in residual.args if not a.has(x)]
-        if len(rest) == len(residual.args) - 1 and len(residual.args) > 2:
+        inner = [a for a in residual.args if a.has(x)]
+        # the term with x must be x times its coefficient: a term such as k (x - a)
+        # also contributes -k a to r(x=0)
+        if len(inner) == 1 and inner[0] == c * x and len(residual.args) > 2:
             r0 = sp.Add._from_args(rest) if len(rest) > 1 else rest[0]
             if c.is_Number and r0.is_Add:
                 # x = (-1/c) * r0, kept as a product: distributing the number over the
