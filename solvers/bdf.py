@@ -35,13 +35,20 @@ detection, as in CVODE, where it is off by default too: :mod:`acausal.solvers.st
 
 Norms are weighted RMS norms with ``w_i = 1/(rtol |y_i| + atol_i nominal_i)``.  A
 component the problem marks ``self_scaled`` (contract item 6: a derivative solved as an
-unknown, without a nominal of its own) has weight 0 in the error and Newton tests, as
-in the torn form, where it is computed from the other unknowns: a solved-whole block is
-strongly connected, so it is judged through the unknowns it determines.  (One that is 0
-at t0 and moves at 1e6/s would otherwise be held to atol, below its own round-off:
-a Newton test on its own motion, |y| + h |y'|, still fails there once h is small.)  With
-``suppress_alg`` the algebraic components are left out of the error test (not of the
-Newton test), as IDA's ``suppressalg``.
+unknown, without a nominal of its own) has weight 0 in the error test, as in the torn
+form, where it is computed from the other unknowns: a solved-whole block is strongly
+connected, so it is judged through the unknowns it determines.  (One that is 0 at t0
+and moves at 1e6/s would otherwise be held to atol, below its own round-off.)  The
+Newton test sees it at its own scale, falling back to the test without it where it
+stalls (:mod:`acausal.solvers.corrector`).  With ``suppress_alg`` the algebraic
+components are left out of the error test (not of the Newton test), as IDA's
+``suppressalg``.
+
+A problem that changes its formulation between steps without changing the meaning of y
+(dynamic state selection: another choice of which derivatives are linked) keeps the
+history, order and step: :meth:`BDF.reformulate` re-reads the masks and forces a new
+iteration matrix.  The solution stays the same smooth function, so the divided
+differences stay valid; only events restart at order 1.
 """
 from __future__ import annotations
 
@@ -50,6 +57,7 @@ import math
 import numpy as np
 
 from .base import DAEProblem, SolverStats
+from .corrector import NewtonFail, solve_corrector
 from .first_step import initial_step, probed_step
 from .linalg import LinearSolver, SingularMatrixError, make_linear_solver
 from .stald import StabilityLimitDetector
@@ -58,10 +66,6 @@ __all__ = ["BDF", "StepFailure", "MAX_ORDER"]
 
 MAX_ORDER = 5
 _EPS = np.finfo(float).eps
-_EPCON = 0.33        # Newton tolerance relative to the error test (IDA's epcon)
-_MAXCOR = 4          # Newton iterations per attempt (IDA's maxcor)
-_RATEMAX = 0.9       # a Newton rate above this is divergence
-_XRATE = 0.25        # cj may change by (1-XRATE)/(1+XRATE) .. inverse before re-factoring
 _MAXNEF = 10         # error-test failures per step before giving up (IDA maxnef)
 _MAXNCF = 10         # Newton failures per step before giving up (IDA maxncf)
 _MAXSING = 3         # singular iteration matrices per step before giving up
@@ -174,13 +178,7 @@ class BDF:
         self.yp = np.array(yp0, dtype=float)
         self.phi[:] = 0.0
         self.phi[0] = self.y
-        # the problem's formulation may have changed since the last start (another
-        # choice of states): which components are algebraic is read again here
-        self._alg = np.asarray(self.problem.algebraic, bool).copy()
-        scaled = getattr(self.problem, "self_scaled", None)
-        self._self_scaled = self._alg & (False if scaled is None else np.asarray(scaled, bool))
-        if self._self_scaled.all():
-            self._self_scaled[:] = False
+        self._read_masks()
         self._update_weights()
         h = initial_step(self) if first_step is None else float(first_step)
         h = min(h, self.max_step, max(self.t_stop - self.tn, 0.0) or h)
@@ -199,9 +197,26 @@ class BDF:
         if self.stald is not None:
             self.stald.reset()
 
+    def reformulate(self) -> None:
+        """The problem changed its formulation at the current point, not the meaning of
+        y (another choice of states, contract item 11): history, order and step are
+        kept (module docstring); the masks are read again and the matrix re-factored."""
+        self._read_masks()
+        self._update_weights()
+        self.force_setup = True
+
+    def _read_masks(self) -> None:
+        # which components are algebraic depends on the formulation (the choice of states)
+        self.alg = np.asarray(self.problem.algebraic, bool).copy()
+        scaled = getattr(self.problem, "self_scaled", None)
+        self.self_scaled = self.alg & (False if scaled is None else np.asarray(scaled, bool))
+        if self.self_scaled.all():
+            self.self_scaled[:] = False
+
     def _update_weights(self) -> None:
-        self.ewt = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
-        self.ewt[self._self_scaled] = 0.0
+        self.ewt_newton = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
+        self.ewt = self.ewt_newton.copy()
+        self.ewt[self.self_scaled] = 0.0
         self.ewt_err = self.ewt.copy()
         if self.err_mask is not None:
             self.ewt_err *= self.err_mask
@@ -261,101 +276,6 @@ class BDF:
         for i in range(self.ns, kk + 1):
             self.phi[i] /= self.beta[i]
 
-    # ------------------------------------------------------------------ Newton
-    def _setup(self, t, y, yp) -> None:
-        """Evaluate and factor the iteration matrix at the predicted point."""
-        st = self.stats
-        st.jacobian_evaluations += 1
-        J = self.problem.jacobian(t, y, yp, self.cj)
-        st.lu_factorizations += 1
-        self.lin.factor(J)
-        self.cjold = self.cj
-        self.cjratio = 1.0
-        self.ss = 20.0
-        self.force_setup = False
-
-    def _newton(self, tnew, ypred, yppred):
-        """Simplified Newton on the corrector (BCP sec. 5.2; IDA's IDANls).
-
-        Returns the correction ``e`` (``y = y_pred + e``, ``y' = y'_pred + cj e``) or
-        raises ``_NewtonFail`` carrying the last weighted correction.
-        """
-        cj = self.cj
-        self.cjratio = cj / self.cjold
-        lo = (1.0 - _XRATE) / (1.0 + _XRATE)
-        call_setup = self.force_setup or not (lo <= self.cjratio <= 1.0 / lo)
-        if cj != self.cjlast:
-            self.ss = 100.0
-        fresh = False
-        while True:
-            if call_setup:
-                self._setup(tnew, ypred, yppred)
-                fresh = True
-            ok, ee, last = self._corrector_loop(tnew, ypred, yppred, cj)
-            if ok:
-                if self.cjratio != 1.0 and self._alg.any():
-                    ee = self._unscaled_correction(tnew, ypred, yppred, cj, ee)
-                return ee
-            if fresh:
-                raise _NewtonFail(last)
-            call_setup = True   # a stale matrix may be the cause: retry with a new one
-
-    def _unscaled_correction(self, tnew, ypred, yppred, cj, ee):
-        """One more Newton correction, not scaled.  The rows of an algebraic equation do
-        not contain cj, so in them the stale matrix is exact and an unscaled correction
-        satisfies a linear constraint exactly; the scaled ones leave it off by the factor
-        2/(1+cjratio) times the last correction, at every step (a Dirichlet row
-        u0 - 1 = 0 drifting off 1 by a few rtol, and dense and sparse LU steering on
-        that noise differently)."""
-        self.stats.residual_evaluations += 1
-        self.stats.newton_iterations += 1
-        delta = self.lin.solve(self.problem.residual(tnew, ypred + ee, yppred + cj * ee))
-        if np.all(np.isfinite(delta)):
-            ee = ee - delta
-        return ee
-
-    def _corrector_loop(self, tnew, ypred, yppred, cj):
-        st = self.stats
-        F = self.problem.residual
-        ewt = self.ewt
-        # IDA's scalesol: with a matrix factored at cjold, the correction of a
-        # differential component is about cjold/cj too large, which 2/(1+cjratio)
-        # corrects (on the whole correction: scaling only part of a coupled correction
-        # distorts it, and leaves lightly damped modes undamped)
-        scale = 2.0 / (1.0 + self.cjratio) if self.cjratio != 1.0 else 1.0
-        ee = None
-        oldnrm = 0.0
-        tol = _EPCON
-        for m in range(_MAXCOR):
-            if ee is None:   # first iterate: the prediction itself
-                r = F(tnew, ypred, yppred)
-            else:
-                r = F(tnew, ypred + ee, yppred + cj * ee)
-            st.residual_evaluations += 1
-            st.newton_iterations += 1
-            delta = self.lin.solve(r)
-            # -J^{-1} F, scaled when J was factored with cjold (IDA's scalesol)
-            delta *= -scale
-            if ee is None:
-                ee = delta
-            else:
-                ee += delta
-            delnrm = self._wrms(delta, ewt)
-            if not np.isfinite(delnrm):
-                return False, ee, None
-            if m == 0:
-                oldnrm = delnrm
-                if delnrm <= 1e-8 * tol:   # IDA: PT0001 * toldel, toldel = PT0001 * epsNewt
-                    return True, ee, None
-            else:
-                rate = (delnrm / oldnrm) ** (1.0 / m) if oldnrm > 0 else 0.0
-                if rate > _RATEMAX:
-                    return False, ee, delta * ewt
-                self.ss = rate / (1.0 - rate)
-            if self.ss * delnrm <= tol:
-                return True, ee, None
-        return False, ee, delta * ewt
-
     # ------------------------------------------------------------------ error test
     def _test_error(self, ck, ee):
         """IDATestError: estimates at orders k, k-1, k-2 and the order to keep."""
@@ -412,7 +332,7 @@ class BDF:
             ypred = self.phi[:kk + 1].sum(axis=0)
             yppred = np.dot(self.gamma[1:kk + 1], self.phi[1:kk + 1])
             try:
-                ee = self._newton(tnew, ypred, yppred)
+                ee = solve_corrector(self, tnew, ypred, yppred)
             except SingularMatrixError as exc:
                 # recoverable like a Newton failure (IDA: lsetup failure), since a
                 # smaller step changes cj and may regularize dF/dy + cj dF/dy'; an
@@ -425,7 +345,7 @@ class BDF:
                 self._shrink(0.25)
                 self.force_setup = True
                 continue
-            except _NewtonFail as exc:
+            except NewtonFail as exc:
                 # IDAHandleNFlag, convergence failure: quarter the step, predict again
                 self._restore(saved_t)
                 st.newton_failures += 1
@@ -466,8 +386,15 @@ class BDF:
                 rr = 0.9 * (2.0 * err_knew + 1e-4) ** (-1.0 / (self.kk + 1))
                 self._shrink(max(0.25, min(0.9, rr)))
             else:
+                # IDA quarters the step, and the order is 1 from the third failure on;
+                # an order-1 estimate h^2 |y''| / 2 says how far to cut, as at the first
+                # step (a fast transient into zero under atol 1e-12 needed h/1e6: ten
+                # quarterings are IDA's limit of failures)
+                rr = 0.25
+                if kk == 1:
+                    rr = max(1e-3, min(0.25, 0.9 * (2.0 * err_k + 1e-4) ** -0.5))
                 self.kk = knew if nef == 2 else 1
-                self._shrink(0.25)
+                self._shrink(rr)
         self._complete_step(ee, err_k, err_km1, knew, yppred)
 
     def _shrink(self, rr: float) -> None:
@@ -593,8 +520,3 @@ class BDF:
             cs[j - 1], ds[j - 1] = c, d
         return phi[0] + cs @ phi[1:kord + 1], ds @ phi[1:kord + 1]
 
-
-class _NewtonFail(Exception):
-    def __init__(self, weighted):
-        super().__init__("corrector did not converge")
-        self.weighted = weighted

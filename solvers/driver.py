@@ -202,12 +202,15 @@ class _Run:
 
     def _after_step(self, s) -> None:
         """Let the problem change its formulation after an accepted step (dynamic state
-        selection: a different choice of states); then re-initialize and restart."""
+        selection: a different choice of states).  The point already satisfies the
+        equations both formulations share, and y means the same, so the BDF keeps its
+        history (:meth:`BDF.reformulate`) instead of restarting at order 1 as after an
+        event (a pendulum going round switches nine times in 3 s; the restarts cost
+        ~140 of its ~520 steps at rtol 1e-6)."""
         hook = getattr(self.problem, "after_step", None)
         if hook is not None and hook(s.t, s.y, s.yp):
-            y, yp = self._reinit(s.t, s.y, s.yp)
-            s.restart(s.t, y, yp, t_stop=s.t_stop, probe=True)
-            self._arm_roots(s.t, y, yp)
+            s.reformulate()
+            self._arm_roots(s.t, s.y, s.yp)
 
     # ------------------------------------------------------------------ output
     def _emit_point(self, t, y, yp) -> None:
