@@ -18,9 +18,10 @@ from dataclasses import dataclass, field, replace
 import sympy as sp
 
 from ..components.component import ModelError
-from .flatten import FlatEquation, FlatModel
 from .derivative import partial
+from .flatten import FlatEquation, FlatModel
 from .graph import STATE_SELECT
+from .symbolic import symbols_of
 
 __all__ = ["AliasTable", "eliminate_aliases"]
 
@@ -44,25 +45,31 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     """Return a new FlatModel without trivial equations, and the alias table."""
     order = {v.symbol: k for k, v in enumerate(flat.variables)}
     info = {v.symbol: v for v in flat.variables}
+    syms = [v.symbol for v in flat.variables]
     differentiated = set(flat.derivatives)
     params = frozenset(p.symbol for p in flat.parameters)
-    parent = {}          # symbol -> (sign, parent symbol)
+    # the union-find on variable numbers: up[k] is k's parent, sign[k] = +-1 with
+    # x_k = sign[k] * x_up[k]; a root has up[k] == k
+    up, sign_of = list(range(len(syms))), [1] * len(syms)
+    parent = _Parents(order, up, sign_of)
     constants = {}       # root symbol -> constant expression
     removed = []
 
     def find(s):
+        k = order.get(s)
+        if k is None:
+            return 1, s
         path, sign = [], 1
-        while s in parent:
-            path.append(s)
-            k, s = parent[s]
-            sign *= k
+        while up[k] != k:
+            path.append(k)
+            sign *= sign_of[k]
+            k = up[k]
         # path compression (with signs): every visited node now points at the root
         acc = sign
         for q in path:
-            k, _ = parent[q]
-            parent[q] = (acc, s)
-            acc *= k
-        return sign, s
+            acc, sign_of[q] = acc * sign_of[q], acc
+            up[q] = k
+        return sign, syms[k]
 
     def rank(s):
         a = info[s].attrs
@@ -76,7 +83,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     alive = [True] * len(eqs)
     by_symbol = {}
     for i, eq in enumerate(eqs):
-        for q in eq.residual.free_symbols:
+        for q in symbols_of(eq.residual):
             by_symbol.setdefault(q, set()).add(i)
     queue = set(range(len(eqs)))
     while queue:
@@ -85,17 +92,17 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
             if alive[i] and _classify(eqs[i], info, find, rank, parent, constants, params):
                 alive[i] = False
                 removed.append(eqs[i])
-                for q in eqs[i].residual.free_symbols:
+                for q in symbols_of(eqs[i].residual):
                     touched |= by_symbol.get(q, set())
         queue = set()
         for j in touched:
             if not alive[j]:
                 continue
             r = eqs[j].residual
-            local = _substitutions_for(r.free_symbols, info, find, constants)
+            local = _substitutions_for(symbols_of(r), info, find, constants)
             if local:
                 eqs[j] = replace(eqs[j], residual=r.xreplace(local))
-                for q in eqs[j].residual.free_symbols:
+                for q in symbols_of(eqs[j].residual):
                     by_symbol.setdefault(q, set()).add(j)
                 queue.add(j)
     kept = [eq for eq, a in zip(eqs, alive) if a]
@@ -106,10 +113,23 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     for v in flat.variables:
         sign, root = find(v.symbol)
         if root in constants:
-            table.constants[v.name] = sign * constants[root]
+            table.constants[v.name] = _signed(sign, constants[root])
         elif root != v.symbol:
-            table.aliases[v.name] = (sign, root.name)
+            table.aliases[v.name] = (sp.Integer(sign), root.name)
     return _rebuild(flat, kept, subs, table, find, constants), table
+
+
+class _Parents:
+    """``parent[child] = (sign, root)`` of the union-find, stored by variable number."""
+
+    __slots__ = ("order", "up", "sign")
+
+    def __init__(self, order, up, sign):
+        self.order, self.up, self.sign = order, up, sign
+
+    def __setitem__(self, child, value):
+        k = self.order[child]
+        self.sign[k], self.up[k] = value[0], self.order[value[1]]
 
 
 def _check_fixed_constants(flat, find, constants) -> None:
@@ -119,11 +139,21 @@ def _check_fixed_constants(flat, find, constants) -> None:
         sign, root = find(v.symbol)
         if not v.attrs.fixed or v.attrs.start is None or root not in constants:
             continue
-        value = sign * constants[root]
+        value = _signed(sign, constants[root])
         if value.is_number and abs(float(value) - v.attrs.start) > 1e-12 * (1 + abs(v.attrs.start)):
             raise ModelError(f"'{v.name}' in {v.where} has fixed=True with start = "
                              f"{v.attrs.start}, but its equations make it the constant "
                              f"{float(value):g}: the initial problem is over-specified")
+
+
+def _signed(sign, expr):
+    """``sign * expr`` for a sign of +-1, without sympy's multiplication (the same
+    expression: 1*x is x, -1*x is -x)."""
+    if sign == 1:
+        return expr
+    if sign == -1:
+        return -expr
+    return sign * expr
 
 
 def _substitutions_for(symbols, info, find, constants) -> dict:
@@ -133,9 +163,9 @@ def _substitutions_for(symbols, info, find, constants) -> dict:
             continue
         sign, root = find(q)
         if root in constants:
-            out[q] = sign * constants[root]
+            out[q] = _signed(sign, constants[root])
         elif root != q:
-            out[q] = sign * root
+            out[q] = _signed(sign, root)
     return out
 
 
@@ -144,9 +174,9 @@ def _substitutions(flat, find, constants) -> dict:
     for v in flat.variables:
         sign, root = find(v.symbol)
         if root in constants:
-            subs[v.symbol] = sign * constants[root]
+            subs[v.symbol] = _signed(sign, constants[root])
         elif root != v.symbol:
-            subs[v.symbol] = sign * root
+            subs[v.symbol] = _signed(sign, root)
     return subs
 
 
@@ -160,8 +190,9 @@ def _classify(eq, info, find, rank, parent, constants, params=frozenset()) -> bo
         sa, ra = find(a)
         if ra in constants:
             return False          # a second value for the same variable: left for diagnosis
-        constants[ra] = sa * k
+        constants[ra] = _signed(sa, k)
         return True
+    k = int(k)
     (sa, ra), (sb, rb) = find(a), find(b)
     if ra == rb or (ra in constants and rb in constants):
         return False              # a redundant or contradictory loop: left for diagnosis
@@ -172,14 +203,17 @@ def _classify(eq, info, find, rank, parent, constants, params=frozenset()) -> bo
         child, root, sign = ra, rb, sb * k * sa
     parent[child] = (sign, root)
     if child in constants:
-        constants[root] = sign * constants.pop(child)
+        constants[root] = _signed(sign, constants.pop(child))
     return True
 
 
 def _alias_pattern(residual: sp.Expr, info: dict, params: frozenset = frozenset()):
     """Classify residual: ('alias', a, b, k) for a = k*b with k = +-1; ('const', a, None, c)
     for a = c with c a number or an expression of parameters.  None otherwise."""
-    free = residual.free_symbols
+    fast = _plain_alias(residual, info)
+    if fast is not None:
+        return fast
+    free = symbols_of(residual)
     syms = [s for s in free if s in info]
     others = free - set(syms)
     if others - params:
@@ -200,6 +234,27 @@ def _alias_pattern(residual: sp.Expr, info: dict, params: frozenset = frozenset(
     return None
 
 
+def _plain_alias(residual: sp.Expr, info: dict):
+    """The pattern of the residuals connections make, read off their arguments: ``x``
+    (x = 0) and ``+-a +- b``; None for anything else (which takes the general path,
+    with the same result for these)."""
+    if residual in info:
+        return "const", residual, None, sp.S.Zero
+    if not residual.is_Add or len(residual.args) != 2:
+        return None
+    signs = {}
+    for t in residual.args:
+        if t in info:
+            signs[t] = sp.S.One
+        elif (t.is_Mul and len(t.args) == 2 and t.args[0] is sp.S.NegativeOne
+              and t.args[1] in info):
+            signs[t.args[1]] = sp.S.NegativeOne
+        else:
+            return None
+    a, b = sorted(signs, key=lambda s: s.name)
+    return "alias", a, b, -signs[b] / signs[a]
+
+
 def _rebuild(flat, kept, subs, table, find, constants):
     variables = []
     for v in flat.variables:
@@ -214,14 +269,16 @@ def _rebuild(flat, kept, subs, table, find, constants):
             subs[dx] = sp.Integer(0)
         elif root != x:
             rd = flat.derivatives.get(root) or sp.Symbol(f"der({root.name})", real=True)
-            subs[dx] = sign * rd
+            subs[dx] = _signed(sign, rd)
             derivatives[root] = rd
         else:
             derivatives[x] = dx
     equations = []
     info = {v.symbol: v for v in flat.variables}
     for eq in kept:
-        r = eq.residual.xreplace(subs)
+        r = eq.residual
+        if any(q in subs for q in symbols_of(r)):
+            r = r.xreplace(subs)
         if r == 0:
             by_name = {v.name: v.hint for v in flat.variables if v.hint}
             hints = sorted({by_name[w] for w in re.findall(r"[\w.\[\]]+", eq.text)
@@ -246,7 +303,7 @@ def _when_after_aliases(w, subs, find, constants):
         if root in constants:
             raise ModelError(f"reinit({act.variable}) in {w.origin or '(model)'}: the variable "
                              "is fixed by an equation (a constant), it cannot be re-initialized")
-        actions.append(Reinit(root, sign * act.value.xreplace(subs)))
+        actions.append(Reinit(root, _signed(sign, act.value.xreplace(subs))))
     out = When(w.condition.xreplace(subs), *actions)
     out.origin, out.origin_class = w.origin, w.origin_class
     return out
@@ -261,6 +318,8 @@ def _merge_attributes(flat, variables, find):
         if root not in by_root or root == v.symbol:
             continue
         a, r = v.attrs, out[root]
+        if a.start is not None:
+            sign = sp.Integer(sign)   # the signed start value is a sympy number, as ever
         new = r
         if a.start is not None and (r.start is None or (a.fixed and not r.fixed)):
             new = replace(new, start=sign * a.start, fixed=a.fixed or r.fixed)

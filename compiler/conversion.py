@@ -49,6 +49,7 @@ the SymbolicSystem and returns a :class:`ConversionResult` saying what it did.
 """
 from __future__ import annotations
 
+import heapq
 import random
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -58,13 +59,12 @@ import sympy as sp
 
 from ..components.symbols import time
 from .blt import strongly_connected_components
-from .derivative import partial
 from .exact import (coefficient_oracle, exact_rank, exact_value, integer_vector,
                     left_null_vectors, parameter_values)
 from .graph import UNASSIGNED, Structure
 from .sigma import SigmaResult, sigma_method, signature_matrix
 from .structure import IndexReductionFailed, StructuralError, StructurallySingular
-from .symbolic import SymbolicEquation
+from .symbolic import SymbolicEquation, sum_partial, symbols_of
 
 __all__ = ["Conversion", "NumericBlock", "ConversionResult", "convert", "convert_model",
            "parameter_values", "exact_value", "exact_rank", "left_null_vectors",
@@ -166,7 +166,7 @@ class ConversionResult:
 # -- the Sigma-method on the symbolic system -------------------------------------------
 def _light_structure(system) -> Structure:
     """Incidence and derivative links only (no coefficient kinds): enough for Sigma."""
-    graph = [sorted(system.index[q] for q in e.residual.free_symbols if q in system.index)
+    graph = [sorted(system.index[q] for q in symbols_of(e.residual) if q in system.index)
              for e in system.equations]
     var_to_diff = [UNASSIGNED] * len(system.symbols)
     for x, dx in system.derivatives.items():
@@ -212,7 +212,7 @@ def _block_matrix(system, rows, tight, res, chains, values, cache) -> tuple:
         for j in tight.get(i, []):
             if j not in cols:
                 continue
-            expr = partial(system.equations[i].residual, chains[j][res.d[j] - res.c[i]])
+            expr = sum_partial(system.equations[i].residual, chains[j][res.d[j] - res.c[i]])
             symbolic[(i, j)] = expr
             if expr not in cache:
                 cache[expr] = exact_value(expr, values)
@@ -335,13 +335,81 @@ def _matrix_text(matrix) -> str:
                            for r in matrix) + "]"
 
 
+# -- regular blocks, certified cheaply ---------------------------------------------------
+_PRIME = 2**61 - 1
+
+
+def _null_vectors(rows: dict) -> list:
+    """:func:`left_null_vectors` of the rows, which is [] when they have full row rank;
+    that is settled first modulo a prime, where the arithmetic stays small.
+
+    Reducing rationals (with denominators prime to p) mod p is a ring homomorphism, so
+    every minor of the reduced matrix is the reduction of the rational minor: full row
+    rank mod p proves full row rank over the rationals.  Only rows that are not of full
+    rank mod p (singular, or, rarely, p divides the minors) are eliminated exactly.
+    Exact elimination of a large regular block (the capacitors of a network) spends
+    its time on the growth of its integers; mod p it is the sparse elimination alone.
+    """
+    if _full_row_rank_mod_p(rows):
+        return []
+    return left_null_vectors(rows)
+
+
+def _full_row_rank_mod_p(rows: dict) -> bool:
+    """Sparse Gaussian elimination over GF(p), pivoting as :mod:`acausal.compiler.exact`
+    does (the column with the fewest non-zeros, then its shortest row)."""
+    p = _PRIME
+    a, col_rows = {}, {}
+    for r, vals in rows.items():
+        row = {}
+        for c, q in vals.items():
+            if q:
+                if q.denominator % p == 0:
+                    return False
+                v = q.numerator * pow(q.denominator, -1, p) % p
+                if v:
+                    row[c] = v
+                    col_rows.setdefault(c, set()).add(r)
+        a[r] = row
+    heap = [(len(rs), c) for c, rs in col_rows.items()]
+    heapq.heapify(heap)
+    done, rank = set(), 0
+    while heap:
+        count, c = heapq.heappop(heap)
+        if c in done or count != len(col_rows[c]):
+            continue                    # stale entry: the count changed since
+        done.add(c)
+        if count == 0:
+            continue
+        piv = min(col_rows[c], key=lambda r: (len(a[r]), r))
+        prow = a.pop(piv)
+        inv = pow(prow[c], -1, p)
+        for q in sorted(col_rows[c] - {piv}):
+            qrow = a[q]
+            f = qrow[c] * inv % p
+            for k, v in prow.items():    # row_q -= f row_p: zero at c
+                x = (qrow.get(k, 0) - f * v) % p
+                if x:
+                    qrow[k] = x
+                    col_rows[k].add(q)
+                else:
+                    qrow.pop(k, None)
+                    col_rows[k].discard(q)
+        for k in prow:
+            col_rows[k].discard(piv)
+            if k not in done:
+                heapq.heappush(heap, (len(col_rows[k]), k))
+        rank += 1
+    return rank == len(rows)
+
+
 # -- unused derivatives ----------------------------------------------------------------
 def _prune(system, keep) -> list:
     """Remove top-of-chain derivative symbols that no equation contains any more (a
     derivative in no equation would make index reduction differentiate again)."""
     used = set(keep)
     for e in system.equations:
-        used |= e.residual.free_symbols
+        used |= symbols_of(e.residual)
     anti = {dx: x for x, dx in system.derivatives.items()}
     removed = set()
     tops = [q for q in system.symbols
@@ -388,7 +456,7 @@ def convert(system, structure: Structure | None = None, values: dict | None = No
             exact, symbolic = _block_matrix(system, rows, tight, res, chains, values, cache)
             key = tuple((i, tuple(sorted(row.items()))) for i, row in sorted(exact.items()))
             if key not in nulls:             # blocks untouched by a round keep their answer
-                nulls[key] = left_null_vectors(exact) if exact else []
+                nulls[key] = _null_vectors(exact) if exact else []
             null = nulls[key]
             if null:
                 steps.append((rows, null[0], exact, symbolic))

@@ -44,6 +44,21 @@ def _through_floor(e: sp.Expr) -> sp.Expr:
     return e
 
 
+_INTEGER_FUNCTIONS = (sp.floor, sp.ceiling, sp.Mod, sp.frac)
+
+
+def _has_type(e: sp.Basic, types: tuple) -> bool:
+    """``e.has(*types)`` for classes: a node of one of them anywhere in the tree (one
+    walk for all of them, where sympy walks once per class)."""
+    stack = [e]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, types):
+            return True
+        stack.extend(node.args)
+    return False
+
+
 def freeze_integer_functions(flat) -> list:
     """Replace floor atoms in every equation and when-clause of ``flat`` by discrete
     symbols (in place); return the :class:`DiscreteValue` list, in a canonical order."""
@@ -51,7 +66,7 @@ def freeze_integer_functions(flat) -> list:
     found: dict = {}
 
     def freeze(e):
-        if not isinstance(e, sp.Basic) or not e.has(sp.floor, sp.ceiling, sp.Mod, sp.frac):
+        if not isinstance(e, sp.Basic) or not _has_type(e, _INTEGER_FUNCTIONS):
             return e
         quiet = {q: sp.Dummy() for q in e.atoms(no_event)}
         e = _through_floor(e.xreplace(quiet) if quiet else e)

@@ -27,7 +27,8 @@ from ..components.component import (Component, Connection, InvalidConnection,
                                      InvalidEquation, InvalidValue, ModelError, NotInModel,
                                      Port, compiling, flatten_equation_list)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
-from ..components.symbols import Equation, When, der, time
+from ..components.symbols import Equation, When, der, text, time
+from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
 
 __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
 
@@ -73,7 +74,8 @@ class FlatParameter:
 @dataclass
 class FlatEquation:
     residual: sp.Expr
-    source: object            # the text, or the Equation it is printed from on demand
+    source: object            # the text; or the Equation, or the sum (printed "sum = 0"),
+                              # it is printed from on demand
     component: str
     component_class: str
     kind: str = "equation"       # equation | connect | unconnected | initial
@@ -87,7 +89,8 @@ class FlatEquation:
     def text(self) -> str:
         """The equation as written (printed lazily: printing is slow on large models)."""
         if not isinstance(self.source, str):
-            self.source = f"{sp.sstr(self.source.lhs)} = {sp.sstr(self.source.rhs)}"
+            src = self.source
+            self.source = src.text if isinstance(src, Equation) else f"{text(src)} = 0"
         return self.source
 
     def describe(self) -> str:
@@ -214,7 +217,12 @@ def _collect_declarations(comp: Component, flat: FlatModel) -> None:
 
 def _flat_equation(eq: Equation, comp: Component, kind: str) -> FlatEquation:
     eq.origin, eq.origin_class = comp.path, type(comp).__name__
-    return FlatEquation(eq.residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+    coeffs = {}
+    if signed_terms(eq.lhs, 1, coeffs) and signed_terms(eq.rhs, -1, coeffs) and coeffs:
+        residual = signed_sum(coeffs)
+    else:
+        residual = eq.residual
+    return FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
 
 
 # -- connections -----------------------------------------------------------------------
@@ -300,11 +308,16 @@ def _node_equations(members: list, connections: list) -> list:
         a = getattr(first, name)
         for p, _ in members[1:]:
             b = getattr(p, name)
-            eqs.append(FlatEquation(a - b, f"{a.name} = {b.name}", where, "connect", "connect"))
+            diff = signed_sum({a: 1, b: -1}) if a != b else a - b
+            eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect"))
     for name in first.through():
-        terms = [(1 if role == "inside" else -1) * getattr(p, name) for p, role in members]
-        total = sp.Add(*terms)
-        eqs.append(FlatEquation(total, f"{sp.sstr(total)} = 0", where, "connect", "connect"))
+        signed = [(getattr(p, name), 1 if role == "inside" else -1) for p, role in members]
+        coeffs = dict(signed)
+        if len(coeffs) == len(signed) and all(type(q) is sp.Symbol for q in coeffs):
+            total = signed_sum(coeffs)
+        else:
+            total = sp.Add(*[c * q for q, c in signed])
+        eqs.append(FlatEquation(total, total, where, "connect", "connect"))
     return eqs
 
 
@@ -321,10 +334,10 @@ def _check_symbols(flat: FlatModel) -> None:
     for eq in flat.equations + flat.initial_equations:
         if eq.kind not in ("equation", "initial"):
             continue   # connection equations are built from the model's own ports
-        free = eq.residual.free_symbols
+        free = symbols_of(eq.residual)
         if not free <= allowed:
             _check_known(free - allowed, f"equation '{eq.text}' in {eq.where}")
-        if eq.residual.has(der):
+        if _has_der(eq.residual):
             _check_der_arguments(eq, var_syms)
         if free.isdisjoint(var_syms):
             raise InvalidEquation(f"equation '{eq.text}' in {eq.where} involves no "
@@ -385,7 +398,8 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     if not bound:
         return
     for eq in flat.equations + flat.initial_equations:
-        eq.residual = eq.residual.xreplace(bound)
+        if any(q in bound for q in symbols_of(eq.residual)):
+            eq.residual = eq.residual.xreplace(bound)
     for w in flat.whens:
         w.condition = w.condition.xreplace(bound)
         for act in w.actions:
@@ -492,7 +506,7 @@ def _check_infinite_parameters(flat: FlatModel) -> None:
                 f"{w.origin or '(model)'} ({w.origin_class})")
                for w in flat.whens for act in w.actions]
     for expr, where in checks:
-        used = expr.free_symbols & infinite.keys()
+        used = symbols_of(expr) & infinite.keys()
         if used and expr.xreplace(infinite).has(*_NON_FINITE):
             which = " and ".join(f"{names[s].describe()} = {names[s].value!r}"
                                  for s in sorted(used, key=lambda s: s.name))
@@ -504,9 +518,33 @@ def _check_infinite_parameters(flat: FlatModel) -> None:
 def _expand_derivatives(flat: FlatModel) -> None:
     """Replace der(expr) by symbols der(x), expanding der of expressions by the chain rule."""
     var_syms = {v.symbol for v in flat.variables}
+    der_syms = set(flat.derivatives.values())
     for eq in flat.equations + flat.initial_equations:
-        if eq.residual.has(der):
-            eq.residual = _replace_der(eq.residual, var_syms, flat.derivatives)
+        if _has_der(eq.residual):
+            eq.residual = _replace_der(eq.residual, var_syms, flat.derivatives, der_syms)
+
+
+def _has_der(expr) -> bool:
+    """``expr.has(der)``; a product or sum of symbols and numbers (most equations) is
+    answered from its arguments without sympy's general pattern search."""
+    if expr.is_Atom:
+        return False
+    if expr.is_Add or expr.is_Mul:
+        return any(not a.is_Atom and _has_der(a) for a in expr.args)
+    return expr.has(der)
+
+
+def _outer_ders(expr) -> list:
+    """The der() nodes of expr that are not inside another der(), in the order of a
+    depth-first walk over the arguments (the order sympy's ``replace`` visits them)."""
+    out, stack = [], [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, der):
+            out.append(e)
+        elif not e.is_Atom:
+            stack.extend(reversed(e.args))
+    return out
 
 
 def _check_der_arguments(eq: FlatEquation, var_syms: set) -> None:
@@ -523,28 +561,46 @@ def _check_der_arguments(eq: FlatEquation, var_syms: set) -> None:
                                   "der() applies to variables")
 
 
-def derivative_symbol(x: sp.Symbol, derivatives: dict) -> sp.Symbol:
-    d = derivatives.get(x)
-    if d is None:
-        d = sp.Symbol(f"der({x.name})", real=True)
-        derivatives[x] = d
-    return d
+def _replace_der(expr, var_syms, derivatives, der_syms):
+    """der_syms: the values of ``derivatives``, kept up to date here."""
+    def der_symbol(x):
+        d = derivative_symbol(x, derivatives)
+        der_syms.add(d)
+        return d
 
-
-def _replace_der(expr, var_syms, derivatives):
     def total_derivative(arg):
-        arg = _replace_der(arg, var_syms, derivatives) if arg.has(der) else arg
+        arg = _replace_der(arg, var_syms, derivatives, der_syms) if arg.has(der) else arg
         if arg in var_syms:
-            return derivative_symbol(arg, derivatives)
+            return der_symbol(arg)
         out = sp.diff(arg, time) if arg.has(time) else sp.Integer(0)
-        for s in sorted(arg.free_symbols & (var_syms | set(derivatives.values())),
+        for s in sorted((q for q in symbols_of(arg) if q in var_syms or q in der_syms),
                         key=lambda s: s.name):
             if s in var_syms:
-                var_syms_d = derivative_symbol(s, derivatives)
+                var_syms_d = der_symbol(s)
             else:  # s is already a derivative symbol: its derivative is the next one
                 var_syms.add(s)
-                var_syms_d = derivative_symbol(s, derivatives)
+                var_syms_d = der_symbol(s)
             out += sp.diff(arg, s) * var_syms_d
         return out
 
-    return expr.replace(lambda e: isinstance(e, der), lambda e: total_derivative(e.args[0]))
+    coeffs = {}
+    if signed_terms(expr, 1, coeffs):      # +-x +- der(y) ...: no chain rule needed
+        out = {}
+        for q, c in coeffs.items():
+            if type(q) is der:
+                if q.args[0] not in var_syms:
+                    break
+                q = der_symbol(q.args[0])
+            if q in out:
+                break
+            out[q] = c
+        else:
+            return signed_sum(out)
+    # der() nodes replaced in walk order, so that the der(x) symbols are created in the
+    # order a bottom-up replacement would create them; inner der() in an argument are
+    # expanded by total_derivative itself
+    values = {}
+    for d in _outer_ders(expr):
+        if d not in values:
+            values[d] = total_derivative(d.args[0])
+    return expr.xreplace(values)

@@ -20,16 +20,18 @@ Conventions
   ``LINEAR_VAR`` (linear, coefficient depends on other variables or time: solvable only
   where that coefficient is non-zero), ``NONLINEAR``.
 * ``var_names`` / ``eq_names`` are for messages only; no algorithm may branch on them.
+  ``eq_names`` may be a :class:`Names`, whose entries are printed when first read.
 * ``state_priority[v]``: the user's hint, one of the STATE_SELECT values below
   (higher = more wanted as a state).
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 __all__ = [
     "UNASSIGNED", "LINEAR_CONST", "LINEAR_PARAM", "LINEAR_VAR", "NONLINEAR",
-    "NEVER", "AVOID", "DEFAULT", "PREFER", "ALWAYS", "STATE_SELECT", "Structure",
+    "NEVER", "AVOID", "DEFAULT", "PREFER", "ALWAYS", "STATE_SELECT", "Structure", "Names",
 ]
 
 
@@ -60,6 +62,45 @@ LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR = 0, 1, 2, 3
 NEVER, AVOID, DEFAULT, PREFER, ALWAYS = 0, 1, 2, 3, 4
 STATE_SELECT = {"never": NEVER, "avoid": AVOID, "default": DEFAULT,
                 "prefer": PREFER, "always": ALWAYS}
+
+
+class Names(Sequence):
+    """A list of names for messages whose entries may be made when first read.
+
+    An entry is a string or a function of no arguments that returns one (kept once
+    called).  Equation texts are slow to print and most are never shown, so the
+    structures of large models name their equations this way.  Reads like a list of
+    strings (indexing, slices, iteration, ``==`` with a list) and grows by ``append``.
+    """
+
+    __slots__ = ("_items",)
+
+    def __init__(self, items=()):
+        self._items = list(items._items) if isinstance(items, Names) else list(items)
+
+    def __len__(self) -> int:
+        return len(self._items)
+
+    def __getitem__(self, k):
+        if isinstance(k, slice):
+            return [self[i] for i in range(*k.indices(len(self._items)))]
+        item = self._items[k]
+        if not isinstance(item, str):
+            item = self._items[k] = item()
+        return item
+
+    def append(self, item) -> None:
+        self._items.append(item)
+
+    def __eq__(self, other):
+        if isinstance(other, (Names, list, tuple)):
+            return list(self) == list(other)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __repr__(self) -> str:
+        return repr(list(self))
 
 
 @dataclass

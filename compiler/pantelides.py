@@ -21,7 +21,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import Callable, Optional
 
-from .graph import DEFAULT, LINEAR_VAR, NONLINEAR, UNASSIGNED, Structure
+from .graph import DEFAULT, LINEAR_VAR, NONLINEAR, UNASSIGNED, Names, Structure
 from .structure import IndexReductionFailed, _from_sentinel, _to_sentinel, check_structure
 
 __all__ = ["PantelidesResult", "pantelides", "predict_derivative"]
@@ -93,7 +93,7 @@ class _Work:
     def __init__(self, s: Structure):
         self.s = replace(
             s, graph=list(s.graph), coeff=list(s.coeff), var_names=list(s.var_names),
-            eq_names=list(s.eq_names), state_priority=list(s.state_priority),
+            eq_names=Names(s.eq_names), state_priority=list(s.state_priority),
             var_to_diff=list(s.var_to_diff), diff_to_var=list(s.diff_to_var),
             eq_to_diff=list(s.eq_to_diff), diff_to_eq=list(s.diff_to_eq))
         self.v2d = _from_sentinel(s.var_to_diff)
@@ -128,9 +128,14 @@ class _Work:
         s.eq_to_diff[e] = de
         s.eq_to_diff.append(UNASSIGNED)
         s.diff_to_eq.append(e)
-        s.eq_names.append(f"d/dt({s.eq_names[e]})")
+        s.eq_names.append(_derived_name(s.eq_names, e))
         self.estamp.append(0)
         return de
+
+
+def _derived_name(names: Names, e: int):
+    """The name of d/dt(equation e), made when read: ``d/dt(<name of e>)``."""
+    return lambda: f"d/dt({names[e]})"
 
 
 def _augment(w: _Work, root: int, stamp: int) -> tuple:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .graph import UNASSIGNED, Structure
+from .graph import UNASSIGNED, Names, Structure
 from .pantelides import pantelides
 from .states import select_states
 
@@ -102,6 +102,10 @@ def _index_from_counts(counts, d) -> int:
     return (max(counts, default=0)) + (1 if any(x == 0 for x in d) else 0)
 
 
+def _text_of(eq):
+    return lambda: eq.text
+
+
 def _flat_structure(flat) -> Structure:
     """Incidence of the flat equations (der(x) as its own variable), no coefficients."""
     index, var_to_diff = {}, []
@@ -116,9 +120,10 @@ def _flat_structure(flat) -> Structure:
         add(v.symbol)
     for x, dx in list(flat.derivatives.items()):
         var_to_diff[add(x)] = add(dx)
-    graph = [sorted(index[q] for q in e.residual.free_symbols if q in index)
+    from .symbolic import symbols_of
+    graph = [sorted(index[q] for q in symbols_of(e.residual) if q in index)
              for e in flat.equations]
     return Structure(graph=graph, var_to_diff=var_to_diff,
                      eq_to_diff=[UNASSIGNED] * len(graph),
-                     eq_names=[e.text for e in flat.equations],
+                     eq_names=Names(_text_of(e) for e in flat.equations),
                      var_names=[q.name for q in index])

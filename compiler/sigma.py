@@ -21,9 +21,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
-from scipy.sparse import csr_matrix
-from scipy.sparse.csgraph import min_weight_full_bipartite_matching
 
 from .graph import Structure
 from .structure import StructurallySingular, base_variables
@@ -117,9 +114,14 @@ def _transversal(n: int, i, j, val) -> np.ndarray:
         big = (n + 1) * (top - val.min(initial=0.0) + 1)
         a = np.full((n, n), -big)
         a[i, j] = val
+        # scipy.optimize (with scipy.special, .spatial and .fft) is the largest import
+        # of a first compile; only this call needs it
+        from scipy.optimize import linear_sum_assignment
         _, cols = linear_sum_assignment(a, maximize=True)
         ok = finite[np.arange(n), cols].all()
     else:       # weights top+1-sigma are all >= 1: no entry is an implicit zero
+        from scipy.sparse import csr_matrix
+        from scipy.sparse.csgraph import min_weight_full_bipartite_matching
         w = csr_matrix((top + 1 - val, (i, j)), shape=(n, n))
         try:
             _, cols = min_weight_full_bipartite_matching(w)

@@ -15,22 +15,28 @@ linear-combination conversion (:mod:`acausal.compiler.conversion`).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import sympy as sp
+from sympy.core.add import _addsort
 
-from ..components.symbols import time
+from ..components.symbols import der, time
 from .derivative import partial
-from .flatten import derivative_symbol
 from .graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER, STATE_SELECT,
-                    UNASSIGNED, Structure)
+                    UNASSIGNED, Names, Structure)
 
-__all__ = ["SymbolicEquation", "SymbolicSystem", "coefficient_kind"]
+__all__ = ["SymbolicEquation", "SymbolicSystem", "coefficient_kind", "sum_partial",
+           "symbols_of", "derivative_symbol", "signed_terms", "signed_sum"]
 
 
 @dataclass
 class SymbolicEquation:
+    """An equation of the system; ``text`` is printed from ``source`` when first read
+    (the text itself, an object with a ``text``, e.g. the FlatEquation, or a function of
+    no arguments returning it): most texts of a large model are never shown."""
+
     residual: sp.Expr
-    text: str                 # as the user wrote it (for the original equations)
+    source: object            # what ``text`` is printed from (see the class docstring)
     component: str
     component_class: str
     kind: str = "equation"
@@ -41,6 +47,14 @@ class SymbolicEquation:
     @property
     def where(self) -> str:
         return f"{self.component or '(model)'} ({self.component_class})"
+
+    @property
+    def text(self) -> str:
+        """As the user wrote it (for the original equations)."""
+        src = self.source
+        if not isinstance(src, str):
+            src = self.source = src() if callable(src) else src.text
+        return src
 
     def name(self, system: "SymbolicSystem") -> str:
         """The source equation with its component, and the differentiations applied:
@@ -72,7 +86,7 @@ class SymbolicSystem:
 
     @classmethod
     def from_flat(cls, flat) -> "SymbolicSystem":
-        eqs = [SymbolicEquation(e.residual, e.text, e.component, e.component_class, e.kind)
+        eqs = [SymbolicEquation(e.residual, e, e.component, e.component_class, e.kind)
                for e in flat.equations]
         system = cls(eqs, [], {p.symbol for p in flat.parameters},
                      {v.symbol: v for v in flat.variables}, dict(flat.derivatives))
@@ -113,7 +127,7 @@ class SymbolicSystem:
 
     # -- Structure ---------------------------------------------------------------------
     def incidence(self, r: sp.Expr) -> tuple[list, dict]:
-        vars_ = sorted(self.index[s] for s in r.free_symbols if s in self.index)
+        vars_ = sorted(self.index[s] for s in symbols_of(r) if s in self.index)
         coeff = {v: coefficient_kind(r, self.symbols[v], self.index, self.parameters)
                  for v in vars_}
         return vars_, coeff
@@ -137,8 +151,11 @@ class SymbolicSystem:
                     for sym, info in zip(self.symbols, self.base_infos())]
         return Structure(graph=graph, var_to_diff=var_to_diff,
                          eq_to_diff=[UNASSIGNED] * len(graph), coeff=coeff,
-                         var_names=names, eq_names=[e.name(self) for e in self.equations],
+                         var_names=names, eq_names=Names(self._namer(e) for e in self.equations),
                          state_priority=priority)
+
+    def _namer(self, eq: SymbolicEquation):
+        return lambda: eq.name(self)
 
     # -- differentiation (the Pantelides callback) --------------------------------------
     def differentiate(self, s: Structure, e: int):
@@ -150,7 +167,7 @@ class SymbolicSystem:
         self._sync_variables(s)
         eq = self.equations[e]
         dr = self.time_derivative(eq.residual)
-        self.equations.append(SymbolicEquation(dr, f"d/dt({eq.text})", eq.component,
+        self.equations.append(SymbolicEquation(dr, lambda: f"d/dt({eq.text})", eq.component,
                                                eq.component_class, eq.kind,
                                                derivative_of=e, order=eq.order + 1))
         self._sync_variables(s)
@@ -160,9 +177,9 @@ class SymbolicSystem:
         """d/dt r = sum_v dr/dv der(v) + dr/dt over the variables v of r, creating the
         der(v) symbols it needs (appended to ``symbols`` in the order of v)."""
         dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
-        for sym in sorted((q for q in r.free_symbols if q in self.index),
+        for sym in sorted((q for q in symbols_of(r) if q in self.index),
                           key=lambda q: self.index[q]):
-            dr += partial(r, sym) * derivative_symbol(sym, self.derivatives)
+            dr += sum_partial(r, sym) * derivative_symbol(sym, self.derivatives)
             self._add_symbol(self.derivatives[sym])
         return dr
 
@@ -175,11 +192,127 @@ class SymbolicSystem:
 
 def coefficient_kind(r: sp.Expr, s: sp.Symbol, index: dict, parameters: set) -> int:
     """How symbol s enters residual r (graph.LINEAR_CONST ... NONLINEAR)."""
-    c = partial(r, s)
-    if c.has(s):
+    c = sum_partial(r, s)
+    if s in _symbol_nodes(c):           # c.has(s)
         return NONLINEAR
     if c.is_number:
         return LINEAR_CONST if c != 0 else NONLINEAR
-    if c.free_symbols <= parameters:
+    if symbols_of(c) <= parameters:
         return LINEAR_PARAM
     return LINEAR_VAR
+
+
+def sum_partial(r: sp.Expr, x: sp.Symbol) -> sp.Expr:
+    """``partial(r, x)``, the same expression, without a walk over all of a sum.
+
+    d/dx of a sum is the sum of d/dx of the terms that contain x.  A node's balance of
+    currents or forces has one term per connected component, and every variable of it
+    needs its coefficient: looking through all terms for each would be quadratic, so a
+    sum is indexed once by which of its terms contain which symbols.
+    """
+    if not r.is_Add:
+        return partial(r, x)
+    terms = _terms_with(r).get(x)
+    if terms is None:
+        return sp.Integer(0)
+    return sp.Add(*[partial(t, x) for t in terms])
+
+
+@lru_cache(maxsize=4096)
+def _terms_with(r: sp.Expr) -> dict:
+    """symbol -> the terms of the sum r that contain it, in the order of r's arguments
+    (every symbol a term has, as ``has`` sees them)."""
+    out = {}
+    for t in r.args:
+        for q in _symbol_nodes(t):
+            out.setdefault(q, []).append(t)
+    return out
+
+
+def _symbol_nodes(e: sp.Basic) -> set:
+    """``e.atoms(Symbol)``: every Symbol node of the tree, bound ones included (what
+    ``has`` finds)."""
+    if e.is_Symbol:
+        return {e}
+    out, stack = set(), [e]
+    while stack:
+        node = stack.pop()
+        if node.is_Symbol:
+            out.add(node)
+        else:
+            stack.extend(node.args)
+    return out
+
+
+# -- expression helpers, shared with flattening and alias elimination -------------------
+@lru_cache(maxsize=200_000)
+def symbols_of(expr: sp.Basic) -> frozenset:
+    """``expr.free_symbols``, computed once per expression: every pass asks for it, and
+    sympy walks the whole tree each time.  Sums, products and powers are walked here;
+    any other node answers for itself (it may bind symbols, as an integral does)."""
+    if expr.is_Symbol:
+        return frozenset((expr,))
+    out, stack = set(), [expr]
+    while stack:
+        e = stack.pop()
+        if e.is_Symbol:
+            out.add(e)
+        elif e.is_Atom:
+            continue
+        elif type(e) in _PLAIN_NODES:
+            stack.extend(e.args)
+        else:
+            out |= e.free_symbols
+    return frozenset(out)
+
+
+_PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
+
+
+def derivative_symbol(x: sp.Symbol, derivatives: dict) -> sp.Symbol:
+    d = derivatives.get(x)
+    if d is None:
+        d = sp.Symbol(f"der({x.name})", real=True)
+        derivatives[x] = d
+    return d
+
+
+# Most equations of a model, and all of its connections, are sums of symbols with signs
+# (v = p.v - n.v, 0 = p.i + n.i, i = p.i, w = der(phi)).  Flattening builds their
+# residuals from the terms, in the order sympy's Add would give them (sympy's own sort,
+# _addsort): the same expression as lhs - rhs without the general machinery of Add and
+# Mul.
+_MINUS = sp.S.NegativeOne
+
+
+def _plain_term(t) -> bool:
+    """A symbol, or der() of a symbol."""
+    return type(t) is sp.Symbol or (type(t) is der and type(t.args[0]) is sp.Symbol)
+
+
+def signed_terms(side, sign: int, coeffs: dict) -> bool:
+    """Add the terms of side, a sum of +-symbols and +-der(symbol) (or 0), to coeffs with
+    sign; False if side is anything else or repeats a term (sympy combines those)."""
+    if side is sp.S.Zero:
+        return True
+    for t in (side.args if side.is_Add else (side,)):
+        if _plain_term(t):
+            q, c = t, sign
+        elif (t.is_Mul and len(t.args) == 2 and t.args[0] is _MINUS
+              and _plain_term(t.args[1])):
+            q, c = t.args[1], -sign
+        else:
+            return False
+        if q in coeffs:
+            return False
+        coeffs[q] = c
+    return True
+
+
+def signed_sum(coeffs: dict) -> sp.Expr:
+    """sum of c * q over coeffs {symbol q: +-1}, as sympy's Add builds it."""
+    terms = [q if c == 1 else sp.Mul._from_args((_MINUS, q)) for q, c in coeffs.items()]
+    if len(terms) == 1:
+        return terms[0]
+    _addsort(terms)
+    return sp.Add._from_args(terms)

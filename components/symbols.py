@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import sympy as sp
 from sympy import S
+from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "sympify_value",
@@ -71,20 +72,52 @@ class Equation:
 
 
 class _TextPrinter(StrPrinter):
-    """sympy's str printer with a fast path for the term order of sums.
+    """sympy's str printer with fast paths for the order of terms and factors.
 
     sympy orders the terms of a sum lexicographically by their monomials, descending
     (``Expr.as_ordered_terms``), and builds that order through ``Expr.as_terms``, which
     converts every coefficient to a complex number: most of the time of printing a model.
     For sums of terms ``c * x1**k1 * x2**k2 ...`` (c a rational or float, x_i symbols of
     distinct names, k_i integers) the same order is computed here directly, on sparse
-    monomials; any other sum takes sympy's path, so the text is always sympy's.
+    monomials.  Factors of a product are ordered by their sort keys, and the key of a
+    sum among them is again built through ``as_terms``; for products of a number,
+    symbols and their integer powers, at most one sum and at most one function the
+    order is known from the classes alone (numbers, symbols by name, the sum, the
+    function).  Anything else takes sympy's path, so the text is always sympy's.
     """
 
     def _print(self, expr, **kwargs) -> str:
         if type(expr) is sp.Symbol:      # what the dispatch would find: _print_Symbol
             return expr.name
         return super()._print(expr, **kwargs)
+
+    def _print_Mul(self, expr):
+        ordered = _ordered_factors(expr) if self.order is None else None
+        if ordered is None:
+            return super()._print_Mul(expr)
+        # StrPrinter._print_Mul from here on, for the factors it would have ordered so
+        sign, items = ordered
+        prec = precedence(expr)
+        num, den = [], []
+        for item in items:
+            if item.is_Pow and item.exp < 0:
+                den.append(item.base if item.exp is S.NegativeOne
+                           else sp.Pow(item.base, -item.exp, evaluate=False))
+            elif item.is_Rational:
+                if item.p != 1:
+                    num.append(sp.Rational(item.p))
+                if item.q != 1:
+                    den.append(sp.Rational(item.q))
+            else:
+                num.append(item)
+        num = num or [S.One]
+        a_str = [self.parenthesize(x, prec, strict=False) for x in num]
+        b_str = [self.parenthesize(x, prec, strict=False) for x in den]
+        if not den:
+            return sign + "*".join(a_str)
+        if len(den) == 1:
+            return sign + "*".join(a_str) + "/" + b_str[0]
+        return sign + "*".join(a_str) + "/(%s)" % "*".join(b_str)
 
     def _as_ordered_terms(self, expr, order=None):
         if (order or self.order) is None and expr.is_Add:
@@ -142,6 +175,39 @@ def _lex_ordered_terms(args):
     if any(a[0] == b[0] for a, b in zip(keyed, keyed[1:])):
         return None          # equal monomials (an unevaluated sum): sympy's tie-break
     return [t for _, t in keyed]
+
+
+def _ordered_factors(expr):
+    """(sign, factors) as sympy's ``_print_Mul`` orders them, or None where the classes
+    alone do not settle the order (see :class:`_TextPrinter`)."""
+    args = expr.args
+    if not expr.is_commutative or args[0] is S.One or any(
+            a.is_Number or (a.is_Pow and all(x.is_Integer for x in a.args))
+            for a in args[1:]):
+        return None               # sympy prints an unevaluated product as it stands
+    c, e = expr.as_coeff_Mul()
+    if not (c.is_Rational or c.is_Float):
+        return None
+    sign = ""
+    if c < 0:
+        c, sign = -c, "-"
+    named, add, fn = [], None, None
+    for f in (e.args if e.is_Mul else (e,)):
+        if type(f) is sp.Symbol:
+            named.append((f.name, f))
+        elif f.is_Pow and type(f.base) is sp.Symbol and f.exp.is_Integer:
+            named.append((f.base.name, f))
+        elif f.is_Add and add is None:
+            add = f
+        elif isinstance(f, sp.Function) and fn is None and f.class_key()[0] == 4:
+            fn = f
+        else:
+            return None
+    if len({n for n, _ in named}) < len(named):
+        return None
+    named.sort(key=lambda nf: nf[0])
+    items = ([] if c is S.One else [c]) + [f for _, f in named]
+    return sign, items + [x for x in (add, fn) if x is not None]
 
 
 _PRINTER = _TextPrinter()
