@@ -8,14 +8,12 @@ variables are equal, and the through variables sum to zero, inside ports counted
 +1 and outside ports with -1.  A port that is never connected from outside its own
 component (for the root: its own ports) gets through = 0.
 
-Flattening is where the names of equations and connections become known, so it checks
-what the components cannot check themselves (raising the ``ModelError`` subclasses of
-``components.component``): every symbol in an equation belongs to the model, every
-connected port lies inside the component that connects it, ``der()`` is applied to
-something that varies, parameter bindings depend only on parameters and are not
-circular, values respect their declared [min, max], and an infinite parameter value
-leaves the equations it appears in finite (``1/Tt`` with Tt = inf is 0; ``R*i`` with
-R = inf is not a number).
+Flattening, where the names of equations and connections become known, checks what
+the components cannot (raising ``ModelError`` subclasses): every symbol of an equation
+belongs to the model, a connected port lies inside the component that connects it,
+``der()`` applies to something that varies, parameter bindings depend on parameters
+only and are not circular, values respect [min, max], and an infinite parameter leaves
+its equations finite (``1/Tt`` with Tt = inf is 0; ``R*i`` with R = inf is not).
 """
 from __future__ import annotations
 
@@ -33,8 +31,14 @@ from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
 __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
 
 
+class _Located:
+    @property
+    def where(self) -> str:
+        return f"{self.component or '(model)'} ({self.component_class})"
+
+
 @dataclass
-class FlatVariable:
+class FlatVariable(_Located):
     name: str
     symbol: sp.Symbol
     attrs: VariableAttributes
@@ -43,13 +47,9 @@ class FlatVariable:
     kind: str = "variable"
     hint: str = ""            # the port's likely-mistake hint, for port variables
 
-    @property
-    def where(self) -> str:
-        return f"{self.component or '(model)'} ({self.component_class})"
-
 
 @dataclass
-class FlatParameter:
+class FlatParameter(_Located):
     name: str
     symbol: sp.Symbol
     value: object
@@ -60,10 +60,6 @@ class FlatParameter:
     min: float | None = None
     max: float | None = None
 
-    @property
-    def where(self) -> str:
-        return f"{self.component or '(model)'} ({self.component_class})"
-
     def describe(self) -> str:
         """``'R1' (Resistor): parameter R``, as the component's own errors say it."""
         owner = f"'{self.component}'" if self.component else "the model"
@@ -72,7 +68,7 @@ class FlatParameter:
 
 
 @dataclass
-class FlatEquation:
+class FlatEquation(_Located):
     residual: sp.Expr
     source: object            # the text; or the Equation, or the sum (printed "sum = 0"),
                               # it is printed from on demand
@@ -80,10 +76,6 @@ class FlatEquation:
     component_class: str
     kind: str = "equation"       # equation | connect | unconnected | initial
     label: str | None = None
-
-    @property
-    def where(self) -> str:
-        return f"{self.component or '(model)'} ({self.component_class})"
 
     @property
     def text(self) -> str:
@@ -227,12 +219,13 @@ def _flat_equation(eq: Equation, comp: Component, kind: str) -> FlatEquation:
 
 # -- connections -----------------------------------------------------------------------
 class _UnionFind:
+    """Connection sets; the root of a set is its first port in declaration order."""
+
     def __init__(self):
         self.parent = {}
 
     def find(self, a):
-        self.parent.setdefault(a, a)
-        root = a
+        root = self.parent.setdefault(a, a)
         while self.parent[root] != root:
             root = self.parent[root]
         while self.parent[a] != root:  # path compression
@@ -240,9 +233,8 @@ class _UnionFind:
         return root
 
     def union(self, a, b):
-        ra, rb = self.find(a), self.find(b)
-        if ra != rb:
-            self.parent[max(ra, rb, key=_order_key)] = min(ra, rb, key=_order_key)
+        ra, rb = sorted((self.find(a), self.find(b)), key=_order_key)
+        self.parent[rb] = ra
 
 
 def _order_key(node):
@@ -475,10 +467,8 @@ def _check_bounds(flat: FlatModel, resolved: dict) -> None:
 
 def _as_sympy_number(value) -> sp.Expr:
     x = float(value)
-    if x == float("inf"):
-        return sp.oo
-    if x == float("-inf"):
-        return -sp.oo
+    if abs(x) == float("inf"):
+        return sp.oo if x > 0 else -sp.oo
     return sp.sympify(value) if isinstance(value, (int, sp.Basic)) else sp.Float(x)
 
 
