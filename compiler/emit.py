@@ -109,6 +109,8 @@ class Emitter:
             return []
         if node.is_Pow and node.exp.is_Number:
             return [node.base]
+        if node.is_Mul:
+            return _factors(node)
         return list(node.args)
 
     def _arg(self, a, done, names):
@@ -302,6 +304,12 @@ class _Neg(str):
         return out
 
 
+def _factors(mul) -> list:
+    """The operands a product is printed from: a factor b**-r is printed as a division
+    by b**r, so b (not the power) is what the product reads."""
+    return [f.base if f.is_Pow and f.exp.is_Number and f.exp < 0 else f for f in mul.args]
+
+
 def _shared(root) -> set:
     """Non-atomic nodes reached more than once outside if-expression branches."""
     seen, shared = set(), set()
@@ -318,6 +326,8 @@ def _shared(root) -> set:
             continue
         if node.is_Pow and node.exp.is_Number:
             stack.append(node.base)
+        elif node.is_Mul:
+            stack.extend(_factors(node))
         else:
             stack.extend(node.args)
     # a negated copy -x of a shared x is cheap to print again
