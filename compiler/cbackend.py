@@ -15,6 +15,10 @@ Every generated function keeps the contract ``f(t, y, p, m, out) -> out``.
   output is not finite is repeated by the Python function, so the error, its message
   and the equation it names are those of the numpy backend.
 
+A pickled model (:mod:`acausal.compiler.cache`) keeps the C source and the library's
+path: :func:`reattach` loads the library again, or builds it from the source when the
+file is gone.  Loading needs neither sympy nor the code generator.
+
 The cache is ``$ACAUSAL_CACHE`` or ``~/.cache/acausal``.  The compiler is ``$CC`` or the
 first of cc, gcc, clang on the path; without one, ``backend="auto"`` uses the numpy
 backend and says so in the index report, and ``backend="c"`` raises
@@ -24,7 +28,6 @@ from __future__ import annotations
 
 import ctypes
 import hashlib
-import math
 import os
 import shutil
 import subprocess
@@ -33,10 +36,9 @@ import tempfile
 import numpy as np
 
 from ..errors import BackendError
-from .codegen import combinations, row_groups
-from .emit import Emitter
 
-__all__ = ["BackendError", "c_source", "build", "attach", "compiler_available", "cache_dir"]
+__all__ = ["BackendError", "c_source", "build", "attach", "reattach", "compiler_available",
+           "cache_dir"]
 
 PIECE = 400
 FLAGS = ["-O2", "-fPIC", "-ffp-contract=off"]
@@ -78,6 +80,9 @@ def c_source(programs: dict) -> tuple[str, dict]:
 
 
 def _c_program(prefix, prog) -> tuple[str, int]:
+    # imported here: printing needs sympy, loading a library built before does not
+    from .codegen import combinations, row_groups
+    from .emit import Emitter
     n_a = len(prog.assigned)
     slot = {}
     for k, g in prog.grads.items():
@@ -174,7 +179,7 @@ def _c_function(name, statements, calls=(), n_out=0) -> str:
     lines += [f"  {c}(PASS);" for c in calls]
     lines += [f"  {name}_{n}(PASS);" for n in range(len(pieces))]
     # how many outputs are not finite: the caller repeats such a call in Python
-    lines += [f"  int bad = 0;", f"  for (int i = 0; i < {n_out}; ++i) bad += !isfinite(out[i]);",
+    lines += ["  int bad = 0;", f"  for (int i = 0; i < {n_out}; ++i) bad += !isfinite(out[i]);",
               "  return bad;", "}"]
     return "\n".join(lines) + "\n"
 
@@ -268,29 +273,58 @@ class _CFunction:
 
 def attach(code, lib_path: str, prefix: str, n_work: int):
     """Replace the Python functions of a GeneratedCode by the compiled ones (the Python
-    ones stay as the fallback)."""
-    lib = ctypes.CDLL(lib_path)
+    ones stay as the fallback).  What the wrappers need is kept in ``code.c_layout``, so
+    that a loaded model can attach the library again without the Program."""
     prog = code.program
     sizes = (sum(1 for w in prog.refs.values() if w[0] == "y"),
              sum(1 for w in prog.refs.values() if w[0] == "p"),
              1 + max((w[1] for w in prog.refs.values() if w[0] == "m"), default=-1))
-    argtypes = [ctypes.c_double] + [ctypes.c_void_p] * 5
+    n_out = {}
     for name in FUNCTIONS:
-        py = getattr(code, name, None)
-        if py is None:
-            continue
-        fn = getattr(lib, f"{prefix}{name}")
-        fn.argtypes = argtypes
-        fn.restype = ctypes.c_int
-        n_out = {"residual": code.n_rows, "jacobian": len(code.jac_rows),
-                 "roots": code.n_roots}.get(name)
-        if n_out is None:
-            n_out = len(code.program.functions[name])
-        setattr(code, name, _CFunction(fn, py, n_work, *sizes, n_out))
-    code.backend = "c"
+        if getattr(code, name, None) is not None:
+            n_out[name] = {"residual": code.n_rows, "jacobian": len(code.jac_rows),
+                           "roots": code.n_roots}.get(name)
+            if n_out[name] is None:
+                n_out[name] = len(prog.functions[name])
+    code.c_layout = {"prefix": prefix, "n_work": n_work, "sizes": sizes, "n_out": n_out}
+    _wrap(code, ctypes.CDLL(lib_path), code.c_layout)
     code.library = lib_path
     return code
 
+
+def _wrap(code, lib, layout) -> None:
+    argtypes = [ctypes.c_double] + [ctypes.c_void_p] * 5
+    for name, n_out in layout["n_out"].items():
+        py = getattr(code, name)
+        py = getattr(py, "fallback", py)
+        fn = getattr(lib, f"{layout['prefix']}{name}")
+        fn.argtypes = argtypes
+        fn.restype = ctypes.c_int
+        setattr(code, name, _CFunction(fn, py, layout["n_work"], *layout["sizes"], n_out))
+    code.backend = "c"
+
+
+def reattach(code, lib_path: str, source: str, layout: dict) -> str:
+    """Put the library ``lib_path`` behind the Python functions of ``code`` (a loaded
+    model), building it again from ``source`` when it is missing or does not load
+    (another machine, a cleaned cache).  Returns the path of the library in use; raises
+    :class:`BackendError` when it can be neither loaded nor built."""
+    try:
+        if not os.path.exists(lib_path):
+            # dlopen would hand back a deleted library still mapped in this process
+            raise OSError(f"{lib_path} is gone")
+        lib = ctypes.CDLL(lib_path)
+    except OSError:
+        lib_path = build(source)
+        try:
+            lib = ctypes.CDLL(lib_path)
+        except OSError as exc:
+            raise BackendError(f"the rebuilt library {lib_path} does not load: {exc}") from exc
+    _wrap(code, lib, layout)
+    code.library = lib_path
+    code.c_source = source
+    code.c_layout = layout
+    return lib_path
 
 
 BACKENDS = ("auto", "c", "numpy")
@@ -315,6 +349,7 @@ def bind(mc, backend: str, report) -> None:
         lib = build(source)
         for prefix, code in codes.items():
             attach(code, lib, prefix, sizes[prefix])
+            code.c_source = source       # one string, shared: a pickle holds it once
     except (BackendError, OSError) as exc:
         if backend == "c":
             raise BackendError(str(exc)) from exc

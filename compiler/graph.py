@@ -102,6 +102,9 @@ class Names(Sequence):
     def __repr__(self) -> str:
         return repr(list(self))
 
+    def __reduce__(self):
+        return (Names, (list(self),))     # copies and pickles hold the texts themselves
+
 
 @dataclass
 class Structure:

@@ -19,6 +19,7 @@ of pendulums or gears the total is ~linear in the model size.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from functools import partial
 from typing import Callable, Optional
 
 from .graph import DEFAULT, LINEAR_VAR, NONLINEAR, UNASSIGNED, Names, Structure
@@ -135,7 +136,11 @@ class _Work:
 
 def _derived_name(names: Names, e: int):
     """The name of d/dt(equation e), made when read: ``d/dt(<name of e>)``."""
-    return lambda: f"d/dt({names[e]})"
+    return partial(_name_of_derivative, names, e)     # picklable, unlike a lambda
+
+
+def _name_of_derivative(names: Names, e: int) -> str:
+    return f"d/dt({names[e]})"
 
 
 def _augment(w: _Work, root: int, stamp: int) -> tuple:

@@ -13,28 +13,18 @@ counts of every pass go into the index report.  The result is a
 """
 from __future__ import annotations
 
-import math
 import time as _time
 from dataclasses import replace
 
 import numpy as np
-import sympy as sp
 
 from ..components.component import Component
-from .alias import eliminate_aliases
-from .balance import check_balance
-from .codegen import extract_relations, generate
-from .derivative import partial
 from .graph import UNASSIGNED
-from .flatten import flatten
-from .causalize import causalize, full_form
-from .conversion import convert_model
-from .discrete import freeze_integer_functions
 from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
-from .numeric import CoefficientValues
-from .reduction import as_written, reduce_index
 from .report import IndexReport
-from .symbolic import SymbolicSystem
+
+# The passes and sympy are imported where they run: a model found in the compile cache
+# is returned without importing either.
 
 __all__ = ["PASSES", "compile_model"]
 
@@ -42,13 +32,52 @@ PASSES = ("flatten", "discrete", "alias", "balance", "conversion", "index_reduct
           "state_selection", "assemble", "codegen")
 
 
-def compile_model(model: Component, backend: str = "auto") -> ModelCode:
+def compile_model(model: Component, backend: str = "auto", cache=False) -> ModelCode:
     """Compile a model instance to generated code and name maps (see the module docstring);
     :class:`acausal.runtime.CompiledModel` runs it.  ``backend``: ``"c"``, ``"numpy"`` or
-    ``"auto"`` (:func:`acausal.compiler.cbackend.bind`)."""
+    ``"auto"`` (:func:`acausal.compiler.cbackend.bind`).
+
+    ``cache`` (:mod:`acausal.compiler.cache`): ``True`` loads an unchanged model from the
+    compile cache by the key of its flat model -- exact: the flattened equations,
+    variables and parameter values are what the passes read -- and stores a new one;
+    ``"tree"`` first tries the key of the instance tree, which needs neither sympy nor
+    flattening but cannot see what an ``equations()`` reads from outside the model's
+    classes and modules at call time (a file, the environment, a mutable object), so it
+    is only taken when asked for; ``False`` compiles afresh.  The report of a loaded
+    model says so in a note, and its timings are those of the original compile plus
+    ``cache_lookup``."""
+    if cache not in (True, False, "tree"):
+        raise ValueError(f"cache must be True, False or 'tree', got {cache!r}")
+    from . import cache as store
+    use_cache = bool(cache) and store.enabled()
+    t0 = _time.perf_counter()
+    tree = store.tree_key(model, backend) if use_cache and cache == "tree" else None
+    if tree is not None:
+        found = store.lookup(tree=tree)
+        if found is not None:
+            model._bind("")     # the instance named as a compile leaves it (no sympy)
+            return _from_cache(found, _time.perf_counter() - t0, "its instance tree")
+    t_tree = _time.perf_counter() - t0
+    from .alias import eliminate_aliases
+    from .balance import check_balance
+    from .conversion import convert_model
+    from .discrete import freeze_integer_functions
+    from .flatten import flatten
+    from .reduction import as_written, reduce_index
     report = IndexReport(model_name=type(model).__name__)
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
+    key = None
+    if use_cache:
+        t1 = _time.perf_counter()
+        key = store.flat_key(flat, backend)
+        found = store.lookup(key) if key is not None else None
+        if found is not None:
+            if tree is not None:
+                store.store_index(tree, key)
+            lookup = _time.perf_counter() - t1 + report.timings["flatten"] + t_tree
+            return _from_cache(found, lookup, "its flat model")
+        report.timings["cache_key"] = _time.perf_counter() - t1 + t_tree
     discretes = clock("discrete", freeze_integer_functions, flat)
     _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
@@ -75,10 +104,27 @@ def compile_model(model: Component, backend: str = "auto") -> ModelCode:
     clock("report", report.fill, system, reduction, out)
     from .cbackend import bind
     clock("c_backend", bind, out, backend, report)
+    if key is not None:
+        t2 = _time.perf_counter()
+        store.store(key, out, tree)
+        report.timings["cache_store"] = _time.perf_counter() - t2    # not in the entry
     return out
 
 
+def _from_cache(found, seconds, how) -> ModelCode:
+    from .cache import load_notes
+    mc, _ = found
+    report = mc.report
+    report.timings["cache_lookup"] = seconds
+    report.notes += load_notes(mc)
+    report.notes.append(f"came from the compile cache (found by {how}, loaded in "
+                        f"{seconds * 1e3:.1f} ms); the other timings are those of the "
+                        "original compile")
+    return mc
+
+
 def _symbolic_system(reduced, discretes):
+    from .symbolic import SymbolicSystem
     system = SymbolicSystem.from_flat(reduced)
     system.parameters |= {d.symbol for d in discretes}   # constant between events
     return system, system.structure()
@@ -110,6 +156,10 @@ def _reinit_targets_are_states(flat) -> None:
 
 
 def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> ModelCode:
+    import sympy as sp
+    from .causalize import causalize, full_form
+    from .codegen import extract_relations, generate
+    from .numeric import CoefficientValues
     syms = system.symbols
     if reduction.dynamic:
         caus = full_form(reduction, len(syms), len(system.equations))
@@ -173,7 +223,8 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> M
               "structural_zeros": sorted(zeros),
               "self_scaled": _self_scaled(system, z_syms),
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
-                                   if p.min is not None or p.max is not None}})
+                                   if p.min is not None or p.max is not None},
+              "derived_bounds": _derived_bounds(reduced.parameters, psyms)})
     if reduced.whens:
         out.whens = WhenCode(generate(when_rows, z_syms, psyms, len(modes), None, assigned,
                                       discretes=dsyms),
@@ -185,6 +236,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> M
 
 def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -> str:
     """The relation as written, with the equation it is part of."""
+    import sympy as sp
     i = origin[k]
     n_a, n_r = len(assigned), len(caus.residual_eqs)
     if i < n_a:
@@ -220,6 +272,7 @@ def _time_linear(items, assigned, frozen) -> list:
     """Indices of the items (relations' lhs - rhs, floor arguments) that are functions of
     time alone, linear in it, with coefficients of parameters and frozen values: their
     next zero is known before the integrator gets there (exact time events)."""
+    import sympy as sp
     from ..components.symbols import time
     explicit = {}
     allowed = set(frozen) | {time}
@@ -303,6 +356,7 @@ def _adjacency(rows, cols, n_rows) -> list:
 
 def _when_rows(whens, z_syms, caus, pairs):
     """Rows: each when-condition as 1/0, then each reinit value (pre(x) is x here)."""
+    import sympy as sp
     from ..components.component import ModelError
     from ..components.symbols import pre
     z_index = {s: k for k, s in enumerate(z_syms)}
@@ -328,6 +382,8 @@ def solve_linear(residual, x):
     A sum is split into the terms with and without x (the canonical terms of a sum stay
     canonical, so no rebuilding of the whole sum is needed: a node balance of n terms
     costs n)."""
+    import sympy as sp
+    from .derivative import partial
     c = partial(residual, x)
     if residual.is_Add:
         rest = [a for a in residual.args if not a.has(x)]
@@ -390,6 +446,7 @@ def _start(system, k) -> float:
 def _output_map(flat, aliases, index, psyms) -> dict:
     """Every flat variable's name -> (sign, y index), or (None, f) with f(p) its constant
     value (a variable fixed to an expression of parameters)."""
+    import sympy as sp
     by_name = {s.name: k for s, k in index.items()}
     out, constant = {}, {}
     for v in flat.variables:
@@ -409,18 +466,35 @@ def _output_map(flat, aliases, index, psyms) -> dict:
     return out
 
 
+def _derived_bounds(parameters, psyms) -> list:
+    """(name, min, max, f(p)) of every bounded parameter whose value is an expression of
+    tunable ones (``Resistor(R=ac.ref("R"))``): tuning those must respect its bounds, as
+    compiling with the same values does."""
+    import sympy as sp
+    tunable = set(psyms)
+    derived = {}
+    for q in parameters:
+        if (q.min is None and q.max is None) or _is_number(q.value):
+            continue
+        value = sp.sympify(q.value)
+        if value.free_symbols and value.free_symbols <= tunable:
+            derived[q.name] = (q, value)
+    funcs = dict(_parameter_functions({n: v for n, (_, v) in derived.items()}, psyms))
+    return [(n, q.min, q.max, funcs[n]) for n, (q, _) in derived.items()]
+
+
 def _parameter_functions(exprs: dict, psyms):
-    """f(p) for each expression of parameters, from one generated module."""
+    """f(p) for each expression of parameters, each from its own generated source (a
+    :class:`~acausal.compiler.cache.ParameterFunction`: picklable)."""
+    from .cache import ParameterFunction
     from .emit import Emitter
     pos = {q: k for k, q in enumerate(psyms)}
     em = Emitter("py", lambda q: f"p[{pos[q]}]")
-    lines = ["import math"]
-    for n, e in enumerate(exprs.values()):
-        lines += [f"def _f{n}(p):"] + ["    " + ln for ln in em.assign("_v", e)]
-        lines.append("    return _v")
-    namespace = {"math": math}
-    exec(compile("\n".join(lines) + "\n", "<acausal constants>", "exec"), namespace)
-    return [(name, namespace[f"_f{n}"]) for n, name in enumerate(exprs)]
+    out = []
+    for name, e in exprs.items():
+        lines = ["def f(p):"] + ["    " + ln for ln in em.assign("_v", e)] + ["    return _v"]
+        out.append((name, ParameterFunction("\n".join(lines) + "\n", "f")))
+    return out
 
 
 def _initial_rows(system, reduced, reduction, caus):

@@ -10,6 +10,7 @@ selection at run time.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import partial
 
 from .graph import UNASSIGNED, Names, Structure
 from .pantelides import pantelides
@@ -103,7 +104,12 @@ def _index_from_counts(counts, d) -> int:
 
 
 def _text_of(eq):
-    return lambda: eq.text
+    """The text of a flat equation, printed when read (a picklable bound call)."""
+    return partial(_text, eq)
+
+
+def _text(eq) -> str:
+    return eq.text
 
 
 def _flat_structure(flat) -> Structure:

@@ -3,13 +3,40 @@
 ``compiled.report`` prints as text (``print(report)``), converts to a dict / JSON
 (``report.as_dict()``) and draws the incidence with its BLT ordering as Graphviz DOT
 text (``report.to_dot()``) or with matplotlib (``report.plot()``).
+
+A pickled report (a saved or cached model) keeps everything it prints, converts and
+draws, as plain data: the alias table as an :class:`AliasSummary`, the conversion as
+its dict; the compiler's intermediate ``reduction`` (integer structures, sympy
+equations) is not kept.  Unpickling it needs no sympy.
 """
 from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
 
-__all__ = ["IndexReport"]
+__all__ = ["IndexReport", "AliasSummary"]
+
+
+@dataclass
+class AliasSummary:
+    """The alias table as plain data: ``aliases[name] = (sign, representative)``,
+    ``constants[name]`` the text of a constant value, and the equation counts."""
+
+    aliases: dict = field(default_factory=dict)
+    constants: dict = field(default_factory=dict)
+    equations_before: int = 0
+    equations_after: int = 0
+
+    def resolve(self, name: str):
+        return self.aliases.get(name, (1, name))
+
+    @classmethod
+    def of(cls, table) -> "AliasSummary":
+        if table is None or isinstance(table, cls):
+            return table
+        return cls({k: (int(s), str(r)) for k, (s, r) in table.aliases.items()},
+                   {k: str(v) for k, v in table.constants.items()},
+                   table.equations_before, table.equations_after)
 
 
 @dataclass
@@ -29,6 +56,14 @@ class IndexReport:
     sigma: dict = field(default_factory=dict)
     conversion: object = None       # compiler.conversion.ConversionResult
     notes: list = field(default_factory=list)
+
+    def __getstate__(self):
+        state = dict(self.__dict__)
+        state["aliases"] = AliasSummary.of(self.aliases)
+        state["reduction"] = None
+        if self.conversion is not None and not isinstance(self.conversion, dict):
+            state["conversion"] = _conversion_dict(self.conversion)
+        return state
 
     def count(self, stage: str, **numbers) -> None:
         self.counts[stage] = numbers
@@ -165,6 +200,11 @@ class IndexReport:
     def to_json(self, **kw) -> str:
         return json.dumps(self.as_dict(), default=str, **kw)
 
+    def _repr_html_(self) -> str:
+        """Jupyter: the report as tables, with the BLT incidence picture."""
+        from ..display import report_html
+        return report_html(self)
+
     def __str__(self) -> str:
         lines = [f"Index report for {self.model_name}",
                  f"  differential index: {self.differential_index}"
@@ -220,8 +260,8 @@ class IndexReport:
 
 
 def _conversion_dict(conv):
-    if conv is None:
-        return None
+    if conv is None or isinstance(conv, dict):      # a loaded report keeps the dict
+        return conv
     return {"conversions": [{"replaced": c.replaced, "text": c.text,
                              "terms": [list(t) for t in c.terms], "cancelled": c.columns,
                              "parameter_dependent": c.parameter_dependent,

@@ -15,7 +15,7 @@ linear-combination conversion (:mod:`acausal.compiler.conversion`).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import lru_cache, partial as bound
 
 import sympy as sp
 from sympy.core.add import _addsort
@@ -25,8 +25,8 @@ from .derivative import partial
 from .graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER, STATE_SELECT,
                     UNASSIGNED, Names, Structure)
 
-__all__ = ["SymbolicEquation", "SymbolicSystem", "coefficient_kind", "sum_partial",
-           "symbols_of", "derivative_symbol", "signed_terms", "signed_sum"]
+__all__ = ["SymbolicEquation", "SymbolicSystem", "ExactText", "coefficient_kind",
+           "sum_partial", "symbols_of", "derivative_symbol", "signed_terms", "signed_sum"]
 
 
 @dataclass
@@ -71,6 +71,11 @@ class SymbolicEquation:
             return core
         power = f"^{self.order}" if self.order > 1 else ""
         return f"d{power}/dt{power}({core})"
+
+
+def _derived_text(eq: SymbolicEquation) -> str:
+    """``d/dt(<text of eq>)``, printed when read."""
+    return f"d/dt({eq.text})"
 
 
 @dataclass
@@ -151,11 +156,13 @@ class SymbolicSystem:
                     for sym, info in zip(self.symbols, self.base_infos())]
         return Structure(graph=graph, var_to_diff=var_to_diff,
                          eq_to_diff=[UNASSIGNED] * len(graph), coeff=coeff,
-                         var_names=names, eq_names=Names(self._namer(e) for e in self.equations),
+                         var_names=names,
+                         eq_names=Names(self._namer(e) for e in self.equations),
                          state_priority=priority)
 
     def _namer(self, eq: SymbolicEquation):
-        return lambda: eq.name(self)
+        # a bound call, not a lambda: a structure naming its equations stays picklable
+        return bound(SymbolicEquation.name, eq, self)
 
     # -- differentiation (the Pantelides callback) --------------------------------------
     def differentiate(self, s: Structure, e: int):
@@ -167,7 +174,7 @@ class SymbolicSystem:
         self._sync_variables(s)
         eq = self.equations[e]
         dr = self.time_derivative(eq.residual)
-        self.equations.append(SymbolicEquation(dr, lambda: f"d/dt({eq.text})", eq.component,
+        self.equations.append(SymbolicEquation(dr, bound(_derived_text, eq), eq.component,
                                                eq.component_class, eq.kind,
                                                derivative_of=e, order=eq.order + 1))
         self._sync_variables(s)
@@ -316,3 +323,62 @@ def signed_sum(coeffs: dict) -> sp.Expr:
         return terms[0]
     _addsort(terms)
     return sp.Add._from_args(terms)
+
+
+class ExactText:
+    """An exact text of a sympy expression (or a plain value), as ``srepr`` would give
+    but in linear time: every node by its class and arguments, symbols by class and name,
+    numbers exactly (a Float by its binary mantissa and exponent).  Shared subexpressions
+    are printed once (sympy's printers take ~0.5 ms per small expression: a key printed
+    with them costs as much as the flattening)."""
+
+    def __init__(self, plain=repr):
+        self.sp = sp
+        self.plain = plain          # the text of a value that is not an expression
+        self.memo = {}
+        self.names = {}
+
+    def __call__(self, e) -> str:
+        sp = self.sp
+        if not isinstance(e, sp.Basic):
+            return self.plain(e)
+        out = self.memo.get(e)
+        if out is not None:
+            return out
+        stack = [(e, False)]
+        while stack:          # iterative: a long sum or chain must not recurse deeply
+            node, expanded = stack.pop()
+            if node in self.memo:
+                continue
+            args = node.args
+            if not args:
+                self.memo[node] = self._atom(node)
+            elif expanded:
+                self.memo[node] = self._name(node) + "(" + ",".join(
+                    self.memo[a] for a in args) + ")"
+            else:
+                stack.append((node, True))
+                stack.extend((a, False) for a in args if a not in self.memo)
+        return self.memo[e]
+
+    def _name(self, node) -> str:
+        t = type(node)
+        name = self.names.get(t)
+        if name is None:
+            name = self.names[t] = f"{t.__module__}.{t.__name__}"
+        return name
+
+    def _atom(self, node) -> str:
+        sp = self.sp
+        if isinstance(node, sp.Symbol):      # x and x (real) are different symbols
+            facts = ",".join(f"{k}={v}" for k, v in sorted(node.assumptions0.items()))
+            return f"{self._name(node)}[{node.name};{facts}]"
+        if isinstance(node, sp.Float):
+            return f"F{node._mpf_!r}"
+        if isinstance(node, sp.Rational):
+            return f"Q{node.p}/{node.q}"
+        if isinstance(node, (sp.NumberSymbol, sp.core.numbers.Infinity,
+                             sp.core.numbers.NegativeInfinity, sp.core.numbers.NaN,
+                             sp.core.numbers.ComplexInfinity, sp.core.numbers.ImaginaryUnit)):
+            return self._name(node)
+        return self._name(node) + ":" + sp.srepr(node)

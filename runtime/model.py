@@ -15,6 +15,11 @@ The discrete state (relation values and frozen floor values, :mod:`.modes`), whe
 (:mod:`.events`), exact time events, dynamic state selection and the one initialization
 path (:mod:`.initial`) are all reached from here, through the items of the solver
 contract (:mod:`acausal.solvers.base`) and the runtime's own, in ``acausal.runtime``.
+
+A CompiledModel pickles as its ModelCode in portable form
+(:func:`acausal.compiler.cache.portable`: the generated sources, executed again on
+load; the C library loaded again or rebuilt) with its parameter values, discrete state
+and current choice of dummy derivatives.
 """
 from __future__ import annotations
 
@@ -80,6 +85,27 @@ class CompiledModel(DAEProblem):
         self.resolution = 0.0             # how precisely the driver locates crossings
         self._z_ref = self.start.copy()    # a point for time-event predictions
         self._update_links()
+
+    # -- pickling -----------------------------------------------------------------------
+    def __getstate__(self):
+        from ..compiler.cache import portable
+        return {"model_code": portable(self.model_code), "p": self.p.copy(),
+                "m": self.discrete.m.copy(), "dummies": sorted(self.dummies),
+                "switches": list(self.dynamic.switches) if self.dynamic is not None else []}
+
+    def __setstate__(self, state):
+        from ..compiler.cache import load_notes
+        mc = state["model_code"]
+        notes = load_notes(mc)
+        if notes and mc.report is not None:
+            mc.report.notes += [n for n in notes if n not in mc.report.notes]
+        self.__init__(mc)
+        self.p[:] = state["p"]
+        self.discrete.m[:] = state["m"]
+        if self.dynamic is not None:
+            self.dummies = set(state["dummies"])
+            self.dynamic.switches[:] = state["switches"]
+            self._update_links()
 
     # -- the discrete state -----------------------------------------------------------
     @property
@@ -284,9 +310,17 @@ class CompiledModel(DAEProblem):
             self.discrete.release(t, z, self.p)
         return self.reselect_states(t, z)
 
+    def _repr_html_(self) -> str:
+        """Jupyter: the states, parameters and the index report's summary."""
+        from ..display import model_html
+        return model_html(self)
+
     # -- parameters ---------------------------------------------------------------------------
     def set_parameters(self, values: dict) -> None:
-        """Change tunable parameters by name, e.g. ``{"R1.R": 5.0}``."""
+        """Change tunable parameters by name, e.g. ``{"R1.R": 5.0}``: all or none (a value
+        outside its bounds, or one that puts a parameter bound to it outside its own,
+        changes nothing)."""
+        p = self.p.copy()
         for name, value in values.items():
             if name not in self.param_names:
                 zeros = self.meta.get("structural_zeros", ())
@@ -301,7 +335,16 @@ class CompiledModel(DAEProblem):
                 raise InvalidValue(f"parameter '{name}' = {x!r} is outside its range "
                                    f"[{'-inf' if lo is None else lo}, "
                                    f"{'inf' if hi is None else hi}]")
-            self.p[self.param_names.index(name)] = x
+            p[self.param_names.index(name)] = x
+        for name, lo, hi, f in self.meta.get("derived_bounds", ()):
+            x = float(f(p))
+            if (lo is not None and x < lo) or (hi is not None and x > hi):
+                given = ", ".join(f"{n} = {float(v)!r}" for n, v in values.items())
+                raise InvalidValue(f"with {given}, parameter '{name}' (bound to it) would "
+                                   f"be {x!r}, outside its range "
+                                   f"[{'-inf' if lo is None else lo}, "
+                                   f"{'inf' if hi is None else hi}]")
+        self.p[:] = p
 
 
 def _real_value(name, value) -> float:

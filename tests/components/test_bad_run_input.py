@@ -78,6 +78,26 @@ def test_parameter_outside_its_declared_range_at_run_time():
     assert abs(res["x"][-1] - np.exp(-2.0)) < 1e-6 * np.exp(-2.0)
 
 
+class Wrapped(ac.Component):
+    """A parameter of the model bound into a bounded one of its part (Resistor R >= 0)."""
+
+    R = ac.Parameter(1.0)
+    inner = Decay(k=ac.ref("R"))
+
+
+def test_tuning_respects_the_bounds_of_the_parameters_bound_to_it():
+    """As compiling Wrapped(R=-1) refuses inner.k = -1 (min 0), so does tuning R to -1
+    after compilation, and it changes nothing; a valid value still decays as exp(-R t)."""
+    with pytest.raises(InvalidValue, match=r"'inner' \(Decay\): parameter k"):
+        ac.compile(Wrapped(R=-1.0), cache=False)
+    compiled = ac.compile(Wrapped(), cache=False)
+    with pytest.raises(InvalidValue, match=r"inner\.k.*outside its range"):
+        compiled.set_parameters({"R": -1.0})
+    assert compiled.p[compiled.param_names.index("R")] == 1.0
+    res = ac.simulate(compiled, t_end=1.0, rtol=1e-9, parameters={"R": 2.0})
+    assert abs(res["inner.x"][-1] - math.exp(-2.0)) <= 1e-6 * math.exp(-2.0)
+
+
 def test_a_start_value_outside_a_functions_domain_names_the_equation():
     with pytest.raises(ac.InitializationFailed) as err:
         ac.simulate(SqrtOfStart(), t_end=1.0)
