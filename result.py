@@ -1,50 +1,166 @@
-"""Result: the time series of every variable of a simulation, by dotted name."""
+"""Result: the time series of every variable of a simulation, by dotted name.
+
+A result is read by name (``res["C1.v"]``), exported to the data tools of the Python
+ecosystem (:meth:`Result.to_pandas`, :meth:`Result.to_xarray`, :meth:`Result.to_csv`),
+to the result file of Dymola and OpenModelica (:meth:`Result.to_mat`), saved and loaded
+(:meth:`Result.save`, :func:`acausal.load_result`, both in :mod:`acausal.results_io`),
+and plotted with units (:meth:`Result.plot`).  Its events are :class:`Event` records.
+"""
 from __future__ import annotations
 
 import csv
 
 import numpy as np
 
-__all__ = ["Result"]
+__all__ = ["Result", "Event"]
+
+
+class Event(float):
+    """One event of a run: a float equal to its time, with what happened then.
+
+    ``kind``: ``"relation"`` (a relation crossed zero: a state event), ``"time"`` (a
+    relation of time alone switched where it was predicted), ``"when"`` (a when-clause
+    fired, at a crossing or a time event) or ``"state switch"`` (dynamic state selection
+    chose other states; these are in ``Result.state_switches``, not ``Result.events``).
+    ``relations``: the texts of the relations that crossed, each with the equation and
+    component it is in; ``changes``: ``(text, before, after)`` for every relation
+    (1.0 true, 0.0 false) or frozen integer value the event changed; ``whens``: the
+    when-clauses that fired (text and component); ``reinits``: ``(variable, before,
+    after)`` for every state a ``reinit`` restarted.  Being a float keeps code that
+    reads event times working: ``np.array(res.events)``, ``res.events[0] - t``.
+    """
+
+    def __new__(cls, time, kind, relations=(), changes=(), whens=(), reinits=()):
+        ev = super().__new__(cls, time)
+        ev.kind = str(kind)
+        ev.relations = list(relations)
+        ev.changes = [tuple(c) for c in changes]
+        ev.whens = list(whens)
+        ev.reinits = [tuple(r) for r in reinits]
+        return ev
+
+    @property
+    def time(self) -> float:
+        return float(self)
+
+    @property
+    def components(self) -> list:
+        """The components whose relations or when-clauses took part (sorted)."""
+        found = {_component_of(s) for s in self.relations + self.whens
+                 + [c[0] for c in self.changes]}
+        return sorted(c for c in found if c)
+
+    def as_dict(self) -> dict:
+        return {"time": self.time, "kind": self.kind, "relations": list(self.relations),
+                "changes": [list(c) for c in self.changes], "whens": list(self.whens),
+                "reinits": [list(r) for r in self.reinits]}
+
+    def __reduce__(self):
+        return (Event, (self.time, self.kind, self.relations, self.changes, self.whens,
+                        self.reinits))
+
+    def __repr__(self):
+        what = [f"{t}: {_fmt(a)} -> {_fmt(b)}" for t, a, b in self.changes]
+        what += [f"reinit({v}): {_fmt(a)} -> {_fmt(b)}" for v, a, b in self.reinits]
+        return f"Event(t={self.time:.10g}, {self.kind}" + \
+            (f"; {'; '.join(what)})" if what else ")")
+
+
+def _fmt(x) -> str:
+    return f"{x:.6g}" if isinstance(x, float) else str(x)
+
+
+def _component_of(text: str) -> str:
+    """The component named at the end of a relation's or when-clause's text ("... [R1
+    (Resistor)]"), or "" (the model itself, or no component named)."""
+    text = text.rstrip()
+    if not (text.endswith("]") and "[" in text):
+        return ""
+    name = text[text.rindex("[") + 1:-1].split(" (")[0]
+    return "" if name == "(model)" else name
 
 
 class Result:
     """What ``acausal.simulate`` returns.
 
     ``res.t`` (times), ``res["C1.v"]`` (any variable, alias or not, and ``der(x)`` of the
-    states), ``res.names``, ``res.stats`` (solver statistics), ``res.events`` (event
-    times), ``res.success`` / ``res.message`` (a failed run keeps what it computed).
+    states), ``res.names``, ``res.units`` / ``res.descriptions`` (by name, "" where none
+    was declared), ``res.stats`` (solver statistics), ``res.events`` (:class:`Event`
+    records, floats equal to their times), ``res.event_times`` (an array),
+    ``res.success`` / ``res.message`` (a failed run keeps what it computed).  A result
+    loaded from a file (``ac.load_result``) has ``compiled = None`` and holds every
+    variable's values itself.
     """
 
     def __init__(self, compiled, t, y, stats=None, events=(), success=True, message="",
-                 discrete_states=(), discrete_index=()):
+                 discrete_states=(), discrete_index=(), *, state_switches=()):
         self.compiled = compiled
         self.t = np.asarray(t, dtype=float)
         self._z = np.asarray(y, dtype=float).reshape(len(self.t), -1)
         self._y = None
-        self.parameters = compiled.p.copy()     # this run's values: later runs may change p
-        self.stats = stats.as_dict() if hasattr(stats, "as_dict") else (stats or {})
-        self.events = list(events)
+        self._table = None                      # name -> column, for a loaded result
+        # this run's values: later runs may change p
+        self.parameters = compiled.p.copy() if compiled is not None else np.empty(0)
+        self.parameter_names = list(compiled.param_names) if compiled is not None else []
+        self.stats = stats.as_dict() if hasattr(stats, "as_dict") else dict(stats or {})
+        self.events = [e if isinstance(e, Event) else Event(e, "relation") for e in events]
+        self.state_switches = list(state_switches)
         self.success = success
         self.message = message
         # the discrete state (relation and floor values) each point was integrated in
         self._discrete = [np.asarray(d, dtype=float) for d in discrete_states]
         self._discrete_index = list(discrete_index)
+        meta = getattr(compiled, "meta", None) or {}
+        self.units = dict(meta.get("units", {}))
+        self.descriptions = dict(meta.get("descriptions", {}))
+
+    @classmethod
+    def from_table(cls, t, columns: dict, **fields) -> "Result":
+        """A result that holds its values (loaded, or gathered from elsewhere)."""
+        res = cls(None, t, np.zeros((len(t), 0)), fields.pop("stats", None),
+                  fields.pop("events", ()), fields.pop("success", True),
+                  fields.pop("message", ""))
+        res._table = {n: np.asarray(v, dtype=float) for n, v in columns.items()}
+        for key, value in fields.items():
+            setattr(res, key, value)
+        return res
 
     @property
     def names(self) -> list:
+        if self._table is not None:
+            return sorted(self._table)
         return sorted(self.compiled.outputs)
 
+    @property
+    def event_times(self) -> np.ndarray:
+        return np.array([float(e) for e in self.events])
+
+    @property
+    def states(self) -> list:
+        """The states the integrator used (the default of :meth:`plot`)."""
+        if self.compiled is None:
+            return list(getattr(self, "_states", []))
+        return list(self.compiled.states)
+
+    @property
+    def parameter_values(self) -> dict:
+        """This run's parameter values, by name."""
+        return {n: float(v) for n, v in zip(self.parameter_names, self.parameters)}
+
     def __contains__(self, name) -> bool:
+        if self._table is not None:
+            return name in self._table
         return name in self.compiled.outputs
 
     def __getitem__(self, name: str) -> np.ndarray:
+        if self._table is not None:
+            if name not in self._table:
+                raise KeyError(self._missing(name, self._table))
+            return self._table[name].copy()
         try:
             sign, k = self.compiled.outputs[name]
         except KeyError:
-            close = [n for n in self.compiled.outputs if name.split(".")[-1] in n][:8]
-            raise KeyError(f"no variable '{name}' in the result"
-                           + (f"; similar: {', '.join(close)}" if close else "")) from None
+            raise KeyError(self._missing(name, self.compiled.outputs)) from None
         if sign is None:
             return np.full(len(self.t), k(self.parameters) if callable(k) else k)
         if self._y is None:
@@ -52,42 +168,110 @@ class Result:
                               self._discrete, self._discrete_index)
         return sign * self._y[:, k]
 
+    @staticmethod
+    def _missing(name, known) -> str:
+        close = [n for n in known if name.split(".")[-1] in n][:8]
+        return (f"no variable '{name}' in the result"
+                + (f"; similar: {', '.join(close)}" if close else ""))
+
     def at(self, name: str, t: float) -> float:
         """The value of ``name`` at time t (linear interpolation between output points)."""
         return float(np.interp(t, self.t, self[name]))
 
+    def _names(self, names) -> list:
+        if names is None:
+            return self.names
+        if isinstance(names, str):
+            return [names]
+        return list(names)
+
+    # -- export ------------------------------------------------------------------------
     def to_csv(self, path, names=None) -> None:
-        names = list(names) if names is not None else self.names
+        """Columns ``time`` and each variable (default: all, sorted by name)."""
+        names = self._names(names)
         with open(path, "w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow(["time"] + names)
             cols = np.column_stack([self.t] + [self[n] for n in names])
             w.writerows(cols.tolist())
 
-    def plot(self, *names, ax=None, path=None):
-        """Plot variables against time (needs matplotlib: the ``plot`` extra)."""
+    def _rows(self, unique: bool) -> np.ndarray:
+        """Indices of the points to export; ``unique``: at an event time, which appears
+        twice (the values just before and just after it), only the point after it."""
+        if not unique or len(self.t) < 2:
+            return np.arange(len(self.t))
+        return np.flatnonzero(np.append(self.t[1:] != self.t[:-1], True))
+
+    def to_pandas(self, names=None, unique: bool = False):
+        """A ``pandas.DataFrame``: index ``time``, one column per variable (default: all);
+        ``df.attrs["units"]`` and ``df.attrs["descriptions"]`` by column name.  An event
+        time appears twice (before and after it) unless ``unique=True`` (after only)."""
         try:
-            import matplotlib
-            if path is not None:
-                matplotlib.use("Agg")
-            import matplotlib.pyplot as plt
+            import pandas as pd
         except ImportError as err:
-            raise ImportError("Result.plot needs matplotlib: pip install 'acausal[plot]'") from err
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 4))
-        for n in names:
-            ax.plot(self.t, self[n], label=n)
-        ax.set_xlabel("time [s]")
-        ax.legend()
-        ax.grid(True, alpha=0.3)
-        if path is not None:
-            ax.figure.savefig(path, dpi=120, bbox_inches="tight")
-        return ax
+            raise ImportError("Result.to_pandas needs pandas: pip install 'acausal[io]'") \
+                from err
+        names, rows = self._names(names), self._rows(unique)
+        df = pd.DataFrame({n: self[n][rows] for n in names},
+                          index=pd.Index(self.t[rows], name="time"), columns=names)
+        df.attrs["units"] = {n: self.units.get(n, "") for n in names}
+        df.attrs["descriptions"] = {n: self.descriptions.get(n, "") for n in names}
+        return df
+
+    def to_xarray(self, names=None, unique: bool = False):
+        """An ``xarray.Dataset`` with dimension ``time``, one variable per name (default:
+        all) with attributes ``units`` and ``description``; the run's parameters, success
+        and message are dataset attributes.  ``unique=True``: each event time once (the
+        point after it), so that ``ds.sel(time=..., method="nearest")`` works."""
+        try:
+            import xarray as xr
+        except ImportError as err:
+            raise ImportError("Result.to_xarray needs xarray: pip install 'acausal[io]'") \
+                from err
+        names, rows = self._names(names), self._rows(unique)
+        data = {n: ("time", self[n][rows], {"units": self.units.get(n, ""),
+                                      "description": self.descriptions.get(n, "")})
+                for n in names}
+        attrs = {"success": int(bool(self.success)), "message": str(self.message)}
+        attrs.update({f"parameter {k}": v for k, v in self.parameter_values.items()})
+        return xr.Dataset(data, coords={"time": ("time", self.t[rows], {"units": "s"})},
+                          attrs=attrs)
+
+    def to_mat(self, path, names=None) -> None:
+        """The Dymola/OpenModelica result file (MATLAB v4, "binTrans" format 1.1);
+        see :func:`acausal.results_io.write_mat`."""
+        from .results_io import write_mat
+        write_mat(self, path, names)
+
+    def save(self, path) -> None:
+        """Everything needed to use the result later without the model (HDF5, the ``io``
+        extra); read it back with ``acausal.load_result(path)``."""
+        from .results_io import save_result
+        save_result(self, path)
+
+    # -- plot ---------------------------------------------------------------------------
+    def plot(self, *names, ax=None, path=None, events=True, subplots=False):
+        """Plot variables against time (needs matplotlib: the ``plot`` extra).
+
+        Default names: the states.  Variables of one unit share a y-axis labelled with
+        the unit; each further unit gets a twin axis on the right (``subplots=True``: one
+        subplot per unit instead).  ``events``: mark the events with vertical lines.
+        Returns the axes (a list when there is more than one)."""
+        from .results_io import plot_result
+        return plot_result(self, list(names) or self.states, ax=ax, path=path,
+                           events=events, subplots=subplots)
+
+    def _repr_html_(self) -> str:
+        """Jupyter: a summary table and a plot of the states."""
+        from .display import result_html
+        return result_html(self)
 
     def __repr__(self):
         status = "ok" if self.success else f"FAILED: {self.message}"
-        return (f"<Result {len(self.t)} points, t = {self.t[0]:g} .. {self.t[-1]:g}, "
-                f"{len(self.compiled.outputs)} variables, {status}>")
+        n_vars = len(self._table) if self._table is not None else len(self.compiled.outputs)
+        span = f"t = {self.t[0]:g} .. {self.t[-1]:g}, " if len(self.t) else ""
+        return (f"<Result {len(self.t)} points, {span}{n_vars} variables, "
+                f"{len(self.events)} events, {status}>")
 
 
 def _expand(compiled, t, z, p, discrete, index) -> np.ndarray:

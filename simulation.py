@@ -1,7 +1,14 @@
-"""compile() and simulate(): the two calls a user makes."""
+"""compile() and simulate(): the two calls a user makes.
+
+``simulate`` also turns the driver's event log into :class:`~acausal.result.Event`
+records (which relations crossed, what changed, which when-clauses fired and what they
+re-initialized) and shows progress in simulated time (``progress=``, a tqdm bar).
+"""
 from __future__ import annotations
 
 import math
+import sys
+import time as _clock
 import warnings
 from typing import TYPE_CHECKING
 
@@ -9,7 +16,7 @@ import numpy as np
 
 from .components.component import Component, ModelError
 from .errors import SimulationError
-from .result import Result
+from .result import Event, Result
 
 if TYPE_CHECKING:
     from .runtime import CompiledModel
@@ -17,12 +24,17 @@ if TYPE_CHECKING:
 __all__ = ["compile", "simulate", "initial_values"]
 
 
-def compile(model: Component, backend: str = "auto") -> CompiledModel:  # noqa: A001
+def compile(model: Component, backend: str = "auto", cache=True) -> CompiledModel:  # noqa: A001
     """Flatten, reduce and generate code for a model instance; see ``compiled.report``.
 
     ``backend``: ``"c"`` (generated C, compiled once per model into a cache; raises
     BackendError without a working C compiler), ``"numpy"`` (generated Python), or
-    ``"auto"`` (C when a compiler works, else numpy; ``compiled.backend`` says which)."""
+    ``"auto"`` (C when a compiler works, else numpy; ``compiled.backend`` says which).
+    ``cache``: ``True`` (default) takes an unchanged model from the compile cache in
+    ``$ACAUSAL_CACHE`` or ``~/.cache/acausal``, found by its flattened equations and
+    parameter values; ``"tree"`` also by its instance tree, without flattening or
+    importing sympy (for models whose equations read nothing but their classes, modules
+    and parameters); ``False`` always compiles (see :mod:`acausal.compiler.cache`)."""
     # imported here: the compiler brings sympy and the runtime scipy, which importing
     # acausal (or this module, for its names) does not need
     from .compiler.pipeline import compile_model
@@ -31,7 +43,24 @@ def compile(model: Component, backend: str = "auto") -> CompiledModel:  # noqa: 
         return model
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r} ({type(model).__name__})")
-    return CompiledModel(compile_model(model, backend))
+    mc = compile_model(model, backend, cache=cache)
+    _declare_units(mc, model)
+    return CompiledModel(mc)
+
+
+def _declare_units(mc, model) -> None:
+    """``meta["units"]`` and ``meta["descriptions"]`` by output and parameter name, as
+    the component tree declares them, unless the compiler put them there already."""
+    if "units" in mc.meta and "descriptions" in mc.meta:
+        return
+    from .results_io import declared_attributes, with_derivatives
+    units, descriptions = declared_attributes(model)
+    names = list(mc.outputs) + list(mc.param_names)
+    mc.meta.setdefault("units", with_derivatives(
+        {n: units.get(n, "") for n in names if not n.startswith("der(")}, names))
+    mc.meta.setdefault("descriptions", {
+        n: descriptions.get(n, "") if not n.startswith("der(") else
+        f"derivative of {n[4:-1]}" for n in names})
 
 
 def initial_values(compiled: CompiledModel, t0: float = 0.0) -> np.ndarray:
@@ -44,7 +73,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              atol: float | None = None, t_eval=None, n_points: int | None = None,
              max_step: float = np.inf, parameters: dict | None = None,
              max_order: int = 5, raise_on_failure: bool = False,
-             backend: str = "auto") -> Result:
+             backend: str = "auto", progress: bool | None = None) -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -55,7 +84,9 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     ``success=False`` and the reason in ``message`` (and warns), or raises
     SimulationError if ``raise_on_failure``.  ``max_order`` caps the BDF order (DASSL's
     maxord: 2 helps on weakly damped high-frequency modes that only need to stay bounded).
-    ``backend``: how a Component is compiled (see :func:`compile`).
+    ``backend``: how a Component is compiled (see :func:`compile`).  ``progress``: a
+    progress bar in simulated time (tqdm, the ``progress`` extra; a widget in notebooks);
+    None shows it only when stderr is a terminal and the run takes more than 2 s.
     """
     t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
     if not t_end > t_start:
@@ -80,25 +111,129 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         return Result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], True,
                       "no states: evaluated explicitly")
     from .solvers import integrate
+    marks = _log_marks(compiled)
+    bar = _Progress.make(progress, t_start, t_end)
     try:
         out = integrate(compiled, (t_start, t_end), y0, yp0, rtol=rtol, atol=atol,
                         t_eval=t_eval, max_step=max_step, max_order=int(max_order),
-                        initialize=False)
+                        initialize=False, progress=bar)
     except SimulationError as err:
         partial = err.partial
-        res = _result(compiled, partial, False, str(err)) \
+        res = _result(compiled, partial, False, str(err), marks) \
             if partial is not None and len(partial.t) else None
         if raise_on_failure or res is None:
             err.partial = res
             raise
         warnings.warn(f"simulation stopped early: {err}", RuntimeWarning, stacklevel=2)
         return res
-    return _result(compiled, out, out.success, out.message)
+    finally:
+        if bar is not None:
+            bar.close()
+    return _result(compiled, out, out.success, out.message, marks)
 
 
-def _result(compiled, out, success, message) -> Result:
-    return Result(compiled, out.t, out.y, out.stats, out.event_times, success, message,
-                  out.discrete_states, out.discrete_index)
+def _result(compiled, out, success, message, marks=(0, 0, "")) -> Result:
+    events, switches = _event_records(compiled, out, marks)
+    return Result(compiled, out.t, out.y, out.stats, events, success, message,
+                  out.discrete_states, out.discrete_index, state_switches=switches)
+
+
+def _log_marks(compiled) -> tuple:
+    """Where this run's entries start in the model's when-clause and state-switch logs."""
+    whens = len(compiled.whens.log) if compiled.whens is not None else 0
+    switches = len(compiled.dynamic.switches) if compiled.dynamic is not None else 0
+    dummies = ", ".join(sorted(compiled.names[d] for d in compiled.dummies))
+    return whens, switches, dummies
+
+
+def _event_records(compiled, out, marks) -> tuple[list, list]:
+    """(events, state switches) of one run as :class:`Event` records, from the driver's
+    event log, the discrete state snapshots and the when-clause log."""
+    log = getattr(out, "event_log", None)
+    if log is None:
+        return list(out.event_times), []
+    fired = {}
+    if compiled.whens is not None:
+        for entry in compiled.whens.log[marks[0]:]:
+            fired.setdefault(entry[0], []).append(entry)
+        del compiled.whens.log[marks[0]:]        # read once: the log must not grow per run
+    snaps, n_rel = out.discrete_states, compiled.discrete.n_rel
+    events = []
+    for e in log:
+        changes = []
+        if snaps and e["before"] >= 0:
+            m0, m1 = snaps[e["before"]], snaps[e["after"]]
+            changes = [(compiled.relation_text(k), float(m0[k]), float(m1[k]))
+                       for k in np.flatnonzero(m0 != m1)]
+        # oriented roots: one per relation, then two per frozen integer value
+        items = sorted({k if k < n_rel else n_rel + (k - n_rel) // 2 for k in e["crossed"]})
+        relations = [compiled.relation_text(k) for k in items]
+        whens, reinits = [], []
+        for _, clauses, targets, before, after in fired.get(e["time"], ()):
+            whens += [compiled.whens.texts[c] for c in clauses]
+            reinits += [(compiled.names[i], b, a) for i, b, a in zip(targets, before, after)]
+        kind = "when" if whens else ("relation" if e["kind"] == "state" else "time")
+        events.append(Event(e["time"], kind, relations, changes, whens, reinits))
+    switches = []
+    if compiled.dynamic is not None:
+        previous = marks[2]
+        for t, dummies in compiled.dynamic.switches[marks[1]:]:
+            now = ", ".join(dummies)
+            switches.append(Event(t, "state switch", changes=[("dummy derivatives",
+                                                               previous, now)]))
+            previous = now
+    return events, switches
+
+
+class _Progress:
+    """A tqdm bar in simulated time, called by the driver after every step.  The wall
+    clock is read on every call (~50 ns) and the bar redrawn at most every 0.1 s, so
+    the bar costs nothing measurable next to a BDF step."""
+
+    _EVERY = 0.1          # s of wall time between redraws
+    _AUTO_AFTER = 2.0     # progress=None: a bar only for runs longer than this
+
+    @classmethod
+    def make(cls, progress, t0, tf):
+        if progress is False:
+            return None
+        if progress is None and not (hasattr(sys.stderr, "isatty") and sys.stderr.isatty()):
+            return None
+        return cls(t0, tf, delay=0.0 if progress else cls._AUTO_AFTER)
+
+    def __init__(self, t0, tf, delay=0.0):
+        self.t0, self.tf = t0, tf
+        self.bar, self.shown = None, t0
+        self.next = _clock.perf_counter() + delay
+        if delay == 0.0:
+            self._open()
+
+    def _open(self):
+        try:
+            from tqdm.auto import tqdm
+        except ImportError as err:
+            raise ImportError("progress bars need tqdm: pip install 'acausal[progress]'") \
+                from err
+        self.bar = tqdm(total=self.tf - self.t0, unit="s", unit_scale=False,
+                        desc="simulated time", leave=False,
+                        bar_format="{desc}: {percentage:3.0f}%|{bar}| t = {postfix} "
+                                   "[{elapsed}<{remaining}]")
+        self.bar.set_postfix_str(f"{self.t0:.4g}", refresh=False)
+
+    def __call__(self, t):
+        now = _clock.perf_counter()
+        if now < self.next:
+            return
+        self.next = now + self._EVERY
+        if self.bar is None:
+            self._open()
+        self.bar.update(t - self.shown)
+        self.bar.set_postfix_str(f"{t:.4g}", refresh=False)
+        self.shown = t
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
 
 
 def _time(name, value) -> float:

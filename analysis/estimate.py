@@ -54,7 +54,7 @@ class Estimate:
 
 def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=None,
              rtol: float = 1e-8, diff_step: float = 1e-4, max_nfev: int = 200,
-             sensitivities: str = "fd") -> Estimate:
+             sensitivities: str = "fd", progress: bool | None = None) -> Estimate:
     """Fit parameters of a model to measured time series.
 
     Parameters
@@ -82,6 +82,8 @@ def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=
         with a static choice of states).
     max_nfev : int
         Limit on optimizer iterations (function evaluations).
+    progress : bool or None
+        Count the simulations on a tqdm bar (None: only when stderr is a terminal).
 
     Returns
     -------
@@ -107,6 +109,9 @@ def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=
     x0 = np.clip(np.array(list(start.values())) / scale, lo, hi)
     saved = compiled.p.copy()
     from scipy.optimize import least_squares
+
+    from ..sweeps import _RunsBar
+    problem.bar = _RunsBar.make(progress, None, desc="simulations")
     try:
         opt = least_squares(problem.residual, x0,
                             jac=lambda x: problem.jacobian(x, diff_step),
@@ -115,6 +120,7 @@ def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=
         return _summary(problem, opt, names, scale, outs)
     finally:
         compiled.p[:] = saved
+        problem.bar.close()
 
 
 def _start_values(compiled, parameters) -> dict:
@@ -147,15 +153,21 @@ class _Problem:
         self.t, self.y, self.w, self.rtol = t, y, w, rtol
         self.n_sim = 0
         self.size = sum(len(v) for v in y.values())
+        self.bar = None             # counts the simulations (estimate's progress=)
 
     def predict(self, x) -> dict:
         from ..simulation import simulate
-        self.n_sim += 1
+        self._count()
         values = dict(zip(self.names, x * self.scale))
         res = simulate(self.compiled, t_end=self.t[-1], t_start=self.t[0], t_eval=self.t,
                        rtol=self.rtol, atol=self.rtol, parameters=values,
-                       raise_on_failure=True)
+                       raise_on_failure=True, progress=False)
         return {k: res[k] for k in self.y}
+
+    def _count(self) -> None:
+        self.n_sim += 1
+        if self.bar is not None:
+            self.bar.update(1)
 
     def residual(self, x) -> np.ndarray:
         try:
@@ -189,7 +201,7 @@ class _ForwardProblem(_Problem):
         c = self.compiled
         saved = c.p.copy()
         idx = [c.param_names.index(n) for n in self.names]
-        self.n_sim += 1
+        self._count()
         try:
             c.p[idx] = x * self.scale
             t, Z, S = simulate_sensitivities(c, idx, self.t, rtol=self.rtol)

@@ -48,7 +48,9 @@ class WhenClauses:
         self.targets = np.asarray(whens.targets, dtype=np.int64)
         self.owners = np.asarray(whens.owners, dtype=np.int64)
         self.texts = list(whens.texts)
-        self.log = []                     # (time, indices of the clauses that fired)
+        # (time, indices of the clauses that fired, z indices they re-initialized,
+        # those values before and after): what the event records of a result report
+        self.log = []
 
     def values(self, t, z, p, m) -> np.ndarray:
         return self.code.residual(t, z, p, m, np.empty(self.code.n_rows))
@@ -63,7 +65,8 @@ class WhenClauses:
         new = z.copy()
         act = fired[self.owners]
         new[self.targets[act]] = before[self.n_when:][act]    # values before the event
-        self.log.append((t, np.flatnonzero(fired).tolist()))
+        self.log.append((t, np.flatnonzero(fired).tolist(), self.targets[act].tolist(),
+                         z[self.targets[act]].tolist(), new[self.targets[act]].tolist()))
         return new
 
 

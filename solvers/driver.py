@@ -26,7 +26,12 @@
 * output: every accepted step (plus the event points before and after), or the
   ``t_eval`` points by dense output;
 * failures: a :class:`SimulationError` naming the time, the variables that dominated
-  the weighted error (or the singular block) and carrying the partial output.
+  the weighted error (or the singular block) and carrying the partial output;
+* records: every reported event as a dict (``time``, ``kind`` "state" or "time", the
+  indices of the zero-crossing functions that crossed, and the indices in
+  ``discrete_states`` of the discrete state before and after it), in the output's
+  ``event_log`` attribute; ``progress(t)`` (optional) is called after every accepted
+  step with the time reached (so a progress display follows simulated time).
 """
 from __future__ import annotations
 
@@ -54,7 +59,7 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
               first_step: float | None = None, suppress_alg: bool = False,
               max_steps: int = 500000, initialize: bool = True,
               max_event_iterations: int = 20, max_order: int = 5,
-              stald: bool = False) -> SolverOutput:
+              stald: bool = False, progress=None) -> SolverOutput:
     """Integrate the DAE ``problem`` over ``t_span`` with the variable-order BDF.
 
     Parameters
@@ -91,6 +96,9 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
         BDF stability limit detection (Hindmarsh's STALD, see
         :mod:`acausal.solvers.stald`): caps the order when the step is limited by
         stability on such a mode rather than by accuracy.
+    progress : callable or None
+        ``progress(t)`` after every accepted step (it should be cheap: it is on the
+        step loop).
 
     Returns
     -------
@@ -110,6 +118,7 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     run = _Run(problem, t_span, t_eval, rtol, atol, max_step, suppress_alg, max_steps,
                max_event_iterations)
     run.bdf_options = {"max_order": max_order, "stald": stald}
+    run.progress = progress
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         return run.go(y0, yp0, first_step, initialize)
 
@@ -134,6 +143,8 @@ class _Run:
         self.stats = SolverStats()
         self.ts, self.ys, self.yps, self.event_times = [], [], [], []
         self.state_event_times = []
+        self.event_log = []
+        self.progress = None
         te = sorted({float(x) for x in getattr(problem, "time_events", ()) or ()})
         self.time_events = [x for x in te if self.t0 < x < self.tf]
         self.n_roots = int(getattr(problem, "n_roots", 0) or 0)
@@ -158,10 +169,13 @@ class _Run:
                           max_step=self.max_step, first_step=first_step,
                           suppress_alg=self.suppress_alg, t_stop=self._next_stop(self.t0),
                           stats=self.stats, **self.bdf_options)
+        tick = self.progress
         while self.solver.t < self.tf:
             stop = self._advance()
             if stop is not None:
                 return self._output(False, stop)
+            if tick is not None:
+                tick(self.solver.t)
         self._emit_eval_rest()
         return self._output(True, "reached t_end")
 
@@ -267,9 +281,11 @@ class _Run:
             self.stats.linear_solver = "sparse" if lin.sparse else "dense"
         y = np.array(self.ys) if self.ys else np.empty((0, n))
         yp = np.array(self.yps) if self.yps else np.empty((0, n))
-        return SolverOutput(np.array(self.ts), y, yp, success, message, self.stats,
-                            list(self.event_times), list(self.snapshots),
-                            list(self.snapshot_of))
+        out = SolverOutput(np.array(self.ts), y, yp, success, message, self.stats,
+                           list(self.event_times), list(self.snapshots),
+                           list(self.snapshot_of))
+        out.event_log = list(self.event_log)
+        return out
 
     # ------------------------------------------------------------------ failures
     def _error(self, message, t, variables) -> SimulationError:
@@ -384,18 +400,25 @@ class _Run:
             # only events that change something can chatter
             self.state_event_times.append(t_e)
             self._check_zeno(t_e)
-        return self._finish_event(t_e, y_new, yp_new, action, record=not echo)
+        entry = {"time": t_e, "kind": "state", "crossed": np.flatnonzero(crossed).tolist(),
+                 "before": before}
+        return self._finish_event(t_e, y_new, yp_new, action, record=not echo, entry=entry)
 
     def _time_event(self, t_e):
+        before = len(self.snapshots) - 1
         y, yp, action, _ = self._iterate_event(t_e, self.solver.y, self.solver.yp,
                                                np.zeros(self.n_roots, bool))
-        return self._finish_event(t_e, y, yp, action)
+        entry = {"time": t_e, "kind": "time", "crossed": [], "before": before}
+        return self._finish_event(t_e, y, yp, action, entry=entry)
 
-    def _finish_event(self, t_e, y, yp, action, record=True):
+    def _finish_event(self, t_e, y, yp, action, record=True, entry=None):
         """Record the event, then stop or restart the BDF at order 1."""
         if record:
             self.stats.events += 1
             self.event_times.append(t_e)
+            if entry is not None:
+                entry["after"] = len(self.snapshots) - 1
+                self.event_log.append(entry)
             if self.t_eval is None:
                 self._append(t_e, y, yp)
         if self.t_eval is not None:          # requested times at the event: after it

@@ -1,0 +1,278 @@
+"""Results in files and pictures: units, the Dymola/OpenModelica MAT file, HDF5, plots.
+
+* :func:`declared_attributes`: the unit and description of every variable and parameter,
+  as the components declare them (``ac.Variable(unit="V")``), by dotted name; ``der(x)``
+  gets x's unit per second.
+* :func:`write_mat`: the result file of Dymola and OpenModelica, MATLAB level 4,
+  ``Aclass = ["Atrajectory", "1.1", "", "binTrans"]`` (the layout their readers, e.g.
+  DyMat, ModelicaRes or OpenModelica's ``readSimulationResult``, expect):
+
+  ================  ===================================================================
+  ``name``          char, one column per variable (binTrans: transposed), ``time`` first
+  ``description``   char, the same columns: "description [unit]"
+  ``dataInfo``      int32, 4 x n_names: (matrix 1 or 2 (0 for time), +-column
+                    (1-based; a minus sign: the negated column, an alias ``a = -b``),
+                    0 (linear interpolation), -1 (undefined outside the time range)
+  ``data_1``        float64, rows: time [t0, t_end], then each parameter and constant
+                    variable [value, value]
+  ``data_2``        float64, rows: time, then each distinct time series
+  ================  ===================================================================
+
+  An alias is no column of its own: its ``dataInfo`` points at the column of the variable
+  it is equal to (or minus it).
+* :func:`save_result` / :func:`load_result`: HDF5 (h5py, the ``io`` extra): time,
+  values (points x names), names, units, descriptions, states, parameters, events,
+  stats, success and message; a loaded result needs no model.
+* :func:`plot_result`: one y-axis per unit, labelled with it, events marked.
+"""
+from __future__ import annotations
+
+import json
+
+import numpy as np
+
+from .result import Event, Result
+
+__all__ = ["declared_attributes", "write_mat", "save_result", "load_result", "plot_result"]
+
+_FORMAT = "acausal-result"
+_VERSION = 1
+
+
+# -- units and descriptions -------------------------------------------------------------
+def declared_attributes(model) -> tuple[dict, dict]:
+    """(units, descriptions) by dotted name, for every parameter and variable of the
+    component tree ``model``; a declaration without a unit maps to "".  The dotted names
+    are made here from the tree (as the compiler names them), so the tree need not have
+    been bound by a compile in this process."""
+    units, descriptions = {}, {}
+    from .components.declarations import Parameter
+    stack = [("", model)]
+    while stack:
+        path, comp = stack.pop()
+        stack.extend((f"{path}.{name}" if path else name, child)
+                     for name, child in reversed(list(comp.children().items())))
+        for name, decl in comp.declarations().items():
+            full = f"{path}.{name}" if path else name
+            if isinstance(decl, Parameter):
+                units[full], descriptions[full] = decl.unit, decl.description
+            else:
+                attrs = comp.variable_attributes(name)
+                units[full], descriptions[full] = attrs.unit, attrs.description
+    return units, descriptions
+
+
+def with_derivatives(units: dict, names) -> dict:
+    """``units`` completed with ``der(x)`` for each such name: x's unit per second."""
+    out = dict(units)
+    for n in names:
+        if n.startswith("der(") and n.endswith(")") and n not in out:
+            out[n] = per_second(units.get(n[4:-1], ""))
+    return out
+
+
+def per_second(unit: str) -> str:
+    """A unit divided by seconds, in Modelica's unit syntax ("m/s" -> "m/s2")."""
+    if not unit:
+        return "1/s"
+    if unit.endswith("/s"):
+        return unit + "2"
+    return f"{unit}/s" if "/" not in unit else f"({unit})/s"
+
+
+# -- the Dymola / OpenModelica result file ------------------------------------------------
+def _char_columns(strings) -> np.ndarray:
+    """Strings as a transposed char matrix (one string per column, padded with blanks).
+    A level-4 char is one byte: text is stored as its UTF-8 bytes, as Modelica tools
+    write it (readers decode the bytes as UTF-8)."""
+    strings = [s.encode("utf-8").decode("latin-1") for s in strings]
+    width = max([len(s) for s in strings] + [1])
+    rows = np.full((len(strings), width), " ", dtype="<U1")
+    for i, s in enumerate(strings):
+        rows[i, :len(s)] = list(s)
+    return rows.T.copy()
+
+
+def _mat_layout(res: Result, names):
+    """(entries, data_1, data_2): entries are (name, description, matrix, signed
+    column) with time first; aliases share their original's column."""
+    t = res.t
+    series, constants, entries = [t], [np.array([t[0], t[-1]])], [("time", "Time [s]", 0, 1)]
+    by_key = {}
+    outputs = res.compiled.outputs if res.compiled is not None else None
+    for name, value in res.parameter_values.items():
+        constants.append(np.array([value, value]))
+        entries.append((name, _description(res, name), 1, len(constants)))
+    for name in names:
+        desc = _description(res, name)
+        sign, key = (outputs[name] if outputs is not None else (1.0, name))
+        values = res[name]
+        if sign is None:                       # a constant of the model: data_1
+            constants.append(np.array([values[0], values[-1]]))
+            entries.append((name, desc, 1, len(constants)))
+            continue
+        if key not in by_key:                  # store the solver's column once:
+            series.append(sign * values)       # values = sign * column, sign = +-1
+            by_key[key] = len(series)
+        entries.append((name, desc, 2, int(by_key[key] * sign)))
+    return entries, np.array(constants), np.array(series)
+
+
+def _description(res, name) -> str:
+    text, unit = res.descriptions.get(name, ""), res.units.get(name, "")
+    return f"{text} [{unit}]" if unit else text
+
+
+def write_mat(res: Result, path, names=None) -> None:
+    """Write ``res`` as a Dymola/OpenModelica result file (module docstring); ``names``:
+    the variables (default: all)."""
+    from scipy.io import savemat
+    names = res.names if names is None else list(names)
+    if not len(res.t):
+        raise ValueError("write_mat: the result has no points")
+    entries, data_1, data_2 = _mat_layout(res, names)
+    info = np.array([[m, c, 0, -1 if m != 1 else 0] for _, _, m, c in entries],
+                    dtype=np.int32)
+    info[0] = (0, 1, 0, -1)                     # time: the abscissa of every matrix
+    aclass = np.array([list(s.ljust(11)) for s in ("Atrajectory", "1.1", "", "binTrans")],
+                      dtype="<U1")
+    savemat(path, {"Aclass": aclass,
+                   "name": _char_columns([e[0] for e in entries]),
+                   "description": _char_columns([e[1] for e in entries]),
+                   "dataInfo": info.T.copy(),
+                   "data_1": data_1,
+                   "data_2": data_2},
+            format="4", oned_as="row")
+
+
+# -- HDF5 ------------------------------------------------------------------------------
+def _h5py():
+    try:
+        import h5py
+    except ImportError as err:
+        raise ImportError("saving and loading results needs h5py: "
+                          "pip install 'acausal[io]'") from err
+    return h5py
+
+
+def save_result(res: Result, path) -> None:
+    """Everything :func:`load_result` needs, in one HDF5 file."""
+    h5py = _h5py()
+    names = res.names
+    values = np.column_stack([res[n] for n in names]) if names else \
+        np.zeros((len(res.t), 0))
+    text = h5py.string_dtype()
+    with h5py.File(path, "w") as fh:
+        fh.attrs["format"], fh.attrs["version"] = _FORMAT, _VERSION
+        fh.create_dataset("time", data=res.t)
+        fh.create_dataset("values", data=values)
+        fh.create_dataset("names", data=np.array(names, dtype=object), dtype=text)
+        fh.create_dataset("units", data=np.array([res.units.get(n, "") for n in names],
+                                                 dtype=object), dtype=text)
+        fh.create_dataset("descriptions", dtype=text, data=np.array(
+            [res.descriptions.get(n, "") for n in names], dtype=object))
+        fh.create_dataset("parameter_names", dtype=text,
+                          data=np.array(res.parameter_names, dtype=object))
+        fh.create_dataset("parameter_values", data=np.asarray(res.parameters, float))
+        fh.attrs["states"] = json.dumps(res.states)
+        fh.attrs["events"] = json.dumps([e.as_dict() for e in res.events])
+        fh.attrs["state_switches"] = json.dumps([e.as_dict() for e in res.state_switches])
+        fh.attrs["parameter_units"] = json.dumps(
+            {n: res.units.get(n, "") for n in res.parameter_names})
+        fh.attrs["parameter_descriptions"] = json.dumps(
+            {n: res.descriptions.get(n, "") for n in res.parameter_names})
+        fh.attrs["stats"] = json.dumps(res.stats, default=_jsonable)
+        fh.attrs["success"] = bool(res.success)
+        fh.attrs["message"] = str(res.message)
+
+
+def _jsonable(x):
+    if isinstance(x, np.generic):
+        return x.item()
+    return str(x)
+
+
+def _integer_keys(stats: dict) -> dict:
+    """JSON made the integer keys of nested counts (BDF orders) strings: undo that."""
+    return {k: ({int(a) if a.lstrip("-").isdigit() else a: b for a, b in v.items()}
+                if isinstance(v, dict) else v) for k, v in stats.items()}
+
+
+def _strings(ds) -> list:
+    return [s.decode() if isinstance(s, bytes) else str(s) for s in ds[()]]
+
+
+def _event(d) -> Event:
+    return Event(d["time"], d["kind"], d["relations"], d["changes"], d["whens"],
+                 d["reinits"])
+
+
+def load_result(path) -> Result:
+    """A :class:`~acausal.Result` from a file written by ``Result.save``: ``res[name]``,
+    ``res.t``, ``to_pandas``, ``plot`` ... work without the model (``res.compiled`` is
+    None)."""
+    h5py = _h5py()
+    with h5py.File(path, "r") as fh:
+        if fh.attrs.get("format") != _FORMAT:
+            raise ValueError(f"{path}: not a result saved by acausal (Result.save)")
+        t = fh["time"][()]
+        values = fh["values"][()]
+        names = _strings(fh["names"])
+        units = dict(zip(names, _strings(fh["units"])))
+        descriptions = dict(zip(names, _strings(fh["descriptions"])))
+        pnames = _strings(fh["parameter_names"])
+        units.update(json.loads(fh.attrs["parameter_units"]))
+        descriptions.update(json.loads(fh.attrs["parameter_descriptions"]))
+        res = Result.from_table(
+            t, {n: values[:, k] for k, n in enumerate(names)},
+            stats=_integer_keys(json.loads(fh.attrs["stats"])),
+            events=[_event(d) for d in json.loads(fh.attrs["events"])],
+            success=bool(fh.attrs["success"]), message=str(fh.attrs["message"]),
+            parameters=fh["parameter_values"][()], parameter_names=pnames, units=units,
+            descriptions=descriptions, _states=json.loads(fh.attrs["states"]),
+            state_switches=[_event(d) for d in json.loads(fh.attrs["state_switches"])])
+    return res
+
+
+# -- plots -------------------------------------------------------------------------------
+def plot_result(res: Result, names, ax=None, path=None, events=True, subplots=False):
+    """See :meth:`acausal.Result.plot`."""
+    try:
+        import matplotlib
+        if path is not None and ax is None:
+            matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError as err:
+        raise ImportError("Result.plot needs matplotlib: pip install 'acausal[plot]'") from err
+    groups = {}
+    for n in names:
+        groups.setdefault(res.units.get(n, ""), []).append(n)
+    if subplots and len(groups) > 1:
+        if ax is not None:
+            raise ValueError("Result.plot: give ax or subplots=True, not both")
+        fig, axes = plt.subplots(len(groups), 1, sharex=True,
+                                 figsize=(7, 2.2 + 1.6 * len(groups)))
+        axes = list(np.atleast_1d(axes))
+    else:
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 4))
+        axes = [ax] + [ax.twinx() for _ in list(groups)[1:]]
+        for k, extra in enumerate(axes[2:], start=1):
+            extra.spines["right"].set_position(("axes", 1.0 + 0.14 * k))
+    colors = plt.rcParams["axes.prop_cycle"].by_key().get("color", ["C0"])
+    lines = []
+    for k, ((unit, members), a) in enumerate(zip(groups.items(), axes)):
+        for n in members:
+            lines += a.plot(res.t, res[n], label=n, color=colors[len(lines) % len(colors)])
+        label = ", ".join(members) if len(members) <= 3 else f"{len(members)} variables"
+        a.set_ylabel(f"{label} [{unit or '1'}]")
+    if events:
+        for a in (axes if subplots else axes[:1]):
+            for te in res.event_times:
+                a.axvline(te, color="0.6", lw=0.7, ls="--", zorder=0)
+    axes[-1 if subplots else 0].set_xlabel("time [s]")
+    axes[0].legend(lines, [ln.get_label() for ln in lines], loc="best", fontsize="small")
+    axes[0].grid(True, alpha=0.3)
+    if path is not None:
+        axes[0].figure.savefig(path, dpi=120, bbox_inches="tight")
+    return axes[0] if len(axes) == 1 else axes

@@ -1,0 +1,298 @@
+"""Parameter sweeps and ensembles: one compile, many runs, one ``xarray.Dataset``.
+
+``sweep(compiled, {"R1.R": [...], "C1.C": [...]}, grid="product" | "zip", ...)`` makes
+the runs of a grid (every combination, or the lists side by side); ``ensemble(compiled,
+[{"R1.R": 1.0}, ...], ...)`` takes them as given.  Every run starts from the model's
+compiled parameter values with its own changed (nothing carries over from the run
+before) and is simulated on a common output grid (``t_eval`` or ``n_points``, required),
+so the results stack into a Dataset with dimensions ``run`` and ``time``, one variable
+per name, the swept parameters as coordinates along ``run``, and per run ``success``
+and ``message``.  A run that fails keeps what it computed (NaN after the failure) and
+never loses the others.
+
+Executors: ``None`` (serial, in this process), ``"processes"`` (local processes,
+:mod:`concurrent.futures`), a :class:`concurrent.futures.Executor`, or a
+``dask.distributed.Client`` (any cluster).  The compiled model travels to the workers by
+``pickle``, once per worker, not once per run; for local processes on a platform that
+forks, a model that cannot be pickled is inherited by the forked workers instead.
+"""
+from __future__ import annotations
+
+import itertools
+import os
+import pickle
+import threading
+import warnings
+
+import numpy as np
+
+__all__ = ["sweep", "ensemble"]
+
+_CHUNKS_PER_WORKER = 4     # tasks per worker: few enough to keep overhead low, enough to
+                           # balance runs of unequal length
+
+
+def sweep(model, parameters: dict, *, grid: str = "product", t_end: float,
+          t_eval=None, n_points: int | None = None, executor=None, names=None,
+          progress: bool | None = None, max_workers: int | None = None, **simulate_kwargs):
+    """Simulate ``model`` over a grid of parameter values; see the module docstring.
+
+    ``parameters``: ``{name: values}``; ``grid="product"``: every combination (the last
+    name varies fastest), ``"zip"``: the i-th value of each (equal lengths).  ``names``:
+    the variables to keep (default: all).  Other keywords go to :func:`acausal.simulate`.
+    Returns an ``xarray.Dataset``."""
+    if not isinstance(parameters, dict) or not parameters:
+        raise ValueError("sweep: parameters must be a non-empty dict {name: values}")
+    keys = list(parameters)
+    columns = [np.atleast_1d(np.asarray(parameters[k], dtype=float)) for k in keys]
+    if grid == "product":
+        combos = list(itertools.product(*columns))
+    elif grid == "zip":
+        lengths = {len(c) for c in columns}
+        if len(lengths) != 1:
+            raise ValueError(f"sweep: grid='zip' needs lists of equal length, got "
+                             f"{dict(zip(keys, (len(c) for c in columns)))}")
+        combos = list(zip(*columns))
+    else:
+        raise ValueError(f"sweep: grid must be 'product' or 'zip', not {grid!r}")
+    runs = [{k: float(v) for k, v in zip(keys, combo)} for combo in combos]
+    return ensemble(model, runs, t_end=t_end, t_eval=t_eval, n_points=n_points,
+                    executor=executor, names=names, progress=progress,
+                    max_workers=max_workers, **simulate_kwargs)
+
+
+def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = None,
+             executor=None, names=None, progress: bool | None = None,
+             max_workers: int | None = None, **simulate_kwargs):
+    """Simulate ``model`` once per parameter dict in ``runs``; see the module docstring."""
+    from .simulation import _output_times, _time, compile
+    runs = [dict(r) for r in runs]
+    if not runs:
+        raise ValueError("ensemble: no runs")
+    if t_eval is None and n_points is None:
+        raise ValueError("ensemble: give t_eval or n_points (the common output grid)")
+    t_start = _time("t_start", simulate_kwargs.pop("t_start", 0.0))
+    times = _output_times(t_eval, n_points, t_start, _time("t_end", t_end))
+    for key in ("parameters", "raise_on_failure", "n_points", "t_eval"):
+        if key in simulate_kwargs:
+            raise ValueError(f"ensemble: {key} is set per run, not as a keyword")
+    compiled = compile(model, simulate_kwargs.pop("backend", "auto"))
+    unknown = sorted({k for r in runs for k in r} - set(compiled.param_names))
+    if unknown:                  # a mistake in the call, not a failed run: say it now
+        compiled.set_parameters({unknown[0]: 1.0})
+    names = sorted(compiled.outputs) if names is None else list(names)
+    missing = [n for n in names if n not in compiled.outputs]
+    if missing:
+        raise KeyError(f"ensemble: no variables {missing} in the model")
+    job = {"t_end": float(t_end), "t_start": t_start, "t_eval": times, "names": names,
+           "kwargs": simulate_kwargs}
+    outcomes = _execute(compiled, runs, job, executor, progress, max_workers)
+    return _dataset(compiled, runs, times, names, outcomes)
+
+
+# -- one run, anywhere ----------------------------------------------------------------------
+def _run_one(compiled, base, values, job):
+    """(values on the grid (NaN where not reached), success, message, steps)."""
+    from .simulation import simulate
+    compiled.p[:] = base
+    grid = job["t_eval"]
+    out = np.full((len(job["names"]), len(grid)), np.nan)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")     # a failure is reported in the Dataset
+            res = simulate(compiled, job["t_end"], t_start=job["t_start"], t_eval=grid,
+                           parameters=values, progress=False, **job["kwargs"])
+    except Exception as err:  # noqa: BLE001 - any failure of one run is that run's result
+        return out, False, f"{type(err).__name__}: {err}", 0
+    finally:
+        compiled.p[:] = base
+    k = len(res.t)              # output at t_eval: a failed run's points are the first k
+    for i, n in enumerate(job["names"]):
+        out[i, :k] = res[n]
+    return out, bool(res.success), str(res.message), int(res.stats.get("steps", 0))
+
+
+def _run_chunk(compiled, base, chunk, job):
+    return [(index, *_run_one(compiled, base, values, job)) for index, values in chunk]
+
+
+_WORKER = {}     # in a worker process: the model it was given, by key
+
+
+def _worker_init(key, blob, inherited=None):
+    _WORKER[key] = inherited if inherited is not None else pickle.loads(blob)
+
+
+def _worker_chunk(key, base, chunk, job):
+    return _run_chunk(_WORKER[key], base, chunk, job)
+
+
+_KEPT = 16       # models a long-lived dask worker keeps between sweeps
+
+
+def _dask_chunk(blob, base, chunk, job):
+    """On a dask worker: the model unpickled once per worker thread and sweep, kept by
+    the hash of its bytes and the thread (a run changes the model's parameters and
+    discrete state, so threads of one worker never share a copy)."""
+    key = (hash(blob), threading.get_ident())
+    if key not in _WORKER:
+        while len(_WORKER) >= _KEPT:
+            _WORKER.pop(next(iter(_WORKER)))
+        _WORKER[key] = pickle.loads(blob)
+    return _run_chunk(_WORKER[key], base, chunk, job)
+
+
+def _fresh_chunk(blob, base, chunk, job):
+    """For any Executor (threads, perhaps): a copy of the model per task."""
+    return _run_chunk(pickle.loads(blob), base, chunk, job)
+
+
+# -- executors ------------------------------------------------------------------------------
+def _execute(compiled, runs, job, executor, progress, max_workers) -> list:
+    base = compiled.p.copy()
+    indexed = list(enumerate(runs))
+    bar = _RunsBar.make(progress, len(runs))
+    try:
+        if executor is None:
+            results = []
+            for item in indexed:
+                results += _run_chunk(compiled, base, [item], job)
+                bar.update(1)
+        elif _is_dask(executor):
+            results = _on_dask(executor, compiled, base, indexed, job, bar)
+        elif executor == "processes":
+            results = _on_processes(compiled, base, indexed, job, bar, max_workers)
+        elif hasattr(executor, "submit"):
+            results = _on_futures(executor, compiled, base, indexed, job, bar)
+        else:
+            raise ValueError(f"ensemble: executor must be None, 'processes', a "
+                             f"concurrent.futures Executor or a dask Client, "
+                             f"not {executor!r}")
+    finally:
+        compiled.p[:] = base
+        bar.close()
+    results.sort(key=lambda r: r[0])
+    return [r[1:] for r in results]
+
+
+def _chunks(indexed, workers):
+    n = max(1, min(len(indexed), workers * _CHUNKS_PER_WORKER))
+    return [indexed[k::n] for k in range(n)]
+
+
+def _blob(compiled):
+    try:
+        return pickle.dumps(compiled, protocol=pickle.HIGHEST_PROTOCOL)
+    except Exception as err:  # noqa: BLE001 - whatever pickle raises, say what it needs
+        raise TypeError(f"ensemble: this executor ships the compiled model by pickle, "
+                        f"which failed: {type(err).__name__}: {err}") from err
+
+
+def _on_processes(compiled, base, indexed, job, bar, max_workers):
+    import multiprocessing as mp
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+    workers = max_workers or os.cpu_count() or 1
+    key = id(compiled)
+    try:
+        init = (key, _blob(compiled), None)
+        context = None
+    except TypeError:
+        if "fork" not in mp.get_all_start_methods():
+            raise
+        # forked workers inherit the model: nothing is pickled on the way there
+        init, context = (key, None, compiled), mp.get_context("fork")
+    results = []
+    with ProcessPoolExecutor(max_workers=workers, mp_context=context,
+                             initializer=_worker_init, initargs=init) as pool:
+        futures = [pool.submit(_worker_chunk, key, base, chunk, job)
+                   for chunk in _chunks(indexed, workers)]
+        for fut in as_completed(futures):
+            part = fut.result()
+            results += part
+            bar.update(len(part))
+    return results
+
+
+def _on_futures(executor, compiled, base, indexed, job, bar):
+    from concurrent.futures import as_completed
+    blob = _blob(compiled)
+    workers = getattr(executor, "_max_workers", None) or os.cpu_count() or 1
+    futures = [executor.submit(_fresh_chunk, blob, base, chunk, job)
+               for chunk in _chunks(indexed, workers)]
+    results = []
+    for fut in as_completed(futures):
+        part = fut.result()
+        results += part
+        bar.update(len(part))
+    return results
+
+
+def _is_dask(executor) -> bool:
+    return type(executor).__module__.startswith("distributed") and \
+        hasattr(executor, "scatter")
+
+
+def _on_dask(client, compiled, base, indexed, job, bar):
+    from distributed import as_completed
+    blob = client.scatter(_blob(compiled), broadcast=True)
+    workers = max(1, len(client.scheduler_info().get("workers", {})))
+    futures = [client.submit(_dask_chunk, blob, base, chunk, job, pure=False)
+               for chunk in _chunks(indexed, workers)]
+    results = []
+    for fut in as_completed(futures):
+        part = fut.result()
+        results += part
+        bar.update(len(part))
+    return results
+
+
+class _RunsBar:
+    """Runs done, as a tqdm bar (``progress=None``: only when stderr is a terminal)."""
+
+    def __init__(self, bar=None):
+        self.bar = bar
+
+    @classmethod
+    def make(cls, progress, total, desc="runs"):
+        """``total=None``: a count without an end (an optimizer's simulations)."""
+        import sys
+        if progress is False or (progress is None and not sys.stderr.isatty()):
+            return cls()
+        try:
+            from tqdm.auto import tqdm
+        except ImportError as err:
+            raise ImportError("progress bars need tqdm: pip install 'acausal[progress]'") \
+                from err
+        return cls(tqdm(total=total, unit="run", desc=desc, leave=False))
+
+    def update(self, n):
+        if self.bar is not None:
+            self.bar.update(n)
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
+
+
+# -- the Dataset ----------------------------------------------------------------------------
+def _dataset(compiled, runs, times, names, outcomes):
+    import xarray as xr
+    meta = compiled.meta
+    units, descriptions = meta.get("units", {}), meta.get("descriptions", {})
+    data = {}
+    for i, n in enumerate(names):
+        data[n] = (("run", "time"), np.array([o[0][i] for o in outcomes]),
+                   {"units": units.get(n, ""), "description": descriptions.get(n, "")})
+    data["success"] = ("run", np.array([o[1] for o in outcomes], dtype=bool))
+    data["message"] = ("run", np.array([o[2] for o in outcomes], dtype=object))
+    data["steps"] = ("run", np.array([o[3] for o in outcomes], dtype=np.int64))
+    swept = sorted({k for r in runs for k in r}, key=lambda k: (
+        compiled.param_names.index(k) if k in compiled.param_names else 1 << 30, k))
+    base = dict(zip(compiled.param_names, compiled.p))
+    coords = {"run": np.arange(len(runs)), "time": ("time", times, {"units": "s"})}
+    for k in swept:
+        coords[k] = ("run", np.array([float(r.get(k, base.get(k, np.nan))) for r in runs]),
+                     {"units": units.get(k, "")})
+    return xr.Dataset(data, coords=coords, attrs={"n_runs": len(runs),
+                                                  "n_failed": int(sum(not o[1] for o in
+                                                                      outcomes))})
