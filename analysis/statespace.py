@@ -251,7 +251,8 @@ class StateSpace:
                           [_default(input, self.inputs, "input")])
         w = sys._frequency_grid() if w is None else np.asarray(w, dtype=float)
         H = sys.freqresp(w)
-        mag = 20.0 * np.log10(np.abs(H))
+        with np.errstate(divide="ignore"):   # a channel that is zero has -inf dB, as it is
+            mag = 20.0 * np.log10(np.abs(H))
         phase = np.degrees(np.unwrap(np.angle(H)))
         if plot or ax is not None:
             _bode_plot(w, mag, phase, ax, f"{sys.outputs[0]} / {sys.inputs[0]}")
@@ -346,6 +347,11 @@ class StateSpace:
         from scipy.signal import tf2ss
         A, B, C, D = tf2ss(num, den)
         return cls(A, B, C, D, **names)
+
+    def _repr_html_(self) -> str:
+        """Jupyter: the poles (natural frequency, damping) and the Bode plot."""
+        from ..display import statespace_html
+        return statespace_html(self)
 
     def __repr__(self):
         return (f"<StateSpace {self.n_states} states {self.states}, inputs {self.inputs}, "

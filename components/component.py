@@ -31,7 +31,8 @@ import copy
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
-from .declarations import Parameter, Variable, check_parameter_value, is_symbolic, ref
+from .declarations import (Parameter, Variable, check_parameter_value, declaration_doc,
+                           is_symbolic, parameter_signature, ref, shown_value)
 
 if TYPE_CHECKING:
     import sympy
@@ -84,6 +85,29 @@ def compiling(root: "Component"):
         _COMPILING.reset(token)
 
 
+def _describe_class(cls) -> None:
+    """Give ``cls`` the signature and docstring its declarations imply, so that
+    ``help(Resistor)`` and ``inspect.signature(Resistor)`` list R with its default, unit
+    and description.  Collected here without the caches above: a class may still gain
+    declarations after it is created, and the caches must see them."""
+    params, variables, children = {}, {}, {}
+    for klass in reversed(cls.__mro__):
+        for name, value in vars(klass).items():
+            if isinstance(value, Parameter):
+                params[name] = value
+            elif isinstance(value, Variable):
+                variables[name] = value
+            elif isinstance(value, Component):
+                children[name] = value
+    own_doc = vars(cls).get("__doc__")
+    cls.__signature__ = parameter_signature(cls, params)
+    if own_doc:
+        # the docstring's first paragraph stays the class's summary (FMU descriptions and
+        # the command line read it); a class without one keeps None rather than a summary
+        # that would be a parameter table
+        cls.__doc__ = declaration_doc(own_doc, params, variables, children)
+
+
 class Component:
     """Base class of every model and component (see the module docstring)."""
 
@@ -108,6 +132,7 @@ class Component:
                     decl.check()
                 except ValueError as err:
                     raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
+        _describe_class(cls)
 
     # -- the instance tree -------------------------------------------------------------
     def __setattr__(self, name, value):
@@ -276,7 +301,26 @@ class Component:
         return []
 
     def __repr__(self):
-        return f"<{type(self).__name__} {self._path or '(unbound)'}>"
+        # getattr: a subclass's __init__ may fail before Component.__init__ ran, and the
+        # traceback still shows the half-built instance
+        where = getattr(self, "_path", None) or "(unbound)"
+        if isinstance(self, Port):
+            return f"<{type(self).__name__} {where}>"
+        given = {**getattr(self, "_mods", {}), **getattr(self, "_param_values", {})}
+        shown = []
+        for name, decl in self.declarations().items():
+            if isinstance(decl, Parameter):
+                value = given.get(name, decl.value)
+                unit = f" {decl.unit}" if decl.unit else ""
+                shown.append(f"{name}={shown_value(value)!r}{unit}")
+        if len(shown) > 8:
+            shown = shown[:8] + [f"... ({len(shown) - 8} more)"]
+        return f"<{type(self).__name__} {where}" + (": " + ", ".join(shown) if shown else "") + ">"
+
+    def _repr_html_(self) -> str:
+        """Jupyter: the schematic of the component and its parameters."""
+        from ..display import component_html
+        return component_html(self)
 
 
 class Port(Component):
@@ -315,6 +359,11 @@ def connect(a: Port, b: Port, *more: Port) -> Connection:
     """Connect ports of the same type: ``ac.connect(self.R1.n, self.C1.p)``."""
     ports = (a, b) + more
     for p in ports:
+        if isinstance(p, Component) and not isinstance(p, Port):
+            own = [n for n, c in p.children().items() if isinstance(c, Port)]
+            raise InvalidConnection(
+                f"connect() takes ports, got the component '{p.path or type(p).__name__}' "
+                f"({type(p).__name__})" + (f"; its ports: {', '.join(own)}" if own else ""))
         if not isinstance(p, Port):
             raise InvalidConnection(f"connect() takes ports, got {p!r} ({type(p).__name__})")
     kinds = {p.connection_type() for p in ports}

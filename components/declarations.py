@@ -195,6 +195,13 @@ class Parameter(_Declaration):
         self.min = min
         self.max = max
 
+    def __repr__(self):
+        # help() lists a declaration by its repr: show what it declares
+        args = [repr(shown_value(self.value))]
+        args += [f"{k}={getattr(self, k)!r}" for k in ("unit", "min", "max", "description")
+                 if getattr(self, k) not in (None, "")]
+        return f"Parameter({', '.join(args)})"
+
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
         check_parameter_value(self.value, "default value")
@@ -230,6 +237,12 @@ class Variable(_Declaration):
         self.attributes = VariableAttributes(
             start=start, fixed=fixed, unit=unit, nominal=nominal, min=min, max=max,
             state_select=state_select, description=description)
+
+    def __repr__(self):
+        a, default = self.attributes, VariableAttributes()
+        args = [f"{f.name}={getattr(a, f.name)!r}" for f in fields(a)
+                if getattr(a, f.name) != getattr(default, f.name)]
+        return f"{type(self).__name__}({', '.join(args)})"
 
     def check(self) -> None:
         """Replace the attributes by their checked copy (ValueError if one is bad)."""
@@ -270,3 +283,112 @@ class ref:
 
     def __repr__(self):
         return f"ref({self.name!r})"
+
+
+# -- what help(), inspect.signature and repr show of a component class -----------------------
+# Built from the declarations when a class is created (Component.__init_subclass__), so no
+# component writes its own signature or parameter list and none can drift from the code.
+
+class _Shown:
+    """A default value as the signature prints it (``computed`` for a function of the
+    component, whose value exists only once the component is part of a model)."""
+
+    def __init__(self, text: str):
+        self.text = text
+
+    def __repr__(self):
+        return self.text
+
+
+def shown_value(value):
+    """A parameter value as help(), the signature and repr print it."""
+    if isinstance(value, ref) or value is None:
+        return value
+    if callable(value) and not is_symbolic(value) and not isinstance(value, numbers.Number):
+        return _Shown("computed")
+    return value
+
+
+def parameter_signature(cls, parameters: dict):
+    """``inspect.Signature`` of ``cls(...)``: the arguments of its own ``__init__`` (a
+    structural argument such as a number of segments), then every parameter as a
+    keyword-only argument with its default (annotated ``float [unit]``),
+    then ``**modifications`` (start values of variables, dicts for sub-components)."""
+    import inspect
+
+    init = inspect.signature(cls.__init__)
+    own = [p for p in list(init.parameters.values())[1:]]
+    if own and own[-1].kind is inspect.Parameter.VAR_KEYWORD:
+        var_kw = own.pop().replace(name="modifications")
+    elif not own:
+        var_kw = inspect.Parameter("modifications", inspect.Parameter.VAR_KEYWORD)
+    else:                           # an __init__ that takes no modifications at all
+        return init.replace(parameters=own)
+    taken = {p.name for p in own}
+    keyword = []
+    for name, decl in parameters.items():
+        if name in taken or not name.isidentifier():
+            continue
+        annotation = _Shown(f"float [{decl.unit}]") if decl.unit else float
+        keyword.append(inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY,
+                                         default=shown_value(decl.value),
+                                         annotation=annotation))
+    # keyword-only arguments go after *args, if the own __init__ has it
+    positional = [p for p in own if p.kind is not inspect.Parameter.KEYWORD_ONLY]
+    own_kw = [p for p in own if p.kind is inspect.Parameter.KEYWORD_ONLY]
+    return inspect.Signature(positional + own_kw + keyword + [var_kw])
+
+
+# the headings of the sections declaration_doc appends to a class's own docstring
+SECTION_HEADINGS = ("Parameters", "Variables", "Ports and sub-components")
+
+
+def own_docstring(cls) -> str:
+    """The docstring a component class was written with, without the sections that
+    ``declaration_doc`` appended (for pages that show the declarations another way)."""
+    import inspect
+    doc = inspect.cleandoc(vars(cls).get("__doc__") or "")
+    for heading in SECTION_HEADINGS:
+        doc = doc.split(f"\n\n{heading}\n{'-' * len(heading)}\n")[0]
+    return doc
+
+
+def _unit(text: str) -> str:
+    return f" [{text}]" if text else ""
+
+
+def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
+                    children: dict) -> str:
+    """The class docstring (its physics and source) followed by numpydoc sections that
+    list the parameters (default, unit, bounds, description), the variables (unit, start)
+    and the ports and sub-components, as ``help()`` shows them."""
+    import inspect
+    text = inspect.cleandoc(own_doc) if own_doc else ""
+    sections = []
+    if parameters:
+        lines = [SECTION_HEADINGS[0], "-" * len(SECTION_HEADINGS[0])]
+        for name, d in parameters.items():
+            bounds = ", ".join(b for b in (f"min {d.min!r}" if d.min is not None else "",
+                                           f"max {d.max!r}" if d.max is not None else "") if b)
+            lines.append(f"{name} : float{_unit(d.unit)}, default {shown_value(d.value)!r}"
+                         + (f" ({bounds})" if bounds else ""))
+            if d.description:
+                lines.append(f"    {d.description}")
+        sections.append("\n".join(lines))
+    if variables:
+        lines = [SECTION_HEADINGS[1], "-" * len(SECTION_HEADINGS[1])]
+        for name, v in variables.items():
+            a = v.attributes
+            extra = [f"start {a.start!r}" if a.start is not None else "",
+                     "fixed" if a.fixed else "",
+                     f"state_select {a.state_select}" if a.state_select != "default" else ""]
+            extra = ", ".join(e for e in extra if e)
+            lines.append(f"{name} : {v.kind}{_unit(a.unit)}" + (f", {extra}" if extra else ""))
+            if a.description:
+                lines.append(f"    {a.description}")
+        sections.append("\n".join(lines))
+    if children:
+        lines = [SECTION_HEADINGS[2], "-" * len(SECTION_HEADINGS[2])]
+        lines += [f"{name} : {type(c).__name__}" for name, c in children.items()]
+        sections.append("\n".join(lines))
+    return "\n\n".join(s for s in [text, *sections] if s)

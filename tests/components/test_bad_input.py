@@ -469,7 +469,8 @@ def test_connect_of_a_component_that_is_not_a_port():
         def equations(self):
             return [ac.connect(self.R1, self.C1.p)]
 
-    with _raises(InvalidConnection, "connect() takes ports, got <Resistor R1> (Resistor)"):
+    with _raises(InvalidConnection, "connect() takes ports, got the component 'R1' (Resistor); "
+                                    "its ports: p, n"):
         flatten(C())
 
 
