@@ -2,4 +2,6 @@
 from setuptools import find_packages, setup
 
 _SUB = find_packages(".", exclude=["tests*", "benchmarks*", "build*"])
-setup(packages=["acausal"] + [f"acausal.{p}" for p in _SUB], package_dir={"acausal": "."})
+# the C sources of the FMU engine are compiled into every exported FMU
+setup(packages=["acausal"] + [f"acausal.{p}" for p in _SUB], package_dir={"acausal": "."},
+      package_data={"acausal": ["py.typed"], "acausal.fmi": ["*.c", "*.h"]})
