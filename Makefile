@@ -3,23 +3,36 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
+TEST_STAMP := $(VENV)/.installed-test
 
-.PHONY: demo test bench clean
+.PHONY: demo test bench docs clean
 
 $(STAMP): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e ".[test,plot]"
+	$(PY) -m pip install --quiet -e ".[plot]"
 	touch $(STAMP)
+
+# the test extra brings every optional feature (FMI, io, dask, notebooks) so all are checked
+$(TEST_STAMP): $(STAMP)
+	$(PY) -m pip install --quiet -e ".[test,plot]"
+	touch $(TEST_STAMP)
 
 demo: $(STAMP)
 	$(PY) -m acausal.library.examples.motor_drive --plot motor_drive.png
 
-test: $(STAMP)
+test: $(TEST_STAMP)
 	$(PY) -m pytest -q
 
-bench: $(STAMP)
+bench: $(TEST_STAMP)
 	$(PY) benchmarks/run_all.py
 
+# the API reference and the tutorials, into site/ (the docs extra is installed on first use)
+docs: $(STAMP)
+	@$(PY) -c "import mkdocs, mkdocstrings, material" 2>/dev/null || \
+		$(PY) -m pip install --quiet -e ".[docs]" || \
+		{ echo "make docs: could not install the docs extra (pip install -e '.[docs]')"; exit 1; }
+	$(PY) -m mkdocs build --strict --site-dir site
+
 clean:
-	rm -rf $(VENV) build *.egg-info
+	rm -rf $(VENV) build site *.egg-info

@@ -29,6 +29,11 @@ _EXPORTS = {
     ".analysis": ("ModeWarning", "OperatingPointError", "StateSpace", "SteadyStateError",
                   "TransferFunctionWarning", "energy_balance", "estimate", "is_passive",
                   "linearize", "linearize_symbolic", "steady_state"),
+    ".fmi": ("export_fmu",),
+    ".results_io": ("load_result",),
+    ".sweeps": ("sweep", "ensemble"),
+    ".functions": ("sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan",
+                   "atan2", "sinh", "cosh", "tanh", "abs", "min", "max", "pi"),
 }
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
@@ -39,7 +44,10 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "InvalidHierarchy", "NotInModel", "SimulationError", "InitializationFailed",
            "linearize", "linearize_symbolic", "StateSpace", "steady_state",
            "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
-           "energy_balance", "is_passive", "estimate", "BackendError"]
+           "energy_balance", "is_passive", "estimate", "BackendError", "export_fmu",
+           "load_result", "sweep", "ensemble", "sqrt", "exp", "log", "log10", "sin", "cos",
+           "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi"]
+# ac.abs, ac.min and ac.max exist too, but not in __all__: `import *` must not shadow builtins
 
 
 def _lazy_exports(namespace: dict, exports: dict, submodules=()) -> tuple:
