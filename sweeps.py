@@ -92,9 +92,16 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
 
 # -- one run, anywhere ----------------------------------------------------------------------
 def _run_one(compiled, base, values, job):
-    """(values on the grid (NaN where not reached), success, message, steps)."""
+    """(values on the grid (NaN where not reached), success, message, steps); a job with
+    a ``task`` (a module-level function, so that it pickles) runs that instead:
+    ``task(compiled, values, job)`` with the model at its base parameters."""
     from .simulation import simulate
     compiled.p[:] = base
+    if job.get("task") is not None:
+        try:
+            return job["task"](compiled, values, job)
+        finally:
+            compiled.p[:] = base
     grid = job["t_eval"]
     out = np.full((len(job["names"]), len(grid)), np.nan)
     try:

@@ -2,6 +2,7 @@
 from .energy import (EnergyBalance, Passivity, energy_balance, is_passive,
                      register_dissipation, register_storage)
 from .estimate import Estimate, estimate
+from .grid import linearize_grid
 from .linearize import ModeWarning, linearize
 from .modes import ModeConflict
 from .operating import OperatingPoint, OperatingPointError, SteadyStateError, steady_state
@@ -10,8 +11,8 @@ from .realization import TransferFunctionWarning
 from .statespace import Margins, StateSpace
 from .symbolic import SymbolicStateSpace, linearize_symbolic
 
-__all__ = ["linearize", "linearize_symbolic", "steady_state", "estimate", "energy_balance",
-           "is_passive", "register_storage", "register_dissipation", "OperatingPoint",
+__all__ = ["linearize", "linearize_grid", "linearize_symbolic", "steady_state", "estimate",
+           "energy_balance", "is_passive", "register_storage", "register_dissipation", "OperatingPoint",
            "SteadyStateError", "StateSpace", "Margins", "Estimate", "EnergyBalance",
            "Passivity", "SymbolicStateSpace", "simulate_sensitivities",
            "output_sensitivities", "OperatingPointError", "ModeConflict", "ModeWarning",

@@ -54,7 +54,8 @@ class Estimate:
 
 def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=None,
              rtol: float = 1e-8, diff_step: float = 1e-4, max_nfev: int = 200,
-             sensitivities: str = "fd", progress: bool | None = None) -> Estimate:
+             sensitivities: str = "fd", progress: bool | None = None,
+             executor=None) -> Estimate:
     """Fit parameters of a model to measured time series.
 
     Parameters
@@ -84,6 +85,10 @@ def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=
         Limit on optimizer iterations (function evaluations).
     progress : bool or None
         Count the simulations on a tqdm bar (None: only when stderr is a terminal).
+    executor : optional
+        Where the 2 p simulations of each finite-difference Jacobian run
+        (:func:`acausal.sweep`'s executors: ``"processes"``, a concurrent.futures
+        Executor, a dask Client); None runs them here, one after the other.
 
     Returns
     -------
@@ -106,6 +111,7 @@ def estimate(model, data: dict, parameters, *, outputs=None, bounds=None, sigma=
     lo, hi = _bounds(names, start, bounds, scale)
     problem = (_ForwardProblem if sensitivities == "forward" else _Problem)(
         compiled, names, scale, t, y, w, rtol)
+    problem.executor = executor
     x0 = np.clip(np.array(list(start.values())) / scale, lo, hi)
     saved = compiled.p.copy()
     from scipy.optimize import least_squares
@@ -178,7 +184,11 @@ class _Problem:
             return np.full(self.size, 1e3)
         return np.concatenate([self.w[k] * (pred[k] - self.y[k]) for k in self.y])
 
+    executor = None             # where the Jacobian's simulations run (estimate's executor=)
+
     def jacobian(self, x, rel) -> np.ndarray:
+        if self.executor is not None:
+            return self._jacobian_on(self.executor, x, rel)
         cols = []
         for j in range(len(x)):
             h = rel * max(abs(x[j]), 1e-3)
@@ -187,6 +197,33 @@ class _Problem:
             xm[j] -= h
             cols.append((self.residual(xp) - self.residual(xm)) / (2 * h))
         return np.column_stack(cols)
+
+
+    def _jacobian_on(self, executor, x, rel) -> np.ndarray:
+        """The same central differences, the 2 p simulations spread by the ensemble
+        engine (:mod:`acausal.sweeps`); a run that fails gives the same large misfit as
+        :meth:`residual`."""
+        from ..sweeps import ensemble
+        steps, runs = [], []
+        for j in range(len(x)):
+            h = rel * max(abs(x[j]), 1e-3)
+            for sgn in (1.0, -1.0):
+                xs = x.copy()
+                xs[j] += sgn * h
+                runs.append(dict(zip(self.names, xs * self.scale)))
+            steps.append(h)
+        ds = ensemble(self.compiled, runs, t_end=self.t[-1], t_start=self.t[0],
+                      t_eval=self.t, rtol=self.rtol, atol=self.rtol, names=list(self.y),
+                      executor=executor, progress=False)
+        for _ in runs:
+            self._count()
+
+        def misfit(i):
+            if not bool(ds["success"][i]):
+                return np.full(self.size, 1e3)
+            return np.concatenate([self.w[k] * (ds[k].values[i] - self.y[k]) for k in self.y])
+        return np.column_stack([(misfit(2 * j) - misfit(2 * j + 1)) / (2 * h)
+                                for j, h in enumerate(steps)])
 
 
 class _ForwardProblem(_Problem):

@@ -21,9 +21,9 @@ over the backend (and C compiler) and the :func:`fingerprint` of the compiler:
   Needs flattening, hence sympy.
 * the **tree key** (:func:`tree_key`, only with ``cache="tree"``), from the instance
   tree before flattening, without sympy: each instance's path, class, modifications,
-  constructor arguments and plain attributes (structural parameters); every class's plain attributes; the source files
-  of the model's own modules and, transitively, of the project modules they reference
-  (with their plain constants).  ``<cache>/models/tree-<key>`` names the flat key it led
+  constructor arguments and plain attributes (structural parameters); every class's
+  plain attributes; the source files of the model's own modules and, transitively, of
+  the project modules they reference (with their plain constants).  ``<cache>/models/tree-<key>`` names the flat key it led
   to.  No tree key (only the flat one) when a part has no description that is the same
   in every process: a class without a source file (a notebook, ``python -c``), a local
   class, a value whose repr is an address.  Not seen by a tree key: equations reading
