@@ -54,6 +54,12 @@ def F_tr(Re_tr, rho, nu, C_d):
     return 9 * Re_tr**2 * rho * nu**2 / (8 * C_d**2) * sp.pi / 4
 
 
+# regularizations of the half powers, below any physical scale: a 0.1 nm square of
+# area and 1 Pa of pressure drop
+_A_REG = 1e-20     # m2
+_DP_REG = 1.0      # Pa
+
+
 def orifice_flow(A, dp, C_d, rho, nu, Re_tr):
     """Regularized orifice flow q(A, dp) (Ellman & Piche 1999; Egeland & Gravdahl 4.2.3,
     (4.13) with F_tr of (4.42)), extended as an odd function of dp:
@@ -63,13 +69,30 @@ def orifice_flow(A, dp, C_d, rho, nu, Re_tr):
         q = sign(dp) C_d A sqrt(2 |dp| / rho)                    |x| >= 1   (turbulent)
 
     The two branches and their slopes agree at |x| = 1, and the slope at dp = 0 is
-    finite.  ``A`` may be an expression that reaches 0 (a closed spool): A enters as
-    A^(3/2) in the laminar branch, whose slope in A vanishes with A.
+    finite.
+
+    Each branch is frozen between events, so the integrator evaluates it a little past
+    the relation that guards it, and every branch is written to be finite there, with
+    the sign of the law and a continuous derivative:
+
+    * past dp = 0 (the sign guard of the laminar branch), and past |x| = 1: both
+      branches are odd in dp, the turbulent one as dp (dp^2 + dp_r^2)^(-1/4) with
+      dp_r = 1 Pa (relative error dp_r^2/(4 dp^2) < 1e-12 where the branch is active,
+      |dp| >= F_tr/A);
+    * past A = 0: ``A`` is often the frozen branch of a clipped opening, b x_v of
+      b max(x_v, 0) (4.18), which goes negative until the spool's event is located.
+      A^(3/2) = A sqrt(A) would be NaN there; the law continues as an odd function of
+      A, A^(3/2) as A (A^2 + A_r^2)^(1/4) and |A| as (A^2 + A_r^2)^(1/2) with
+      A_r = 1e-20 m2 (relative error below A_r^2/(2 A^2)), like the turbulent branch
+      that is linear in A.  Its A-derivative is continuous and vanishes at A = 0 as
+      the book's does, and in a four-way valve the flow of a metering edge keeps
+      decreasing through zero as the spool passes centre, which is what the opposite
+      edge does after the event.
 
     Parameters
     ----------
     A : sympy expression
-        Opening area [m2], >= 0.
+        Opening area [m2], >= 0 where the law is meant (see above for A < 0).
     dp : sympy expression
         Pressure drop across the orifice [Pa].
     C_d, rho, nu, Re_tr : float or sympy expression
@@ -84,14 +107,26 @@ def orifice_flow(A, dp, C_d, rho, nu, Re_tr):
     Ftr = F_tr(Re_tr, rho, nu, C_d)
     x = A * dp / Ftr
     s = ac.if_else(dp >= 0, 1, -1)
-    # the power goes inside a piecewise area (a spool that closes): d(u^r)/du is
-    # r u^r / u to sympy, 0/0 in the branch where the area is identically 0
-    A32 = sp.piecewise_fold(sp.sympify(A)**sp.Rational(3, 2))
-    laminar = 3 * nu * Re_tr / 4 * sp.sqrt(sp.pi) / 2 * A32 * dp / Ftr * (3 - s * x)
-    # |dp|^(1/2) as (dp^2 + 1 Pa^2)^(1/4): exact to 1e-12 where a turbulent branch is
-    # active (|dp| >= F_tr/A), and defined when Newton strays across dp = 0 while the
-    # branch is frozen; sp.Abs would be differentiated into re()/im()
-    turbulent = C_d * A * sp.sqrt(2 / rho) * (dp**2 + 1)**sp.Rational(1, 4)
+    # the power goes inside a piecewise area (a spool that closes): the derivative of a
+    # power of a Piecewise is taken as r u^r / u by sympy, 0/0 in the branch where the
+    # area is identically 0
+    A = sp.piecewise_fold(sp.sympify(A))
+    if isinstance(A, sp.Piecewise):
+        A32 = sp.Piecewise(*((_odd_three_halves(a), c) for a, c in A.args))
+    else:
+        A32 = _odd_three_halves(A)
+    # |x| = |A| |dp| / F_tr, with |A| as sqrt(A^2 + A_r^2): even in A, like |dp| = s dp
+    abs_x = s * dp * (A**2 + _A_REG**2)**sp.Rational(1, 2) / Ftr
+    laminar = 3 * nu * Re_tr / 4 * sp.sqrt(sp.pi) / 2 * A32 * dp / Ftr * (3 - abs_x)
+    # |dp|^(1/2) sign(dp) without sp.Abs, which would be differentiated into re()/im()
+    turbulent = C_d * A * sp.sqrt(2 / rho) * dp * (dp**2 + _DP_REG**2)**sp.Rational(-1, 4)
     # the switch is on x, not on A dp against F_tr: F_tr alone has C_d^2 as its only
     # denominator, which the code printer emits wrongly (a / C_d * C_d)
-    return ac.if_else(x > 1, turbulent, ac.if_else(x < -1, -turbulent, laminar))
+    return ac.if_else(x > 1, turbulent, ac.if_else(x < -1, turbulent, laminar))
+
+
+def _odd_three_halves(a):
+    """a^(3/2) for a >= 0, continued as an odd C1 function to a < 0."""
+    if a.is_zero:
+        return sp.Integer(0)
+    return a * (a**2 + _A_REG**2)**sp.Rational(1, 4)

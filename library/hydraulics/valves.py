@@ -101,12 +101,19 @@ class PressureCompensatedValve(_OrificeData, PartialTwoPort):
     """Pressure-compensated flow-control valve (Egeland & Gravdahl 4.2.8), with the
     compensation spool in static equilibrium (its chambers at p_3 = p_c, p_4 = p_2):
 
-        q = q(b_c x_c, p_1 - p_c) = q(b x_v, p_c - p_2)        (4.45)-(4.46)
+        q = q(b_c x_c + A_leak, p_1 - p_c)                    (4.45)
+          = q(b max(x_v, 0) + A_leak, p_c - p_2)              (4.46)
         K_c x_c = A_c (p_2 - p_c) + F_c0,   0 <= x_c <= x_c_max  (4.47), static
 
     The spool holds p_c - p_2 near F_c0/A_c, so q ~ C_d sqrt(2 F_c0/(rho A_c)) b x_v
     whatever p_1 - p_2 is (4.57).  The spool mass and the chamber dynamics (4.48)-(4.55)
     are not modelled.
+
+    The main spool's opening is b max(x_v, 0): a negative command holds it closed.  A
+    closed main spool with a closed compensator (x_v <= 0 and p_1 - p_2 > F_c0/A_c)
+    traps the pressure p_c between them, which a static model cannot determine; a
+    leakage area A_leak > 0 of both metering edges makes it the pressure between two
+    equal leaks.
     """
 
     x_v = RealInput()
@@ -116,6 +123,8 @@ class PressureCompensatedValve(_OrificeData, PartialTwoPort):
     K_c = ac.Parameter(1e3, unit="N/m", min=0, description="compensator spring stiffness")
     F_c0 = ac.Parameter(50.0, unit="N", description="spring preload")
     x_c_max = ac.Parameter(5e-3, unit="m", min=0, description="compensator stroke")
+    A_leak = ac.Parameter(0.0, unit="m2", min=0,
+                          description="leakage area of each closed metering edge")
     p_c = ac.Variable(start=0.0, unit="Pa", nominal=1e6, description="pressure between spools")
     x_c = ac.Variable(start=1e-3, unit="m", nominal=1e-3, description="compensator opening")
 
@@ -127,9 +136,10 @@ class PressureCompensatedValve(_OrificeData, PartialTwoPort):
         free = (self.F_c0 - self.A_c * (self.p_c - self.port_b.p)) / self.K_c
         clipped = ac.if_else(free < 0, 0, ac.if_else(free > self.x_c_max, self.x_c_max, free))
         return [*super().equations(),
-                ac.Eq(self.q, self._orifice(self.b_c * self.x_c, self.dp + self.port_b.p
-                                            - self.p_c)),
-                ac.Eq(self.q, self._orifice(self.b * self.x_v, self.p_c - self.port_b.p)),
+                ac.Eq(self.q, self._orifice(self.b_c * self.x_c + self.A_leak,
+                                            self.dp + self.port_b.p - self.p_c)),
+                ac.Eq(self.q, self._orifice(self.b * _positive(self.x_v) + self.A_leak,
+                                            self.p_c - self.port_b.p)),
                 ac.Eq(self.x_c, clipped)]
 
 
