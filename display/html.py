@@ -33,7 +33,7 @@ def _esc(x) -> str:
 
 def _num(x) -> str:
     if isinstance(x, (float, np.floating)):
-        return f"{float(x):.6g}"
+        return f"{float(x) + 0.0:.6g}"       # + 0.0: a pole at -0.0 reads 0
     return _esc(x)
 
 
