@@ -297,9 +297,17 @@ class _Run:
         if exc.kind == "singular":
             variables = [names[c] for c in exc.cols]
             equations = [equation_label(self.problem, r) for r in exc.rows]
-            msg = (f"singular iteration matrix at t={exc.t:.10g}: variables {variables}, "
-                   f"equations {equations} (a higher-index or structurally singular "
-                   f"model, or a singular configuration of it)")
+            if "non-finite" in str(exc):
+                # not a structural matter: a derivative that is infinite there
+                msg = (f"the iteration matrix has non-finite entries at t={exc.t:.10g}: "
+                       f"the derivatives of equations {equations} with respect to "
+                       f"{variables} are not finite (a function at the edge of its "
+                       f"domain, such as sqrt(x) at x = 0, or a division by a variable "
+                       f"that reached 0)")
+            else:
+                msg = (f"singular iteration matrix at t={exc.t:.10g}: variables "
+                       f"{variables}, equations {equations} (a higher-index or "
+                       f"structurally singular model, or a singular configuration of it)")
             return self._error(msg, exc.t, variables)
         variables = self._dominant(exc.weighted)
         what = {"step_size": "step size too small",

@@ -103,3 +103,25 @@ def test_a_start_value_outside_a_functions_domain_names_the_equation():
         ac.simulate(SqrtOfStart(), t_end=1.0)
     msg = str(err.value)
     assert "der(x)" in msg and "math domain error" in msg and "t = 0" in msg
+
+
+class EmptyingTank(ac.Component):
+    """der(h) = -sqrt(h) - 0.1 from h = 1: empty at t = 2 (1 - 0.1 ln 11), where the
+    equation stops having a real solution (u = sqrt(h): 2u u' = -(u + 0.1))."""
+
+    h = ac.Variable(start=1.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.h), -ac.sqrt(self.h) - 0.1)]
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-8])
+def test_a_derivative_that_becomes_infinite_is_not_called_structural(rtol):
+    """The run stops where the tank is empty, names h, and (whether the step size or the
+    iteration matrix gives out first) does not blame the model's structure."""
+    with pytest.warns(RuntimeWarning, match="stopped early"):
+        res = ac.simulate(EmptyingTank(), t_end=5.0, rtol=rtol)
+    assert not res.success
+    assert abs(res.t[-1] - 2 * (1 - 0.1 * math.log(11))) < 1e-3
+    assert "['h']" in res.message and "higher-index" not in res.message
+    assert "non-finite" in res.message or "step size too small" in res.message
