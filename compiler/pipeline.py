@@ -87,6 +87,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
                             + ", ".join(flat.structural_zeros[:20])
                             + (" ..." if len(flat.structural_zeros) > 20 else ""))
     reduced, aliases = clock("alias", eliminate_aliases, flat)
+    _resolve_aliases_in(discretes, flat, aliases)
     report.aliases = aliases
     report.count("alias", equations=len(reduced.equations), variables=len(reduced.variables))
     system, structure = clock("structure", _symbolic_system, reduced, discretes)
@@ -121,6 +122,27 @@ def _from_cache(found, seconds, how) -> ModelCode:
                         f"{seconds * 1e3:.1f} ms); the other timings are those of the "
                         "original compile")
     return mc
+
+
+def _resolve_aliases_in(discretes, flat, aliases) -> None:
+    """The frozen floor values were found before alias elimination: their arguments get
+    the same substitution as the equations (``mod(u, 1)`` of a ``u`` that is an alias of
+    the state ``x`` reads ``x``)."""
+    if not discretes:
+        return
+    import sympy as sp
+    by_name = {v.name: v.symbol for v in flat.variables}
+    subs = {}
+    for v in flat.variables:
+        if v.name in aliases.constants:
+            subs[v.symbol] = sp.sympify(aliases.constants[v.name])
+            continue
+        sign, root = aliases.resolve(v.name)
+        if root != v.name and root in by_name:
+            subs[v.symbol] = sign * by_name[root]
+    for d in discretes:
+        if d.argument.free_symbols & subs.keys():
+            d.argument = d.argument.xreplace(subs)
 
 
 def _symbolic_system(reduced, discretes):

@@ -207,3 +207,24 @@ def test_no_event_keeps_if_expressions_from_making_events():
     res = ac.simulate(compiled, t_end=1.0, rtol=1e-8, t_eval=[0.25, 1.0])
     assert list(res["y"]) == [0.0, 1.0] and res.events == []   # branch values: exact
     assert res["w"][-1] == pytest.approx(0.5, abs=1e-3)   # integrated across the jump
+
+
+class SawOfAnAlias(ac.Component):
+    """y = mod(u, 1) with u = x an alias of the state x' = 1: the frozen floor value reads
+    x once alias elimination has removed u; y is the sawtooth mod(t, 1)."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    u = ac.Variable()
+    y = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1.0), ac.Eq(self.u, self.x),
+                ac.Eq(self.y, sp.Mod(self.u, 1.0))]
+
+
+def test_a_floor_of_an_eliminated_alias_reads_its_representative():
+    res = ac.simulate(SawOfAnAlias(), t_end=2.5, rtol=1e-8)
+    assert res.success
+    assert np.max(np.abs(np.array(res.events) - [1.0, 2.0])) < 1e-6
+    inside = np.abs(np.mod(res.t, 1.0) - 0.5) < 0.49      # away from the jumps
+    assert np.max(np.abs(res["y"][inside] - np.mod(res.t[inside], 1.0))) < 1e-9
