@@ -4,7 +4,7 @@ from ... import _lazy_exports
 __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "Sine",
            "Pulse", "Gain", "Add", "Feedback", "Product", "Integrator", "Derivative",
            "FirstOrder", "SecondOrder", "TransferFunction", "PI", "PID", "Limiter",
-           "Saturation", "DeadZone"]
+           "Saturation", "DeadZone", "CombiTimeTable", "CombiTable1D", "CombiTable2D"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".continuous": ("PI", "PID", "Derivative", "FirstOrder", "Integrator", "SecondOrder",
@@ -13,4 +13,5 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".math": ("Add", "Feedback", "Gain", "Product"),
     ".nonlinear": ("DeadZone", "Limiter", "Saturation"),
     ".sources": ("Constant", "Pulse", "Ramp", "Sine", "Step"),
+    ".tables": ("CombiTable1D", "CombiTable2D", "CombiTimeTable"),
 })
