@@ -119,6 +119,11 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
                         initialize=False, progress=bar)
     except SimulationError as err:
         partial = err.partial
+        start = _singular_start(compiled, t_start)
+        if start and start not in str(err):
+            # what failed first: the structure found at compile time does not hold here
+            err.args = (f"{err}; {start}",)
+            err.reason = str(err)
         res = _result(compiled, partial, False, str(err), marks) \
             if partial is not None and len(partial.t) else None
         if raise_on_failure or res is None:
@@ -129,7 +134,22 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     finally:
         if bar is not None:
             bar.close()
-    return _result(compiled, out, out.success, out.message, marks)
+    message = out.message
+    start = _singular_start(compiled, t_start) if not out.success else None
+    if start and start not in message:
+        message = f"{message}; {start}"
+    return _result(compiled, out, out.success, message, marks)
+
+
+def _singular_start(compiled, t_start) -> str | None:
+    """The initialization's note that the structural analysis fails at t_start (the
+    algebraic Jacobian is singular there), or None."""
+    head = f"structural analysis fails at t = {t_start:.6g}"
+    report = getattr(compiled, "report", None)
+    for note in getattr(report, "notes", ()):
+        if note.startswith(head):
+            return note
+    return None
 
 
 def _result(compiled, out, success, message, marks=(0, 0, "")) -> Result:
