@@ -314,7 +314,8 @@ class BDF:
             self.hh = min(self.hh, self.max_step)
             remaining = self.t_stop - saved_t
             # stretch by a few ulps rather than leave a gap no step can cross
-            landing = self.hh >= remaining - 64 * _EPS * abs(self.t_stop)
+            landing = math.isfinite(self.t_stop) and \
+                self.hh >= remaining - 64 * _EPS * abs(self.t_stop)
             if landing:
                 if remaining <= self._hmin():
                     self.t_prev, self.tn = saved_t, self.t_stop   # below time resolution
