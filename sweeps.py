@@ -208,16 +208,11 @@ def _on_processes(compiled, base, indexed, job, bar, max_workers):
             raise
         # forked workers inherit the model: nothing is pickled on the way there
         init, context = (key, None, compiled), mp.get_context("fork")
-    results = []
     with ProcessPoolExecutor(max_workers=workers, mp_context=context,
                              initializer=_worker_init, initargs=init) as pool:
         futures = [pool.submit(_worker_chunk, key, base, chunk, job)
                    for chunk in _chunks(indexed, workers)]
-        for fut in as_completed(futures):
-            part = fut.result()
-            results += part
-            bar.update(len(part))
-    return results
+        return _gather(futures, as_completed, bar)
 
 
 def _on_futures(executor, compiled, base, indexed, job, bar):
@@ -226,6 +221,11 @@ def _on_futures(executor, compiled, base, indexed, job, bar):
     workers = getattr(executor, "_max_workers", None) or os.cpu_count() or 1
     futures = [executor.submit(_fresh_chunk, blob, base, chunk, job)
                for chunk in _chunks(indexed, workers)]
+    return _gather(futures, as_completed, bar)
+
+
+def _gather(futures, as_completed, bar) -> list:
+    """The chunks' (index, outcome) records as they complete, counted on the bar."""
     results = []
     for fut in as_completed(futures):
         part = fut.result()
@@ -245,12 +245,7 @@ def _on_dask(client, compiled, base, indexed, job, bar):
     workers = max(1, len(client.scheduler_info().get("workers", {})))
     futures = [client.submit(_dask_chunk, blob, base, chunk, job, pure=False)
                for chunk in _chunks(indexed, workers)]
-    results = []
-    for fut in as_completed(futures):
-        part = fut.result()
-        results += part
-        bar.update(len(part))
-    return results
+    return _gather(futures, as_completed, bar)
 
 
 class _RunsBar:

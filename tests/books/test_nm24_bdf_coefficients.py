@@ -111,7 +111,9 @@ def test_constant_step_points_satisfy_the_book_formula(order):
         lhs = sum(a[j] * y[n - j] for j in range(order + 1))
         size = sum(abs(a[j]) * np.max(np.abs(y[n - j])) for j in range(order + 1))
         worst = max(worst, np.max(np.abs(lhs - H * A @ y[n])) / size)
-    assert worst < 1e-13
+    # round-off of the corrector's linear solve, relative to the terms of the formula; a
+    # coefficient wrong in its third digit leaves a residual of order 1e-3 of them
+    assert worst < 1e-10
 
 
 def _amplification(order, h_omega):

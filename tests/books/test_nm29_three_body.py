@@ -94,7 +94,7 @@ def test_orbit_closes_after_one_period(orbit):
     start = np.array([x0, 0.0, 0.0, vy0])
     end = np.array([res[v][-1] for v in ("x", "y", "vx", "vy")])
     size = max(np.max(np.abs(res[v])) for v in ("x", "y", "vx", "vy"))
-    assert res.t[-1] == pytest.approx(period, rel=1e-15)
+    assert res.t[-1] == pytest.approx(period, rel=1e-12)
     assert np.max(np.abs(end - start)) < CLOSURE[name] * size, (name, end - start)
 
 
