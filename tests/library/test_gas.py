@@ -128,3 +128,11 @@ def test_surge_is_a_limit_cycle_without_stall(surge):
     assert phi.min() < -0.15 and phi.max() > 0.7         # deep surge, reverse flow
     assert 0.15 < psi.min() and psi.max() < 0.75
     assert np.max(np.abs(surge["compressor.J"][late])) < 1e-12
+
+
+def test_energy_audit_refuses_gas_ports():
+    """p m_flow (or psi phi) is not a power: the audit says so instead of booking it."""
+    model = mg.Surge()
+    res = ac.simulate(model, t_end=1.0)
+    with pytest.raises(ValueError, match="not a power"):
+        ac.energy_balance(res, model)
