@@ -71,5 +71,6 @@ class PneumaticCylinder(_PolytropicGas):
 
     def equations(self):
         return [ac.Eq(self.V, self.V_0 + self.A * self.flange.s),
-                *self._chamber(self.V, ac.der(self.V)),
+                # der(V) as A der(s): the piston position, not the volume, is the state
+                *self._chamber(self.V, self.A * ac.der(self.flange.s)),
                 ac.Eq(self.flange.f, -self.A * self.p)]
