@@ -223,3 +223,74 @@ def test_two_mass_pneumatic_spring_follows_14_144():
     assert np.max(np.abs(res["mass_1.s"] - ref.y[0])) < 1e-6 * np.ptp(ref.y[0])
     stretch, stretch_ref = res["mass_1.s"] - res["mass_2.s"], ref.y[0] - ref.y[2]
     assert np.max(np.abs(stretch - stretch_ref)) < 1e-3 * np.ptp(stretch_ref)
+
+
+# -- volumes, throttles and sources against closed forms -------------------------------------
+from acausal.library import gas  # noqa: E402
+
+R_T = 1e5 / 1.2          # p_0/rho_0 of the default polytrope: R T of the isothermal gas
+
+
+class _Filling(ac.Component):
+    """An adiabatic receiver filled at a constant mass flow."""
+
+    source = gas.ConstantMassFlow(m_flow=2e-3)
+    tank = gas.GasVolume(V=1e-2, n=1.4, p={"start": 1e5, "fixed": True})
+
+    def equations(self):
+        return [ac.connect(self.source.port, self.tank.port)]
+
+
+def test_adiabatic_filling_follows_the_isentrope():
+    """Mass balance m = m_0 + m_flow t and p = p_0 (m/(rho_0 V))^kappa (14.98)."""
+    res = ac.simulate(_Filling(), t_end=5.0, rtol=1e-10, n_points=101, raise_on_failure=True)
+    m = 1.2 * 1e-2 + 2e-3 * res.t
+    p = 1e5 * (m / (1.2 * 1e-2))**1.4
+    assert np.max(np.abs(res["tank.p"] - p)) < 1e-8 * np.ptp(p)
+    assert np.max(np.abs(res["tank.m"] - m)) < 1e-8 * np.ptp(m)
+
+
+class _Charging(ac.Component):
+    """An isothermal receiver charged from a supply through a throttle."""
+
+    supply = gas.FixedPressure(p=6e5)
+    valve = gas.Throttle(A=1e-6, rho=6.0)
+    tank = gas.GasVolume(V=1e-3, n=1.0, p={"start": 1e5, "fixed": True})
+
+    def equations(self):
+        return [ac.connect(self.supply.port, self.valve.port_a),
+                ac.connect(self.valve.port_b, self.tank.port)]
+
+
+def test_isothermal_charging_through_a_throttle():
+    """u = p_s - p obeys u' = -k sqrt(u), k = R T C_d A sqrt(2 rho)/V, so
+    sqrt(u) = sqrt(u_0) - k t/2 until the tank is full."""
+    k = R_T * 0.6 * 1e-6 * np.sqrt(2 * 6.0) / 1e-3
+    t_full = 2 * np.sqrt(5e5) / k
+    res = ac.simulate(_Charging(), t_end=0.8 * t_full, rtol=1e-10, n_points=101,
+                      raise_on_failure=True)
+    u = (np.sqrt(5e5) - k * res.t / 2)**2
+    assert np.max(np.abs(6e5 - res["tank.p"] - u)) < 1e-7 * 5e5
+
+
+class _Equalizing(ac.Component):
+    """Two isothermal volumes joined by a laminar restriction."""
+
+    a = gas.GasVolume(V=1e-3, n=1.0, p={"start": 3e5, "fixed": True})
+    link = gas.LaminarThrottle(G=1e-9)
+    b = gas.GasVolume(V=3e-3, n=1.0, p={"start": 1e5, "fixed": True})
+
+    def equations(self):
+        return [ac.connect(self.a.port, self.link.port_a),
+                ac.connect(self.link.port_b, self.b.port)]
+
+
+def test_laminar_equalization_conserves_mass():
+    """p_a - p_b decays at the rate R T G (1/V_a + 1/V_b); the gas mass is conserved."""
+    res = ac.simulate(_Equalizing(), t_end=20.0, rtol=1e-10, n_points=101,
+                      raise_on_failure=True)
+    rate = R_T * 1e-9 * (1 / 1e-3 + 1 / 3e-3)
+    dp = res["a.p"] - res["b.p"]
+    assert np.max(np.abs(dp - 2e5 * np.exp(-rate * res.t))) < 1e-8 * 2e5
+    mass = res["a.m"] + res["b.m"]
+    assert np.max(np.abs(mass - mass[0])) < 1e-10 * mass[0]
