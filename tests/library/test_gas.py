@@ -80,6 +80,38 @@ def test_rotating_stall_linearization_is_the_hand_jacobian():
     assert np.all(hand.real < 0)                # the stall point attracts
 
 
+def _design_point():
+    """The axisymmetric equilibrium, J = 0: W (1 + m) = gamma_T sqrt(psi_c(Phi, 0)), a
+    cubic in m = Phi/W - 1 with one real root for these data."""
+    g2 = GAMMA_T**2
+    roots = np.roots([0.5 * H * g2, W**2, 2 * W**2 - 1.5 * H * g2, W**2 - g2 * (PSI_C0 + H)])
+    m = [r.real for r in roots if abs(r.imag) < 1e-12]
+    assert len(m) == 1
+    m = m[0]
+    return np.array([PSI_C0 + H * (1 + 1.5 * m - 0.5 * m**3), W * (1 + m), 0.0])
+
+
+@pytest.mark.parametrize("model, B", [(mg.RotatingStall, 0.1), (mg.Surge, 1.0)])
+def test_design_point_is_unstable_the_way_b_says(model, B):
+    """Linearized at the J = 0 equilibrium (on the rising part of the characteristic):
+    the stall mode sigma (1 - m^2) grows for either B; the surge mode (Psi, Phi) is
+    damped for B = 0.1 and grows for B = 1 -- rotating stall and surge."""
+    x = _design_point()
+    assert max(abs(v) for v in _mg3(0.0, x, B)) < 1e-15
+    sys = ac.linearize(model(), at={"plenum.psi": x[0], "compressor.phi": x[1],
+                                    "compressor.J": 0.0})
+    hand = np.linalg.eigvals(_mg3_jacobian(x, B))
+    poles = sys.poles()
+    assert len(poles) == 3
+    assert max(np.min(np.abs(poles - lam)) for lam in hand) < 1e-8 * np.max(np.abs(hand))
+    stall = SIGMA * (1 - (x[1] / W - 1)**2)
+    assert np.min(np.abs(poles - stall)) < 1e-8 * stall
+    surge_modes = poles[np.abs(poles.imag) > 0]
+    assert len(surge_modes) == 2
+    assert (surge_modes.real > 0).all() == (B == 1.0)
+    assert (surge_modes.real < 0).all() == (B == 0.1)
+
+
 @pytest.fixture(scope="module")
 def surge():
     return ac.simulate(mg.Surge(), t_end=mg.Surge.stop_time, rtol=1e-10, n_points=6001,
