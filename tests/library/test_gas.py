@@ -326,3 +326,29 @@ def test_laminar_equalization_conserves_mass():
     assert np.max(np.abs(dp - 2e5 * np.exp(-rate * res.t))) < 1e-8 * 2e5
     mass = res["a.m"] + res["b.m"]
     assert np.max(np.abs(mass - mass[0])) < 1e-10 * mass[0]
+
+
+def test_pneumatic_lift_follows_the_hand_written_equations():
+    """Throttle, isothermal cylinder, mass and spring against DOP853 on
+    p' = (p/(rho V)) (m_flow - rho A v), m v' = A (p - p_amb) - m g - c (x - x_0),
+    m_flow = C_d A_t sqrt(2 rho_t (p_s - p)), rho = rho_0 p/p_0."""
+    from acausal.library.gas.examples import pneumatic_lift as pl
+    res = ac.simulate(pl.PneumaticLift(), t_end=pl.PneumaticLift.stop_time, rtol=1e-10,
+                      n_points=301, raise_on_failure=True)
+
+    def rhs(t, y):
+        p, x, v = y
+        rho, V = pl.RHO_REF * p / pl.P_REF, pl.V_0 + pl.A * x
+        m_flow = pl.C_D * pl.A_T * np.sqrt(2 * pl.RHO_T * (pl.P_S - p))
+        return [p / (rho * V) * (m_flow - rho * pl.A * v), v,
+                (pl.A * (p - pl.P_AMB) - pl.M * pl.G - pl.C * (x - pl.X_0)) / pl.M]
+    ref = solve_ivp(rhs, (0.0, res.t[-1]), [pl.P_START, pl.X_0, 0.0], method="DOP853",
+                    rtol=1e-11, atol=1e-13, t_eval=res.t)
+    for name, row in (("cylinder.p", 0), ("load.s", 1), ("load.v", 2)):
+        err = np.max(np.abs(res[name] - ref.y[row]))
+        assert err < 1e-6 * np.ptp(ref.y[row]), (name, err)
+    # the gas mass grows by what the throttle passes
+    m_in = np.concatenate([[0.0], np.cumsum(np.diff(res.t) * (res["valve.m_flow"][1:]
+                                                              + res["valve.m_flow"][:-1]) / 2)])
+    m_gas = res["cylinder.m"] - res["cylinder.m"][0]
+    assert np.max(np.abs(m_gas - m_in)) < 1e-3 * m_gas[-1]      # trapezoid on the grid
