@@ -74,9 +74,11 @@ class Plenum(ac.Component):
 
         psi = port.psi,   4 B^2 l_c der(psi) = port.phi
 
-    port.phi is the net flow into the plenum.  B = (U/(2c)) sqrt(V_p/(A_c l_c)) (14.4) is
-    Greitzer's parameter; l_c must be the compressor's (it enters through the
-    normalization of (14.1)).
+    port.phi is the net flow into the plenum.  B = (U/(2c)) sqrt(V_p/(A_c L_c)) (14.4) is
+    Greitzer's parameter.  The product 4 B^2 l_c = (U/c)^2 V_p/(A_c R) belongs to the
+    plenum alone, but the book gives B, which is defined with the compressor's duct
+    length: give the plenum the compressor's l_c.  B = 0 is the limit of a plenum
+    without storage (flow in = flow out).
     """
 
     port = NormalizedGasPort()

@@ -48,7 +48,9 @@ class PeltonTurbine(PartialTwoPort):
         T_t = 2 r_t rho q (q/A - r_t w),   w = der(flange.phi),   flange.tau = -T_t
 
     port_a is the nozzle's inlet, port_b the tailwater the jet discharges to (p = 0 in
-    the book).  (11.103) prints q_0^2/A_p^2 for the inlet velocity head; the
+    the book).  The gate A must stay above zero: a closed nozzle would stop a rigid
+    column at once (use a ``LumpedLine`` and a ``VariableOrifice`` for a closure, as in
+    the water hammer example).  (11.103) prints q_0^2/A_p^2 for the inlet velocity head; the
     linearization that follows it, with alpha = 1 - A_0^2/A_p^2, is that of q^2/A_p^2,
     as here.  Linearized at (A_0, q_0, w_0) with the pipe H_pq(s):
 
