@@ -352,3 +352,84 @@ def test_pneumatic_lift_follows_the_hand_written_equations():
                                                               + res["valve.m_flow"][:-1]) / 2)])
     m_gas = res["cylinder.m"] - res["cylinder.m"][0]
     assert np.max(np.abs(m_gas - m_in)) < 1e-3 * m_gas[-1]      # trapezoid on the grid
+
+
+# -- the compressible (choking) throttle ------------------------------------------------------
+KAPPA, R_AIR, T_AIR = 1.4, 287.0, 293.15
+R_CRIT = (2 / (KAPPA + 1))**(KAPPA / (KAPPA - 1))
+
+
+def _nozzle_flow(p_u, p_d, A):
+    """The Saint-Venant-Wantzel law, by hand."""
+    r = max(p_d / p_u, R_CRIT)
+    return (0.6 * A * p_u * np.sqrt(2 * KAPPA / ((KAPPA - 1) * R_AIR * T_AIR))
+            * r**(1 / KAPPA) * np.sqrt(1 - r**((KAPPA - 1) / KAPPA)))
+
+
+class _Discharge(ac.Component):
+    """An isothermal tank at 8 bar blowing off to the atmosphere."""
+
+    tank = gas.GasVolume(V=1e-2, n=1.0, p_0=1e5, rho_0=1e5 / (R_AIR * T_AIR),
+                         p={"start": 8e5, "fixed": True})
+    valve = gas.CompressibleThrottle(A=4e-6, C_d=0.6)
+    atmosphere = gas.FixedPressure(p=1e5)
+
+    def equations(self):
+        return [ac.connect(self.tank.port, self.valve.port_a),
+                ac.connect(self.valve.port_b, self.atmosphere.port)]
+
+
+def test_tank_discharge_choked_then_subsonic():
+    """Choked, the mass flow is proportional to the tank pressure, and the isothermal
+    tank empties exponentially, p = p_0 exp(-t/tau), tau = V/(R T k A C_d p-coefficient),
+    until p_amb/p reaches r_c = 0.528 at t = tau ln(p_0 r_c/p_amb); the whole run,
+    choked and subsonic, against DOP853 on the hand-written law."""
+    res = ac.simulate(_Discharge(), t_end=45.0, rtol=1e-10, n_points=451,
+                      raise_on_failure=True)
+    p = res["tank.p"]
+    k = 0.6 * 4e-6 * np.sqrt(KAPPA / (R_AIR * T_AIR)) * (2 / (KAPPA + 1))**(
+        (KAPPA + 1) / (2 * (KAPPA - 1)))
+    tau = 1e-2 / (R_AIR * T_AIR * k)
+    choked = p > 1e5 / R_CRIT
+    assert np.max(np.abs(p[choked] - 8e5 * np.exp(-res.t[choked] / tau))) < 1e-8 * 7e5
+    t_choke = tau * np.log(8e5 * R_CRIT / 1e5)
+    assert abs(res.t[choked][-1] - t_choke) <= res.t[1] - res.t[0]
+    ref = solve_ivp(lambda t, y: [-R_AIR * T_AIR / 1e-2 * _nozzle_flow(y[0], 1e5, 4e-6)],
+                    (0.0, 45.0), [8e5], method="DOP853", rtol=1e-12, atol=1e-6, t_eval=res.t)
+    assert np.max(np.abs(p - ref.y[0])) < 1e-8 * 7e5
+    assert p[-1] > 1e5                                   # still subsonic outflow at 45 s
+
+
+class _Nozzle(ac.Component):
+    """The throttle between two fixed pressures."""
+
+    a = gas.FixedPressure(p=3e5)
+    valve = gas.CompressibleThrottle(A=1e-6, C_d=0.6)
+    b = gas.FixedPressure(p=2e5)
+
+    def equations(self):
+        return [ac.connect(self.a.port, self.valve.port_a),
+                ac.connect(self.valve.port_b, self.b.port)]
+
+
+def _static_flow(compiled, p_a, p_b):
+    """The flow between fixed pressures (a model without states: read at t = 0)."""
+    compiled.set_parameters({"a.p": p_a, "b.p": p_b})
+    return ac.simulate(compiled, t_end=1.0, n_points=2)["valve.m_flow"][0]
+
+
+def test_compressible_throttle_law_both_ways_and_its_incompressible_limit():
+    compiled = ac.compile(_Nozzle())
+    for p_a, p_b in ((3e5, 2e5), (5e5, 1e5), (2e5, 3e5), (1e5, 5e5)):
+        m = _static_flow(compiled, p_a, p_b)
+        hand = _nozzle_flow(max(p_a, p_b), min(p_a, p_b), 1e-6) * np.sign(p_a - p_b)
+        assert m == pytest.approx(hand, rel=1e-12)
+    # choked: the flow does not depend on the downstream pressure
+    assert _static_flow(compiled, 5e5, 1e5) == pytest.approx(_static_flow(compiled, 5e5, 2e5),
+                                                            rel=1e-12)
+    # a small drop: m_flow -> C_d A sqrt(2 rho_u dp), to first order in dp/p
+    for dp in (1e2, 1e3):
+        m = _static_flow(compiled, 1e5 + dp, 1e5)
+        rho_u = (1e5 + dp) / (R_AIR * T_AIR)
+        incompressible = 0.6 * 1e-6 * np.sqrt(2 * rho_u * dp)
+        assert abs(m / incompressible - 1) < dp / 1e5
