@@ -68,6 +68,15 @@ def test_rotating_stall_settles_at_the_closed_form_equilibrium(stall):
                        rtol=1e-9, atol=0)
 
 
+def test_rotating_stall_transient_follows_dop853(stall):
+    """The fall into stall (Figure 14.2) against DOP853 at rtol 1e-10 on (14.1)-(14.3)."""
+    ref = solve_ivp(_mg3, (0.0, stall.t[-1]), [0.6, 0.6, 0.1], args=(0.1,), method="DOP853",
+                    rtol=1e-10, atol=1e-12, t_eval=stall.t)
+    for name, row in (("plenum.psi", 0), ("compressor.phi", 1), ("compressor.J", 2)):
+        err = np.max(np.abs(stall[name] - ref.y[row]))
+        assert err < 2e-6 * np.ptp(ref.y[row]), (name, err)
+
+
 def test_rotating_stall_linearization_is_the_hand_jacobian():
     closed = _stall_closed_form()
     sys = ac.linearize(mg.RotatingStall(), at={"plenum.psi": closed[0],
