@@ -15,17 +15,26 @@ with the right half-plane zero of (11.113):
 (11.114 for alpha = 1, gamma = 2: a zero at 1/T_r, a pole at -2/T_r).  Opening the gate
 first lowers the torque: the water column must be accelerated before more flow comes,
 and the larger jet area slows the jet meanwhile.
+
+``ElasticPeltonPlant`` swaps the rigid column for a compressible one, a ``LumpedLine``
+with the speed of sound c = 1200 m/s (assumed: water in a steel pipe), fed by the
+reservoir's head as a pressure rho g h at its inlet; the rest is unchanged.  Its
+transfer function tends to (11.109) with H_pq = (rho c/A_p) tanh(L s/c) (11.119), the
+pipe's quarter-wave resonance at pi c/(2 L) = 6.3 rad/s included.
 """
 import acausal as ac
 from acausal.library import rotational as rot
 from acausal.library.blocks import Step
 
+from ..lines import LumpedLine
 from ..sources import FixedPressure
 from ..turbines import PeltonTurbine, Penstock
 
-__all__ = ["PeltonPlant", "H", "L", "A_P", "A_0", "RHO", "G", "R_T", "ALPHA", "Q_0", "W_0"]
+__all__ = ["PeltonPlant", "ElasticPeltonPlant", "H", "L", "A_P", "A_0", "RHO", "G", "R_T",
+           "ALPHA", "Q_0", "W_0", "C"]
 
 H, L, A_P, A_0, RHO, G, R_T = 100.0, 300.0, 1.0, 0.05, 1000.0, 9.81, 1.0
+C = 1200.0                                     # speed of sound in the penstock
 ALPHA = 1 - A_0**2 / A_P**2
 Q_0 = A_0 * (2 * G * H / ALPHA)**0.5          # steady flow: the head is all jet
 W_0 = Q_0 / (2 * A_0 * R_T)                    # bucket speed half the jet speed
@@ -37,7 +46,9 @@ class PeltonPlant(ac.Component):
     stop_time = 5.0
     reservoir = FixedPressure(p=0.0)
     penstock = Penstock(L=L, A_p=A_P, h=H, rho=RHO, g=G, q={"start": Q_0, "fixed": True})
-    turbine = PeltonTurbine(r_t=R_T, A_p=A_P, rho=RHO)
+    # the nozzle's flow is a state of the rigid column but solved from the pressure
+    # behind a compressible one: start it at q_0
+    turbine = PeltonTurbine(r_t=R_T, A_p=A_P, rho=RHO, q={"start": Q_0})
     tailwater = FixedPressure(p=0.0)
     grid = rot.ConstantSpeed(w_fixed=W_0)
     gate = Step(offset=A_0, height=0.1 * A_0, startTime=1.0)
@@ -48,6 +59,16 @@ class PeltonPlant(ac.Component):
                 ac.connect(self.turbine.port_b, self.tailwater.port),
                 ac.connect(self.turbine.flange, self.grid.flange),
                 ac.connect(self.gate.y, self.turbine.A)]
+
+
+
+class ElasticPeltonPlant(PeltonPlant):
+    """The same plant with a compressible penstock of 20 resonators (hybrid form: the
+    reservoir's pressure at port_a, the nozzle at port_b), in steady flow at the start."""
+
+    reservoir = FixedPressure(p=RHO * G * H)
+    penstock = LumpedLine(n=20, form="hybrid", L=L, A=A_P, rho=RHO, beta=RHO * C**2,
+                          p_start=RHO * G * H, q_start=Q_0)
 
 
 if __name__ == "__main__":
