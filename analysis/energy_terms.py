@@ -188,6 +188,10 @@ def power_ports(comp) -> list:
 
 def port_power(traj, port) -> np.ndarray:
     """Power into the component through one port (module docstring)."""
+    if not getattr(port, "carries_power", True):
+        raise ValueError(f"energy audit: the port '{port.path}' ({type(port).__name__}) "
+                         f"carries {port.effort} and {port.flow}, whose product is not a "
+                         "power; the audit does not cover this domain")
     if isinstance(port, HeatPort):
         return traj.value(f"{port.path}.{port.flow}")
     if port.flow.startswith("der("):

@@ -68,7 +68,8 @@ def port_domain(port_cls) -> str:
     from .. import ports
     table = ((ports.Pin, "electrical"), (ports.RotationalFlange, "rotational"),
              (ports.TranslationalFlange, "translational"), (ports.Frame, "planar"),
-             (ports.FluidPort, "hydraulic"), (ports.HeatPort, "thermal"),
+             (ports.FluidPort, "hydraulic"), (ports.GasPort, "gas"),
+             (ports.NormalizedGasPort, "gas (normalized)"), (ports.HeatPort, "thermal"),
              (ports.RealInput, "signal in"), (ports.RealOutput, "signal out"))
     for base, domain in table:
         if issubclass(port_cls, base):

@@ -4,8 +4,10 @@ from .electrical import Pin, PositivePin, NegativePin
 from .mechanical import RotationalFlange, TranslationalFlange
 from .planar import Frame
 from .fluid import FluidPort
+from .gas import GasPort, NormalizedGasPort
 from .thermal import HeatPort
 from .signal import RealInput, RealOutput
 
 __all__ = ["Port", "SignalPort", "Pin", "PositivePin", "NegativePin", "RotationalFlange",
-           "TranslationalFlange", "Frame", "FluidPort", "HeatPort", "RealInput", "RealOutput"]
+           "TranslationalFlange", "Frame", "FluidPort", "GasPort",
+           "NormalizedGasPort", "HeatPort", "RealInput", "RealOutput"]

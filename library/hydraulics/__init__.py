@@ -1,5 +1,5 @@
-"""Hydraulics (Egeland & Gravdahl ch. 4): volumes, orifices, valves, motors, pumps,
-cylinders and transmission lines."""
+"""Hydraulics (Egeland & Gravdahl ch. 4, 11.2.9): volumes, orifices, valves, motors,
+pumps, cylinders, transmission lines, and a penstock with a Pelton turbine."""
 from ... import _lazy_exports
 
 __all__ = ["PartialOnePort", "PartialTwoPort", "F_tr", "orifice_flow", "Volume",
@@ -8,7 +8,7 @@ __all__ = ["PartialOnePort", "PartialTwoPort", "F_tr", "orifice_flow", "Volume",
            "FourWayValve", "CriticalCentreValve", "OpenCentreValve",
            "PressureCompensatedValve", "BalanceValve", "FixedPressure", "PressureSource",
            "ConstantFlow", "FlowSource", "PressureSensor", "RelativePressureSensor",
-           "FlowSensor", "LumpedLine", "ModalLine"]
+           "FlowSensor", "LumpedLine", "ModalLine", "Penstock", "PeltonTurbine"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".components": ("Cylinder", "HydraulicMotor", "LaminarOrifice", "PistonVolume", "Pump",
@@ -18,6 +18,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".lines": ("LumpedLine", "ModalLine"),
     ".sensors": ("FlowSensor", "PressureSensor", "RelativePressureSensor"),
     ".sources": ("ConstantFlow", "FixedPressure", "FlowSource", "PressureSource"),
+    ".turbines": ("PeltonTurbine", "Penstock"),
     ".valves": ("BalanceValve", "CriticalCentreValve", "FourWayValve", "OpenCentreValve",
                 "PressureCompensatedValve"),
 })
