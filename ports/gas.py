@@ -32,5 +32,5 @@ class NormalizedGasPort(Port):
     phi = Through(unit="1", nominal=1.0, description="flow coefficient into the port")
     effort, flow = "psi", "phi"
     carries_power = False
-    hint = "an AmbientPressure (the inlet or the throttle's outlet) is missing, or a port is "\
+    hint = "an Ambient (the inlet or the throttle's outlet) is missing, or a port is "\
            "not connected"
