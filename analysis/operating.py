@@ -337,7 +337,7 @@ def _solve_steady(plant, t, z0, held, tol):
         except SingularMatrixError:
             out = None
         if out is None or not out.converged or \
-                np.max(np.abs(out.residual), initial=0.0) > 1e-8 * max(1.0, np.abs(x0).max()):
+                np.max(np.abs(out.residual), initial=0.0) > 1e-8 * max(1.0, np.abs(x0).max(initial=0.0)):
             x = x0 if out is None else out.x
             raise NoSolution(_singular_message(plant, jac(x).toarray(), cols)
                              or _no_equilibrium(plant, t, full(x)), full(x))

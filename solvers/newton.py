@@ -52,6 +52,8 @@ def _rms(v: np.ndarray) -> float:
 def _solve(J, b: np.ndarray) -> np.ndarray:
     """Solve J dx = b: LU when square, least squares (minimum norm) otherwise."""
     m, n = J.shape
+    if n == 0:   # nothing unknown (a model without states at steady state)
+        return np.zeros(0)
     if m == n:
         lin = LinearSolver(n, sp.issparse(J) and n > 60)
         lin.factor(J)

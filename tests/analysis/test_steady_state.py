@@ -79,3 +79,21 @@ def test_tank_level_and_its_linearization_at_steady_state():
     assert sys.A[0, 0] == pytest.approx(pole, rel=1e-9)
     assert sys.B[0, 0] == pytest.approx(1 / A, rel=1e-9)
     assert sys.dcgain()[0, 0] == pytest.approx(1.0, rel=1e-9)    # all inflow leaves
+
+
+def test_a_model_without_states_has_its_one_operating_point():
+    """A source on a resistor has no states: the steady state is Ohm's law, i = V/R."""
+    from acausal.library.electrical import Resistor
+
+    class SourceOnResistor(ac.Component):
+        source = ConstantVoltage(V=2.0)
+        r = Resistor(R=4.0)
+        ground = Ground()
+
+        def equations(self):
+            return [ac.connect(self.source.p, self.r.p),
+                    ac.connect(self.source.n, self.r.n, self.ground.p)]
+
+    op = steady_state(SourceOnResistor())
+    assert op.states == {}
+    assert op["r.i"] == pytest.approx(0.5, rel=1e-12)
