@@ -73,6 +73,9 @@ class DiscreteState:
         self._timed = np.zeros(self.n_rel + self.n_disc, dtype=bool)
         self._timed[self.time_linear] = True
         self._orientation_key = None
+        # the band within which the last event found each item at zero (its location
+        # is that uncertain): the next arming allows at least that much (see arm)
+        self.event_band = None
 
     @property
     def n_roots(self) -> int:
@@ -110,6 +113,7 @@ class DiscreteState:
         further below zero than the band is a real contradiction and stays negative."""
         self.offset[:] = 0.0
         r = self.oriented(t, z, p)
+        event_band, self.event_band = self.event_band, None
         low = r < 0
         if not low.any():
             return
@@ -117,6 +121,10 @@ class DiscreteState:
         tol = self.tolerance(t, z, p, v)
         vdot = np.nan_to_num(np.abs(rates()), posinf=0.0)
         band = 2.0 * (2.0 * tol + vdot * resolution)
+        if event_band is not None:
+            # the event was located with the rates before it: an item that stops there
+            # (a speed that sticks) sits within that band, not within the new one
+            band = np.maximum(band, event_band)
         band = np.concatenate([band[: self.n_rel], np.repeat(band[self.n_rel:], 2)])
         fix = low & (-r <= band)
         self.offset[fix] = -2.0 * r[fix]
