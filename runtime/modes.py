@@ -29,7 +29,8 @@ a floor value ``n``: ``u - n + h`` and ``n + 1 - u + h``.
 
 At an event the relations that crossed take the value they have just after it: the sign
 of g where it is clearly non-zero, else the sign of its rate dg/dt along the solution
-(the side the dynamics choose), else the value of the relation at exactly zero.
+(the side the dynamics choose; a rate below the item's tolerance per unit of time is
+round-off), else the value of the relation at exactly zero.
 """
 from __future__ import annotations
 
@@ -225,9 +226,11 @@ class DiscreteState:
         if not at_zero:
             return self._holds(k, g)
         rate = vdot[k] if vdot is not None else 0.0
-        if rate != 0.0 and math.isfinite(rate):
+        # a rate that would not take the item out of its zero band within a unit of
+        # time is round-off (a stuck speed whose acceleration is solved to 1e-17)
+        if math.isfinite(rate) and abs(rate) > tol:
             return (rate > 0) == bool(self.upward[k])
-        return not bool(self.strict[k])           # exactly at zero: >= and <= hold
+        return not bool(self.strict[k])           # at zero to stay: >= and <= hold
 
     def _holds(self, k, g) -> bool:
         if self.upward[k]:
