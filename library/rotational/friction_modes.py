@@ -167,6 +167,26 @@ class PartialFriction(ac.Component):
                           "start backward": (a - (sa + tau0_max), backward)})
         return modes
 
+    def mode_structure(self) -> list:
+        """Per mode: its name, the relations that select it, and what determines the
+        acceleration and the friction torque there (for the index report)."""
+        rel, eqs = self.mode_relations(), self.mode_equations()
+        a, sa, w, tau = self.a_relfric, self.sa, self.w_relfric, self.tau
+        out = []
+        for mode in [m for m in MODES if m in eqs]:
+            accel, torque = eqs[mode]
+            if sa not in accel.free_symbols:
+                motion = (f"0 = {accel}: {w} is held (der({w}) = 0, not an independent "
+                          f"state); {tau} = {sa} from the torque balance of the system")
+            elif a in accel.free_symbols:
+                motion = (f"0 = {accel}: {sa} from {a} (the system's dynamics); "
+                          f"{tau} = {torque}")
+            else:
+                motion = f"{sa} = 0 (unused); {tau} = {torque}"
+            out.append({"mode": mode, "when": str(rel[mode]) if mode in rel else
+                        "none of the above", "structure": motion})
+        return out
+
     def equations(self):
         rel, eqs = self.mode_relations(), self.mode_equations()
         order = [m for m in MODES[:-1] if m in rel]        # the first that holds decides
