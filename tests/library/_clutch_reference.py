@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.integrate import solve_ivp
 
-__all__ = ["Chain", "simulate_chain"]
+__all__ = ["Chain", "simulate_chain", "speeds"]
 
 
 @dataclass

@@ -1,0 +1,254 @@
+"""Clutch, Brake and OneWayClutch (MSL semantics) against independent references.
+
+CoupledClutches (J1 -- clutch1 -- J2 -- clutch2 -- J3 -- brake, engaged and released by
+time tables) against a mode-by-mode integration of the hand-written equations by
+solve_ivp DOP853 at rtol 1e-10 with its own lock-up and break-away event functions
+(``_clutch_reference``): the speeds, every lock-up and break-away time, the stick
+intervals and the angular momentum of each group that locks.  A one-way clutch used as
+a pure freewheel against its closed form.  Bad input raises InvalidValue.
+"""
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+import acausal as ac
+from acausal.library.blocks import Constant, Sine
+from acausal.library.rotational import Inertia, Torque
+from acausal.library.rotational.clutches import Brake, Clutch, OneWayClutch
+from acausal.library.rotational.examples.coupled_clutches import CoupledClutches, ENGAGEMENT
+
+from ._clutch_reference import Chain, _groups, simulate_chain, speeds
+
+J = (1.0, 0.6, 0.35)
+FN = (20.0, 15.0, 30.0)
+MU, PEAK = 0.5, 1.1
+T_END = CoupledClutches.stop_time
+TABLE_TIMES = sorted({t for span in ENGAGEMENT.values() for t in span if t is not None})
+
+
+@pytest.fixture(scope="module")
+def coupled():
+    chain = Chain(J=J, fn=FN, on=tuple([span] for span in ENGAGEMENT.values()),
+                  mu=MU, peak=PEAK, amplitude=30.0, f=3.0, w0=(6.0, 0.0, 0.0))
+    segments, switches = simulate_chain(chain, T_END)
+    res = ac.simulate(CoupledClutches(), t_end=T_END, rtol=1e-8)
+    assert res.success, res.message
+    return chain, segments, switches, res
+
+
+def _w(res):
+    return np.vstack([res["J1.w"], res["J2.w"], res["J3.w"]])
+
+
+def test_reference_shows_every_mode(coupled):
+    """The run is worth comparing: lock-ups and break-aways of both clutches and the
+    brake, sliding both ways (guards the scenario, not the library)."""
+    _, segments, switches, _ = coupled
+    state = [s for s in switches if s[0] not in TABLE_TIMES]
+    locks = {k for _, k, _, new, _, _ in state if new == "stuck"}
+    breaks = {k for _, k, old, _, _, _ in state if old == "stuck"}
+    assert locks == {0, 1, 2} and breaks >= {0}
+    modes = {m for seg in segments for m in seg[3]}
+    assert modes == {"open", 1, -1, "stuck"}
+
+
+def test_speeds_against_mode_by_mode_reference(coupled):
+    _, segments, _, res = coupled
+    W, R = _w(res), speeds(segments, res.t)
+    scale = np.abs(R).max()
+    # measured 1.9e-7 of the largest speed at rtol 1e-8 (BDF's global error)
+    assert np.abs(W - R).max() < 2e-6 * scale
+
+
+def test_lock_up_and_break_away_times(coupled):
+    """Every state event of the reference has an event of the run within 1e-6 s
+    (measured: 1.1e-7 s at most), and the run has no state event the reference lacks
+    (times apart by more than that)."""
+    _, _, switches, res = coupled
+    ref = np.array([s[0] for s in switches if s[0] not in TABLE_TIMES])
+    run = np.array([e.time for e in res.events if e.kind == "relation"])
+    assert np.abs(run[:, None] - ref[None, :]).min(axis=0).max() < 1e-6
+    unmatched = [t for t in run if np.abs(ref - t).min() > 1e-6 and
+                 min(abs(t - s) for s in TABLE_TIMES) > 1e-6]
+    # a free clutch whose speeds cross is an event of its relations but no switch
+    free_crossings = [t for t in unmatched if not _pressed(0, t)]
+    assert unmatched == free_crossings
+
+
+def _pressed(k, t):
+    on, off = list(ENGAGEMENT.values())[k]
+    return on <= t and (off is None or t < off)
+
+
+def test_stick_intervals_hold_and_slide_intervals_carry_coulomb_torque(coupled):
+    _, segments, _, res = coupled
+    t = res.t
+    w = _w(res)
+    w_rel = [w[1] - w[0], w[2] - w[1], w[2]]
+    tau = [res["clutch1.tau"], res["clutch2.tau"], res["brake.tau"]]
+    stuck_seen = 0
+    for t0, t1, _, mode in segments:
+        inside = (t > t0 + 1e-6) & (t < t1 - 1e-6)
+        for k, m in enumerate(mode):
+            if m == "stuck":
+                stuck_seen += 1
+                assert np.abs(w_rel[k][inside]).max() < 1e-9 * 10.0
+                assert np.abs(tau[k][inside]).max() <= PEAK * MU * FN[k] * (1 + 1e-9)
+            elif m in (1, -1):
+                assert np.allclose(tau[k][inside], m * MU * FN[k], rtol=1e-12, atol=0)
+            else:
+                assert np.abs(tau[k][inside]).max() == 0.0
+    assert stuck_seen >= 6
+
+
+def test_angular_momentum_of_each_locking_group(coupled):
+    """A lock-up joins inertias into a group: its sum J_i w_i is the same just before
+    and just after the event (the lock-up is continuous under finite friction), and
+    equal to the reference's, whose group is merged at its momentum."""
+    chain, _, switches, res = coupled
+    t, w = res.t, _w(res)
+    scale = np.abs(w).max() * sum(J)
+    checked = 0
+    for te, k, _, new, before, after in switches:
+        if new != "stuck" or before is None:
+            continue
+        assert before == pytest.approx(after, abs=1e-12 * scale)      # the reference's
+        at = np.flatnonzero(np.abs(t - te) < 1e-6)
+        assert at.size >= 2, f"no points at the lock-up near t = {te}"
+        label = _groups(chain, _modes_after(switches, te))
+        for g, L_ref in after.items():
+            members = [i for i in range(len(J)) if label[i] == g]
+            L = sum(J[i] * w[i, at] for i in members)
+            assert np.ptp(L) < 1e-9 * scale
+            if g == label[k]:
+                assert abs(L[0] - L_ref) < 2e-6 * scale
+        checked += 1
+    assert checked >= 5
+
+
+def _modes_after(switches, te):
+    mode = ["open"] * 3
+    for t, k, _, new, _, _ in switches:
+        if t <= te:
+            mode[k] = new
+    return mode
+
+
+def test_friction_never_delivers_power(coupled):
+    _, _, _, res = coupled
+    for name, w in (("clutch1", res["J2.w"] - res["J1.w"]),
+                    ("clutch2", res["J3.w"] - res["J2.w"]), ("brake", res["J3.w"])):
+        assert (res[f"{name}.tau"] * w).min() > -1e-9
+
+
+def test_report_shows_structure_of_every_mode():
+    report = ac.compile(CoupledClutches()).report
+    modes = {c["component"]: c for c in report.as_dict()["modes"]}
+    assert set(modes) == {"clutch1", "clutch2", "brake"}
+    locked = {m["mode"]: m for m in modes["clutch1"]["modes"]}["locked"]
+    assert "0 = clutch1.a_rel" in locked["structure"]
+    assert "clutch1.tau = clutch1.sa" in locked["structure"]
+    assert "not an independent state" in locked["structure"]
+    text = str(report)
+    assert "modes of brake (Brake)" in text and text.count("locked") >= 3
+
+
+# -- one-way clutch: a freewheel (fn = 0) between a driven and a free inertia -------------
+J_A, J_B, T0, AMP = 1.0, 0.5, 2.0, 10.0
+
+
+class Freewheel(ac.Component):
+    """T = 2 + 10 sin(2 pi t) on J_a; a one-way clutch (fn = 0) drives J_b."""
+
+    a = Inertia(J=J_A, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
+    b = Inertia(J=J_B, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
+    wheel = OneWayClutch(fn_max=1.0)
+    open_ = Constant(k=0.0)
+    drive = Torque()
+    sine = Sine(amplitude=AMP, f=1.0, offset=T0)
+
+    def equations(self):
+        return [ac.connect(self.sine.y, self.drive.tau),
+                ac.connect(self.drive.flange, self.a.flange_a),
+                ac.connect(self.a.flange_b, self.wheel.flange_a),
+                ac.connect(self.wheel.flange_b, self.b.flange_a),
+                ac.connect(self.open_.y, self.wheel.f_normalized)]
+
+
+def _torque_integral(t0, t1):
+    c = AMP / (2 * math.pi)
+    return T0 * (t1 - t0) + c * (math.cos(2 * math.pi * t0) - math.cos(2 * math.pi * t1))
+
+
+def test_one_way_clutch_as_freewheel_against_closed_form():
+    """Locked while T >= 0 (the group J_a + J_b accelerates: w = int T / (J_a + J_b));
+    once T < 0 (beyond the tiny break-away floor) J_b coasts and J_a runs on its own
+    until it catches up with J_b (int T = 0 from the release), which locks again."""
+    res = ac.simulate(Freewheel(), t_end=1.45, rtol=1e-9)
+    assert res.success, res.message
+    floor = 1e-4 * 0.5 * 1.0                          # eps0 mu0 cgeo fn_max
+    # release: the freewheel torque tau = -J_b T / (J_a + J_b) exceeds the floor
+    T = lambda t: T0 + AMP * math.sin(2 * math.pi * t)       # noqa: E731
+    t_rel = brentq(lambda t: -J_B * T(t) / (J_A + J_B) - floor, 0.5, 0.6)
+    w_b = _torque_integral(0.0, t_rel) / (J_A + J_B)
+    t_lock = brentq(lambda t: _torque_integral(t_rel, t), 0.97, 1.7)
+    t, wa, wb = res.t, res["a.w"], res["b.w"]
+
+    def exact(tt):
+        if tt <= t_rel:
+            v = _torque_integral(0.0, tt) / (J_A + J_B)
+            return v, v
+        if tt <= t_lock:
+            return w_b + _torque_integral(t_rel, tt) / J_A, w_b
+        v = w_b + _torque_integral(t_lock, tt) / (J_A + J_B)
+        return v, v
+
+    ref = np.array([exact(tt) for tt in t]).T
+    scale = np.abs(ref).max()
+    err = max(np.abs(wa - ref[0]).max(), np.abs(wb - ref[1]).max())
+    assert err < 1e-7 * scale                          # measured 2.8e-9 at rtol 1e-9
+    ev = np.array([e.time for e in res.events if e.kind == "relation"])
+    # measured 1e-11 s and 1.4e-9 s
+    assert np.abs(ev - t_rel).min() < 1e-7 and np.abs(ev - t_lock).min() < 1e-7
+    assert (wb - wa).min() > -1e-9 * scale             # never backwards
+
+
+# -- bad input -------------------------------------------------------------------------
+def _chain_with(element):
+    class M(ac.Component):
+        a = Inertia(J=1.0, w={"start": 1.0, "fixed": True})
+        b = Inertia(J=1.0)
+        c = element
+        f = Constant(k=1.0)
+
+        def equations(self):
+            return [ac.connect(self.a.flange_b, self.c.flange_a),
+                    ac.connect(self.c.flange_b, self.b.flange_a),
+                    ac.connect(self.f.y, self.c.f_normalized)]
+    return M()
+
+
+@pytest.mark.parametrize("fn_max", [0.0, -1.0])
+def test_non_positive_normal_force_is_refused(fn_max):
+    with pytest.raises(ac.InvalidValue, match="fn_max"):
+        ac.compile(_chain_with(Clutch(fn_max=fn_max)))
+
+
+@pytest.mark.parametrize("table, words", [
+    ([[0.0, 0.5], [1.0, 0.4], [0.5, 0.3]], "increasing"),
+    ([[0.0, 0.5], [0.0, 0.4]], "increasing"),
+    ([[-1.0, 0.5], [1.0, 0.4]], "w_rel >= 0"),
+    ([[0.0, -0.1]], "mu = -0.1"),
+    ([[0.0, 0.5, 1.0]], "n x 2"),
+    ("not a table", "mu_pos"),
+])
+def test_bad_friction_table_is_refused(table, words):
+    with pytest.raises(ac.InvalidValue, match=words):
+        Clutch(mu_pos=table)
+
+
+def test_peak_below_one_is_refused():
+    with pytest.raises(ac.InvalidValue, match="peak"):
+        ac.compile(_chain_with(Brake(peak=0.9, fn_max=1.0)))
