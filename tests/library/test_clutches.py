@@ -252,3 +252,48 @@ def test_bad_friction_table_is_refused(table, words):
 def test_peak_below_one_is_refused():
     with pytest.raises(ac.InvalidValue, match="peak"):
         ac.compile(_chain_with(Brake(peak=0.9, fn_max=1.0)))
+
+
+# -- a friction table: a brake stops a flywheel -----------------------------------------
+MU_POS = [[0.0, 0.5], [1.0, 0.4], [3.0, 0.3]]
+
+
+class Flywheel(ac.Component):
+    """J = 0.2 kg.m2 at 5 rad/s braked by fn = 2 N with mu(w) from MU_POS (extrapolated
+    linearly above 3 rad/s, as the MSL's LastTwoPoints)."""
+
+    J = Inertia(J=0.2, phi={"start": 0.0, "fixed": True}, w={"start": 5.0, "fixed": True})
+    brake = Brake(mu_pos=MU_POS, fn_max=2.0, peak=1.2)
+    press = Constant(k=1.0)
+
+    def equations(self):
+        return [ac.connect(self.J.flange_b, self.brake.flange_a),
+                ac.connect(self.press.y, self.brake.f_normalized)]
+
+
+def _mu(w):
+    x, y = np.array(MU_POS).T
+    if w > x[-1]:
+        return y[-1] + (y[-1] - y[-2]) / (x[-1] - x[-2]) * (w - x[-1])
+    return float(np.interp(w, x, y))
+
+
+def test_brake_with_friction_table_stops_a_flywheel():
+    """J w' = -fn mu(w) until w = 0 (solve_ivp DOP853, rtol 1e-10, event w = 0), then the
+    brake holds it at rest with no torque (nothing else acts)."""
+    from scipy.integrate import solve_ivp
+    stop = lambda t, y: y[0]                      # noqa: E731
+    stop.terminal, stop.direction = True, -1
+    ref = solve_ivp(lambda t, y: [-2.0 * _mu(y[0]) / 0.2], (0, 10), [5.0], method="DOP853",
+                    rtol=1e-10, atol=1e-12, events=stop, dense_output=True)
+    t_stop = ref.t_events[0][0]
+    res = ac.simulate(Flywheel(), t_end=t_stop + 0.5, rtol=1e-9)
+    assert res.success, res.message
+    sliding = res.t < t_stop
+    w_ref = ref.sol(res.t[sliding])[0]
+    # measured 7.8e-9 of the initial speed, and the stop 7.8e-9 s off, at rtol 1e-9
+    assert np.abs(res["J.w"][sliding] - w_ref).max() < 1e-7 * 5.0
+    ev = np.array([e.time for e in res.events if e.kind == "relation"])
+    assert np.abs(ev - t_stop).min() < 1e-7
+    after = res.t > t_stop + 1e-6
+    assert np.abs(res["J.w"][after]).max() < 1e-9 and np.abs(res["brake.tau"][after]).max() < 1e-9
