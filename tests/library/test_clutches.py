@@ -143,6 +143,18 @@ def test_friction_never_delivers_power(coupled):
         assert (res[f"{name}.tau"] * w).min() > -1e-9
 
 
+def test_energy_balance_books_the_elements_as_dissipation(coupled):
+    """dE/dt of the inertias = drive power - friction losses (measured to 3e-11 of the
+    power scale), and no element ever delivers power."""
+    from acausal.analysis import energy_balance
+    _, _, _, res = coupled
+    audit = energy_balance(res, CoupledClutches())
+    assert {audit.roles[k] for k in ("clutch1", "clutch2", "brake")} == {"dissipation"}
+    assert audit.ok, audit.summary()
+    for k in ("clutch1", "clutch2", "brake"):
+        assert np.min(audit.dissipated[k]) >= -1e-9 * audit.power_scale
+
+
 def test_report_shows_structure_of_every_mode():
     report = ac.compile(CoupledClutches()).report
     modes = {c["component"]: c for c in report.as_dict()["modes"]}
