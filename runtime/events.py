@@ -18,6 +18,17 @@ continuous piecewise-smooth system; Qi & Sun 1993), and the discrete state is ta
 the solution.  Relations that sit at zero at the event keep the value the event gave
 them (their side was decided by the dynamics).
 
+A relation that sits at zero at the event takes the side its rate chooses, but that
+rate is the one before the event: a clutch slipping backwards reaches w = 0 with
+der(w) > 0, which says "forward".  So once the algebraic unknowns are solved in the new
+discrete state, the rates are taken again there (consistent derivatives): a relation at
+zero whose new rate leaves its side, by more than its tolerance within the time
+resolution, switches.  One switch per round, relations that hold first, so a pair such
+as w > 0 / w < 0 passes through "neither" (the clutch locks) before the other side is
+tried; where the sides keep switching, the side chosen before stays (as before this
+check existed).  The sliding-to-locked-to-starting order of Modelica's friction elements
+(Otter, Elmqvist & Mattsson 1999) then settles without a component's help.
+
 When-clauses (sec. 8.3.5-8.3.6): the body of ``when c`` runs at the instant c becomes
 true; ``reinit(x, e)`` restarts the state x from e, evaluated with the values just
 before the event (``pre``).  A clause fires when its condition, evaluated with the
