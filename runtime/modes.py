@@ -112,6 +112,7 @@ class DiscreteState:
         function is raised by that much until a step ends with the item on its own side
         (:meth:`release`), so that the start is not reported as a crossing.  A function
         further below zero than the band is a real contradiction and stays negative."""
+        held = self.offset.copy()       # items still held a hair off zero since then
         self.offset[:] = 0.0
         r = self.oriented(t, z, p)
         event_band, self.event_band = self.event_band, None
@@ -127,7 +128,7 @@ class DiscreteState:
             # (a speed that sticks) sits within that band, not within the new one
             band = np.maximum(band, event_band)
         band = np.concatenate([band[: self.n_rel], np.repeat(band[self.n_rel:], 2)])
-        fix = low & (-r <= band)
+        fix = low & (-r <= np.maximum(band, held))
         self.offset[fix] = -2.0 * r[fix]
 
     def release(self, t, z, p) -> None:
