@@ -162,8 +162,10 @@ class PartialFriction(ac.Component):
         a, sa, tau0_max = self.a_relfric, self.sa, self.tau0_max()
         forward = self.sliding_torque(self.w_relfric)
         backward = -self.sliding_torque(-self.w_relfric)
-        modes = {"free": (sa, sp.Integer(0)), "forward": (sa, forward),
-                 "start forward": (a - (sa - tau0_max), forward), "locked": (a, sa)}
+        modes = {"forward": (sa, forward), "start forward": (a - (sa - tau0_max), forward),
+                 "locked": (a, sa)}
+        if self.free() is not None:
+            modes["free"] = (sa, sp.Integer(0))
         if self.backward:
             modes.update({"backward": (sa, backward),
                           "start backward": (a - (sa + tau0_max), backward)})

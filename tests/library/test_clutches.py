@@ -168,6 +168,12 @@ def test_report_shows_structure_of_every_mode():
     assert "modes of brake (Brake)" in text and text.count("locked") >= 3
 
 
+def test_one_way_clutch_has_no_free_or_backward_mode():
+    report = ac.compile(Freewheel()).report
+    (wheel,) = report.as_dict()["modes"]
+    assert [m["mode"] for m in wheel["modes"]] == ["forward", "start forward", "locked"]
+
+
 # -- one-way clutch: a freewheel (fn = 0) between a driven and a free inertia -------------
 J_A, J_B, T0, AMP = 1.0, 0.5, 2.0, 10.0
 
