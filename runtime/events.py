@@ -134,7 +134,8 @@ def iterate_event(model, t, z, zp, crossed) -> EventAction:
 
 def _at_zero(model, t, z, zp) -> np.ndarray:
     """Items that sit at zero at the event point (within the event band), and those
-    held at zero since an earlier event (armed with an offset, see ``arm``)."""
+    held at zero since an earlier event (armed with an offset, see ``arm``).  Keeps the
+    band in ``discrete.event_band`` for the arming after the event."""
     disc = model.discrete
     v = disc.values(t, z, model.p)
     band = 2.0 * (2.0 * disc.tolerance(t, z, model.p, v)
