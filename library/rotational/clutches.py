@@ -1,5 +1,5 @@
-"""Clutch, brake and one-way clutch with Coulomb friction that sticks
-(Modelica.Mechanics.Rotational.Components.Clutch, Brake, OneWayClutch).
+"""Clutch, brake, one-way clutch and bearing friction with Coulomb friction that sticks
+(Modelica.Mechanics.Rotational.Components.Clutch, Brake, OneWayClutch, BearingFriction).
 
 Each element presses its friction surfaces together with the normal force
 fn = fn_max f_normalized (f_normalized in [0, 1], an input signal) and rubs with
@@ -20,7 +20,7 @@ from acausal.ports import RealInput
 from .friction_modes import PartialFriction, _table_at_zero, _table_value, friction_table
 from .interfaces import PartialTwoFlanges
 
-__all__ = ["Clutch", "Brake", "OneWayClutch"]
+__all__ = ["Clutch", "Brake", "OneWayClutch", "BearingFriction"]
 
 
 class _PressedFriction(PartialFriction, PartialTwoFlanges):
@@ -125,19 +125,17 @@ class OneWayClutch(Clutch):
         return ac.max(self.peak * self.tau0(), floor)
 
 
-class Brake(_PressedFriction):
-    """Brake (Modelica.Mechanics.Rotational.Components.Brake): friction between the
-    shaft (flange_a = flange_b) and the housing:
+class _ShaftOnHousing(PartialTwoFlanges):
+    """A shaft through the element (flange_a = flange_b) rubbing on the housing:
 
         phi = flange_a.phi = flange_b.phi,  w = der(phi),  a = der(w)
         0 = flange_a.tau + flange_b.tau - tau
-        tau = cgeo fn mu(w) sgn(w) sliding,  |tau| <= peak cgeo mu0 fn stuck (a = 0)
     """
 
     phi = ac.Variable(start=0.0, unit="rad", description="angle of the shaft")
     w = ac.Variable(start=0.0, unit="rad/s", description="speed of the shaft")
     a = ac.Variable(unit="rad/s2", description="acceleration of the shaft")
-    tau = ac.Variable(unit="N.m", description="brake torque (against w > 0)")
+    tau = ac.Variable(unit="N.m", description="friction torque (against w > 0)")
 
     @property
     def w_relfric(self):
@@ -154,3 +152,45 @@ class Brake(_PressedFriction):
                 ac.Eq(self.w, ac.der(self.phi)),
                 ac.Eq(self.a, ac.der(self.w)),
                 ac.Eq(0, self.flange_a.tau + self.flange_b.tau - self.tau)]
+
+
+class Brake(_ShaftOnHousing, _PressedFriction):
+    """Brake (Modelica.Mechanics.Rotational.Components.Brake): friction between the
+    shaft (flange_a = flange_b) and the housing:
+
+        phi = flange_a.phi = flange_b.phi,  w = der(phi),  a = der(w)
+        0 = flange_a.tau + flange_b.tau - tau
+        tau = cgeo fn mu(w) sgn(w) sliding,  |tau| <= peak cgeo mu0 fn stuck (a = 0)
+    """
+
+
+class BearingFriction(_ShaftOnHousing, PartialFriction):
+    """Bearing friction (Modelica.Mechanics.Rotational.Components.BearingFriction):
+    Coulomb friction of a shaft in its housing given as a torque table, always engaged:
+
+        phi = flange_a.phi = flange_b.phi,  w = der(phi),  a = der(w)
+        0 = flange_a.tau + flange_b.tau - tau
+        tau = tau_pos(|w|) sgn(w) sliding,  |tau| <= peak tau_pos(0) stuck (a = 0)
+
+    ``tau_pos``: rows [w, tau] for w >= 0 [rad/s, N.m] (one row: a constant torque),
+    interpolated linearly, extrapolated from the last two rows.
+    """
+
+    peak = ac.Parameter(1.0, min=1, description="stiction: most held torque / tau_pos(0)")
+
+    def __init__(self, tau_pos=((0.0, 1.0),), **mods):
+        super().__init__(**mods)
+        self.tau_pos = friction_table(tau_pos, type(self).__name__, "tau_pos", "tau")
+        self.tau_at_rest = _table_at_zero(self.tau_pos)
+
+    def free(self):
+        return None
+
+    def tau0(self):
+        return sp.Float(self.tau_at_rest)
+
+    def tau0_max(self):
+        return self.peak * self.tau0()
+
+    def sliding_torque(self, w):
+        return _table_value(self.tau_pos, w)

@@ -67,37 +67,38 @@ __all__ = ["PartialFriction", "friction_table", "MODES"]
 MODES = ("free", "forward", "backward", "start forward", "start backward", "locked")
 
 
-def friction_table(mu_pos, owner: str) -> np.ndarray:
-    """The table mu_pos (rows w >= 0, mu >= 0) as a checked (n x 2) float array.
+def friction_table(table, owner: str, name: str = "mu_pos", value: str = "mu") -> np.ndarray:
+    """The table ``name`` (rows [w, value], w >= 0, value >= 0) as a checked (n x 2)
+    float array.
 
-    One row is a constant coefficient; more rows are interpolated linearly and
-    extrapolated with the two end points (as the MSL's ``Extrapolation.LastTwoPoints``).
+    One row is a constant; more rows are interpolated linearly and extrapolated with the
+    two end points (as the MSL's ``Extrapolation.LastTwoPoints``).
     """
     try:
-        data = np.array(mu_pos, dtype=float)
+        data = np.array(table, dtype=float)
     except (TypeError, ValueError):
-        raise ac.InvalidValue(f"{owner}: mu_pos must be rows [w_rel, mu] of numbers, "
-                              f"got {mu_pos!r}") from None
+        raise ac.InvalidValue(f"{owner}: {name} must be rows [w_rel, {value}] of numbers, "
+                              f"got {table!r}") from None
     if data.ndim == 1 and data.size == 2:
         data = data.reshape(1, 2)
     if data.ndim != 2 or data.shape[1] != 2 or data.shape[0] < 1:
-        raise ac.InvalidValue(f"{owner}: mu_pos must be rows [w_rel, mu] (n x 2), got "
+        raise ac.InvalidValue(f"{owner}: {name} must be rows [w_rel, {value}] (n x 2), got "
                               f"shape {data.shape}")
     if not np.isfinite(data).all():
-        raise ac.InvalidValue(f"{owner}: mu_pos holds a value that is not a finite number")
+        raise ac.InvalidValue(f"{owner}: {name} holds a value that is not a finite number")
     w, mu = data[:, 0], data[:, 1]
     if (w < 0).any():
-        raise ac.InvalidValue(f"{owner}: mu_pos row {int(np.argmax(w < 0)) + 1}: w_rel = "
+        raise ac.InvalidValue(f"{owner}: {name} row {int(np.argmax(w < 0)) + 1}: w_rel = "
                               f"{w[w < 0][0]} < 0 (the table is the positive branch, "
                               "w_rel >= 0)")
     steps = np.diff(w)
     if (steps <= 0).any():
         k = int(np.argmax(steps <= 0)) + 1
-        raise ac.InvalidValue(f"{owner}: mu_pos row {k + 1}: w_rel = {w[k]} does not "
+        raise ac.InvalidValue(f"{owner}: {name} row {k + 1}: w_rel = {w[k]} does not "
                               f"increase (previous row {w[k - 1]}); the first column must "
                               "be strictly increasing")
     if (mu < 0).any():
-        raise ac.InvalidValue(f"{owner}: mu_pos row {int(np.argmax(mu < 0)) + 1}: mu = "
+        raise ac.InvalidValue(f"{owner}: {name} row {int(np.argmax(mu < 0)) + 1}: {value} = "
                               f"{mu[mu < 0][0]} < 0 (friction opposes the motion)")
     return data
 
