@@ -8,10 +8,10 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"
            "RackAndPinion", "ElasticGearWithDeadzone", "GearWithBacklash", "ConstantTorque",
            "StepTorque", "Torque", "ConstantSpeed", "Speed", "Position", "AngleSensor",
            "SpeedSensor", "RelAngleSensor", "RelSpeedSensor", "TorqueSensor", "PowerSensor",
-           "Clutch", "Brake", "OneWayClutch", "PartialFriction"]
+           "Clutch", "Brake", "OneWayClutch", "BearingFriction", "PartialFriction"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".clutches": ("Brake", "Clutch", "OneWayClutch"),
+    ".clutches": ("BearingFriction", "Brake", "Clutch", "OneWayClutch"),
     ".components": ("Damper", "ElasticGearWithDeadzone", "Fixed", "GearWithBacklash",
                     "IdealGear", "IdealGearR2T", "IdealRollingWheel", "Inertia",
                     "RackAndPinion", "Spring", "SpringDamper"),
