@@ -32,9 +32,9 @@ A sliding element whose speed reaches zero leaves its sliding mode at that event
 neither w > 0 nor w < 0 keeps its rate once the friction torque of that side acts (the
 runtime judges a relation at zero by its rate in the mode it leads to,
 :mod:`acausal.runtime.events`).  Since sa = 0 while it slides, both break-away relations
-are false then, so it enters the locked mode, whose sa is the torque needed to hold it.  If that exceeds tau0_max the relation
-``sa > tau0_max`` (or its mirror) is contradicted and switches: the element starts to
-slide, a = sa - tau0_max > 0 with tau = tau_slide(0) = tau0 <= tau0_max (it moves in
+are false then, so it enters the locked mode, whose sa is the torque needed to hold it.
+If that exceeds tau0_max the relation ``sa > tau0_max`` (or its mirror) is contradicted
+and switches: the element starts to slide, a = sa - tau0_max > 0 with tau = tau_slide(0) = tau0 <= tau0_max (it moves in
 the direction of the torque it could not hold), and once w leaves zero the sliding mode
 takes over.  A locked element breaks away at the event where |sa| reaches tau0_max, in
 the direction its rate gives.  So the event iteration settles the modes in a few rounds
