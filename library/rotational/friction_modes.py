@@ -36,9 +36,9 @@ are false then, so it enters the locked mode, whose sa is the torque needed to h
 If that exceeds tau0_max the relation ``sa > tau0_max`` (or its mirror) is contradicted
 and switches: the element starts to slide, a = sa - tau0_max > 0 with
 tau = tau_slide(0) = tau0 <= tau0_max (it moves in the direction of the torque it could
-not hold), and once w leaves zero the sliding mode takes over.  A locked element breaks away at the event where |sa| reaches tau0_max, in
-the direction its rate gives.  So the event iteration settles the modes in a few rounds
-and cannot cycle, by construction: sliding -> locked -> starting -> sliding, never back;
+not hold), and once w leaves zero the sliding mode takes over.  A locked element breaks
+away at the event where |sa| reaches tau0_max, in the direction its rate gives.  So the
+event iteration settles the modes in a few rounds and cannot cycle, by construction: sliding -> locked -> starting -> sliding, never back;
 this is the MSL's startForward/startBackward logic, with the frozen relation values in
 place of pre(mode).
 
