@@ -34,13 +34,13 @@ runtime judges a relation at zero by its rate in the mode it leads to,
 :mod:`acausal.runtime.events`).  Since sa = 0 while it slides, both break-away relations
 are false then, so it enters the locked mode, whose sa is the torque needed to hold it.
 If that exceeds tau0_max the relation ``sa > tau0_max`` (or its mirror) is contradicted
-and switches: the element starts to slide, a = sa - tau0_max > 0 with
-tau = tau_slide(0) = tau0 <= tau0_max (it moves in the direction of the torque it could
-not hold), and once w leaves zero the sliding mode takes over.  A locked element breaks
-away at the event where |sa| reaches tau0_max, in the direction its rate gives.  So the
-event iteration settles the modes in a few rounds and cannot cycle, by construction: sliding -> locked -> starting -> sliding, never back;
-this is the MSL's startForward/startBackward logic, with the frozen relation values in
-place of pre(mode).
+and switches: the element starts to slide, a = sa - tau0_max > 0 with tau = tau_slide(0)
+= tau0 <= tau0_max (it moves in the direction of the torque it could not hold), and once
+w leaves zero the sliding mode takes over.  A locked element breaks away at the event
+where |sa| reaches tau0_max, in the direction its rate gives.  So the event iteration
+settles the modes in a few rounds and cannot cycle, by construction: sliding -> locked
+-> starting -> sliding, never back; this is the MSL's startForward/startBackward logic,
+with the frozen relation values in place of pre(mode).
 
 While locked w keeps the value it had at the lock-up (zero within the event tolerance):
 a = 0 holds it, so w is not an independent degree of freedom there, and the flanges
