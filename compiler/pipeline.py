@@ -67,6 +67,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
     report = IndexReport(model_name=type(model).__name__)
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
+    report.modes = _mode_structures(model)
     key = None
     if use_cache:
         t1 = _time.perf_counter()
@@ -546,3 +547,18 @@ def _initial_rows(system, reduced, reduction, caus):
             rows.append(system.symbols[v] - start)
             text.append(f"{system.symbols[v].name} = {start} (start value of a state)")
     return rows, text, n_mandatory
+
+
+def _mode_structures(model) -> list:
+    """The modes of every component that describes them (``mode_structure()``), in
+    declaration order, for the index report."""
+    out, stack = [], [model]
+    while stack:
+        comp = stack.pop()
+        describe = getattr(comp, "mode_structure", None)
+        if callable(describe):
+            out.append({"component": comp.path, "class": type(comp).__name__,
+                        "modes": describe()})
+        stack.extend(reversed([c for c in comp.children().values()
+                               if hasattr(c, "children")]))
+    return out

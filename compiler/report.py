@@ -56,6 +56,9 @@ class IndexReport:
     sigma: dict = field(default_factory=dict)
     conversion: object = None       # compiler.conversion.ConversionResult
     notes: list = field(default_factory=list)
+    # per component with modes (a ``mode_structure()`` method): path, class and, per
+    # mode, the relations that select it and what determines its unknowns there
+    modes: list = field(default_factory=list)
 
     def __getstate__(self):
         state = dict(self.__dict__)
@@ -142,6 +145,7 @@ class IndexReport:
             "state_sets": self.state_sets,
             "blocks": self.blocks,
             "sigma": self.sigma,
+            "modes": getattr(self, "modes", []),
             "conversion": _conversion_dict(self.conversion),
             "timings_s": self.timings,
             "notes": self.notes,
@@ -252,6 +256,11 @@ class IndexReport:
                              "of freedom in the equations as written; the model has "
                              f"{len(self.states)} states after alias elimination, structural "
                              "zeros and index reduction")
+        for comp in getattr(self, "modes", []):      # (a report pickled before modes)
+            lines.append(f"  modes of {comp['component']} ({comp['class']}), the first "
+                         "whose relation holds:")
+            for m in comp["modes"]:
+                lines.append(f"    {m['mode']:<15}[{m['when']}]  {m['structure']}")
         for note in self.notes:
             lines.append(f"  note: {note}")
         total = sum(self.timings.values())

@@ -18,6 +18,17 @@ continuous piecewise-smooth system; Qi & Sun 1993), and the discrete state is ta
 the solution.  Relations that sit at zero at the event keep the value the event gave
 them (their side was decided by the dynamics).
 
+A relation that sits at zero at the event takes the side its rate chooses, but that
+rate is the one before the event: a clutch slipping backwards reaches w = 0 with
+der(w) > 0, which says "forward".  So once the algebraic unknowns are solved in the new
+discrete state, the rates are taken again there (consistent derivatives): a relation at
+zero whose new rate leaves its side, by more than its tolerance within the time
+resolution, switches.  One switch per round, relations that hold first, so a pair such
+as w > 0 / w < 0 passes through "neither" (the clutch locks) before the other side is
+tried; where the sides keep switching, the side chosen before stays (as before this
+check existed).  The sliding-to-locked-to-starting order of Modelica's friction elements
+(Otter, Elmqvist & Mattsson 1999) then settles without a component's help.
+
 When-clauses (sec. 8.3.5-8.3.6): the body of ``when c`` runs at the instant c becomes
 true; ``reinit(x, e)`` restarts the state x from e, evaluated with the values just
 before the event (``pre``).  A clause fires when its condition, evaluated with the
@@ -32,7 +43,7 @@ from ..errors import InitializationFailed
 from ..solvers.base import EventAction
 from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton
-from .initial import algebraic_system
+from .initial import algebraic_system, consistent_derivatives
 
 __all__ = ["WhenClauses", "iterate_event"]
 
@@ -102,7 +113,14 @@ def iterate_event(model, t, z, zp, crossed) -> EventAction:
         z = _solve_algebraic(model, t, z)
         bad = disc.contradicted(t, z, p) & ~decided
         if not bad.any():
-            break
+            before = model.m.copy()
+            if not _follow_new_rates(model, t, z, decided):
+                break
+            if any(np.array_equal(model.m, m) for m in seen):
+                model.discrete.m[:] = before     # no side holds for good: keep the
+                break                            # one the dynamics before chose
+            seen.append(model.m.copy())
+            continue
         disc.settle(t, z, p, bad, lambda zz=z: model.rates(t, zz, np.zeros(model.n)))
         if any(np.array_equal(model.m, m) for m in seen):
             z = _solve_live(model, t, z, decided)
@@ -115,12 +133,45 @@ def iterate_event(model, t, z, zp, crossed) -> EventAction:
 
 
 def _at_zero(model, t, z, zp) -> np.ndarray:
-    """Items that sit at zero at the event point (within the event band)."""
+    """Items that sit at zero at the event point (within the event band), and those
+    held at zero since an earlier event (armed with an offset, see ``arm``).  Keeps the
+    band in ``discrete.event_band`` for the arming after the event."""
     disc = model.discrete
     v = disc.values(t, z, model.p)
     band = 2.0 * (2.0 * disc.tolerance(t, z, model.p, v)
                   + np.nan_to_num(np.abs(model.rates(t, z, zp)), posinf=0.0) * model.resolution)
-    return np.abs(disc._distance(v)) <= band
+    disc.event_band = band
+    held = disc.offset[: disc.n_rel] != 0.0
+    held = np.concatenate([held, np.zeros(disc.n_disc, dtype=bool)])
+    return (np.abs(disc._distance(v)) <= band) | held
+
+
+def _follow_new_rates(model, t, z, at_zero) -> bool:
+    """A relation sitting at zero whose rate, in the discrete state it now gives, leaves
+    the side it holds on (by more than its tolerance within the time resolution)
+    switches to the side the rate enters; True if one did (module docstring)."""
+    if not at_zero.any():
+        return False
+    disc, p = model.discrete, model.p
+    R = disc.n_rel
+    rel = np.flatnonzero(at_zero[:R])
+    if not rel.size:
+        return False
+    rate = model.rates(t, z, consistent_derivatives(model, t, z))[rel]
+    tol = disc.tolerance(t, z, p)[rel]
+    holds = disc.relation_modes()[rel]
+    up = disc.upward[rel]
+    # the side the relation holds on lies at g > 0 for (holds == upward)
+    inward = np.where(holds == up, 1.0, -1.0)
+    away = np.isfinite(rate) & (-inward * rate * max(model.resolution, 1e-12) > tol)
+    if not away.any():
+        return False
+    # one at a time, and first one that holds: a pair such as w > 0, w < 0 that both
+    # leave their sides must pass through "neither" (stuck) before the other side holds
+    order = np.flatnonzero(away & holds) if (away & holds).any() else np.flatnonzero(away)
+    i = order[0]
+    disc.m[rel[i]] = float((rate[i] > 0) == up[i])
+    return True
 
 
 def _solve_algebraic(model, t, z) -> np.ndarray:

@@ -29,7 +29,8 @@ a floor value ``n``: ``u - n + h`` and ``n + 1 - u + h``.
 
 At an event the relations that crossed take the value they have just after it: the sign
 of g where it is clearly non-zero, else the sign of its rate dg/dt along the solution
-(the side the dynamics choose), else the value of the relation at exactly zero.
+(the side the dynamics choose; a rate below the item's tolerance per unit of time is
+round-off), else the value of the relation at exactly zero.
 """
 from __future__ import annotations
 
@@ -73,6 +74,9 @@ class DiscreteState:
         self._timed = np.zeros(self.n_rel + self.n_disc, dtype=bool)
         self._timed[self.time_linear] = True
         self._orientation_key = None
+        # the band within which the last event found each item at zero (its location
+        # is that uncertain): the next arming allows at least that much (see arm)
+        self.event_band = None
 
     @property
     def n_roots(self) -> int:
@@ -108,8 +112,10 @@ class DiscreteState:
         function is raised by that much until a step ends with the item on its own side
         (:meth:`release`), so that the start is not reported as a crossing.  A function
         further below zero than the band is a real contradiction and stays negative."""
+        held = self.offset.copy()       # items still held a hair off zero since then
         self.offset[:] = 0.0
         r = self.oriented(t, z, p)
+        event_band, self.event_band = self.event_band, None
         low = r < 0
         if not low.any():
             return
@@ -117,8 +123,12 @@ class DiscreteState:
         tol = self.tolerance(t, z, p, v)
         vdot = np.nan_to_num(np.abs(rates()), posinf=0.0)
         band = 2.0 * (2.0 * tol + vdot * resolution)
+        if event_band is not None:
+            # the event was located with the rates before it: an item that stops there
+            # (a speed that sticks) sits within that band, not within the new one
+            band = np.maximum(band, event_band)
         band = np.concatenate([band[: self.n_rel], np.repeat(band[self.n_rel:], 2)])
-        fix = low & (-r <= band)
+        fix = low & (-r <= np.maximum(band, held))
         self.offset[fix] = -2.0 * r[fix]
 
     def release(self, t, z, p) -> None:
@@ -217,9 +227,11 @@ class DiscreteState:
         if not at_zero:
             return self._holds(k, g)
         rate = vdot[k] if vdot is not None else 0.0
-        if rate != 0.0 and math.isfinite(rate):
+        # a rate that would not take the item out of its zero band within a unit of
+        # time is round-off (a stuck speed whose acceleration is solved to 1e-17)
+        if math.isfinite(rate) and abs(rate) > tol:
             return (rate > 0) == bool(self.upward[k])
-        return not bool(self.strict[k])           # exactly at zero: >= and <= hold
+        return not bool(self.strict[k])           # at zero to stay: >= and <= hold
 
     def _holds(self, k, g) -> bool:
         if self.upward[k]:

@@ -7,12 +7,15 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"
            "Damper", "SpringDamper", "IdealGear", "IdealGearR2T", "IdealRollingWheel",
            "RackAndPinion", "ElasticGearWithDeadzone", "GearWithBacklash", "ConstantTorque",
            "StepTorque", "Torque", "ConstantSpeed", "Speed", "Position", "AngleSensor",
-           "SpeedSensor", "RelAngleSensor", "RelSpeedSensor", "TorqueSensor", "PowerSensor"]
+           "SpeedSensor", "RelAngleSensor", "RelSpeedSensor", "TorqueSensor", "PowerSensor",
+           "Clutch", "Brake", "OneWayClutch", "BearingFriction", "PartialFriction"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
+    ".clutches": ("BearingFriction", "Brake", "Clutch", "OneWayClutch"),
     ".components": ("Damper", "ElasticGearWithDeadzone", "Fixed", "GearWithBacklash",
                     "IdealGear", "IdealGearR2T", "IdealRollingWheel", "Inertia",
                     "RackAndPinion", "Spring", "SpringDamper"),
+    ".friction_modes": ("PartialFriction",),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
                     "PartialElementaryOneFlange",
                     "PartialElementaryRotationalToTranslational", "PartialRelativeSensor",
