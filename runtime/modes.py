@@ -252,7 +252,7 @@ class DiscreteState:
         if not self.time_linear.size:
             return None
         v0, slopes = self._slopes(t, z, p)
-        best = None
+        best, which = None, None
         for k in self.time_linear:
             a0, slope = v0[k], slopes[k]
             if slope == 0.0 or not math.isfinite(slope):
@@ -264,8 +264,33 @@ class DiscreteState:
                 target = n + 1.0 if slope > 0 else n
             te = t + (target - a0) / slope
             if te > t_min and (best is None or te < best):
-                best = te
-        return best
+                best, which = te, (k, target, slope)
+        return best if best is None else self._land_on(best, which, z, p, t_min)
+
+    def _land_on(self, te, which, z, p, t_min) -> float:
+        """The first float at which the item reaches its target: t + (target - a0)/slope
+        is rounded, and a step at startTime must switch at startTime, not one unit in the
+        last place before it (where ``time >= startTime`` is still false)."""
+        k, target, slope = which
+
+        def reached(tau):
+            with np.errstate(all="ignore"):
+                g = self.values(tau, z, p)[k] - target
+            return g * slope >= 0
+
+        try:
+            for _ in range(16):
+                if reached(te):
+                    break
+                te = math.nextafter(te, math.inf)
+            for _ in range(16):
+                before = math.nextafter(te, -math.inf)
+                if before <= t_min or not reached(before):
+                    break
+                te = before
+        except (ValueError, ZeroDivisionError, OverflowError):
+            pass
+        return te
 
     def settle_time_items(self, t, z, p) -> bool:
         """At a time event: the time-linear items take their value just after t, decided by
