@@ -207,7 +207,14 @@ class Component:
             object.__setattr__(child, "_mods", {**child._mods, **mod})
         elif isinstance(decls.get(key), Parameter):
             try:
-                check_parameter_value(mod, f"parameter {key}")
+                if decls[key].shape is not None:
+                    from .arrays import check_array_value, shape_of
+                    check_array_value(mod, shape_of(decls[key], self, key),
+                                      f"parameter {key}")
+                else:
+                    check_parameter_value(mod, f"parameter {key}")
+            except InvalidValue:
+                raise
             except ValueError as err:
                 raise InvalidValue(f"{self._describe()}: {err}") from None
             self._param_values[key] = mod

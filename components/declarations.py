@@ -63,6 +63,10 @@ def check_parameter_value(value, what: str) -> None:
     expression of other parameters (whose symbols flattening checks); else ValueError."""
     if value is None or isinstance(value, ref):
         return
+    if isinstance(value, (np.ndarray, list, tuple)):
+        raise ValueError(f"{what} = {value!r} is not a real number (it is a "
+                         f"{type(value).__name__}): the parameter is declared a scalar (an "
+                         "array value or shape= declares an array)")
     if is_symbolic(value):
         from sympy import Expr    # already loaded: value is a sympy object
         if not isinstance(value, Expr):
@@ -170,10 +174,20 @@ class _Declaration:
     def __set_name__(self, owner, name):
         self.name = name
 
+    shape = None     # an array declaration's shape (see components.arrays)
+
     def __get__(self, instance, owner=None):
         if instance is None:
             return self
+        if self.shape is not None:
+            from .arrays import symbol_array
+            return symbol_array(instance, self.name, self)
         return instance._symbol(self.name)
+
+
+def _declared_shape(shape):
+    from .arrays import declared_shape
+    return None if shape is None else declared_shape(shape)
 
 
 class Parameter(_Declaration):
@@ -188,7 +202,10 @@ class Parameter(_Declaration):
     """
 
     def __init__(self, value=None, unit: str = "", description: str = "",
-                 min: float | None = None, max: float | None = None):
+                 min: float | None = None, max: float | None = None, shape=None):
+        if shape is None and isinstance(value, (np.ndarray, list, tuple)):
+            shape = np.shape(value)      # a matrix parameter: its shape from its value
+        self.shape = _declared_shape(shape)
         self.value = value
         self.unit = unit
         self.description = description
@@ -200,11 +217,18 @@ class Parameter(_Declaration):
         args = [repr(shown_value(self.value))]
         args += [f"{k}={getattr(self, k)!r}" for k in ("unit", "min", "max", "description")
                  if getattr(self, k) not in (None, "")]
+        if self.shape is not None and not isinstance(self.value, (np.ndarray, list, tuple)):
+            args.append(f"shape={self.shape!r}")
         return f"Parameter({', '.join(args)})"
 
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
-        check_parameter_value(self.value, "default value")
+        if self.shape is not None:
+            from .arrays import check_array_value
+            if not callable(self.shape) and all(isinstance(n, int) for n in self.shape):
+                check_array_value(self.value, self.shape, "default value")
+        else:
+            check_parameter_value(self.value, "default value")
         lo = None if self.min is None else real_number(self.min, "min")
         hi = None if self.max is None else real_number(self.max, "max")
         if lo is not None and hi is not None and lo > hi:
@@ -233,8 +257,13 @@ class Variable(_Declaration):
     def __init__(self, start: float | None = None, fixed: bool | None = None, unit: str = "",
                  nominal: float | None = None, min: float | None = None,
                  max: float | None = None, state_select: str = "default",
-                 description: str = ""):
-        self.attributes = VariableAttributes(
+                 description: str = "", shape=None):
+        self.shape = _declared_shape(shape)
+        if self.shape is not None:
+            from .arrays import ArrayAttributes as attributes   # per-element attributes
+        else:
+            attributes = VariableAttributes
+        self.attributes = attributes(
             start=start, fixed=fixed, unit=unit, nominal=nominal, min=min, max=max,
             state_select=state_select, description=description)
 
@@ -242,6 +271,8 @@ class Variable(_Declaration):
         a, default = self.attributes, VariableAttributes()
         args = [f"{f.name}={getattr(a, f.name)!r}" for f in fields(a)
                 if getattr(a, f.name) != getattr(default, f.name)]
+        if self.shape is not None:
+            args.append(f"shape={self.shape!r}")
         return f"{type(self).__name__}({', '.join(args)})"
 
     def check(self) -> None:
