@@ -33,6 +33,7 @@ non-array function...) ``InvalidEquation``; each names the component and the sha
 from __future__ import annotations
 
 import itertools
+import operator
 from dataclasses import fields, replace
 
 import numpy as np
@@ -155,8 +156,21 @@ class SymbolArray(np.ndarray):
                                f"{err}") from None
 
     def __repr__(self):
-        return f"{self.name or 'array'}{element_index(self.shape)}: " \
-               f"{np.asarray(self).tolist()!r}"
+        return f"{self.name or 'array'} of shape {self.shape}: {np.asarray(self).tolist()!r}"
+
+    # numpy's comparisons of object arrays ask each relation for a truth value, which a
+    # relation between symbols has not: keep them as an array of relations
+    def __lt__(self, other):
+        return SymbolArray(np.frompyfunc(operator.lt, 2, 1)(np.asarray(self), other))
+
+    def __le__(self, other):
+        return SymbolArray(np.frompyfunc(operator.le, 2, 1)(np.asarray(self), other))
+
+    def __gt__(self, other):
+        return SymbolArray(np.frompyfunc(operator.gt, 2, 1)(np.asarray(self), other))
+
+    def __ge__(self, other):
+        return SymbolArray(np.frompyfunc(operator.ge, 2, 1)(np.asarray(self), other))
 
     def __bool__(self):
         # `if self.q:` or `self.q > 0` in a condition: a relation needs one value
@@ -211,15 +225,18 @@ def array_equations(lhs, rhs, label, make) -> list:
     as in Modelica: broadcasting a variable to n equations is rarely what was meant."""
     ls, rs = _shape(lhs), _shape(rhs)
     if ls != rs and not ((ls == () and _is_number(lhs)) or (rs == () and _is_number(rhs))):
-        raise InvalidEquation(f"ac.Eq(lhs, rhs) between arrays of different shapes: the "
-                              f"left side has shape {ls}, the right side {rs}"
-                              + (" (a scalar)" if () in (ls, rs) else "")
-                              + f"; left: {_brief(lhs)}, right: {_brief(rhs)}")
+        raise InvalidEquation(f"ac.Eq(lhs, rhs) between sides of different shapes: the "
+                              f"left side {_shape_text(ls)}, the right side "
+                              f"{_shape_text(rs)}; left: {_brief(lhs)}, right: {_brief(rhs)}")
     shape = ls if ls != () else rs
     lhs, rhs = np.broadcast_to(np.asarray(lhs, dtype=object), shape), \
         np.broadcast_to(np.asarray(rhs, dtype=object), shape)
     return [make(lhs[idx], rhs[idx], None if label is None else label + element_index(idx))
             for idx in elements(shape)]
+
+
+def _shape_text(shape: tuple) -> str:
+    return f"has shape {shape}" if shape else "is a scalar"
 
 
 def _shape(value) -> tuple:
