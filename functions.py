@@ -13,8 +13,9 @@ with them is exactly what the compiler differentiates and prints; constants stay
 (``ac.sqrt(2)`` is the exact atom sqrt(2), which the compiler's exact rank checks rely
 on).  ``abs``, ``min`` and ``max`` return plain numbers for plain numbers (they shadow the
 builtins in a model module that imports them), and their kinks become events in a model,
-as Modelica's do.  This module loads sympy only when a function is first called with a
-symbol, or when ``pi`` is read.
+as Modelica's do.  Applied to an array (``ac.sin(self.q)``) the functions act element by
+element, as numpy's do.  This module loads sympy only when a function is first called with
+a symbol, or when ``pi`` is read.
 """
 from __future__ import annotations
 

@@ -199,6 +199,8 @@ class Parameter(_Declaration):
     component's parameter with ``ref``.  ``min`` and ``max`` are enforced when the model
     is flattened.  An infinite value is accepted where the equations stay finite with it
     (a time constant in ``1/Tt``, an output limit); a bool is not a real number.
+    An array value (``Parameter(np.eye(2))``) or ``shape=`` declares an array of
+    parameters, one tunable parameter per element (:mod:`acausal.components.arrays`).
     """
 
     def __init__(self, value=None, unit: str = "", description: str = "",
@@ -250,6 +252,8 @@ class Variable(_Declaration):
     is determined by equations), ``nominal`` scales error weights, ``state_select`` is
     the user's hint for state selection (never/avoid/default/prefer/always).  The
     attributes are checked when the class is created (``VariableAttributes.checked``).
+    ``shape=(n,)`` declares an array of variables, each attribute a scalar for every
+    element or an array (:mod:`acausal.components.arrays`).
     """
 
     kind = "variable"
@@ -335,6 +339,8 @@ def shown_value(value):
     """A parameter value as help(), the signature and repr print it."""
     if isinstance(value, ref) or value is None:
         return value
+    if isinstance(value, np.ndarray):
+        return _Shown(repr(value.tolist()))     # on one line, as the array is written
     if callable(value) and not is_symbolic(value) and not isinstance(value, numbers.Number):
         return _Shown("computed")
     return value
@@ -360,7 +366,9 @@ def parameter_signature(cls, parameters: dict):
     for name, decl in parameters.items():
         if name in taken or not name.isidentifier():
             continue
-        annotation = _Shown(f"float [{decl.unit}]") if decl.unit else float
+        kind = _kind(decl)
+        annotation = _Shown(f"{kind} [{decl.unit}]") if decl.unit else \
+            (float if kind == "float" else _Shown(kind))
         keyword.append(inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY,
                                          default=shown_value(decl.value),
                                          annotation=annotation))
@@ -384,6 +392,17 @@ def own_docstring(cls) -> str:
     return doc
 
 
+def _shape(shape) -> str:
+    if callable(shape):
+        return "(computed)"
+    return "[" + ", ".join(str(n) for n in shape) + "]"
+
+
+def _kind(decl) -> str:
+    """``float``, or ``array [2, 2]`` / ``array [n]`` for an array parameter."""
+    return "float" if decl.shape is None else f"array {_shape(decl.shape)}"
+
+
 def _unit(text: str) -> str:
     return f" [{text}]" if text else ""
 
@@ -401,7 +420,8 @@ def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
         for name, d in parameters.items():
             bounds = ", ".join(b for b in (f"min {d.min!r}" if d.min is not None else "",
                                            f"max {d.max!r}" if d.max is not None else "") if b)
-            lines.append(f"{name} : float{_unit(d.unit)}, default {shown_value(d.value)!r}"
+            lines.append(f"{name} : {_kind(d)}{_unit(d.unit)}, "
+                         f"default {shown_value(d.value)!r}"
                          + (f" ({bounds})" if bounds else ""))
             if d.description:
                 lines.append(f"    {d.description}")
@@ -414,7 +434,9 @@ def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
                      "fixed" if a.fixed else "",
                      f"state_select {a.state_select}" if a.state_select != "default" else ""]
             extra = ", ".join(e for e in extra if e)
-            lines.append(f"{name} : {v.kind}{_unit(a.unit)}" + (f", {extra}" if extra else ""))
+            shape = "" if v.shape is None else f" array {_shape(v.shape)}"
+            lines.append(f"{name} : {v.kind}{shape}{_unit(a.unit)}"
+                         + (f", {extra}" if extra else ""))
             if a.description:
                 lines.append(f"    {a.description}")
         sections.append("\n".join(lines))
