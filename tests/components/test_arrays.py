@@ -46,6 +46,14 @@ def compiled():
     return ac.compile(TwoMassOscillator())
 
 
+def _run(compiled, parameters=None):
+    """A run from the declared matrices, changed by ``parameters`` (set_parameters keeps
+    its values in the compiled model, which the tests share)."""
+    compiled.set_parameters({"M": M0})
+    return ac.simulate(compiled, t_end=T_END, rtol=1e-10, n_points=201,
+                       parameters=parameters, raise_on_failure=True)
+
+
 def _relative_error(res, M):
     x = _expm_solution(M, C0, K0, res.t)
     qv = np.hstack([res["q"], res["v"]])
@@ -59,8 +67,7 @@ def test_matrix_parameters_flatten_to_named_tunable_elements(compiled):
 
 
 def test_second_order_system_matches_the_matrix_exponential(compiled):
-    res = ac.simulate(compiled, t_end=T_END, rtol=1e-10, n_points=201,
-                      raise_on_failure=True)
+    res = _run(compiled)
     assert res["q"].shape == (201, 2)
     np.testing.assert_array_equal(res["q"][:, 1], res["q[1]"])
     assert _relative_error(res, M0) < 1e-7
@@ -70,12 +77,20 @@ def test_tuning_an_off_diagonal_mass_element_after_compile(compiled):
     # M[0,1] is 0 at compile time and still a parameter: tuning it couples the masses
     M = M0.copy()
     M[0, 1] = 0.6
-    before = ac.simulate(compiled, t_end=T_END, rtol=1e-10, n_points=201)
-    res = ac.simulate(compiled, t_end=T_END, rtol=1e-10, n_points=201,
-                      parameters={"M[0,1]": 0.6}, raise_on_failure=True)
+    before = _run(compiled)
+    res = _run(compiled, {"M[0,1]": 0.6})
     assert _relative_error(res, M) < 1e-7
     change = np.max(np.abs(res["q"] - before["q"])) / np.max(np.abs(before["q"]))
     assert change > 1e-2                # the tuned element took part
+
+
+def test_tuning_a_whole_matrix_after_compile(compiled):
+    M = np.array([[2.5, -0.3], [0.2, 0.8]])
+    res = _run(compiled, {"M": M})
+    assert _relative_error(res, M) < 1e-7
+    with pytest.raises(ac.InvalidValue, match=r"parameter array 'M' has shape \(2, 2\), "
+                                              r"the value given has shape \(2,\)"):
+        compiled.set_parameters({"M": [1.0, 2.0]})
 
 
 def test_modification_with_a_matrix_at_instantiation():
