@@ -252,7 +252,11 @@ class Component:
     # -- what the compiler reads -------------------------------------------------------
     def parameter_value(self, name: str):
         """The value of parameter ``name``: a number, or a sympy expression of other
-        parameters (a ``ref`` or a function of the component, evaluated here)."""
+        parameters (a ``ref`` or a function of the component, evaluated here); of an
+        array parameter, an array of them."""
+        if _declarations(type(self))[name].shape is not None:
+            from .arrays import parameter_array
+            return parameter_array(self, name, _declarations(type(self))[name])
         if name in self._param_values:
             value = self._param_values[name]
         else:
