@@ -42,7 +42,7 @@ from .component import InvalidEquation, InvalidValue, ModelError
 from .declarations import VariableAttributes, check_parameter_value
 
 __all__ = ["InvalidIndex", "SymbolArray", "ArrayAttributes", "declared_shape", "shape_of",
-           "symbol_array", "element_index", "elements", "is_array", "array_equations",
+           "symbol_array", "element_index", "elements", "array_equations",
            "elementwise", "parameter_array", "check_array_value", "array_of_name"]
 
 
@@ -196,16 +196,10 @@ def symbol_array(comp, name: str, decl) -> SymbolArray:
     syms = np.empty(shape, dtype=object)
     for idx in elements(shape):
         syms[idx] = comp._symbol(f"{name}{element_index(idx)}")
-    full = f"{comp.path}.{name}" if comp.path else name
-    arr = SymbolArray(syms, full)
-    arr.name = full
+    arr = SymbolArray(syms, f"{comp.path}.{name}" if comp.path else name)
+    arr.flags.writeable = False     # the declaration's symbols, shared by every read
     comp._symbols[key] = arr
     return arr
-
-
-def is_array(value) -> bool:
-    """An array of one or more dimensions (a 0-d array is one value)."""
-    return isinstance(value, np.ndarray) and value.ndim > 0
 
 
 def elementwise(function, value):
@@ -223,6 +217,8 @@ def array_equations(lhs, rhs, label, make) -> list:
     Both sides have the same shape; a number (no variable) may stand for every element
     (``ac.Eq(self.q, 0)``).  A scalar expression against an array is a shape mismatch,
     as in Modelica: broadcasting a variable to n equations is rarely what was meant."""
+    lhs, rhs = (np.array(v, dtype=object) if isinstance(v, (list, tuple)) else v
+                for v in (lhs, rhs))
     ls, rs = _shape(lhs), _shape(rhs)
     if ls != rs and not ((ls == () and _is_number(lhs)) or (rs == () and _is_number(rhs))):
         raise InvalidEquation(f"ac.Eq(lhs, rhs) between sides of different shapes: the "
