@@ -223,7 +223,9 @@ def array_equations(lhs, rhs, label, make) -> list:
     if ls != rs and not ((ls == () and _is_number(lhs)) or (rs == () and _is_number(rhs))):
         raise InvalidEquation(f"ac.Eq(lhs, rhs) between sides of different shapes: the "
                               f"left side {_shape_text(ls)}, the right side "
-                              f"{_shape_text(rs)}; left: {_brief(lhs)}, right: {_brief(rhs)}")
+                              f"{_shape_text(rs)}; left: {_brief(lhs)}, right: {_brief(rhs)}"
+                              + ("" if ls and rs else " (for the same value in every "
+                                 "element, multiply it by np.ones(shape))"))
     shape = ls if ls != () else rs
     lhs, rhs = np.broadcast_to(np.asarray(lhs, dtype=object), shape), \
         np.broadcast_to(np.asarray(rhs, dtype=object), shape)
