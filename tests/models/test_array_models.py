@@ -7,11 +7,11 @@
   equals the same equations written with one declaration per scalar, and the library's
   ``PointMassChain`` assembled from ``Rod`` and ``PointMass``; the array form takes
   under half the lines of code of the scalar form.
-* Andrews' squeezing mechanism (seven bodies, 27 unknowns, 42 parameters; Hairer &
+* Andrews' squeezing mechanism (seven bodies, 20 unknowns, 42 parameters; Hairer &
   Wanner II, section VII.7) in array form: its consistent initial values are the
   published ones, and its trajectory is that of an independent index-1 form (the
   constraint Jacobian and its derivative taken by sympy from the position constraints
-  (7.9), the accelerations and multipliers solved at each step) integrated by scipy's
+  g(q), the accelerations and multipliers solved at each step) integrated by scipy's
   DOP853.
 """
 import ast
@@ -135,8 +135,8 @@ PUBLISHED_LAM = (98.5668703962410896057654982170, -6.122688344255662655031143931
 
 
 def _squeezer_index1():
-    """q'' from [[M, G^T], [G, 0]] (q'', lam) = (f, -(d(G v)/dq) v), written from the
-    book's (7.6)-(7.9) independently of the model: G and its derivative by sympy."""
+    """q'' from [[M, G^T], [G, 0]] (q'', lam) = (f, -(d(G v)/dq) v), M, f and g written
+    from the book independently of the model; G and its derivative by sympy."""
     q, v = sp.symbols("q0:7", real=True), sp.symbols("v0:7", real=True)
     b, th, ga, ph, de, om, ep = q
     bp, thp, gap, php, dep, omp, epp = v

@@ -1,18 +1,19 @@
 """Andrews' squeezing mechanism: seven rigid bodies on frictionless joints in a plane,
 driven by a constant torque and pulled by a spring (Hairer & Wanner, *Solving Ordinary
-Differential Equations II*, section VII.7, equations (7.4)-(7.11); problem "andrews" of
+Differential Equations II*, section VII.7, the system (7.11); problem "andrews" of
 the Test Set for IVP Solvers, Bari).
 
 In the book's minimal form, with the seven angles q = (beta, Theta, gamma, Phi, delta,
-Omega, epsilon) and six Lagrange multipliers lam of the closed loops' position
-constraints g(q) = 0 (two loops, each closed at a fixed point, A or B):
+Omega, epsilon) and six Lagrange multipliers lam of the position constraints g(q) = 0
+(the mechanism closed at the fixed point B, and through two branches at A):
 
     q' = v,   M(q) v' = f(q, v) - G(q)^T lam,   g(q) = 0,   G = dg/dq      (7.11)
 
-27 unknowns and 42 parameters, which the arrays of the modelling language write as the
-book does: q, v and lam are arrays, the masses, inertias and fixed points are arrays,
-and M, f, G and g are built as numpy arrays of expressions.  The constraints are of
-index 3; the compiler differentiates them twice.
+20 unknowns (27 in the first-order form of the Test Set, which adds the accelerations)
+and 42 parameters, which the arrays of the modelling language write as the book does:
+q, v and lam are arrays, the masses, inertias and fixed points are arrays, and M, f, G
+and g are built as numpy arrays of expressions.  The constraints are of index 3; the
+compiler differentiates them twice.
 """
 import numpy as np
 
@@ -75,7 +76,7 @@ class AndrewsSqueezer(ac.Component):
         cphde, sphde = ac.cos(ph + de), ac.sin(ph + de)
         comep, somep = ac.cos(om + ep), ac.sin(om + ep)
         ee, ff = e - ea, zf - fa
-        M = np.zeros((7, 7), dtype=object)                                  # (7.6)
+        M = np.zeros((7, 7), dtype=object)                                  # M(q)
         M[0, 0] = m[0] * self.ra**2 + m[1] * (rr**2 - 2 * da * rr * cth + da**2) + i[0] + i[1]
         M[1, 0] = M[0, 1] = m[1] * (da**2 - da * rr * cth) + i[1]
         M[1, 1] = m[1] * da**2 + i[1]
@@ -88,12 +89,12 @@ class AndrewsSqueezer(ac.Component):
         M[6, 5] = M[5, 6] = m[5] * (ff**2 - u * ff * ac.sin(om)) + i[5]
         M[6, 6] = (m[5] * (ff**2 - 2 * u * ff * ac.sin(om) + u**2)
                    + m[6] * (self.ua**2 + self.ub**2) + i[5] + i[6])
-        # the spring from D on body 3 to the fixed point C                     (7.7)
+        # the spring from D on body 3 to the fixed point C
         D = self.B + np.array([self.sd * ac.cos(ga) + self.sc * ac.sin(ga),
                                self.sd * ac.sin(ga) - self.sc * ac.cos(ga)])
         length = ac.sqrt((D - self.C) @ (D - self.C))
         F = -self.c0 * (length - self.l0) / length * (D - self.C)
-        f = np.array([                                                        # (7.8)
+        f = np.array([                                                        # f(q, v)
             self.mom - m[1] * da * rr * thp * (thp + 2 * bp) * sth,
             m[1] * da * rr * bp**2 * sth,
             F[0] * (self.sc * ac.cos(ga) - self.sd * ac.sin(ga))
@@ -102,7 +103,7 @@ class AndrewsSqueezer(ac.Component):
             -m[3] * zt * ee * php * (php + 2 * dep) * ac.cos(ph),
             -m[5] * u * ff * epp**2 * ac.cos(om),
             m[5] * u * ff * omp * (omp + 2 * epp) * ac.cos(om)])
-        # the two loops closed at B and at A (twice: through body 4-5 and 6-7)    (7.9)
+        # g(q): closed at B, and at A through bodies 4-5 and through bodies 6-7
         tip = np.array([rr * cb - d * cbth, rr * sb_ - d * sbth])
         g = np.concatenate([tip + ss * np.array([-ac.sin(ga), ac.cos(ga)]) - self.B,
                             tip + np.array([-e * sphde - zt * ac.cos(de),
@@ -110,7 +111,7 @@ class AndrewsSqueezer(ac.Component):
                             tip + np.array([-zf * comep - u * ac.sin(ep),
                                             -zf * somep + u * ac.cos(ep)]) - self.A])
         dtip = np.array([[-rr * sb_ + d * sbth, d * sbth], [rr * cb - d * cbth, -d * cbth]])
-        G = np.zeros((6, 7), dtype=object)                                  # (7.10)
+        G = np.zeros((6, 7), dtype=object)                                  # dg/dq
         G[:, :2] = np.vstack([dtip, dtip, dtip])
         G[0:2, 2] = [-ss * ac.cos(ga), -ss * ac.sin(ga)]
         G[2:4, 3] = [-e * cphde, -e * sphde]
