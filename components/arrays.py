@@ -39,11 +39,13 @@ from dataclasses import fields, replace
 import numpy as np
 
 from .component import InvalidEquation, InvalidValue, ModelError
-from .declarations import VariableAttributes, check_parameter_value
+from .declarations import (VariableAttributes, bound_violation, check_parameter_value,
+                           real_number)
 
 __all__ = ["InvalidIndex", "SymbolArray", "ArrayAttributes", "declared_shape", "shape_of",
            "symbol_array", "element_index", "elements", "array_equations",
-           "elementwise", "parameter_array", "check_array_value", "array_of_name"]
+           "elementwise", "parameter_array", "check_array_value", "check_array_declaration",
+           "array_of_name"]
 
 
 class InvalidIndex(ModelError, IndexError):
@@ -274,6 +276,40 @@ def check_array_value(value, shape: tuple, what: str) -> np.ndarray:
     for idx in elements(shape):
         check_parameter_value(arr[idx], f"{what}{element_index(idx)}")
     return arr
+
+
+def check_array_declaration(decl) -> None:
+    """The value (where the shape is known), min and max of an array parameter's
+    declaration, element by element; ValueError naming the first bad one."""
+    bounds = {}
+    for what in ("min", "max"):
+        try:
+            bounds[what] = np.array(getattr(decl, what), dtype=object)
+        except ValueError:
+            raise ValueError(f"{what} = {getattr(decl, what)!r} is not a regular array") \
+                from None
+        for idx in elements(bounds[what].shape):
+            if bounds[what][idx] is not None:
+                real_number(bounds[what][idx], f"{what}{element_index(idx) if idx else ''}")
+    concrete = not callable(decl.shape) and all(isinstance(n, int) for n in decl.shape)
+    shape = decl.shape if concrete else np.broadcast_shapes(*(b.shape for b in
+                                                              bounds.values()))
+    values = check_array_value(decl.value, shape, "default value") if concrete else None
+    try:
+        lo, hi = (np.broadcast_to(b, shape) for b in bounds.values())
+    except ValueError:
+        raise ValueError(f"min/max of shapes {bounds['min'].shape}, {bounds['max'].shape} "
+                         f"do not fit the shape {shape}") from None
+    for idx in elements(shape):
+        if lo[idx] is not None and hi[idx] is not None and lo[idx] > hi[idx]:
+            raise ValueError(f"min{element_index(idx)} = {lo[idx]!r} is greater than "
+                             f"max{element_index(idx)} = {hi[idx]!r}")
+        value = None if values is None else values[idx]
+        if isinstance(value, (int, float, np.integer, np.floating)) \
+                and not isinstance(value, bool):
+            why = bound_violation(float(value), lo[idx], hi[idx])
+            if why:
+                raise ValueError(f"default value{element_index(idx)} {value!r} {why}")
 
 
 def parameter_array(comp, name: str, decl) -> np.ndarray:

@@ -226,11 +226,16 @@ class Parameter(_Declaration):
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
         if self.shape is not None:
-            from .arrays import check_array_value
-            if not callable(self.shape) and all(isinstance(n, int) for n in self.shape):
-                check_array_value(self.value, self.shape, "default value")
+            from .arrays import check_array_declaration
+            check_array_declaration(self)    # value, min and max element by element
         else:
-            check_parameter_value(self.value, "default value")
+            self._check_scalar()
+        for name in ("unit", "description"):
+            if not isinstance(getattr(self, name), str):
+                raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
+
+    def _check_scalar(self) -> None:
+        check_parameter_value(self.value, "default value")
         lo = None if self.min is None else real_number(self.min, "min")
         hi = None if self.max is None else real_number(self.max, "max")
         if lo is not None and hi is not None and lo > hi:
@@ -239,9 +244,6 @@ class Parameter(_Declaration):
             why = bound_violation(float(self.value), self.min, self.max)
             if why:
                 raise ValueError(f"default value {self.value!r} {why}")
-        for name in ("unit", "description"):
-            if not isinstance(getattr(self, name), str):
-                raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
 
 
 class Variable(_Declaration):

@@ -287,3 +287,32 @@ def test_equation_with_a_list_side_and_the_array_port_error():
 
     with pytest.raises(ac.InvalidValue, match=r"'p' \(BusPin\): port variable v is an array"):
         ac.compile(Device())
+
+
+class Attributed(ac.Component):
+    """Per-element attributes and bounds."""
+
+    k = ac.Parameter([1.0, 2.0], unit="1/s", min=[0.5, 1.5], max=10.0)
+    x = ac.Variable(shape=2, start=[1.0, 2.0], fixed=[True, False], nominal=[1.0, 1e3],
+                    min=0.0, max=[5.0, 50.0], state_select=["prefer", "avoid"], unit="m")
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), -self.k * self.x)]
+
+
+def test_attributes_per_element_reach_the_flat_variables():
+    from acausal.compiler.flatten import flatten
+    flat = flatten(Attributed())
+    x0, x1 = flat.variable("x[0]").attrs, flat.variable("x[1]").attrs
+    assert (x0.start, x0.fixed, x0.nominal, x0.max, x0.state_select) == \
+        (1.0, True, 1.0, 5.0, "prefer")
+    assert (x1.start, x1.fixed, x1.nominal, x1.max, x1.state_select) == \
+        (2.0, False, 1e3, 50.0, "avoid")
+    assert x0.min == x1.min == 0.0 and x0.unit == x1.unit == "m"
+    with pytest.raises(ac.InvalidValue, match=r"parameter k\[1\] = 1.0 is below its "
+                                              r"minimum 1.5"):
+        ac.compile(Attributed(k=[1.0, 1.0]))
+    with pytest.raises(ac.InvalidValue, match=r"Gains.k: default value\[1\] 1.0 is below "
+                                              r"its minimum 2.0"):
+        class Gains(ac.Component):
+            k = ac.Parameter(1.0, shape=2, min=[0.0, 2.0])
