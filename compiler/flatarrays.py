@@ -44,8 +44,10 @@ def collect_array(comp, name: str, decl, flat) -> None:
                 sym.name, sym, values[idx], decl.unit, decl.description, comp.path,
                 type(comp).__name__, lo[idx], hi[idx]))
         return
+    if isinstance(comp, Port):
+        raise InvalidValue(f"{comp._describe()}: port variable {name} is an array; a port "
+                           "carries scalars (use a list of ports for several)")
     attrs = comp.variable_attributes(name)
-    hint = comp.hint if isinstance(comp, Port) else ""
     for idx in elements(syms.shape):
         sym = syms[idx]
         try:
@@ -53,4 +55,4 @@ def collect_array(comp, name: str, decl, flat) -> None:
         except ValueError as err:
             raise InvalidValue(f"{comp._describe()}: {err}") from None
         flat.variables.append(FlatVariable(sym.name, sym, element, comp.path,
-                                           type(comp).__name__, decl.kind, hint))
+                                           type(comp).__name__, decl.kind))
