@@ -316,3 +316,14 @@ def test_attributes_per_element_reach_the_flat_variables():
                                               r"its minimum 2.0"):
         class Gains(ac.Component):
             k = ac.Parameter(1.0, shape=2, min=[0.0, 2.0])
+
+
+def test_a_result_read_from_columns_gives_arrays_whole():
+    t = np.linspace(0.0, 1.0, 5)
+    columns = {f"M[{i},{j}]": (10 * i + j) * t for i in range(2) for j in range(3)}
+    res = ac.Result.from_table(t, {**columns, "q[0]": t, "q[1]": 2 * t, "other": t})
+    assert res["M"].shape == (5, 2, 3)
+    np.testing.assert_array_equal(res["M"][:, 1, 2], 12 * t)
+    np.testing.assert_array_equal(res["q"], np.column_stack([t, 2 * t]))
+    with pytest.raises(KeyError, match="no variable 'p'"):
+        res["p"]
