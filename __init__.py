@@ -18,7 +18,7 @@ import importlib
 
 _EXPORTS = {
     ".components": ("Across", "Component", "Connection", "Eq", "Equation",
-                    "InvalidConnection", "InvalidEquation", "InvalidHierarchy",
+                    "InvalidConnection", "InvalidEquation", "InvalidHierarchy", "InvalidIndex",
                     "InvalidValue", "ModelError", "NotInModel", "Parameter", "Port", "Signal",
                     "Through", "Variable", "When", "connect", "der", "if_else", "no_event",
                     "pre", "ref", "reinit", "sign", "time", "when"),
@@ -41,7 +41,8 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "Connection", "if_else", "no_event", "sign", "time",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
            "ModelError", "InvalidValue", "InvalidEquation", "InvalidConnection",
-           "InvalidHierarchy", "NotInModel", "SimulationError", "InitializationFailed",
+           "InvalidHierarchy", "InvalidIndex", "NotInModel", "SimulationError",
+           "InitializationFailed",
            "linearize", "linearize_grid", "linearize_symbolic", "StateSpace", "steady_state",
            "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
            "energy_balance", "is_passive", "estimate", "BackendError", "export_fmu",

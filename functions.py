@@ -13,8 +13,9 @@ with them is exactly what the compiler differentiates and prints; constants stay
 (``ac.sqrt(2)`` is the exact atom sqrt(2), which the compiler's exact rank checks rely
 on).  ``abs``, ``min`` and ``max`` return plain numbers for plain numbers (they shadow the
 builtins in a model module that imports them), and their kinks become events in a model,
-as Modelica's do.  This module loads sympy only when a function is first called with a
-symbol, or when ``pi`` is read.
+as Modelica's do.  Applied to an array (``ac.sin(self.q)``) the functions act element by
+element, as numpy's do.  This module loads sympy only when a function is first called with
+a symbol, or when ``pi`` is read.
 """
 from __future__ import annotations
 
@@ -31,73 +32,101 @@ def _sympy():
     return sympy
 
 
+def _elementwise(f):
+    """``f`` applied element by element to arrays (``ac.sin(self.q)``), as numpy's
+    functions are; scalars pass through unchanged."""
+    import functools
+
+    @functools.wraps(f)
+    def wrapper(*args):
+        if any(getattr(a, "ndim", 0) for a in args):
+            import numpy as np
+            return np.frompyfunc(f, len(args), 1)(*args)
+        return f(*args)
+    return wrapper
+
+
+@_elementwise
 def sqrt(x):
     """Square root, sqrt(x) (x >= 0; a model that takes it of a negative value stops
     with the equation named)."""
     return _sympy().sqrt(x)
 
 
+@_elementwise
 def exp(x):
     """Exponential, e**x."""
     return _sympy().exp(x)
 
 
+@_elementwise
 def log(x):
     """Natural logarithm, ln(x) (x > 0)."""
     return _sympy().log(x)
 
 
+@_elementwise
 def log10(x):
     """Decimal logarithm, log(x) / log(10) (x > 0)."""
     return _sympy().log(x, 10)
 
 
+@_elementwise
 def sin(x):
     """Sine of x [rad]."""
     return _sympy().sin(x)
 
 
+@_elementwise
 def cos(x):
     """Cosine of x [rad]."""
     return _sympy().cos(x)
 
 
+@_elementwise
 def tan(x):
     """Tangent of x [rad]."""
     return _sympy().tan(x)
 
 
+@_elementwise
 def asin(x):
     """Inverse sine, in [-pi/2, pi/2] (-1 <= x <= 1)."""
     return _sympy().asin(x)
 
 
+@_elementwise
 def acos(x):
     """Inverse cosine, in [0, pi] (-1 <= x <= 1)."""
     return _sympy().acos(x)
 
 
+@_elementwise
 def atan(x):
     """Inverse tangent, in (-pi/2, pi/2)."""
     return _sympy().atan(x)
 
 
+@_elementwise
 def atan2(y, x):
     """The angle of the point (x, y), in (-pi, pi] (Modelica's ``atan2(u1, u2)``: y
     first)."""
     return _sympy().atan2(y, x)
 
 
+@_elementwise
 def sinh(x):
     """Hyperbolic sine."""
     return _sympy().sinh(x)
 
 
+@_elementwise
 def cosh(x):
     """Hyperbolic cosine."""
     return _sympy().cosh(x)
 
 
+@_elementwise
 def tanh(x):
     """Hyperbolic tangent."""
     return _sympy().tanh(x)

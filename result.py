@@ -80,11 +80,22 @@ def _component_of(text: str) -> str:
     return "" if name == "(model)" else name
 
 
+def _array_elements(name: str, known):
+    """(shape, element names) of the array variable ``name`` or ``der(name)``, or None."""
+    from .components.arrays import array_of_name
+    if name.startswith("der(") and name.endswith(")"):
+        found = array_of_name(name[4:-1], {n[4:-1] for n in known
+                                           if n.startswith("der(") and n.endswith(")")})
+        return found and (found[0], [f"der({n})" for n in found[1]])
+    return array_of_name(name, known)
+
+
 class Result:
     """What ``acausal.simulate`` returns.
 
     ``res.t`` (times), ``res["C1.v"]`` (any variable, alias or not, and ``der(x)`` of the
-    states), ``res.names``, ``res.units`` / ``res.descriptions`` (by name, "" where none
+    states; an array variable by element, ``res["q[2]"]``, or whole, ``res["q"]``, of
+    shape time x the array's shape), ``res.names``, ``res.units`` / ``res.descriptions`` (by name, "" where none
     was declared), ``res.stats`` (solver statistics), ``res.events`` (:class:`Event`
     records, floats equal to their times), ``res.event_times`` (an array),
     ``res.success`` / ``res.message`` (a failed run keeps what it computed).  A result
@@ -153,6 +164,13 @@ class Result:
         return name in self.compiled.outputs
 
     def __getitem__(self, name: str) -> np.ndarray:
+        known = self._table if self._table is not None else self.compiled.outputs
+        if name not in known and isinstance(name, str):
+            array = _array_elements(name, known)
+            if array is not None:     # an array variable: time x its shape
+                shape, elements = array
+                return np.stack([self[n] for n in elements], axis=-1).reshape(
+                    (len(self.t),) + shape)
         if self._table is not None:
             if name not in self._table:
                 raise KeyError(self._missing(name, self._table))

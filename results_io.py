@@ -59,6 +59,11 @@ def declared_attributes(model) -> tuple[dict, dict]:
             else:
                 attrs = comp.variable_attributes(name)
                 units[full], descriptions[full] = attrs.unit, attrs.description
+            if decl.shape is not None:      # the elements of an array: q[0], M[1,0] ...
+                from .components.arrays import element_index, elements, shape_of
+                for idx in elements(shape_of(decl, comp, name)):
+                    units[full + element_index(idx)] = units[full]
+                    descriptions[full + element_index(idx)] = descriptions[full]
     return units, descriptions
 
 

@@ -168,6 +168,8 @@ def _plain(x, depth=0) -> str:
     if depth > 6:
         raise _Unstable("nested too deep")
     if isinstance(x, np.ndarray):
+        if x.dtype == object:      # its bytes are addresses: describe the elements
+            return f"array(object,{x.shape},{_plain(x.tolist(), depth + 1)})"
         return f"array({x.dtype},{x.shape},{hashlib.sha256(x.tobytes()).hexdigest()})"
     if isinstance(x, (list, tuple)):
         return type(x).__name__ + "(" + ",".join(_plain(v, depth + 1) for v in x) + ")"

@@ -192,6 +192,10 @@ def _in_context(err: ModelError, where: str) -> ModelError:
 
 def _collect_declarations(comp: Component, flat: FlatModel) -> None:
     for name, decl in comp.declarations().items():
+        if decl.shape is not None:
+            from .flatarrays import collect_array   # it imports this module
+            collect_array(comp, name, decl, flat)
+            continue
         sym = getattr(comp, name)
         if isinstance(decl, Parameter):
             value = comp.parameter_value(name)
@@ -382,7 +386,7 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     """
     resolved = _resolve_bindings(flat)
     zeros = {p.symbol: sp.Integer(0) for p in flat.parameters
-             if p.symbol not in resolved and _is_zero(p.value)}
+             if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")}
     bound = {k: v.xreplace(zeros) for k, v in resolved.items()}
     bound.update(zeros)
     _check_bounds(flat, resolved)

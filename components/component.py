@@ -207,7 +207,14 @@ class Component:
             object.__setattr__(child, "_mods", {**child._mods, **mod})
         elif isinstance(decls.get(key), Parameter):
             try:
-                check_parameter_value(mod, f"parameter {key}")
+                if decls[key].shape is not None:
+                    from .arrays import check_array_value, shape_of
+                    check_array_value(mod, shape_of(decls[key], self, key),
+                                      f"parameter {key}")
+                else:
+                    check_parameter_value(mod, f"parameter {key}")
+            except InvalidValue:
+                raise
             except ValueError as err:
                 raise InvalidValue(f"{self._describe()}: {err}") from None
             self._param_values[key] = mod
@@ -245,7 +252,11 @@ class Component:
     # -- what the compiler reads -------------------------------------------------------
     def parameter_value(self, name: str):
         """The value of parameter ``name``: a number, or a sympy expression of other
-        parameters (a ``ref`` or a function of the component, evaluated here)."""
+        parameters (a ``ref`` or a function of the component, evaluated here); of an
+        array parameter, an array of them."""
+        if _declarations(type(self))[name].shape is not None:
+            from .arrays import parameter_array
+            return parameter_array(self, name, _declarations(type(self))[name])
         if name in self._param_values:
             value = self._param_values[name]
         else:

@@ -63,6 +63,10 @@ def check_parameter_value(value, what: str) -> None:
     expression of other parameters (whose symbols flattening checks); else ValueError."""
     if value is None or isinstance(value, ref):
         return
+    if isinstance(value, (np.ndarray, list, tuple)):
+        raise ValueError(f"{what} = {value!r} is not a real number (it is a "
+                         f"{type(value).__name__}): the parameter is declared a scalar (an "
+                         "array value or shape= declares an array)")
     if is_symbolic(value):
         from sympy import Expr    # already loaded: value is a sympy object
         if not isinstance(value, Expr):
@@ -170,10 +174,20 @@ class _Declaration:
     def __set_name__(self, owner, name):
         self.name = name
 
+    shape = None     # an array declaration's shape (see components.arrays)
+
     def __get__(self, instance, owner=None):
         if instance is None:
             return self
+        if self.shape is not None:
+            from .arrays import symbol_array
+            return symbol_array(instance, self.name, self)
         return instance._symbol(self.name)
+
+
+def _declared_shape(shape):
+    from .arrays import declared_shape
+    return None if shape is None else declared_shape(shape)
 
 
 class Parameter(_Declaration):
@@ -185,10 +199,15 @@ class Parameter(_Declaration):
     component's parameter with ``ref``.  ``min`` and ``max`` are enforced when the model
     is flattened.  An infinite value is accepted where the equations stay finite with it
     (a time constant in ``1/Tt``, an output limit); a bool is not a real number.
+    An array value (``Parameter(np.eye(2))``) or ``shape=`` declares an array of
+    parameters, one tunable parameter per element (:mod:`acausal.components.arrays`).
     """
 
     def __init__(self, value=None, unit: str = "", description: str = "",
-                 min: float | None = None, max: float | None = None):
+                 min: float | None = None, max: float | None = None, shape=None):
+        if shape is None and isinstance(value, (np.ndarray, list, tuple)):
+            shape = np.shape(value)      # a matrix parameter: its shape from its value
+        self.shape = _declared_shape(shape)
         self.value = value
         self.unit = unit
         self.description = description
@@ -200,10 +219,22 @@ class Parameter(_Declaration):
         args = [repr(shown_value(self.value))]
         args += [f"{k}={getattr(self, k)!r}" for k in ("unit", "min", "max", "description")
                  if getattr(self, k) not in (None, "")]
+        if self.shape is not None and not isinstance(self.value, (np.ndarray, list, tuple)):
+            args.append(f"shape={self.shape!r}")
         return f"Parameter({', '.join(args)})"
 
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
+        if self.shape is not None:
+            from .arrays import check_array_declaration
+            check_array_declaration(self)    # value, min and max element by element
+        else:
+            self._check_scalar()
+        for name in ("unit", "description"):
+            if not isinstance(getattr(self, name), str):
+                raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
+
+    def _check_scalar(self) -> None:
         check_parameter_value(self.value, "default value")
         lo = None if self.min is None else real_number(self.min, "min")
         hi = None if self.max is None else real_number(self.max, "max")
@@ -213,9 +244,6 @@ class Parameter(_Declaration):
             why = bound_violation(float(self.value), self.min, self.max)
             if why:
                 raise ValueError(f"default value {self.value!r} {why}")
-        for name in ("unit", "description"):
-            if not isinstance(getattr(self, name), str):
-                raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
 
 
 class Variable(_Declaration):
@@ -226,6 +254,8 @@ class Variable(_Declaration):
     is determined by equations), ``nominal`` scales error weights, ``state_select`` is
     the user's hint for state selection (never/avoid/default/prefer/always).  The
     attributes are checked when the class is created (``VariableAttributes.checked``).
+    ``shape=(n,)`` declares an array of variables, each attribute a scalar for every
+    element or an array (:mod:`acausal.components.arrays`).
     """
 
     kind = "variable"
@@ -233,8 +263,13 @@ class Variable(_Declaration):
     def __init__(self, start: float | None = None, fixed: bool | None = None, unit: str = "",
                  nominal: float | None = None, min: float | None = None,
                  max: float | None = None, state_select: str = "default",
-                 description: str = ""):
-        self.attributes = VariableAttributes(
+                 description: str = "", shape=None):
+        self.shape = _declared_shape(shape)
+        if self.shape is not None:
+            from .arrays import ArrayAttributes as attributes   # per-element attributes
+        else:
+            attributes = VariableAttributes
+        self.attributes = attributes(
             start=start, fixed=fixed, unit=unit, nominal=nominal, min=min, max=max,
             state_select=state_select, description=description)
 
@@ -242,6 +277,8 @@ class Variable(_Declaration):
         a, default = self.attributes, VariableAttributes()
         args = [f"{f.name}={getattr(a, f.name)!r}" for f in fields(a)
                 if getattr(a, f.name) != getattr(default, f.name)]
+        if self.shape is not None:
+            args.append(f"shape={self.shape!r}")
         return f"{type(self).__name__}({', '.join(args)})"
 
     def check(self) -> None:
@@ -304,6 +341,8 @@ def shown_value(value):
     """A parameter value as help(), the signature and repr print it."""
     if isinstance(value, ref) or value is None:
         return value
+    if isinstance(value, np.ndarray):
+        return _Shown(repr(value.tolist()))     # on one line, as the array is written
     if callable(value) and not is_symbolic(value) and not isinstance(value, numbers.Number):
         return _Shown("computed")
     return value
@@ -329,7 +368,9 @@ def parameter_signature(cls, parameters: dict):
     for name, decl in parameters.items():
         if name in taken or not name.isidentifier():
             continue
-        annotation = _Shown(f"float [{decl.unit}]") if decl.unit else float
+        kind = _kind(decl)
+        annotation = _Shown(f"{kind} [{decl.unit}]") if decl.unit else \
+            (float if kind == "float" else _Shown(kind))
         keyword.append(inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY,
                                          default=shown_value(decl.value),
                                          annotation=annotation))
@@ -353,6 +394,17 @@ def own_docstring(cls) -> str:
     return doc
 
 
+def _shape(shape) -> str:
+    if callable(shape):
+        return "(computed)"
+    return "[" + ", ".join(str(n) for n in shape) + "]"
+
+
+def _kind(decl) -> str:
+    """``float``, or ``array [2, 2]`` / ``array [n]`` for an array parameter."""
+    return "float" if decl.shape is None else f"array {_shape(decl.shape)}"
+
+
 def _unit(text: str) -> str:
     return f" [{text}]" if text else ""
 
@@ -370,7 +422,8 @@ def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
         for name, d in parameters.items():
             bounds = ", ".join(b for b in (f"min {d.min!r}" if d.min is not None else "",
                                            f"max {d.max!r}" if d.max is not None else "") if b)
-            lines.append(f"{name} : float{_unit(d.unit)}, default {shown_value(d.value)!r}"
+            lines.append(f"{name} : {_kind(d)}{_unit(d.unit)}, "
+                         f"default {shown_value(d.value)!r}"
                          + (f" ({bounds})" if bounds else ""))
             if d.description:
                 lines.append(f"    {d.description}")
@@ -383,7 +436,9 @@ def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
                      "fixed" if a.fixed else "",
                      f"state_select {a.state_select}" if a.state_select != "default" else ""]
             extra = ", ".join(e for e in extra if e)
-            lines.append(f"{name} : {v.kind}{_unit(a.unit)}" + (f", {extra}" if extra else ""))
+            shape = "" if v.shape is None else f" array {_shape(v.shape)}"
+            lines.append(f"{name} : {v.kind}{shape}{_unit(a.unit)}"
+                         + (f", {extra}" if extra else ""))
             if a.description:
                 lines.append(f"    {a.description}")
         sections.append("\n".join(lines))

@@ -14,6 +14,7 @@ never holds).  Errors are ``InvalidEquation``; flattening adds the component pat
 """
 from __future__ import annotations
 
+import numpy as np
 import sympy as sp
 from sympy import S
 from sympy.printing.precedence import precedence
@@ -26,9 +27,15 @@ time = sp.Symbol("time", real=True)
 
 
 class der(sp.Function):
-    """Time derivative: der(x) = dx/dt."""
+    """Time derivative: der(x) = dx/dt (of an array: the array of the derivatives)."""
 
     nargs = 1
+
+    def __new__(cls, *args, **options):
+        if len(args) == 1 and isinstance(args[0], np.ndarray) and args[0].ndim:
+            from .arrays import elementwise
+            return elementwise(cls, args[0])
+        return super().__new__(cls, *args, **options)
 
     def _latex(self, printer):
         return r"\dot{%s}" % printer._print(self.args[0])
@@ -219,12 +226,22 @@ def text(expr) -> str:
 
 
 def Eq(lhs, rhs=0, label: str | None = None) -> Equation:
-    """The equation ``lhs = rhs`` (one notation for the whole project)."""
+    """The equation ``lhs = rhs`` (one notation for the whole project).  Between arrays
+    of one shape: a list of equations, one per element (see components.arrays)."""
+    if isinstance(lhs, np.ndarray) or isinstance(rhs, np.ndarray):
+        from .arrays import array_equations
+        return array_equations(lhs, rhs, label, Equation)
     return Equation(lhs, rhs, label)
 
 
 def sympify_value(value):
     """Turn numbers, Symbols and objects with ``_sympy_`` (signal ports) into sympy."""
+    if isinstance(value, np.ndarray):
+        if value.ndim == 0:
+            return sympify_value(value.item())
+        raise _invalid(f"an array of shape {value.shape} is used where one value is "
+                       "expected; index it (q[0]), reduce it (q.sum(), a @ b), or write "
+                       "ac.Eq between arrays of one shape")
     if isinstance(value, (str, list, tuple, dict, set)):
         # sympify would parse a string into symbols the model does not have
         raise _invalid(f"cannot use {value!r} (a {type(value).__name__}) in an equation; "

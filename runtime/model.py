@@ -317,11 +317,12 @@ class CompiledModel(DAEProblem):
 
     # -- parameters ---------------------------------------------------------------------------
     def set_parameters(self, values: dict) -> None:
-        """Change tunable parameters by name, e.g. ``{"R1.R": 5.0}``: all or none (a value
+        """Change tunable parameters by name, e.g. ``{"R1.R": 5.0}`` (a parameter array
+        by element, ``{"M[0,1]": 0.5}``, or whole, ``{"M": matrix}``): all or none (a value
         outside its bounds, or one that puts a parameter bound to it outside its own,
         changes nothing)."""
         p = self.p.copy()
-        for name, value in values.items():
+        for name, value in _by_element(values, self.param_names).items():
             if name not in self.param_names:
                 zeros = self.meta.get("structural_zeros", ())
                 why = (" (it was 0 at compile time and was evaluated as a structural zero: "
@@ -345,6 +346,25 @@ class CompiledModel(DAEProblem):
                                    f"[{'-inf' if lo is None else lo}, "
                                    f"{'inf' if hi is None else hi}]")
         self.p[:] = p
+
+
+def _by_element(values: dict, names: list) -> dict:
+    """``{"M": matrix}`` for a parameter array M as ``{"M[0,0]": ..., ...}``; a value of
+    another shape is an InvalidValue naming both shapes."""
+    from ..components.arrays import array_of_name
+    out = {}
+    for name, value in values.items():
+        array = None if name in names else array_of_name(name, names)
+        if array is None:
+            out[name] = value
+            continue
+        shape, elements = array
+        given = np.shape(value)
+        if given != shape:
+            raise InvalidValue(f"parameter array '{name}' has shape {shape}, the value "
+                               f"given has shape {given}")
+        out.update(zip(elements, np.asarray(value).ravel().tolist()))
+    return out
 
 
 def _real_value(name, value) -> float:
