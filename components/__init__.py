@@ -12,9 +12,10 @@ from .. import _lazy_exports
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
-           "der", "if_else", "no_event", "when", "When", "reinit", "pre", "sign", "time"]
+           "der", "if_else", "no_event", "when", "When", "reinit", "pre", "sign", "time",
+           "sample", "assign"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".symbols": ("Eq", "Equation", "When", "der", "if_else", "no_event", "pre", "reinit",
-                 "sign", "time", "when"),
+                 "sign", "time", "when", "sample", "assign"),
 })

@@ -230,7 +230,25 @@ def _metadata(model):
     return variables, params
 
 
+def _no_discrete_variables(compiled) -> None:
+    """The FMU's engine has no held values or clocks: a sampled model is refused, never
+    exported with its discrete variables frozen."""
+    mc = compiled.model_code
+    held = list(getattr(mc.relations, "held_names", []))
+    clocked = [t for t, c in zip(mc.whens.texts, range(mc.whens.n_when))
+               if c in set(getattr(mc.whens, "clocks", []))] if mc.whens is not None else []
+    if held or clocked:
+        from ..components.component import ModelError
+        raise ModelError("FMI export does not support discrete-time variables or sample() "
+                         "clocks yet; this model has "
+                         + "; ".join(filter(None, [
+                             f"discrete variables {', '.join(held[:8])}" if held else "",
+                             f"clocked when-clauses {'; '.join(clocked[:4])}" if clocked
+                             else ""])))
+
+
 def _static_states(compiled) -> None:
+    _no_discrete_variables(compiled)
     mc = compiled.model_code
     if mc.dynamic is None:
         return
