@@ -123,9 +123,12 @@ class TransferFunction(DiscreteSISO):
 
 
 class PI(DiscreteSISO):
-    """Discrete PI controller with output limits and back-calculation anti-windup, the
-    algorithm of Åström & Hägglund, PID Controllers: Theory, Design and Tuning (1995),
-    sec. 3.7 (forward-difference integral, h = samplePeriod), with u the control error:
+    """Discrete PI controller with output limits and back-calculation anti-windup (the
+    integral tracks the limited output with tracking time Tt), the computer
+    implementation of Åström & Murray, Feedback Systems (2008), ch. 10 "PID Control"
+    (sections on integrator windup and implementation; also Åström & Hägglund, PID
+    Controllers, 1995): a forward-difference integral, h = samplePeriod, u the control
+    error:
 
         v := k u + pre(I)                              unlimited output
         y := clip(v, yMin, yMax)
@@ -161,7 +164,7 @@ class PI(DiscreteSISO):
 
 class PID(PI):
     """Discrete PID controller: the PI above plus a derivative part filtered with N,
-    by backward differences (Åström & Hägglund 1995, sec. 3.7):
+    by backward differences (the same implementation, Åström & Murray 2008, ch. 10):
 
         D := Td/(Td + N h) pre(D) + k Td N/(Td + N h) (u - pre(u_s)),   u_s := u
         v := k u + pre(I) + D
