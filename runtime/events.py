@@ -168,13 +168,18 @@ def iterate_event(model, t, z, zp, crossed) -> EventAction:
     else:
         disc.settle_time_items(t, z, p)
     fired = False
-    if model.whens is not None:
-        new = model.whens.fire(model, t, z, p, m_old, model.m)
-        if new is not None:
-            z, fired = new, True
-            zp_new = np.zeros(model.n)
-            zp_new[model.state_index] = model.state_derivatives(t, z)
-            disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), res)
+    m_prev = m_old
+    # with discrete variables, an assignment can make another clause's condition true
+    # at the same instant: it fires in the next round (Modelica's event iteration)
+    for _ in range((_ROUNDS if disc.n_held else 1) if model.whens is not None else 0):
+        new = model.whens.fire(model, t, z, p, m_prev, model.m)
+        if new is None:
+            break
+        z, fired = new, True
+        m_prev = model.m.copy()
+        zp_new = np.zeros(model.n)
+        zp_new[model.state_index] = model.state_derivatives(t, z)
+        disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), res)
     decided = _at_zero(model, t, z, zp)      # their side was chosen by the dynamics
     seen = [model.m.copy()]
     for _ in range(_ROUNDS):

@@ -223,3 +223,24 @@ def test_bad_clocks_are_errors():
         ac.simulate(Ticker(smp={"samplePeriod": 0.0}), t_end=1.0)
     with pytest.raises(ac.InvalidValue, match="below its minimum"):
         ac.simulate(Ticker(smp={"samplePeriod": -0.1}), t_end=1.0)
+
+
+def test_an_assignment_that_makes_another_condition_true_fires_it_at_the_same_instant():
+    """The counter reaches 3 at the tick t = 0.2 (ticks at 0, 0.1, 0.2): the clause on
+    n > 2.5 fires at that instant, in the next round of the event iteration."""
+
+    class Counter(ac.Component):
+        x = ac.Variable(start=0.0)
+        n = ac.Variable(discrete=True)
+        t_hit = ac.Variable(discrete=True, start=-1.0)
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.x), 1.0),
+                    ac.when(ac.sample(0, 0.1), ac.assign(self.n, ac.pre(self.n) + 1)),
+                    ac.when(self.n > 2.5, ac.assign(self.t_hit, ac.time),
+                            ac.reinit(self.x, 10.0))]
+
+    res = ac.simulate(Counter(), t_end=0.5, t_eval=[0.0, 0.15, 0.2, 0.25, 0.45])
+    assert list(res["n"]) == [1.0, 2.0, 3.0, 3.0, 5.0]
+    assert list(res["t_hit"]) == [-1.0, -1.0, 0.2, 0.2, 0.2]
+    assert np.allclose(res["x"], [0.0, 0.15, 10.0, 10.05, 10.25], rtol=1e-9, atol=0)
