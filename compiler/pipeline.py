@@ -84,6 +84,10 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
     helds = clock("sampled", declare_discrete_variables, flat)
     _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
+    if helds:
+        report.notes.append("discrete variables, held between events and assigned in "
+                            "when-clauses: " + ", ".join(h.name for h in helds[:20])
+                            + (" ..." if len(helds) > 20 else ""))
     if flat.structural_zeros:
         report.notes.append("parameters equal to 0 were evaluated as structural zeros (set a "
                             "non-zero value to keep them tunable): "
