@@ -34,7 +34,7 @@ a discrete variable is found by the balance check (:func:`explain_overdetermined
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
@@ -83,6 +83,12 @@ def declare_discrete_variables(flat) -> list:
     params = {p.symbol for p in flat.parameters}
     assigned = {}
     for w in flat.whens:
+        read = sorted(q.name for q in (w.clock.free_symbols if w.clock is not None else ())
+                      if q in by_symbol)
+        if read:
+            raise DiscreteVariableError(
+                f"{_clause_text(w)}: the start and period of sample() are numbers or "
+                f"parameters, not variables ({', '.join(read)})")
         for act in w.actions:
             v = by_symbol.get(act.variable)
             if isinstance(act, Reinit):
@@ -109,6 +115,9 @@ def declare_discrete_variables(flat) -> list:
                 f"der({v.name}) in {v.where}: '{_local(v)}' is a discrete variable, "
                 "constant between events; its derivative is 0")
         start = float(v.attrs.start) if v.attrs.start is not None else 0.0
+        if v.attrs.fixed:        # the start value is the value before t0 in any case
+            flat.variables[flat.variables.index(v)] = replace(v, attrs=replace(v.attrs,
+                                                                              fixed=None))
         helds.append(HeldValue(v.name, v.symbol, sp.Symbol(f"held({v.name})", real=True),
                                sp.Symbol(f"pre({v.name})", real=True), start, v.where,
                                _clause_text(assigned[v.symbol])))

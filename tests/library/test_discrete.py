@@ -192,3 +192,21 @@ def test_constant_into_sampler_is_held_from_the_first_tick():
 
     res = ac.simulate(C(), t_end=1.0, t_eval=[0.0, 0.1, 0.2, 0.9])
     assert list(res["smp.y.signal"]) == [7.0, 7.0, 4.0, 4.0]    # the start value before
+
+
+def test_a_slow_hold_behind_a_fast_sampler_reads_the_shared_ticks_sample():
+    """Ticks of 0.1 and 0.3 coincide every third fast tick, though 3 * 0.1 and 0.3
+    differ in the last bit: both clauses fire at that instant, in data-flow order."""
+
+    class TwoRates(ac.Component):
+        slow = ZeroOrderHold(samplePeriod=0.3)
+        src = Ramp(height=10.0, duration=10.0)
+        fast = Sampler(samplePeriod=0.1)
+
+        def equations(self):
+            return [ac.connect(self.src.y, self.fast.u), ac.connect(self.fast.y, self.slow.u)]
+
+    t = 0.025 + 0.05 * np.arange(40)
+    res = ac.simulate(TwoRates(), t_end=2.0, t_eval=t)
+    assert _close(res["slow.y.signal"], 0.3 * np.floor(t / 0.3))
+    assert _close(res["fast.y.signal"], 0.1 * np.floor(t / 0.1))

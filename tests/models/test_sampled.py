@@ -244,3 +244,10 @@ def test_an_assignment_that_makes_another_condition_true_fires_it_at_the_same_in
     assert list(res["n"]) == [1.0, 2.0, 3.0, 3.0, 5.0]
     assert list(res["t_hit"]) == [-1.0, -1.0, 0.2, 0.2, 0.2]
     assert np.allclose(res["x"], [0.0, 0.15, 10.0, 10.05, 10.25], rtol=1e-9, atol=0)
+
+
+def test_a_clock_on_a_variable_is_an_error():
+    m = _model(lambda s: [ac.when(ac.sample(0, 0.1 + s.x), ac.assign(s.d, 1.0))])
+    with pytest.raises(DiscreteVariableError, match=r"sample\(\) are numbers or parameters, "
+                                                    r"not variables \(x\)"):
+        ac.compile(m)
