@@ -14,19 +14,19 @@ import sympy as sp
 
 import acausal as ac
 from acausal.compiler import cbackend
+from acausal.library.electromechanical.examples.sampled_speed_control import SampledSpeedLoop
 from acausal.library.examples.motor_drive import MotorDrive
 from acausal.library.examples.pendulum import DoublePendulum, Pendulum
 from acausal.library.hydraulics.examples.valve_motor import ValveControlledMotor
 from acausal.tests.heater import LimitedHeater
 from acausal.tests.models.test_events import BouncingBall
-from acausal.tests.models.test_sampled import SpeedLoop
 
 needs_cc = pytest.mark.skipif(cbackend.compiler_available() is None,
                               reason="no C compiler on this machine")
 
 MODELS = [(MotorDrive, 0.5), (Pendulum, 3.0), (DoublePendulum, 1.0),
           (ValveControlledMotor, 0.1), (LimitedHeater, 600.0), (BouncingBall, 3.0),
-          (SpeedLoop, 0.03)]
+          (SampledSpeedLoop, 0.03)]
 
 
 def _pair(model_class):

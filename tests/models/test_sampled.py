@@ -13,38 +13,10 @@ from scipy.signal import cont2discrete
 
 import acausal as ac
 from acausal.compiler.sampled import DiscreteVariableError
-from acausal.library.blocks import Constant, Feedback
-from acausal.library.blocks.discrete import PI, Sampler, ZeroOrderHold
-from acausal.library.electrical import Ground, SignalVoltage
-from acausal.library.electromechanical import DCMotor
-from acausal.library.rotational.sensors import SpeedSensor
-
-h = 1e-3                                  # 1 ms sample period
-R, L, k_m, J = 1.0, 1e-3, 0.05, 1e-4      # the motor (electrical and mechanical parts)
-K, Ti = 0.5, 0.04                         # the PI
-W_REF = 10.0                              # rad/s
-
-
-class SpeedLoop(ac.Component):
-    """Speed control of a DC motor: a 1 ms discrete PI on the speed error, its output
-    through a zero-order hold to the armature voltage."""
-
-    ref = Constant(k=W_REF)
-    err = Feedback()
-    pi = PI(k=K, Ti=Ti, samplePeriod=h, yMax=1e3, yMin=-1e3)
-    zoh = ZeroOrderHold(samplePeriod=h)
-    src = SignalVoltage()
-    motor = DCMotor(R=R, L=L, k=k_m, J=J)
-    speed = SpeedSensor()
-    gnd = Ground()
-
-    def equations(self):
-        return [ac.connect(self.ref.y, self.err.u1), ac.connect(self.speed.w, self.err.u2),
-                ac.connect(self.err.y, self.pi.u), ac.connect(self.pi.y, self.zoh.u),
-                ac.connect(self.zoh.y, self.src.v_ref),
-                ac.connect(self.src.p, self.motor.p),
-                ac.connect(self.src.n, self.motor.n, self.gnd.p),
-                ac.connect(self.motor.flange, self.speed.flange)]
+from acausal.library.blocks import Constant
+from acausal.library.blocks.discrete import Sampler
+from acausal.library.electromechanical.examples.sampled_speed_control import (
+    J, K, L, R, W_REF, SampledSpeedLoop, Ti, h, k_m)
 
 
 def exact_loop(n, y_max=np.inf):
@@ -67,10 +39,10 @@ def exact_loop(n, y_max=np.inf):
 
 @pytest.fixture(scope="module")
 def loops():
-    return {b: ac.compile(SpeedLoop(), backend=b) for b in ("numpy", "c")}
+    return {b: ac.compile(SampledSpeedLoop(), backend=b) for b in ("numpy", "c")}
 
 
-N = 120
+N = round(SampledSpeedLoop.stop_time / h)
 TICKS = h * np.arange(N + 1)
 
 
