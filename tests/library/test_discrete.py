@@ -172,15 +172,6 @@ def test_pid_unlimited_matches_its_difference_equations():
     assert _close(res["pid.y.signal"], y)
 
 
-def test_discrete_blocks_refuse_fmi_export(tmp_path):
-    pytest.importorskip("fmpy")
-    from acausal.compiler.cbackend import compiler_available
-    if compiler_available() is None:
-        pytest.skip("no C compiler")
-    with pytest.raises(ac.ModelError, match=r"discrete variables .*smp\.y\.signal"):
-        ac.export_fmu(HoldChain(), tmp_path / "chain.fmu")
-
-
 def test_constant_into_sampler_is_held_from_the_first_tick():
     class C(ac.Component):
         c = Constant(k=4.0)
