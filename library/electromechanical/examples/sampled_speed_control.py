@@ -29,7 +29,7 @@ class SampledSpeedLoop(ac.Component):
     """Speed reference 10 rad/s; discrete PI (k = 0.5 V s/rad, Ti = 40 ms) sampled at
     1 ms, held by a zero-order hold onto the armature voltage."""
 
-    stop_time = 0.12
+    stop_time = 0.08
     ref = Constant(k=W_REF)
     err = Feedback()
     pi = PI(k=K, Ti=Ti, samplePeriod=h, yMax=1e3, yMin=-1e3)
