@@ -21,7 +21,7 @@ _EXPORTS = {
                     "InvalidConnection", "InvalidEquation", "InvalidHierarchy", "InvalidIndex",
                     "InvalidValue", "ModelError", "NotInModel", "Parameter", "Port", "Signal",
                     "Through", "Variable", "When", "connect", "der", "if_else", "no_event",
-                    "pre", "ref", "reinit", "sign", "time", "when"),
+                    "pre", "ref", "reinit", "sign", "time", "when", "sample", "assign"),
     ".errors": ("BackendError", "InitializationFailed", "SimulationError"),
     ".result": ("Result",),
     ".runtime": ("CompiledModel",),
@@ -38,6 +38,7 @@ _EXPORTS = {
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
            "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre",
+           "sample", "assign",
            "Connection", "if_else", "no_event", "sign", "time",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
            "ModelError", "InvalidValue", "InvalidEquation", "InvalidConnection",

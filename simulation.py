@@ -104,6 +104,15 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
             raise ValueError("simulate: parameters must be a dict {name: value}")
         compiled.set_parameters(parameters)
     y0, yp0 = compiled.initialize(t_start)
+    from .runtime.clocked import has_discrete_events, run_between_events
+    if compiled.n == 0 and has_discrete_events(compiled):
+        # nothing to integrate, but held values change at events (runtime/clocked.py)
+        marks = _log_marks(compiled)
+        out = run_between_events(compiled, t_start, t_end, t_eval)
+        events, _ = _event_records(compiled, out, marks)
+        return Result(compiled, out.t, np.zeros((len(out.t), 0)), out.stats, events, True,
+                      "no states: run from event to event", out.point_states,
+                      list(range(len(out.t))))
     if compiled.n == 0:
         # nothing to integrate: every variable is an explicit function of time, and each
         # point is evaluated with the relations as they hold there
@@ -184,7 +193,8 @@ def _event_records(compiled, out, marks) -> tuple[list, list]:
         if snaps and e["before"] >= 0:
             m0, m1 = snaps[e["before"]], snaps[e["after"]]
             changes = [(compiled.relation_text(k), float(m0[k]), float(m1[k]))
-                       for k in np.flatnonzero(m0 != m1)]
+                       for k in np.flatnonzero(m0 != m1)
+                       if k < compiled.discrete.pre.start]   # pre(y) repeats held(y)
         # oriented roots: one per relation, then two per frozen integer value
         items = sorted({k if k < n_rel else n_rel + (k - n_rel) // 2 for k in e["crossed"]})
         relations = [compiled.relation_text(k) for k in items]

@@ -296,9 +296,12 @@ def _rebuild(flat, kept, subs, table, find, constants):
 
 def _when_after_aliases(w, subs, find, constants):
     """A when-clause in representative variables: reinit(a, e) with a = s*r is reinit(r, s*e)."""
-    from ..components.symbols import Reinit, When
+    from ..components.symbols import Assign, Reinit, When
     actions = []
     for act in w.actions:
+        if isinstance(act, Assign):          # writes a held value, not a variable
+            actions.append(Assign(act.variable, act.value.xreplace(subs)))
+            continue
         sign, root = find(act.variable)
         if root in constants:
             raise ModelError(f"reinit({act.variable}) in {w.origin or '(model)'}: the variable "

@@ -121,7 +121,7 @@ def _flat_key(flat, backend: str) -> str:
         h("d", ex(x), ex(d))
     for w in flat.whens:
         h("w", ex(w.condition), w.origin, w.origin_class,
-          *[f"{ex(a.variable)}:={ex(a.value)}" for a in w.actions])
+          *[f"{type(a).__name__}:{ex(a.variable)}:={ex(a.value)}" for a in w.actions])
     h("z", *flat.structural_zeros)
     h("ports", *map(repr, flat.ports))
     h("components", *map(repr, flat.components.items()))

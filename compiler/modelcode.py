@@ -8,7 +8,8 @@ imports the solvers, and the runtime never sees sympy.
 The solver vector ``z`` (see the README's design section): in the causal form the states
 (first ``n_states`` entries) and the tearing variables; in the full form every variable.
 ``m`` is the discrete state: ``n_relations`` relation values (1.0 true, 0.0 false) followed
-by ``n_discrete`` frozen floor values.
+by ``n_discrete`` frozen floor values, then held(y) and pre(y) of each of the ``n_held``
+discrete variables (:mod:`acausal.compiler.sampled`).
 """
 from __future__ import annotations
 
@@ -37,6 +38,8 @@ class RelationInfo:
     nominal: list = field(default_factory=list)
     discrete_texts: list = field(default_factory=list)
     time_linear: list = field(default_factory=list)
+    held_names: list = field(default_factory=list)     # the discrete variables
+    held_start: list = field(default_factory=list)     # their values before t0
 
     @property
     def n_relations(self) -> int:
@@ -46,17 +49,29 @@ class RelationInfo:
     def n_discrete(self) -> int:
         return len(self.discrete_texts)
 
+    @property
+    def n_held(self) -> int:
+        return len(self.held_names)
+
 
 @dataclass
 class WhenCode:
-    """When-clauses: rows ``0..n_when-1`` of ``code`` are the conditions (1/0), then one
-    reinit value per action, applied to ``z[targets[k]]`` when clause ``owners[k]`` fires."""
+    """When-clauses: rows ``0..n_when-1`` of ``code`` are the conditions (1/0; 0 for a
+    clock), then one reinit value per reinit action, applied to ``z[targets[k]]`` when
+    clause ``owners[k]`` fires, then one value per assignment, written to the held value
+    ``assign_slots[k]`` of the discrete variables when ``assign_owners[k]`` fires, in the
+    order of ``assign_levels`` (data flow), then start and period of the clock of each
+    clause in ``clocks``."""
 
     code: object
     n_when: int
-    targets: list
-    owners: list
-    texts: list
+    targets: list = field(default_factory=list)
+    owners: list = field(default_factory=list)
+    texts: list = field(default_factory=list)
+    assign_slots: list = field(default_factory=list)
+    assign_owners: list = field(default_factory=list)
+    assign_levels: list = field(default_factory=list)
+    clocks: list = field(default_factory=list)
 
 
 @dataclass

@@ -1,6 +1,7 @@
 """The compiler pipeline: the passes by name, in order (as OpenModelica lists its modules).
 
-    flatten -> discrete (floor/mod frozen) -> alias -> balance -> conversion (Pryce's
+    flatten -> discrete (floor/mod frozen) -> sampled (discrete variables held,
+            when-assignments checked) -> alias -> balance -> conversion (Pryce's
             success test, exact; LC conversion of singular constant blocks) ->
             index_reduction (Pantelides) -> state_selection (dummy derivatives, exact
             rank on constant blocks) -> assemble (BLT, tearing checked numerically)
@@ -28,8 +29,8 @@ from .report import IndexReport
 
 __all__ = ["PASSES", "compile_model"]
 
-PASSES = ("flatten", "discrete", "alias", "balance", "conversion", "index_reduction",
-          "state_selection", "assemble", "codegen")
+PASSES = ("flatten", "discrete", "sampled", "alias", "balance", "conversion",
+          "index_reduction", "state_selection", "assemble", "codegen")
 
 
 def compile_model(model: Component, backend: str = "auto", cache=False) -> ModelCode:
@@ -62,6 +63,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
     from .balance import check_balance
     from .conversion import convert_model
     from .discrete import freeze_integer_functions
+    from .sampled import declare_discrete_variables, explain_overdetermined, pre_after_aliases
     from .flatten import flatten
     from .reduction import as_written, reduce_index
     report = IndexReport(model_name=type(model).__name__)
@@ -80,8 +82,13 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
             return _from_cache(found, lookup, "its flat model")
         report.timings["cache_key"] = _time.perf_counter() - t1 + t_tree
     discretes = clock("discrete", freeze_integer_functions, flat)
+    helds = clock("sampled", declare_discrete_variables, flat)
     _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
+    if helds:
+        report.notes.append("discrete variables, held between events and assigned in "
+                            "when-clauses: " + ", ".join(h.name for h in helds[:20])
+                            + (" ..." if len(helds) > 20 else ""))
     if flat.structural_zeros:
         report.notes.append("parameters equal to 0 were evaluated as structural zeros (set a "
                             "non-zero value to keep them tunable): "
@@ -89,11 +96,16 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
                             + (" ..." if len(flat.structural_zeros) > 20 else ""))
     reduced, aliases = clock("alias", eliminate_aliases, flat)
     _resolve_aliases_in(discretes, flat, aliases)
+    pre_after_aliases(reduced, aliases, helds)
     report.aliases = aliases
     report.count("alias", equations=len(reduced.equations), variables=len(reduced.variables))
-    system, structure = clock("structure", _symbolic_system, reduced, discretes)
-    clock("balance", check_balance, system, structure, reduced, aliases,
-          (len(flat.equations), len(flat.variables)))
+    system, structure = clock("structure", _symbolic_system, reduced, discretes, helds)
+    try:
+        clock("balance", check_balance, system, structure, reduced, aliases,
+              (len(flat.equations), len(flat.variables)))
+    except Exception as err:
+        explain_overdetermined(err, helds)
+        raise
     report.sigma = clock("index_as_written", as_written, flat)
     report.conversion = clock("conversion", convert_model, system, structure, reduced)
     reduction = clock("index_reduction", reduce_index, system, report.conversion.structure,
@@ -102,7 +114,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
     report.count("index_reduction", equations=len(system.equations),
                  variables=len(system.symbols))
     out = clock("codegen", _assemble, system, reduction, reduced, flat, aliases, report,
-                discretes)
+                discretes, helds)
     clock("report", report.fill, system, reduction, out)
     from .cbackend import bind
     clock("c_backend", bind, out, backend, report)
@@ -146,10 +158,11 @@ def _resolve_aliases_in(discretes, flat, aliases) -> None:
             d.argument = d.argument.xreplace(subs)
 
 
-def _symbolic_system(reduced, discretes):
+def _symbolic_system(reduced, discretes, helds=()):
     from .symbolic import SymbolicSystem
     system = SymbolicSystem.from_flat(reduced)
     system.parameters |= {d.symbol for d in discretes}   # constant between events
+    system.parameters |= {s for h in helds for s in (h.symbol, h.pre)}
     return system, system.structure()
 
 
@@ -169,7 +182,9 @@ def _reinit_targets_are_states(flat) -> None:
     8.3.6: tools treat it as stateSelect = always), so state selection keeps it one,
     wherever index reduction could otherwise put the states (the motor side of a gear)."""
     from ..components.component import ModelError
-    targets = {act.variable for w in flat.whens for act in w.actions}
+    from ..components.symbols import Reinit
+    targets = {act.variable for w in flat.whens for act in w.actions
+               if isinstance(act, Reinit)}
     for k, v in enumerate(flat.variables):
         if v.symbol in targets:
             if v.attrs.state_select == "never":
@@ -178,16 +193,20 @@ def _reinit_targets_are_states(flat) -> None:
             flat.variables[k] = replace(v, attrs=replace(v.attrs, state_select="always"))
 
 
-def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> ModelCode:
+def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
+              helds=()) -> ModelCode:
     import sympy as sp
+    from types import SimpleNamespace
     from .causalize import causalize, full_form
     from .codegen import extract_relations, generate
     from .numeric import CoefficientValues
+    from .sampled import when_rows as clause_rows
     syms = system.symbols
     if reduction.dynamic:
         caus = full_form(reduction, len(syms), len(system.equations))
     else:
-        values = CoefficientValues(system, reduced.parameters, discretes)
+        held_items = [SimpleNamespace(symbol=s) for h in helds for s in (h.symbol, h.pre)]
+        values = CoefficientValues(system, reduced.parameters, list(discretes) + held_items)
         caus = causalize(reduction, values)
         untorn = [b for b in caus.blocks if b.get("not_torn")]
         for b in untorn[:5]:
@@ -206,17 +225,18 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> M
     else:
         state_z, pairs, dummies = [], reduction.pairs, reduction.dummies
     init_rows, init_text, n_mandatory = _initial_rows(system, reduced, reduction, caus)
-    when_rows, targets, owners = _when_rows(reduced.whens, z_syms, caus, pairs)
-    sizes = [len(assigned), len(rows), len(init_rows), len(when_rows)]
+    when_rows_, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
+    sizes = [len(assigned), len(rows), len(init_rows), len(when_rows_)]
     exprs, crossings, modes, origin = extract_relations(
-        [e for _, e in assigned] + rows + init_rows + when_rows)
+        [e for _, e in assigned] + rows + init_rows + when_rows_)
     parts = np.split(np.array(exprs, dtype=object), np.cumsum(sizes)[:-1])
     assigned = [(a, e) for (a, _), e in zip(assigned, parts[0])]
     rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
     zeros = set(reduced.structural_zeros)
     params = [p for p in reduced.parameters if _is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
-    dsyms = [d.symbol for d in discretes]
+    # m: relation values, floor values, then held(y) and pre(y) of the discrete variables
+    dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + [h.pre for h in helds]
     rel_list = list(modes.values())
     code = generate(rows, z_syms, psyms, len(modes), crossings + [d.argument for d in discretes],
                     assigned, outputs=syms, discretes=dsyms,
@@ -229,6 +249,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> M
                for k, r in enumerate(rel_list)],
         nominal=[_relation_nominal(system, g, assigned) for g in crossings],
         discrete_texts=[d.text for d in discretes],
+        held_names=[h.name for h in helds], held_start=[h.start for h in helds],
         time_linear=_time_linear(crossings + [d.argument for d in discretes], assigned,
                                  set(psyms) | set(dsyms)))
     initial = InitialCode(init_code, init_text, choose_initial_rows(
@@ -251,9 +272,10 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> M
     if reduced.whens:
         out.whens = WhenCode(generate(when_rows, z_syms, psyms, len(modes), None, assigned,
                                       discretes=dsyms),
-                             len(reduced.whens), targets, owners,
-                             [f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} "
-                              f"({w.origin_class})]" for w in reduced.whens])
+                             len(reduced.whens), texts=[
+                                 f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} "
+                                 f"({w.origin_class})]" for w in reduced.whens],
+                             **when_layout)
     return out
 
 
@@ -375,28 +397,6 @@ def _adjacency(rows, cols, n_rows) -> list:
     for r, c in zip(rows.tolist(), cols.tolist()):
         adj[r].append(c)
     return [sorted(set(a)) for a in adj]
-
-
-def _when_rows(whens, z_syms, caus, pairs):
-    """Rows: each when-condition as 1/0, then each reinit value (pre(x) is x here)."""
-    import sympy as sp
-    from ..components.component import ModelError
-    from ..components.symbols import pre
-    z_index = {s: k for k, s in enumerate(z_syms)}
-    states = set(range(caus.n_states)) if caus.causal else {a for a, _ in pairs}
-    conds, values, targets, owners = [], [], [], []
-    for w_i, w in enumerate(whens):
-        conds.append(sp.Piecewise((1, w.condition), (0, True)))
-        for act in w.actions:
-            k = z_index.get(act.variable)
-            if k is None or k not in states:
-                raise ModelError(f"reinit({act.variable.name}, ...) in {w.origin or '(model)'} "
-                                 f"({w.origin_class}): {act.variable.name} is not a state of "
-                                 "the model, so it cannot be re-initialized")
-            values.append(act.value.replace(lambda e: isinstance(e, pre), lambda e: e.args[0]))
-            targets.append(k)
-            owners.append(w_i)
-    return conds + values, targets, owners
 
 
 def solve_linear(residual, x):

@@ -389,7 +389,7 @@ class ArrayAttributes(VariableAttributes):
         given = {n: np.broadcast_to(np.array(getattr(self, n), dtype=object), shape)[idx]
                  for n in _PER_ELEMENT}
         return VariableAttributes(unit=self.unit, description=self.description,
-                                  **given).checked()
+                                  discrete=self.discrete, **given).checked()
 
     def element(self, shape: tuple, idx: tuple, what: str) -> VariableAttributes:
         """The attributes of element ``idx`` of an array of ``shape``; ValueError if an

@@ -116,6 +116,7 @@ class VariableAttributes:
     max: float | None = None
     state_select: str = "default"
     description: str = ""
+    discrete: bool = False   # changes only in when-clauses (Modelica's ``discrete`` prefix)
 
     def modified(self, mod) -> "VariableAttributes":
         """A checked copy with a modification applied: a number sets start, a dict any
@@ -157,6 +158,8 @@ class VariableAttributes:
         for name in ("unit", "description"):
             if not isinstance(getattr(self, name), str):
                 raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
+        if not isinstance(self.discrete, (bool, np.bool_)):
+            raise ValueError(f"discrete = {self.discrete!r} must be True or False")
         _check_state_select(self.state_select)
         return replace(self, start=start, fixed=fixed, nominal=nominal, min=lo, max=hi)
 
@@ -252,10 +255,13 @@ class Variable(_Declaration):
     ``Variable(start=0.0, fixed=False, unit="V", nominal=1.0, state_select="default")``:
     ``start`` is the initial value (or the guess, when ``fixed`` is False and the value
     is determined by equations), ``nominal`` scales error weights, ``state_select`` is
-    the user's hint for state selection (never/avoid/default/prefer/always).  The
-    attributes are checked when the class is created (``VariableAttributes.checked``).
-    ``shape=(n,)`` declares an array of variables, each attribute a scalar for every
-    element or an array (:mod:`acausal.components.arrays`).
+    the user's hint for state selection (never/avoid/default/prefer/always).
+    ``discrete=True`` declares a discrete-time variable: held between events, changed
+    only by ``ac.assign`` in a when-clause, its start value the value before the first
+    one (Modelica's ``discrete``).  The attributes are checked when the class is created
+    (``VariableAttributes.checked``).  ``shape=(n,)`` declares an array of variables,
+    each attribute a scalar for every element or an array
+    (:mod:`acausal.components.arrays`).
     """
 
     kind = "variable"
@@ -263,7 +269,7 @@ class Variable(_Declaration):
     def __init__(self, start: float | None = None, fixed: bool | None = None, unit: str = "",
                  nominal: float | None = None, min: float | None = None,
                  max: float | None = None, state_select: str = "default",
-                 description: str = "", shape=None):
+                 description: str = "", discrete: bool = False, shape=None):
         self.shape = _declared_shape(shape)
         if self.shape is not None:
             from .arrays import ArrayAttributes as attributes   # per-element attributes
@@ -271,7 +277,7 @@ class Variable(_Declaration):
             attributes = VariableAttributes
         self.attributes = attributes(
             start=start, fixed=fixed, unit=unit, nominal=nominal, min=min, max=max,
-            state_select=state_select, description=description)
+            state_select=state_select, description=description, discrete=discrete)
 
     def __repr__(self):
         a, default = self.attributes, VariableAttributes()

@@ -21,7 +21,7 @@ from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "sympify_value",
-           "When", "when", "reinit", "pre", "text"]
+           "When", "when", "reinit", "pre", "text", "sample", "Sample", "assign", "Assign"]
 
 time = sp.Symbol("time", real=True)
 
@@ -338,9 +338,52 @@ class no_event(sp.Function):
 
 
 class pre(sp.Function):
-    """pre(x): the value of x just before the event (inside when-clauses)."""
+    """pre(x): the value of x just before the event (its left limit).  For a discrete
+    variable it is the value held before the instant, also while other when-clauses of
+    the same instant assign it; elsewhere pre(x) is x."""
 
     nargs = 1
+
+
+class Sample(sp.logic.boolalg.BooleanFunction):
+    """sample(start, period): a clock ticking at start + k period, k = 0, 1, ...
+    (Modelica's ``sample``, Language Specification 3.6, sec. 3.7.5).
+
+    Only the whole condition of a ``when``: ``ac.when(ac.sample(0, T), ...)``.  The
+    ticks are exact time events (start + k period, computed as that product, so they do
+    not drift over many periods); a tick at the start time of the run fires after the
+    initial values are found, as the MSL's ``when {sample(...), initial()}`` does.
+    ``start`` and ``period`` are expressions of parameters, period > 0.
+    """
+
+    nargs = 2
+
+    @classmethod
+    def eval(cls, start, period):
+        return None                 # never evaluated: the runtime keeps the clock
+
+    @property
+    def start(self):
+        return self.args[0]
+
+    @property
+    def period(self):
+        return self.args[1]
+
+    def _sympystr(self, printer):
+        return f"sample({printer._print(self.start)}, {printer._print(self.period)})"
+
+
+def sample(start, period) -> Sample:
+    """The clock ``sample(start, period)`` (see :class:`Sample`), checked."""
+    s, T = sympify_value(start), sympify_value(period)
+    for what, v in (("start", s), ("period", T)):
+        if not isinstance(v, sp.Expr) or v.has(*_NON_FINITE) or v.has(time):
+            raise _invalid(f"sample(start, period): {what} = {_text(v)} must be a finite "
+                           "expression of parameters")
+    if T.is_number and not T > 0:
+        raise _invalid(f"sample(start, period): the period {_text(T)} must be positive")
+    return Sample(s, T)
 
 
 class Reinit:
@@ -366,29 +409,68 @@ def reinit(variable, value) -> Reinit:
     return Reinit(variable, value)
 
 
+class Assign:
+    """assign(y, expr): at the instant the when-clause fires, the discrete variable y
+    takes the value of expr (Modelica's when-equation ``y = expr``)."""
+
+    __slots__ = ("variable", "value")
+
+    def __init__(self, variable, value):
+        self.variable = sympify_value(variable)
+        self.value = sympify_value(value)
+        if not isinstance(self.variable, sp.Symbol):
+            raise _invalid(f"assign() takes a variable, got {_text(variable)}")
+        if not isinstance(self.value, sp.Expr) or self.value.has(*_NON_FINITE):
+            raise _invalid(f"assign({self.variable}, ...) takes a finite value, "
+                           f"got {_text(self.value)}")
+
+    def __repr__(self):
+        return f"{self.variable} := {self.value}"
+
+
+def assign(variable, value) -> Assign:
+    """The when-equation ``variable = value``: ``ac.when(ac.sample(0, T),
+    ac.assign(self.y, self.u))``.  ``variable`` must be declared discrete
+    (``ac.Variable(discrete=True)``, or a port's ``signal={"discrete": True}``)."""
+    return Assign(variable, value)
+
+
 class When:
     """when condition: actions, firing when the condition becomes true (Modelica 8.3.5).
 
-    The condition is a relation (``self.h < 0``) or an ``sp.Or``/``sp.And`` of relations;
-    the actions are ``reinit(x, expr)``.  Expressions are evaluated with the values just
-    before the event (``pre(x)`` says so explicitly).
+    The condition is a relation (``self.h < 0``), an ``sp.Or``/``sp.And`` of relations,
+    or a clock ``sample(start, period)``; the actions are ``reinit(x, expr)`` of states
+    and ``assign(y, expr)`` of discrete variables.  Reinit values are evaluated with the
+    values just before the event; an assignment reads the discrete variables assigned at
+    the same instant after their assignment (the clauses are sorted by data flow) and
+    ``pre(y)`` for the value before it.
     """
 
     __slots__ = ("condition", "actions", "origin", "origin_class")
 
     def __init__(self, condition, *actions):
-        self.condition = _condition(condition, "when()")
+        self.condition = condition if isinstance(condition, Sample) else \
+            _condition(condition, "when()")
+        if not isinstance(self.condition, Sample) and self.condition.has(Sample):
+            raise _invalid(f"when({_text(condition)}): sample() must be the whole "
+                           "condition of a when-clause")
         self.actions = list(actions)
         for a in self.actions:
-            if not isinstance(a, Reinit):
-                raise _invalid(f"when() takes reinit(...) actions, got {a!r}")
+            if not isinstance(a, (Reinit, Assign)):
+                raise _invalid(f"when() takes reinit(...) and assign(...) actions, got {a!r}")
         self.origin = None
         self.origin_class = None
+
+    @property
+    def clock(self):
+        """The ``sample(start, period)`` of a clocked clause, else None."""
+        return self.condition if isinstance(self.condition, Sample) else None
 
     def __repr__(self):
         return f"when {self.condition}: {self.actions}"
 
 
 def when(condition, *actions) -> When:
-    """``ac.when(self.h < 0, ac.reinit(self.v, -e*ac.pre(self.v)))``."""
+    """``ac.when(self.h < 0, ac.reinit(self.v, -e*ac.pre(self.v)))``, or a sampled
+    assignment ``ac.when(ac.sample(0, T), ac.assign(self.y, self.u))``."""
     return When(condition, *actions)

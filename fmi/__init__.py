@@ -5,7 +5,8 @@
 binary for this platform built (:mod:`.ccode`) from the generated C of the model and
 the C sources of this package (``engine.c``: Newton
 on the algebraic unknowns, event indicators and event iteration, the initial system;
-``cosim.c``: the embedded integrator of Co-Simulation; ``fmu.c``: the FMI functions),
+``discrete.c``: discrete variables and sample() clocks; ``cosim.c``: the embedded
+integrator of Co-Simulation; ``fmu.c``: the FMI functions),
 and those sources in ``sources/`` so that the FMU can be rebuilt elsewhere.  The FMI
 headers are those that fmpy ships.
 """

@@ -44,6 +44,13 @@ typedef struct {
     const int *when_targets, *when_owners;
     ac_fn when_rows;
     int work_w;
+    int n_when_rows;                         /* conditions, reinits, assigned values, clocks */
+    int n_held;                              /* discrete variables: held(y), pre(y) in m */
+    const double *held_start;
+    int n_assign;                            /* assignments: held slot, clause, data flow */
+    const int *assign_slots, *assign_owners, *assign_levels;
+    int n_clock;                             /* sample() clocks: the clause of each */
+    const int *clock_owners;
     int n_vars;                              /* the FMI variables, by value reference */
     const int *var_kind, *var_index, *var_start;   /* var_start: start row or -1 */
     const double *var_sign, *var_value;
@@ -64,6 +71,9 @@ typedef struct {
     int solved, expanded, failed;
     int has_next_time;
     double next_time;
+    double *m_round, *clk;                   /* m after a round of firing; clocks' start,
+                                                period and next tick */
+    int *fire;
     char message[512];
     /* co-simulation */
     double rtol, h_int;
@@ -84,6 +94,10 @@ int ac_ode_jacobian(ac_state *s, double *J);
 void ac_arm(ac_state *s);
 void ac_release(ac_state *s);
 int ac_do_step(ac_state *s, double t_end);
+int ac_reset_discrete(ac_state *s);          /* discrete.c */
+int ac_assign(ac_state *s);
+double ac_tick(const ac_state *s, int c);
+double ac_tick_tol(double t);
 int ac_lu(double *A, int n, int *piv);
 void ac_lu_solve(const double *A, int n, const int *piv, double *b);
 

@@ -66,6 +66,11 @@ def model_c(mc, p, layout, variables, rtol) -> str:
         _array("int", "IJAC_ROWS", ic.jac_rows), _array("int", "IJAC_COLS", ic.jac_cols),
         _array("int", "WHEN_TARGETS", w.targets if w else []),
         _array("int", "WHEN_OWNERS", w.owners if w else []),
+        _array("double", "HELD_START", rel.held_start),
+        _array("int", "ASSIGN_SLOTS", w.assign_slots if w else []),
+        _array("int", "ASSIGN_OWNERS", w.assign_owners if w else []),
+        _array("int", "ASSIGN_LEVELS", w.assign_levels if w else []),
+        _array("int", "CLOCK_OWNERS", w.clocks if w else []),
         _array("int", "VAR_KIND", [v.kind for v in variables]),
         _array("int", "VAR_INDEX", [v.index for v in variables]),
         _array("int", "VAR_START", [v.start_slot for v in variables]),
@@ -96,6 +101,11 @@ def model_c(mc, p, layout, variables, rtol) -> str:
         "n_when": w.n_when if w else 0, "n_act": len(w.targets) if w else 0,
         "when_targets": "WHEN_TARGETS", "when_owners": "WHEN_OWNERS",
         "when_rows": "w_residual", "work_w": sizes.get("w_", 0),
+        "n_when_rows": w.code.n_rows if w else 0, "n_held": rel.n_held,
+        "held_start": "HELD_START", "n_assign": len(w.assign_slots) if w else 0,
+        "assign_slots": "ASSIGN_SLOTS", "assign_owners": "ASSIGN_OWNERS",
+        "assign_levels": "ASSIGN_LEVELS", "n_clock": len(w.clocks) if w else 0,
+        "clock_owners": "CLOCK_OWNERS",
         "n_vars": len(variables), "var_kind": "VAR_KIND", "var_index": "VAR_INDEX",
         "var_start": "VAR_START",
         "var_sign": "VAR_SIGN", "var_value": "VAR_VALUE", "default_rtol": repr(float(rtol)),
@@ -106,12 +116,12 @@ def model_c(mc, p, layout, variables, rtol) -> str:
 
 
 def build_binary(cc, src, binary, size) -> None:
-    """The four translation units compiled at once, then linked."""
+    """The translation units compiled at once, then linked."""
     from ..compiler.cbackend import LARGE
     model_flags = (["-O0"] + FLAGS[1:]) if size > LARGE else FLAGS
     with tempfile.TemporaryDirectory() as tmp:
         objects, procs = [], []
-        for f in ("model.c", "engine.c", "cosim.c", "fmu.c"):
+        for f in ("model.c", "engine.c", "discrete.c", "cosim.c", "fmu.c"):
             obj = os.path.join(tmp, f[:-2] + ".o")
             flags = model_flags if f == "model.c" else FLAGS
             procs.append((f, subprocess.Popen([cc, *flags, "-I", src, "-c", "-o", obj,

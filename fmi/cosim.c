@@ -149,6 +149,14 @@ int ac_do_step(ac_state *s, double t_end) {
     }
     while (s->t < t_end) {
         double t = s->t;
+        if (s->has_next_time && s->next_time <= t + ac_tick_tol(t)) {
+            /* a time event within round-off of the communication point (a clock's
+               tick start + k period computed a bit past it): taken here */
+            int changed;
+            s->events++;
+            if (ac_event(s, &changed)) goto out;
+            continue;
+        }
         for (int i = 0; i < n; ++i) x0[i] = s->z[md->state_index[i]];
         if (rhs(s, t, x0, f0) || ac_ode_jacobian(s, J)) goto out;
         if (nr && ac_oriented(s, r0)) goto out;

@@ -14,8 +14,10 @@
      with h_k the relation's zero tolerance on its own scale.
    * At an event: items whose indicator is negative switch; time-linear items at zero
      take the side of their exact slope; fired when-clauses re-initialize states (with
-     the values before the event, Modelica's pre); then the algebraic unknowns are solved
-     again and contradicted relations set until nothing changes (MLS 3.6, sec. 8.6). */
+     the values before the event, Modelica's pre) and assign discrete variables (held
+     values in m, in data-flow order, runtime/events.py); sample() clocks fire at
+     start + k period; then the algebraic unknowns are solved again and contradicted
+     relations set until nothing changes (MLS 3.6, sec. 8.6). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,14 +33,17 @@
 static void *zalloc(int n, size_t size) { return calloc(n > 0 ? n : 1, size); }
 
 int ac_alloc(ac_state *s, const ac_model *md) {
-    int n_items = md->n_rel + md->n_disc, n = md->n_z;
+    int n_items = md->n_rel + md->n_disc, n = md->n_z, n_m = n_items + 2 * md->n_held;
     memset(s, 0, sizeof(*s));
     s->md = md;
     s->z = zalloc(n, sizeof(double));
     s->zsave = zalloc(n, sizeof(double));
     s->p = zalloc(md->n_p, sizeof(double));
-    s->m = zalloc(n_items, sizeof(double));
-    s->m_pre = zalloc(n_items, sizeof(double));
+    s->m = zalloc(n_m, sizeof(double));
+    s->m_pre = zalloc(n_m, sizeof(double));
+    s->m_round = zalloc(n_m, sizeof(double));
+    s->clk = zalloc(3 * md->n_clock, sizeof(double));
+    s->fire = zalloc(md->n_when, sizeof(int));
     s->xdot = zalloc(md->n_x, sizeof(double));
     s->all = zalloc(md->n_all, sizeof(double));
     s->wf = zalloc(md->work_f, sizeof(double));
@@ -50,8 +55,8 @@ int ac_alloc(ac_state *s, const ac_model *md) {
     s->scl = zalloc(md->n_rel, sizeof(double));
     s->ijac = zalloc(md->n_ijac, sizeof(double));
     s->irows = zalloc(md->n_init_rows, sizeof(double));
-    s->wrows = zalloc(md->n_when + md->n_act, sizeof(double));
-    s->wrows_pre = zalloc(md->n_when + md->n_act, sizeof(double));
+    s->wrows = zalloc(md->n_when_rows, sizeof(double));
+    s->wrows_pre = zalloc(md->n_when_rows, sizeof(double));
     s->x_start = zalloc(md->n_start, sizeof(double));
     if (md->n_start) memcpy(s->x_start, md->start_value, md->n_start * sizeof(double));
     s->dense = zalloc(n * n, sizeof(double));
@@ -76,11 +81,11 @@ int ac_alloc(ac_state *s, const ac_model *md) {
 }
 
 void ac_free(ac_state *s) {
-    double *bufs[] = {s->z, s->zsave, s->p, s->m, s->m_pre, s->xdot, s->all, s->wf, s->wi,
+    double *bufs[] = {s->m_round, s->clk, s->z, s->zsave, s->p, s->m, s->m_pre, s->xdot, s->all, s->wf, s->wi,
                       s->ww, s->rows, s->jac, s->rts, s->scl, s->ijac, s->irows, s->wrows,
                       s->wrows_pre, s->dense, s->rhs, s->cs_buf, s->offset, s->x_start};
     for (size_t k = 0; k < sizeof(bufs) / sizeof(bufs[0]); ++k) free(bufs[k]);
-    free(s->piv); free(s->algpos); free(s->statepos); free(s->initpos);
+    free(s->piv); free(s->algpos); free(s->statepos); free(s->initpos); free(s->fire);
 }
 
 /* -- dense LU with partial pivoting (row-major A, n x n) --------------------------------- */
@@ -417,6 +422,13 @@ void ac_next_time_event(ac_state *s) {
     double t_min = s->t + 64 * 2.220446049250313e-16 * fmax(1.0, fabs(s->t));
     s->has_next_time = 0;
     if (!v0) return;
+    for (int c = 0; c < md->n_clock; ++c) {
+        double te = ac_tick(s, c);
+        if (te > t_min && (!s->has_next_time || te < s->next_time)) {
+            s->next_time = te;
+            s->has_next_time = 1;
+        }
+    }
     slopes(s, v0, sl);
     for (int k = 0; k < ni; ++k) {
         if (!md->timed[k] || sl[k] == 0.0 || !isfinite(sl[k])) continue;
@@ -439,6 +451,7 @@ int ac_initialize(ac_state *s) {
     if (!cols) return -1;
     for (int i = 0; i < md->n_z; ++i) cols[i] = i;
     s->solved = 0;
+    if (ac_reset_discrete(s)) { free(cols); return -1; }
     settle_all(s, 0);
     for (int round_ = 0; round_ < 10; ++round_) {
         if (md->n_z && newton(s, &sys)) {
@@ -456,6 +469,8 @@ int ac_initialize(ac_state *s) {
             ac_next_time_event(s);
             if (ac_derivatives(s)) return -1;
             ac_arm(s);
+            for (int c = 0; c < md->n_clock; ++c)      /* a tick at t0 fires now */
+                if (ac_tick(s, c) <= s->t + ac_tick_tol(s->t)) return ac_event(s, &round_);
             return 0;
         }
     }
@@ -472,7 +487,7 @@ int ac_event(ac_state *s, int *states_changed) {
     double *r = (double *)zalloc(nr + 2 * ni, sizeof(double)), *v0 = r + nr, *sl = v0 + ni;
     *states_changed = 0;
     if (!r) return -1;
-    memcpy(s->m_pre, s->m, ni * sizeof(double));
+    memcpy(s->m_pre, s->m, (ni + 2 * md->n_held) * sizeof(double));
     if (ni) {
         ac_release(s);
         if (ac_oriented(s, r)) goto fail;
@@ -496,20 +511,31 @@ int ac_event(ac_state *s, int *states_changed) {
         }
         s->solved = 0;
     }
-    if (md->n_when) {
-        md->when_rows(s->t, s->z, s->p, s->m_pre, s->wrows_pre, s->ww);
+    /* with discrete variables, an assignment can make another clause's condition true
+       at the same instant: it fires in the next round */
+    const double *before = s->m_pre;
+    for (int round_ = 0; md->n_when && round_ < (md->n_held ? MODE_ROUNDS : 1); ++round_) {
+        int any = 0;
+        md->when_rows(s->t, s->z, s->p, before, s->wrows_pre, s->ww);
         md->when_rows(s->t, s->z, s->p, s->m, s->wrows, s->ww);
-        for (int a = 0; a < md->n_act; ++a) {
-            int c = md->when_owners[a];
-            if (s->wrows_pre[c] < 0.5 && s->wrows[c] > 0.5) {
+        for (int c = 0; c < md->n_when; ++c)
+            any |= s->fire[c] = s->wrows_pre[c] < 0.5 && s->wrows[c] > 0.5;
+        for (int c = 0; round_ == 0 && c < md->n_clock; ++c)
+            if (ac_tick(s, c) <= s->t + ac_tick_tol(s->t)) {
+                s->fire[md->clock_owners[c]] = any = 1;
+                s->clk[3 * c + 2] += 1.0;
+            }
+        if (!any) break;
+        for (int a = 0; a < md->n_act; ++a)
+            if (s->fire[md->when_owners[a]]) {
                 s->z[md->when_targets[a]] = s->wrows_pre[md->n_when + a];
                 fired = 1;
             }
-        }
-        if (fired) {
-            s->solved = 0;
-            if (settle_all(s, 1) < 0) goto fail;
-        }
+        if (ac_assign(s) < 0) goto fail;
+        memcpy(s->m_round, s->m, (ni + 2 * md->n_held) * sizeof(double));
+        before = s->m_round;
+        s->solved = 0;
+        if (settle_all(s, 1) < 0) goto fail;
     }
     for (int round_ = 0; ; ++round_) {
         int changed = settle_contradicted(s);

@@ -5,7 +5,8 @@ What goes into the FMU (FMI 2.0, sec. 2.3 "FMU distribution"):
 * ``modelDescription.xml`` (:mod:`.description`), the GUID a hash of the C sources;
 * ``sources/``: ``model.c`` (the generated C of the model, :mod:`acausal.compiler.cbackend`,
   and its data: sizes, the Jacobian patterns, the relations, the variables), the engine
-  of this package (``acausal_fmu.h``, ``engine.c``, ``cosim.c``, ``fmu.c``) and the FMI
+  of this package (``acausal_fmu.h``, ``engine.c``, ``discrete.c``, ``cosim.c``,
+  ``fmu.c``) and the FMI
   headers that fmpy ships;
 * ``binaries/<platform>/<modelIdentifier>.so`` compiled from them with the system C
   compiler (``-O2 -fPIC -ffp-contract=off -shared``, every symbol but the FMI functions
@@ -50,7 +51,7 @@ __all__ = ["export_fmu", "FMI_TYPES"]
 FMI_TYPES = ("ModelExchange", "CoSimulation")
 _SHORT = {"me": "ModelExchange", "cs": "CoSimulation", "modelexchange": "ModelExchange",
           "cosimulation": "CoSimulation"}
-ENGINE = ("acausal_fmu.h", "engine.c", "cosim.c", "fmu.c")
+ENGINE = ("acausal_fmu.h", "engine.c", "discrete.c", "cosim.c", "fmu.c")
 HEADERS = ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h")
 AC_PARAM, AC_EXPAND, AC_CONST, AC_DERIV, AC_PAFFINE = 0, 1, 2, 3, 4   # acausal_fmu.h
 DEFAULT_RTOL = 1e-6
@@ -105,7 +106,7 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
         model_name=name, identifier=identifier, guid=guid, fmi_type=kind,
         variables=variables, n_indicators=layout["n_indicators"],
         description=_summary(model) if ports is not None else "",
-        default=default, sources=["model.c", "engine.c", "cosim.c", "fmu.c"])
+        default=default, sources=["model.c", "engine.c", "discrete.c", "cosim.c", "fmu.c"])
     with tempfile.TemporaryDirectory() as tmp:
         src = os.path.join(tmp, "sources")
         os.makedirs(src)

@@ -32,8 +32,11 @@ check existed).  The sliding-to-locked-to-starting order of Modelica's friction 
 When-clauses (sec. 8.3.5-8.3.6): the body of ``when c`` runs at the instant c becomes
 true; ``reinit(x, e)`` restarts the state x from e, evaluated with the values just
 before the event (``pre``).  A clause fires when its condition, evaluated with the
-discrete state before and after the event, goes from false to true.  At
-initialization no clause fires.
+discrete state before and after the event, goes from false to true; a clocked clause
+(``sample(start, period)``) fires at each tick, exact time events at start + k period,
+including a tick at t0 (after the initial values are found; otherwise no clause fires
+at initialization).  ``assign(y, e)`` writes the held value of the discrete variable y
+(:mod:`acausal.compiler.sampled`), the clauses' assignments in data-flow order.
 """
 from __future__ import annotations
 
@@ -51,7 +54,8 @@ _ROUNDS = 20          # solve-and-settle rounds at one instant before giving up
 
 
 class WhenClauses:
-    """The when-clauses of a model (see :class:`acausal.compiler.modelcode.WhenCode`)."""
+    """The when-clauses of a model (see :class:`acausal.compiler.modelcode.WhenCode`):
+    conditions, clocks, reinit actions and assignments of discrete variables."""
 
     def __init__(self, whens):
         self.code = whens.code
@@ -59,6 +63,15 @@ class WhenClauses:
         self.targets = np.asarray(whens.targets, dtype=np.int64)
         self.owners = np.asarray(whens.owners, dtype=np.int64)
         self.texts = list(whens.texts)
+        self.slots = np.asarray(getattr(whens, "assign_slots", []), dtype=np.int64)
+        self.assign_owners = np.asarray(getattr(whens, "assign_owners", []), dtype=np.int64)
+        self.levels = np.asarray(getattr(whens, "assign_levels", []), dtype=np.int64)
+        self.clocks = np.asarray(getattr(whens, "clocks", []), dtype=np.int64)
+        self._assign_row = self.n_when + len(self.targets)
+        self._clock_row = self._assign_row + len(self.slots)
+        self.tick = np.zeros(len(self.clocks), dtype=np.int64)   # next tick of each clock
+        self.start = np.zeros(len(self.clocks))
+        self.period = np.ones(len(self.clocks))
         # (time, indices of the clauses that fired, z indices they re-initialized,
         # those values before and after): what the event records of a result report
         self.log = []
@@ -66,19 +79,85 @@ class WhenClauses:
     def values(self, t, z, p, m) -> np.ndarray:
         return self.code.residual(t, z, p, m, np.empty(self.code.n_rows))
 
-    def fire(self, t, z, p, m_before, m_after):
-        """New z if some clause fired between the two discrete states, else None."""
+    # -- clocks: sample(start, period) ticks at start + k period, k = 0, 1, ... ----------
+    def reset_clocks(self, t0, z, p, m) -> None:
+        """Before a run: each clock's first tick at or after t0 (the parameters may have
+        changed since the last run)."""
+        if not len(self.clocks):
+            return
+        v = self.values(t0, z, p, m)
+        self.start = v[self._clock_row::2].copy()
+        self.period = v[self._clock_row + 1::2].copy()
+        for c, w in enumerate(self.clocks):
+            if not (np.isfinite(self.start[c]) and np.isfinite(self.period[c])
+                    and self.period[c] > 0):
+                from ..components.component import InvalidValue
+                raise InvalidValue(f"{self.texts[w]}: sample(start = {self.start[c]:g}, "
+                                   f"period = {self.period[c]:g}) needs a finite start and "
+                                   "a positive period")
+        k = np.ceil((t0 - self.start) / self.period)
+        k = np.maximum(k, 0.0)
+        k -= (k > 0) & (self._tick_time(k - 1) >= t0 - _tick_tol(t0))   # rounding
+        self.tick = k.astype(np.int64)
+
+    def _tick_time(self, k):
+        return self.start + k * self.period      # a product: no drift over many periods
+
+    def next_tick(self, t_min) -> float | None:
+        """The first tick after ``t_min`` (clocks fire at their ticks: time events)."""
+        if not len(self.clocks):
+            return None
+        ticks = self._tick_time(self.tick)
+        ticks = ticks[ticks > t_min]
+        return float(ticks.min()) if ticks.size else None
+
+    def due(self, t) -> np.ndarray:
+        """The clocks whose next tick is t (within the rounding of t)."""
+        return self._tick_time(self.tick) <= t + _tick_tol(t)
+
+    # -- firing ----------------------------------------------------------------------------
+    def fire(self, model, t, z, p, m_before, m_after):
+        """New z if some clause fired between the two discrete states (or its clock
+        ticks at t), else None.  Assignments write the held values in ``m_after`` (the
+        model's discrete state) in data-flow order."""
         before = self.values(t, z, p, m_before)
         after = self.values(t, z, p, m_after)
         fired = (before[: self.n_when] < 0.5) & (after[: self.n_when] > 0.5)
+        due = self.due(t) if len(self.clocks) else np.zeros(0, dtype=bool)
+        if due.any():
+            fired[self.clocks[due]] = True
+            self.tick[due] += 1
         if not fired.any():
             return None
         new = z.copy()
         act = fired[self.owners]
-        new[self.targets[act]] = before[self.n_when:][act]    # values before the event
+        new[self.targets[act]] = before[self.n_when:self._assign_row][act]   # pre values
         self.log.append((t, np.flatnonzero(fired).tolist(), self.targets[act].tolist(),
                          z[self.targets[act]].tolist(), new[self.targets[act]].tolist()))
-        return new
+        return self._assign(model, t, new, p, fired[self.assign_owners])
+
+    def _assign(self, model, t, z, p, act):
+        """The assignments of the fired clauses, level by level (a level reads the held
+        values the levels before it assigned; torn algebraic unknowns are solved again
+        in between).  pre(y) is the held value before the instant while they run."""
+        if not act.any():
+            return z
+        disc, m = model.discrete, model.m
+        held, pre = disc.held, disc.pre
+        m[pre] = m[held]
+        levels = np.unique(self.levels[act])
+        for n, lv in enumerate(levels):
+            if n and model.algebraic.any():
+                z = _solve_algebraic(model, t, z)
+            v = self.values(t, z, p, m)
+            sel = act & (self.levels == lv)
+            m[held.start + self.slots[sel]] = v[self._assign_row + np.flatnonzero(sel)]
+        m[pre] = m[held]            # after the instant, the left limit is the new value
+        return z
+
+
+def _tick_tol(t) -> float:
+    return 64.0 * np.finfo(float).eps * max(1.0, abs(t))
 
 
 def iterate_event(model, t, z, zp, crossed) -> EventAction:
@@ -100,13 +179,18 @@ def iterate_event(model, t, z, zp, crossed) -> EventAction:
     else:
         disc.settle_time_items(t, z, p)
     fired = False
-    if model.whens is not None:
-        new = model.whens.fire(t, z, p, m_old, model.m)
-        if new is not None:
-            z, fired = new, True
-            zp_new = np.zeros(model.n)
-            zp_new[model.state_index] = model.state_derivatives(t, z)
-            disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), res)
+    m_prev = m_old
+    # with discrete variables, an assignment can make another clause's condition true
+    # at the same instant: it fires in the next round (Modelica's event iteration)
+    for _ in range((_ROUNDS if disc.n_held else 1) if model.whens is not None else 0):
+        new = model.whens.fire(model, t, z, p, m_prev, model.m)
+        if new is None:
+            break
+        z, fired = new, True
+        m_prev = model.m.copy()
+        zp_new = np.zeros(model.n)
+        zp_new[model.state_index] = model.state_derivatives(t, z)
+        disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), res)
     decided = _at_zero(model, t, z, zp)      # their side was chosen by the dynamics
     seen = [model.m.copy()]
     for _ in range(_ROUNDS):

@@ -275,12 +275,25 @@ class CompiledModel(DAEProblem):
     def next_time_event(self, t):
         """The next time a relation or floor value of time alone switches (exact)."""
         t_min = t + 64 * np.finfo(float).eps * max(1.0, abs(t))
-        return self.discrete.next_time_event(t, self._z_ref, self.p, t_min)
+        te = self.discrete.next_time_event(t, self._z_ref, self.p, t_min)
+        tick = self.whens.next_tick(t_min) if self.whens is not None else None
+        return te if tick is None else (tick if te is None else min(te, tick))
 
     # -- initialization (runtime contract) ------------------------------------------------
     def initialize(self, t0: float):
-        """Consistent (z, z') at t0, discrete state settled (:mod:`.initial`)."""
-        return initialize(self, t0)
+        """Consistent (z, z') at t0, discrete state settled (:mod:`.initial`).  The
+        discrete variables start from their start values; clocks that tick at t0 fire
+        once the initial values are found (:mod:`.events`)."""
+        self.discrete.reset_held()
+        if self.whens is None:
+            return initialize(self, t0)
+        self.whens.reset_clocks(t0, self.start, self.p, self.m)
+        z, zp = initialize(self, t0)
+        if self.whens.due(t0).any():
+            action = iterate_event(self, t0, z, zp, np.zeros(self.n_roots, dtype=bool))
+            if action.changed:
+                z, zp = reinitialize(self, t0, z if action.y is None else action.y, zp)
+        return z, zp
 
     def reinitialize(self, t, z, zp, rtol=1e-6, atol=1e-6):
         """After an event: states kept, algebraic unknowns and every z' made consistent."""

@@ -62,11 +62,15 @@ class DiscreteState:
     def __init__(self, info, roots, scales):
         self.info = info
         self.n_rel, self.n_disc = info.n_relations, info.n_discrete
+        # held(y) then pre(y) of the discrete variables follow the items in m
+        self.n_held = getattr(info, "n_held", 0)
+        self.held_start = np.asarray(getattr(info, "held_start", []), dtype=float)
         self.upward = np.array([_UPWARD[op] for op in info.ops], dtype=bool)
         self.strict = np.array([_STRICT[op] for op in info.ops], dtype=bool)
         self.nominal = np.asarray(info.nominal, dtype=float)
         self._roots, self._scales = roots, scales
-        self.m = np.zeros(self.n_rel + self.n_disc)
+        self.m = np.zeros(self.n_rel + self.n_disc + 2 * self.n_held)
+        self.reset_held()
         self.offset = np.zeros(self.n_rel + 2 * self.n_disc)
         self.time_linear = np.asarray(info.time_linear, dtype=np.int64)
         # items whose switching time is predicted exactly (time events) are only a
@@ -149,7 +153,8 @@ class DiscreteState:
             tol = ZERO_RTOL * np.abs(scale) + ZERO_NOMINAL * self.nominal
             r[: self.n_rel] = sign * g + side * tol
         if self.n_disc:
-            n, tol_u = self.m[self.n_rel:], ZERO_RTOL * (np.abs(u) + 1.0)
+            n = self.m[self.n_rel:self.n_rel + self.n_disc]
+            tol_u = ZERO_RTOL * (np.abs(u) + 1.0)
             r[self.n_rel::2] = u - n + tol_u                 # floor(u) = n on [n, n + 1)
             r[self.n_rel + 1::2] = n + 1.0 - u + np.where(self._timed[self.n_rel:], tol_u,
                                                           -tol_u)
@@ -181,7 +186,7 @@ class DiscreteState:
         g, u = v[: self.n_rel], v[self.n_rel:]
         tol_g, tol_u = tol[: self.n_rel], tol[self.n_rel:]
         bad_rel = (np.abs(g) > tol_g) & (self.truth(g) != self.relation_modes())
-        n = self.m[self.n_rel:]
+        n = self.m[self.n_rel:self.n_rel + self.n_disc]
         bad_disc = (u < n - tol_u) | (u >= n + 1.0 + tol_u)
         return np.concatenate([bad_rel, bad_disc])
 
@@ -318,4 +323,28 @@ class DiscreteState:
     def describe(self, k) -> str:
         if k < self.n_rel:
             return self.info.texts[k]
-        return self.info.discrete_texts[k - self.n_rel]
+        if k < self.n_rel + self.n_disc:
+            return self.info.discrete_texts[k - self.n_rel]
+        j = k - self.n_rel - self.n_disc
+        if j < self.n_held:
+            return self.info.held_names[j]
+        return f"pre({self.info.held_names[j - self.n_held]})"
+
+    # -- discrete variables (acausal.compiler.sampled) -----------------------------------
+    @property
+    def held(self) -> slice:
+        """Where held(y) of the discrete variables lives in m."""
+        k = self.n_rel + self.n_disc
+        return slice(k, k + self.n_held)
+
+    @property
+    def pre(self) -> slice:
+        """Where pre(y) lives in m (equal to held(y) between events)."""
+        k = self.n_rel + self.n_disc + self.n_held
+        return slice(k, k + self.n_held)
+
+    def reset_held(self) -> None:
+        """Start values: the discrete variables' values before t0, held and pre."""
+        if self.n_held:
+            self.m[self.held] = self.held_start
+            self.m[self.pre] = self.held_start

@@ -2,8 +2,8 @@
 
 Both print the same operations in the same order (compiler/emit.py), so they agree to
 rounding: every generated function at random points, and whole simulations with
-events, modes, when-clauses and dynamic state selection, to 1e-12 of each signal's own
-scale.  Without a C compiler the module is skipped, except the test that ``"auto"``
+events, modes, when-clauses, sampled controllers and dynamic state selection, to 1e-12
+of each signal's own scale.  Without a C compiler the module is skipped, except the test that ``"auto"``
 then falls back and says so.
 """
 import math
@@ -14,6 +14,7 @@ import sympy as sp
 
 import acausal as ac
 from acausal.compiler import cbackend
+from acausal.library.electromechanical.examples.sampled_speed_control import SampledSpeedLoop
 from acausal.library.examples.motor_drive import MotorDrive
 from acausal.library.examples.pendulum import DoublePendulum, Pendulum
 from acausal.library.hydraulics.examples.valve_motor import ValveControlledMotor
@@ -24,7 +25,8 @@ needs_cc = pytest.mark.skipif(cbackend.compiler_available() is None,
                               reason="no C compiler on this machine")
 
 MODELS = [(MotorDrive, 0.5), (Pendulum, 3.0), (DoublePendulum, 1.0),
-          (ValveControlledMotor, 0.1), (LimitedHeater, 600.0), (BouncingBall, 3.0)]
+          (ValveControlledMotor, 0.1), (LimitedHeater, 600.0), (BouncingBall, 3.0),
+          (SampledSpeedLoop, 0.03)]
 
 
 def _pair(model_class):
@@ -50,6 +52,11 @@ def test_every_generated_function_agrees_at_random_points(model_class, t_end):
             b = f_c(0.3, z, c.p, py.m.copy(), np.empty(n))
             scale = np.maximum(np.abs(a), np.finfo(float).tiny)
             assert np.all(np.abs(a - b) <= 1e-12 * scale), name
+        if py.whens is not None:         # conditions, reinit and assigned values, clocks
+            n = py.whens.code.n_rows
+            a = py.whens.code.residual(0.3, z, py.p, py.m, np.empty(n))
+            b = c.whens.code.residual(0.3, z, c.p, py.m.copy(), np.empty(n))
+            assert np.all(np.abs(a - b) <= 1e-12 * np.maximum(np.abs(a), 1e-300)), "whens"
 
 
 @needs_cc
