@@ -20,7 +20,7 @@ _EXPORTS = {
     ".components": ("Across", "Component", "Connection", "Eq", "Equation",
                     "InvalidConnection", "InvalidEquation", "InvalidHierarchy",
                     "InvalidValue", "ModelError", "NotInModel", "Parameter", "Port", "Signal",
-                    "Through", "Variable", "When", "connect", "der", "if_else", "no_event",
+                    "Through", "Variable", "When", "connect", "delay", "der", "if_else", "no_event",
                     "pre", "ref", "reinit", "sign", "time", "when"),
     ".errors": ("BackendError", "InitializationFailed", "SimulationError"),
     ".result": ("Result",),
@@ -38,7 +38,7 @@ _EXPORTS = {
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
            "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre",
-           "Connection", "if_else", "no_event", "sign", "time",
+           "Connection", "if_else", "no_event", "delay", "sign", "time",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
            "ModelError", "InvalidValue", "InvalidEquation", "InvalidConnection",
            "InvalidHierarchy", "NotInModel", "SimulationError", "InitializationFailed",
