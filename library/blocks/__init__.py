@@ -5,12 +5,12 @@ __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "S
            "Pulse", "Gain", "Add", "Feedback", "Product", "Integrator", "Derivative",
            "FirstOrder", "SecondOrder", "TransferFunction", "PI", "PID", "Limiter",
            "Saturation", "DeadZone", "CombiTimeTable", "CombiTable1D", "CombiTable2D",
-           "PadeDelay"]
+           "PadeDelay", "FixedDelay"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".continuous": ("PI", "PID", "Derivative", "FirstOrder", "Integrator", "SecondOrder",
                     "TransferFunction"),
-    ".delays": ("PadeDelay",),
+    ".delays": ("FixedDelay", "PadeDelay"),
     ".interfaces": ("SI2SO", "SISO", "SO", "SignalSource"),
     ".math": ("Add", "Feedback", "Gain", "Product"),
     ".nonlinear": ("DeadZone", "Limiter", "Saturation"),

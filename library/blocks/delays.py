@@ -16,7 +16,7 @@ import acausal as ac
 
 from .interfaces import SISO
 
-__all__ = ["PadeDelay", "pade_coefficients"]
+__all__ = ["PadeDelay", "FixedDelay", "pade_coefficients"]
 
 
 def pade_coefficients(n: int, m: int | None = None) -> tuple[list, list]:
@@ -122,3 +122,23 @@ class PadeDelay(SISO):
             eqs.append(ac.Eq(self.delayTime * ac.der(x[i]), rhs))
         y = sum(float(c) * x[j] for j, c in enumerate(self.C) if c != 0.0)
         return eqs + [ac.Eq(self.y, y + float(self.D) * u)]
+
+
+class FixedDelay(SISO):
+    """Exact delay of the input by a fixed time (MSL Modelica.Blocks.Nonlinear.
+    FixedDelay):
+
+        y = delay(u, delayTime),   i.e.  y(t) = u(t - delayTime),  y(t) = u(t0) for
+        t < t0 + delayTime   (Modelica Language Specification 3.7.2.2)
+
+    The runtime keeps a history of u (:mod:`acausal.runtime.delays`): the integrator's
+    step is limited to ``delayTime``, so a short delay in a long run costs steps
+    (at least (t_end - t0)/delayTime); a jump of u at t1 reappears at t1 + delayTime as
+    a time event.  A model with a FixedDelay has no finite-dimensional linearization
+    and cannot be exported as an FMU; ``PadeDelay`` approximates it with n states.
+    """
+
+    delayTime = ac.Parameter(1.0, unit="s", min=0, description="delay time T (> 0)")
+
+    def equations(self):
+        return [ac.Eq(self.y, ac.delay(self.u.signal, self.delayTime))]

@@ -108,3 +108,189 @@ def test_pade_delay_rejects_bad_orders():
         bl.PadeDelay(n=0)
     with pytest.raises(ac.ModelError, match="integer"):
         bl.PadeDelay(n=2.5)
+
+
+# -- FixedDelay and ac.delay ----------------------------------------------------------------
+class DelayedDecay(ac.Component):
+    """x' = -a x(t - T), x = 1 for t <= 0 (Modelica: the history is x(t0))."""
+
+    a = ac.Parameter(1.0, unit="1/s")
+    T = ac.Parameter(1.0, unit="s")
+    x = ac.Variable(start=1.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), -self.a * ac.delay(self.x, self.T))]
+
+
+def method_of_steps(a, T, n_pieces):
+    """The exact solution of x' = -a x(t - T), x = 1 on [-T, 0], as polynomials: on
+    [kT, (k+1)T], x_k(t) = x_{k-1}(kT) - a int_{kT}^t x_{k-1}(s - T) ds."""
+    P = np.polynomial.Polynomial
+    prev = P([1.0])                          # the history, on [-T, 0]
+    pieces = []
+    for k in range(n_pieces):
+        shifted = prev(P([-T, 1.0]))         # s -> x_{k-1}(s - T), a composition
+        piece = prev(k * T) - a * shifted.integ(lbnd=k * T)
+        pieces.append(piece)
+        prev = piece
+    return pieces
+
+
+def _exact_pieces(t, pieces, T):
+    k = np.minimum((t // T).astype(int), len(pieces) - 1)
+    return np.array([pieces[i](ti) for i, ti in zip(k, t)])
+
+
+@pytest.mark.parametrize("a,T", [(1.0, 1.0), (2.0, 0.5), (0.5, 2.0), (3.0, 0.3)])
+def test_delayed_decay_matches_method_of_steps(a, T):
+    res = ac.simulate(DelayedDecay(a=a, T=T), t_end=5 * T, rtol=1e-9)
+    assert res.success
+    exact = _exact_pieces(res.t, method_of_steps(a, T, 5), T)
+    assert np.max(np.abs(res["x"] - exact)) < 1e-7 * np.max(np.abs(exact))
+    # the discontinuities of the derivatives come back at kT: each is a time event
+    breaks = [e for e in res.event_times if e < 5 * T * (1 - 1e-12)]
+    assert np.allclose(breaks, T * np.arange(1, len(breaks) + 1), rtol=1e-12)
+    assert len(breaks) == 4
+
+
+@pytest.mark.parametrize("a,T,window", [(1.0, 1.0, (15.0, 30.0)), (1.0, 0.2, (3.0, 8.0))])
+def test_delayed_decay_rate_is_the_lambert_w_root(a, T, window):
+    """Late in the run x(t) ~ Re(C e^(s0 t)), s0 = W_0(-aT)/T the rightmost root of
+    s + a e^(-sT) = 0 (the next root decays faster: by e^(-1.2 t) at aT = 1, e^(-11 t) at
+    aT = 0.2).  aT = 1: complex roots; uniform samples of a damped oscillation obey
+    x[k+1] = c1 x[k] + c2 x[k-1] exactly, with z^2 - c1 z - c2 = 0 at z = e^(s dt), so
+    least squares gives s (Prony's method).  aT = 0.2 < 1/e: s0 is real, the slope of
+    log x."""
+    s0 = complex(lambertw(-a * T, 0)) / T
+    t = np.linspace(*window, 301)
+    res = ac.simulate(DelayedDecay(a=a, T=T), t_end=window[1], rtol=1e-10, atol=1e-14,
+                      t_eval=t)
+    x = res["x"]
+    if s0.imag == 0:
+        s_fit = np.polyfit(t, np.log(x), 1)[0]
+    else:
+        dt = t[1] - t[0]
+        M = np.column_stack([x[1:-1], x[:-2]])
+        c1, c2 = np.linalg.lstsq(M, x[2:], rcond=None)[0]
+        s = np.log(np.roots([1.0, -c1, -c2]).astype(complex)) / dt
+        s_fit = s[np.argmax(s.imag)]
+    assert abs(s_fit - s0) < 1e-5 * abs(s0)
+
+
+class DelayedSine(ac.Component):
+    """A sine through a FixedDelay, integrated (so the model has a state)."""
+
+    sine = bl.Sine(amplitude=2.0, f=1.5, phase=0.7)
+    delay = bl.FixedDelay(delayTime=0.25)
+    integ = bl.Integrator()
+
+    def equations(self):
+        return [ac.connect(self.sine.y, self.delay.u), ac.connect(self.delay.y, self.integ.u)]
+
+
+def _shifted_sine(t, T=0.25, A=2.0, f=1.5, phase=0.7):
+    return A * np.sin(2 * np.pi * f * np.maximum(t - T, 0.0) + phase)
+
+
+@pytest.mark.parametrize("backend", ["numpy", "c"])
+def test_sine_through_fixed_delay_is_the_shifted_sine(backend):
+    if backend == "c":
+        from acausal.compiler.cbackend import compiler_available
+        if compiler_available() is None:
+            pytest.skip("no C compiler")
+    t = np.linspace(0.0, 3.0, 601)
+    res = ac.simulate(DelayedSine(), t_end=3.0, rtol=1e-9, t_eval=t, backend=backend)
+    assert res.compiled.backend == backend
+    y = res["delay.y.signal"]
+    assert np.max(np.abs(y - _shifted_sine(t))) < 1e-7 * 2.0
+    # the integral: u(t0) T0-long, then the shifted sine's integral
+    w, T, A, ph = 2 * np.pi * 1.5, 0.25, 2.0, 0.7
+    exact = np.where(t <= T, A * np.sin(ph) * t,
+                     A * np.sin(ph) * T + A / w * (np.cos(ph) - np.cos(w * (t - T) + ph)))
+    assert np.max(np.abs(res["integ.x"] - exact)) < 1e-7 * np.max(np.abs(exact))
+    assert 0.25 in res.event_times        # the history's kink at t0 + T is an event
+
+
+def test_sine_through_fixed_delay_without_states():
+    class Shift(ac.Component):
+        sine = bl.Sine(amplitude=2.0, f=1.5, phase=0.7)
+        delay = bl.FixedDelay(delayTime=0.25)
+
+        def equations(self):
+            return [ac.connect(self.sine.y, self.delay.u)]
+
+    t = np.linspace(0.0, 2.0, 201)
+    res = ac.simulate(Shift(), t_end=2.0, t_eval=t)
+    assert np.max(np.abs(res["delay.y.signal"] - _shifted_sine(t))) < 1e-12 * 2.0
+
+
+class DelayedStep(ac.Component):
+    step = bl.Step(height=3.0, startTime=0.3)
+    delay = bl.FixedDelay(delayTime=0.5)
+    integ = bl.Integrator()
+
+    def equations(self):
+        return [ac.connect(self.step.y, self.delay.u), ac.connect(self.delay.y, self.integ.u)]
+
+
+def test_step_through_fixed_delay_jumps_at_t1_plus_T():
+    res = ac.simulate(DelayedStep(), t_end=1.5, rtol=1e-8)
+    assert any(e == pytest.approx(0.8, rel=1e-14) for e in res.event_times)
+    y, t = res["delay.y.signal"], res.t
+    k = int(np.flatnonzero(np.isclose(t, 0.8, rtol=1e-14, atol=0.0))[0])
+    assert np.all(y[: k + 1][t[: k + 1] < 0.8] == 0.0) and y[k] == 0.0   # before the event
+    assert np.all(y[t > 0.8] == pytest.approx(3.0, rel=1e-12))
+    assert y[k + 1] == pytest.approx(3.0, rel=1e-12) and t[k + 1] == t[k]   # after it
+    # the integral of the delayed step is a ramp from 0.8 exactly
+    assert np.max(np.abs(res["integ.x"] - 3.0 * np.maximum(t - 0.8, 0.0))) < 1e-9 * 3.0
+
+
+# -- typed errors -----------------------------------------------------------------------------
+def test_negative_delay_time_is_refused():
+    with pytest.raises(ac.InvalidEquation, match="delay time must be a positive"):
+        ac.delay(ac.time, -1.0)
+    with pytest.raises(ac.ModelError, match=r"delay\(x, T\).*positive"):
+        ac.compile(DelayedDecay(T=-0.5), cache=False)
+    compiled = ac.compile(DelayedDecay(), cache=False)
+    compiled.set_parameters({"T": 0.0})
+    with pytest.raises(ac.ModelError, match=r"delay\(x, T\).*must be positive"):
+        ac.simulate(compiled, t_end=1.0)
+
+
+def test_delay_time_must_be_a_parameter():
+    class VariableDelay(ac.Component):
+        x = ac.Variable(start=1.0, fixed=True)
+        tau = ac.Variable(start=1.0)
+
+        def equations(self):
+            return [ac.Eq(self.tau, 1 + ac.time),
+                    ac.Eq(ac.der(self.x), -ac.delay(self.x, self.tau))]
+
+    with pytest.raises(ac.ModelError, match=r"delay\(x, tau\).*expression of parameters.*tau"):
+        ac.compile(VariableDelay(), cache=False)
+
+
+def test_differentiated_delay_is_refused():
+    class ImposedPosition(ac.Component):
+        """A delayed position imposed on a state: index reduction differentiates it."""
+        x = ac.Variable(start=0.0)
+        v = ac.Variable(start=0.0)
+
+        def equations(self):
+            return [ac.Eq(self.x, ac.delay(ac.sin(ac.time), 0.1)),
+                    ac.Eq(ac.der(self.x), self.v)]
+
+    with pytest.raises(ac.ModelError, match="index reduction must differentiate"):
+        ac.compile(ImposedPosition(), cache=False)
+
+
+def test_fixed_delay_has_no_linearization_and_no_fmu(tmp_path):
+    with pytest.raises(ac.ModelError, match=r"no finite-dimensional linearization.*delay\("):
+        ac.linearize(DelayedDecay(), [], ["x"])
+    pytest.importorskip("fmpy")
+    from acausal.compiler.cbackend import compiler_available
+    if compiler_available() is None:
+        pytest.skip("no C compiler")
+    with pytest.raises(ac.ModelError, match=r"delay\(delay.u.signal, delay.delayTime\) in "
+                                            r"delay \(FixedDelay\)"):
+        ac.export_fmu(DelayedStep(), str(tmp_path / "m.fmu"))
