@@ -104,7 +104,38 @@ def _value(T, params) -> float:
         return float("nan")
 
 
-def delay_code(delays, rows, code, parameters, psyms, known):
+def feeds_back(system, delays) -> bool:
+    """Whether a delayed value can reach a delayed expression (a loop through a delay),
+    judged on the connectivity of the equations: symbols of one equation, and x with
+    der(x), are connected.  Connectivity over-approximates dependence, so the answer
+    errs towards True.  Without such a loop a discontinuity comes back through a delay
+    once and stops (the runtime then follows one generation instead of six)."""
+    parent = {}
+
+    def find(q):
+        parent.setdefault(q, q)
+        while parent[q] is not q:
+            parent[q] = parent[parent[q]]
+            q = parent[q]
+        return q
+
+    def union(a, b):
+        ra, rb = find(a), find(b)
+        if ra is not rb:
+            parent[ra] = rb
+
+    for eq in system.equations:
+        syms = list(eq.residual.free_symbols)
+        for q in syms[1:]:
+            union(syms[0], q)
+    for x, dx in system.derivatives.items():
+        union(x, dx)
+    roots = {find(d.symbol) for d in delays}
+    return any(find(q) in roots for d in delays for q in d.argument.free_symbols
+               if q in parent)
+
+
+def delay_code(delays, rows, code, parameters, psyms, known, feedback=True):
     """The :class:`~acausal.compiler.modelcode.DelayCode` of the model: ``code`` computes
     the delayed expressions (``rows``) from the unknowns; each delay time becomes a
     float or a function of the tunable parameters ``psyms``."""
@@ -135,4 +166,5 @@ def delay_code(delays, rows, code, parameters, psyms, known):
             times.append(float(T))
     funcs = dict(_parameter_functions(exprs, psyms)) if exprs else {}
     times = [funcs[d.text] if t is None else t for d, t in zip(delays, times)]
-    return DelayCode(code, [d.text for d in delays], times, [d.where for d in delays])
+    return DelayCode(code, [d.text for d in delays], times, [d.where for d in delays],
+                     feedback)

@@ -89,12 +89,14 @@ class DelayCode:
     """The delays of a model (:mod:`acausal.compiler.delays`): row j of ``code``'s
     residual is the delayed expression of delay j, whose value the generated functions
     read from ``p[n_params + j]``; ``times[j]`` is its delay time, a float or a function
-    of the tunable parameters ``f(p)``; ``texts``/``wheres`` name it and its component."""
+    of the tunable parameters ``f(p)``; ``texts``/``wheres`` name it and its component;
+    ``feedback``: whether a delayed value may reach a delayed expression (a loop)."""
 
     code: object
     texts: list
     times: list
     wheres: list
+    feedback: bool = True
 
 
 @dataclass

@@ -257,11 +257,11 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms)})
     if delays:
-        from .delays import delay_code
+        from .delays import delay_code, feeds_back
         out.delays = delay_code(delays, delay_rows, generate(
             delay_rows, z_syms, inputs, len(modes), None, assigned, discretes=dsyms),
             reduced.parameters, psyms, set(z_syms) | {a for a, _ in assigned} | set(inputs)
-            | set(dsyms) | set(modes))
+            | set(dsyms) | set(modes), feeds_back(system, delays))
     if reduced.whens:
         out.whens = WhenCode(generate(when_rows, z_syms, inputs, len(modes), None, assigned,
                                       discretes=dsyms),

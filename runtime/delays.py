@@ -28,9 +28,10 @@ before every call of the generated code at time t, from a history of expr:
 * **Discontinuities.**  Every event at t_e (and t0, where the constant history meets
   the solution) may put a jump into expr or one of its derivatives, which reappears
   at t_e + T: those times are time events (``next_time_event``), so the integrator
-  lands on them and restarts there, and each of them is followed on to t_e + 2T, ...
-  up to ``_MAX_LEVEL`` generations (a jump in the k-th derivative is below the error
-  of a BDF of order <= 5 for k > 6).
+  lands on them and restarts there.  In a loop through a delay each of them is
+  followed on to t_e + 2T, ... up to ``_MAX_LEVEL`` generations (a jump in the k-th
+  derivative is below the error of a BDF of order <= 5 for k > 6); without a loop
+  (``DelayCode.feedback``, decided by the compiler) one generation is all there is.
 """
 from __future__ import annotations
 
@@ -94,6 +95,8 @@ class DelayLines:
         self._times = list(dc.times)
         self.n = len(self.texts)
         self.slots = n_params + np.arange(self.n)
+        # without a loop through a delay, a discontinuity comes back once
+        self.generations = _MAX_LEVEL if getattr(dc, "feedback", True) else 1
         self.T = None                  # the delay times of the current run
         self.t0 = None
         self.before = np.zeros(self.n)
@@ -101,7 +104,7 @@ class DelayLines:
         self._reset()
 
     def _reset(self):
-        self._starts, self._ends, self._nodes, self._values = [], [], [], []
+        self._starts, self._ends, self._values = [], [], []
         self._kept_from = -np.inf      # intervals before this were trimmed
         self.scale = np.zeros(self.n)  # the largest |expr| so far: its own scale
         self._breaks = []              # sorted (time, generation)
@@ -179,7 +182,7 @@ class DelayLines:
             self.before[:] = v
             z, zp = solve(model, t0)
             new = model.delay_arguments(t0, z)
-            if np.all(np.abs(new - v) <= _INIT_RTOL * np.maximum(np.abs(new), 1.0)):
+            if np.all(np.abs(new - v) <= _INIT_RTOL * np.maximum(np.abs(new), np.abs(v))):
                 self.before[:] = new
                 self._schedule(self.t0, 0)
                 return z, zp
@@ -229,14 +232,15 @@ class DelayLines:
 
     # -- discontinuities ----------------------------------------------------------------
     def _schedule(self, t, generation) -> None:
-        if generation >= _MAX_LEVEL:
+        if generation >= self.generations:
             return
         for T in self.T:
             bisect.insort(self._breaks, (float(t + T), generation + 1))
 
-    def event_at(self, t: float, resolution: float) -> None:
-        """An event at t: its discontinuities reappear one delay later.  An event at a
-        scheduled time continues that generation; any other starts a new one."""
+    def event_at(self, t: float, resolution: float, fresh: bool) -> None:
+        """An event at t: its discontinuities reappear one delay later.  An event that
+        is only a scheduled time continues that generation; one of the model's own
+        (``fresh``: a crossing, a time event of a relation) starts a new one."""
         if self._last_event == t:
             return
         self._last_event = t
@@ -248,7 +252,7 @@ class DelayLines:
             elif b > t:
                 keep.append((b, g))
         self._breaks = keep
-        self._schedule(t, generation)
+        self._schedule(t, 0 if fresh else generation)
 
     def next_break(self, t_min: float):
         """The first scheduled discontinuity at or after t_min, or None."""

@@ -99,6 +99,7 @@ class CompiledModel(DAEProblem):
         self.evaluation_errors = []        # what failed in the generated code, in words
         self.resolution = 0.0             # how precisely the driver locates crossings
         self._z_ref = self.start.copy()    # a point for time-event predictions
+        self._next_own = None              # the model's own next time event
         self._update_links()
 
     # -- pickling -----------------------------------------------------------------------
@@ -286,14 +287,16 @@ class CompiledModel(DAEProblem):
         """Settle the discrete state at the event and fire when-clauses
         (:func:`acausal.runtime.events.iterate_event`)."""
         if self.delays is not None:
-            self.delays.event_at(t, self.resolution)
+            tol = max(self.resolution, 64 * np.finfo(float).eps * max(1.0, abs(t)))
+            own = self._next_own is not None and abs(self._next_own - t) <= tol
+            self.delays.event_at(t, self.resolution, fresh=bool(np.any(crossed)) or own)
         return iterate_event(self, t, z, zp, crossed)
 
     def next_time_event(self, t):
         """The next time a relation or floor value of time alone switches (exact), or a
         discontinuity comes back through a delay."""
         t_min = t + 64 * np.finfo(float).eps * max(1.0, abs(t))
-        te = self.discrete.next_time_event(t, self._z_ref, self.p, t_min)
+        te = self._next_own = self.discrete.next_time_event(t, self._z_ref, self.p, t_min)
         if self.delays is not None:
             tb = self.delays.next_break(t_min)
             if tb is not None and (te is None or tb < te):
