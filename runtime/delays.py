@@ -48,6 +48,7 @@ _MAX_LEVEL = 6        # a discontinuity at t_e is followed to t_e + k T, k <= th
 _INIT_ROUNDS = 50     # fixed-point rounds of expr(t0) = delayed value at t0
 _INIT_RTOL = 1e-12    # ... until they agree to this, relative
 _TRIM_EVERY = 256     # drop old intervals in batches of at least this many
+_MERGE = 1e3          # events and breaks within this many root-finding resolutions merge
 _MAX_SPLITS = 12      # an accepted interval is cut in at most 2^this pieces
 _READ_AHEAD = 1e-2    # past the history by this fraction of its last interval: extrapolated
 
@@ -108,6 +109,7 @@ class DelayLines:
         self._kept_from = -np.inf      # intervals before this were trimmed
         self.scale = np.zeros(self.n)  # the largest |expr| so far: its own scale
         self._breaks = []              # sorted (time, generation)
+        self._merge = 0.0              # breaks closer than this are one (see _schedule)
         self._last_event = None
 
     # -- the delay times ----------------------------------------------------------------
@@ -175,6 +177,7 @@ class DelayLines:
         self.t0 = float(t0)
         self.held = None
         self._reset()
+        self._merge = 1e-9 * float(np.max(self.T))   # until the driver's resolution is known
         self._last_event = self.t0
         self.before[:] = 0.0
         v = np.nan_to_num(model.delay_arguments(t0, model.start))
@@ -232,10 +235,22 @@ class DelayLines:
 
     # -- discontinuities ----------------------------------------------------------------
     def _schedule(self, t, generation) -> None:
+        """Discontinuities at t + T of every delay; one within the merging distance of
+        one already scheduled is that one (the earlier, with the younger generation):
+        an event located to within the root-finding resolution, plus a delay, must not
+        become two events a hair apart."""
         if generation >= self.generations:
             return
         for T in self.T:
-            bisect.insort(self._breaks, (float(t + T), generation + 1))
+            b = float(t + T)
+            tol = max(self._merge, 64 * np.finfo(float).eps * abs(b))
+            k = bisect.bisect_left(self._breaks, (b - tol, -1))
+            if k < len(self._breaks) and self._breaks[k][0] <= b + tol:
+                near, g = self._breaks[k]
+                self._breaks[k] = (min(near, b), min(g, generation + 1))
+                self._breaks.sort()
+            else:
+                bisect.insort(self._breaks, (b, generation + 1))
 
     def event_at(self, t: float, resolution: float, fresh: bool) -> None:
         """An event at t: its discontinuities reappear one delay later.  An event that
@@ -244,7 +259,8 @@ class DelayLines:
         if self._last_event == t:
             return
         self._last_event = t
-        tol = max(resolution, 64 * np.finfo(float).eps * max(1.0, abs(t)))
+        self._merge = max(self._merge, _MERGE * resolution)
+        tol = max(self._merge, 64 * np.finfo(float).eps * max(1.0, abs(t)))
         generation, keep = 0, []
         for b, g in self._breaks:
             if abs(b - t) <= tol:
