@@ -23,8 +23,8 @@ before every call of the generated code at time t, from a history of expr:
   are dropped (the buffer is trimmed); the driver records the delayed values at every
   output point (contract item 16), so results need no old history.
 * **Before t0.**  Modelica's rule: expr(t) for t < t0 is expr(t0).  Since expr(t0)
-  may itself depend on the delayed value (a loop through the delay), initialization
-  is repeated with the delayed value set to the last expr(t0) until they agree.
+  may itself depend on the delayed value (a loop through the delay), the delayed
+  values at t0 are solved for, by Newton's method around the initialization.
 * **Discontinuities.**  Every event at t_e (and t0, where the constant history meets
   the solution) may put a jump into expr or one of its derivatives, which reappears
   at t_e + T: those times are time events (``next_time_event``), so the integrator
@@ -45,7 +45,7 @@ __all__ = ["DelayLines", "FilledCode"]
 
 _NODES = 6            # Chebyshev-Lobatto points per accepted interval (degree 5)
 _MAX_LEVEL = 6        # a discontinuity at t_e is followed to t_e + k T, k <= this
-_INIT_ROUNDS = 50     # fixed-point rounds of expr(t0) = delayed value at t0
+_INIT_ROUNDS = 20     # Newton steps on expr(t0) = delayed value at t0
 _INIT_RTOL = 1e-12    # ... until they agree to this, relative
 _TRIM_EVERY = 256     # drop old intervals in batches of at least this many
 _MERGE = 1e3          # events and breaks within this many root-finding resolutions merge
@@ -172,31 +172,49 @@ class DelayLines:
     def initialize(self, model, t0: float, solve):
         """Consistent (z, z') at t0 (``solve(model, t0)``, the one initialization path)
         with the delayed values equal to the delayed expressions at t0 (the history
-        before t0), by a fixed point; then the first discontinuities are scheduled."""
+        before t0): v = F(v), F(v) the expressions after initializing with the delayed
+        values v, solved by Newton's method with a difference Jacobian (one step when
+        the expressions do not depend on v, as when they are fixed states); then the
+        first discontinuities are scheduled."""
         self.T = self.times(model.p)
         self.t0 = float(t0)
         self.held = None
         self._reset()
         self._merge = 1e-9 * float(np.max(self.T))   # until the driver's resolution is known
         self._last_event = self.t0
-        self.before[:] = 0.0
-        v = np.nan_to_num(model.delay_arguments(t0, model.start))
-        for _ in range(_INIT_ROUNDS):
+
+        def F(v):
             self.before[:] = v
             z, zp = solve(model, t0)
-            new = model.delay_arguments(t0, z)
-            if np.all(np.abs(new - v) <= _INIT_RTOL * np.maximum(np.abs(new), np.abs(v))):
-                self.before[:] = new
+            return model.delay_arguments(t0, z), (z, zp)
+
+        self.before[:] = 0.0
+        v = np.nan_to_num(model.delay_arguments(t0, model.start))
+        fv, point = F(v)
+        for _ in range(_INIT_ROUNDS):
+            if np.all(np.abs(fv - v) <= _INIT_RTOL * np.maximum(np.abs(fv), np.abs(v))):
+                self.before[:] = fv
                 self._schedule(self.t0, 0)
-                return z, zp
-            v = new
-        worst = int(np.argmax(np.abs(new - v)))
+                return point
+            J = -np.eye(self.n)
+            for k in range(self.n):
+                h = 1e-7 * max(abs(v[k]), abs(fv[k]), 1e-3)
+                vk = v.copy()
+                vk[k] += h
+                J[:, k] += (F(vk)[0] - fv) / h
+            try:
+                v = v - np.linalg.solve(J, fv - v)
+            except np.linalg.LinAlgError:
+                break
+            fv, point = F(v)
+        worst = int(np.argmax(np.abs(fv - v)))
         raise InitializationFailed(
             f"the delayed values at t0 = {t0:.6g} (the history before the start, "
-            f"Modelica's expr(t0)) did not settle in {_INIT_ROUNDS} rounds: "
-            f"{self.texts[worst]} in {self.wheres[worst]} went from {v[worst]:.6g} to "
-            f"{new[worst]:.6g} (a loop through the delay with a gain of 1 or more at t0); "
-            "give start values near the initial solution", t=t0)
+            f"Modelica's expr(t0)) could not be made equal to the delayed expressions: "
+            f"{self.texts[worst]} in {self.wheres[worst]} is {v[worst]:.6g}, its "
+            f"expression {fv[worst]:.6g} (a loop through the delay with a gain of 1 at "
+            "t0 has no consistent start); give start values near the initial solution",
+            t=t0)
 
     def commit(self, model, t_lo: float, t_hi: float, interpolate, rtol: float) -> None:
         """Keep the delayed expressions over the accepted interval [t_lo, t_hi], as

@@ -272,6 +272,35 @@ def test_step_through_fixed_delay_jumps_at_t1_plus_T():
     assert np.max(np.abs(res["integ.x"] - 3.0 * np.maximum(t - 0.8, 0.0))) < 1e-9 * 3.0
 
 
+class LoopAtStart(ac.Component):
+    """v = k delay(v, T) + 1 + x, x' = 0.1 - x: the history v(t0) depends on itself."""
+
+    k = ac.Parameter(0.7)
+    T = ac.Parameter(0.4, unit="s")
+    x = ac.Variable(start=0.0, fixed=True)
+    v = ac.Variable(start=0.0)
+
+    def equations(self):
+        return [ac.Eq(self.v, self.k * ac.delay(self.v, self.T) + 1 + self.x),
+                ac.Eq(ac.der(self.x), 0.1 - self.x)]
+
+
+@pytest.mark.parametrize("k", [0.7, -3.0])
+def test_history_at_start_solves_a_loop_through_the_delay(k):
+    """v(t0) = k v(t0) + 1 (Modelica's rule, x(0) = 0): v(t0) = 1/(1 - k), even where the
+    plain iteration v <- k v + 1 diverges (k = -3); then, by the method of steps,
+    v = k v(t0) + 1 + x(t) on [0, T] and v = k (k v(t0) + 1 + x(t - T)) + 1 + x(t) on
+    [T, 2T], with x = 0.1 (1 - exp(-t))."""
+    T = 0.4
+    t = np.linspace(0.0, 2 * T, 81)
+    res = ac.simulate(LoopAtStart(k=k), t_end=2 * T, rtol=1e-10, t_eval=t)
+    v0 = 1.0 / (1.0 - k)
+    x = lambda s: 0.1 * (1.0 - np.exp(-s))          # noqa: E731
+    exact = np.where(t <= T, k * v0 + 1 + x(t), k * (k * v0 + 1 + x(t - T)) + 1 + x(t))
+    assert res["v"][0] == pytest.approx(v0, rel=1e-10)
+    assert np.max(np.abs(res["v"] - exact)) < 1e-8 * np.max(np.abs(exact))
+
+
 class DelayedRelay(ac.Component):
     """x' = -1 if x(t - T) > 0 else +1: a relation on a delayed value (state events)."""
 
