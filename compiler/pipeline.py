@@ -82,6 +82,12 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
         report.timings["cache_key"] = _time.perf_counter() - t1 + t_tree
     discretes = clock("discrete", freeze_integer_functions, flat)
     delays = clock("delays", extract_delays, flat)
+    if delays:
+        report.notes.append(
+            f"{len(delays)} delay(s), read from a history of their expressions; the "
+            "integrator's step is limited to the shortest delay time: "
+            + "; ".join(f"{d.text} in {d.where}" for d in delays[:10])
+            + (" ..." if len(delays) > 10 else ""))
     _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
     if flat.structural_zeros:
