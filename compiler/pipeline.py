@@ -232,10 +232,11 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
     inputs = psyms + [d.symbol for d in delays]
     dsyms = [d.symbol for d in discretes]
     rel_list = list(modes.values())
-    code = generate(rows, z_syms, inputs, len(modes), crossings + [d.argument for d in discretes],
-                    assigned, outputs=syms, discretes=dsyms,
-                    scales=[sp.Abs(r.lhs) + sp.Abs(r.rhs) for r in rel_list])
-    init_code = generate(init_rows, z_syms, inputs, len(modes), None, assigned, discretes=dsyms)
+    code = generate(rows, z_syms, inputs, len(modes),
+                    crossings + [d.argument for d in discretes], assigned, outputs=syms,
+                    discretes=dsyms, scales=[sp.Abs(r.lhs) + sp.Abs(r.rhs) for r in rel_list])
+    init_code = generate(init_rows, z_syms, inputs, len(modes), None, assigned,
+                         discretes=dsyms)
     names = [q.name for q in z_syms]
     relations = RelationInfo(
         ops=[type(r).__name__ for r in rel_list],

@@ -19,8 +19,8 @@ from sympy import S
 from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
-__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay", "sympify_value",
-           "When", "when", "reinit", "pre", "text"]
+__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
+           "sympify_value", "When", "when", "reinit", "pre", "text"]
 
 time = sp.Symbol("time", real=True)
 

@@ -76,7 +76,8 @@ What a problem provides (numbered, so integrators can cite it)
 15. ``commit(t_lo, t_hi, interpolate, rtol=)`` (optional): called by the driver once
    the solution on [t_lo, t_hi] is final -- after every accepted step, or up to a
    located event before the event is handled -- with ``interpolate(t) -> (y, y')``
-   valid on it (the integrator's dense output) and the run's relative tolerance.  A problem with delays keeps its history so.
+   valid on it (the integrator's dense output) and the run's relative tolerance.  A
+   problem with delays keeps its history so.
 16. ``point_values(t) -> ndarray | None`` (optional): values the problem wants recorded
    with every output point (``SolverOutput.point_values``, one row per point): the
    delayed values, which results need after the history is gone.
