@@ -181,7 +181,7 @@ def test_delayed_decay_rate_is_the_lambert_w_root(a, T, window):
         c1, c2 = np.linalg.lstsq(M, x[2:], rcond=None)[0]
         s = np.log(np.roots([1.0, -c1, -c2]).astype(complex)) / dt
         s_fit = s[np.argmax(s.imag)]
-    assert abs(s_fit - s0) < 1e-5 * abs(s0)
+    assert abs(s_fit - s0) < 1e-7 * abs(s0)      # measured: 4e-10 and 1.4e-9
 
 
 class FixedDelayLoop(ac.Component):
@@ -229,7 +229,8 @@ def test_sine_through_fixed_delay_is_the_shifted_sine(backend):
     res = ac.simulate(DelayedSine(), t_end=2.0, rtol=1e-9, t_eval=t, backend=backend)
     assert res.compiled.backend == backend
     y = res["delay.y.signal"]
-    assert np.max(np.abs(y - _shifted_sine(t))) < 1e-7 * 2.0
+    # the history's pieces are refined to 0.1 rtol of the signal's scale
+    assert np.max(np.abs(y - _shifted_sine(t))) < 1e-9 * 2.0
     # the integral: u(t0) T0-long, then the shifted sine's integral
     w, T, A, ph = 2 * np.pi * 1.5, 0.25, 2.0, 0.7
     exact = np.where(t <= T, A * np.sin(ph) * t,
