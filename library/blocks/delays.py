@@ -125,8 +125,8 @@ class PadeDelay(SISO):
 
 
 class FixedDelay(SISO):
-    """Exact delay of the input by a fixed time (MSL Modelica.Blocks.Nonlinear.
-    FixedDelay):
+    """Exact delay of the input by a fixed time, after the MSL's FixedDelay
+    (Modelica.Blocks.Nonlinear):
 
         y = delay(u, delayTime),   i.e.  y(t) = u(t - delayTime),  y(t) = u(t0) for
         t < t0 + delayTime   (Modelica Language Specification 3.7.2.2)

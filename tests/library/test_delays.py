@@ -239,6 +239,18 @@ def test_sine_through_fixed_delay_is_the_shifted_sine(backend):
     assert 0.25 in res.event_times        # the history's kink at t0 + T is an event
 
 
+def test_discontinuities_are_followed_further_only_in_a_loop():
+    """The compiler tells a loop through a delay (x' = -a x(t - T)) from a delay whose
+    output never reaches its input (a sine delayed and integrated): in the loop the
+    kink at t0 comes back at T, 2T, ...; without one only at T."""
+    loop = ac.simulate(DelayedDecay(T=0.5), t_end=3.2)
+    assert loop.compiled.model_code.delays.feedback
+    assert np.allclose(loop.event_times, 0.5 * np.arange(1, 7), rtol=1e-12)
+    chain = ac.simulate(DelayedSine(), t_end=1.0)
+    assert not chain.compiled.model_code.delays.feedback
+    assert np.allclose(chain.event_times, [0.25], rtol=1e-12)
+
+
 def test_sine_through_fixed_delay_without_states():
     class Shift(ac.Component):
         sine = bl.Sine(amplitude=2.0, f=1.5, phase=0.7)
