@@ -233,14 +233,9 @@ def _metadata(model):
 
 def _no_delays(compiled) -> None:
     """An FMU's engine keeps no history of the solution, so delay() cannot run in it."""
-    d = compiled.model_code.delays
-    if d is None:
-        return
-    from ..components.component import ModelError
-    raise ModelError(f"this model uses {len(d.texts)} delay(s), which an FMU cannot "
-                     f"export (its engine keeps no history of the solution): "
-                     + "; ".join(f"{t} in {w}" for t, w in zip(d.texts, d.wheres))
-                     + ".  Replace FixedDelay by PadeDelay to export")
+    from ..runtime.delays import refuse_delays
+    refuse_delays(compiled, "an FMU cannot export delay() (its engine keeps no history "
+                            "of the solution)", "Replace FixedDelay by PadeDelay to export")
 
 
 def _static_states(compiled) -> None:

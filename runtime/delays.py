@@ -41,7 +41,7 @@ import numpy as np
 
 from ..errors import InitializationFailed, SimulationError
 
-__all__ = ["DelayLines", "FilledCode"]
+__all__ = ["DelayLines", "FilledCode", "refuse_delays"]
 
 _NODES = 6            # Chebyshev-Lobatto points per accepted interval (degree 5)
 _MAX_LEVEL = 6        # a discontinuity at t_e is followed to t_e + k T, k <= this
@@ -56,6 +56,17 @@ _X = np.cos(np.pi * np.arange(_NODES) / (_NODES - 1))          # 1 .. -1
 _W = np.array([(-1.0) ** i for i in range(_NODES)])
 _W[0] *= 0.5
 _W[-1] *= 0.5
+
+
+def refuse_delays(compiled, what: str, advice: str) -> None:
+    """ModelError naming every delay of ``compiled`` (a CompiledModel), for a method
+    that cannot treat one (``what`` says which and why; ``advice`` what to do)."""
+    d = getattr(getattr(compiled, "model_code", None), "delays", None)
+    if d is None:
+        return
+    from ..components.component import ModelError
+    raise ModelError(f"{what}: " + "; ".join(f"{x} in {w}" for x, w in zip(d.texts, d.wheres))
+                     + f".  {advice}")
 
 
 class FilledCode:

@@ -390,11 +390,18 @@ def test_differentiated_delay_is_refused():
         ac.compile(ImposedPosition(), cache=False)
 
 
-def test_fixed_delay_has_no_linearization_steady_state_or_fmu(tmp_path):
+def test_linearization_steady_state_sensitivities_energy_and_fmu_refuse_delays(tmp_path):
     with pytest.raises(ac.ModelError, match=r"no finite-dimensional linearization.*delay\("):
         ac.linearize(DelayedDecay(), [], ["x"])
     with pytest.raises(ac.ModelError, match=r"steady_state does not solve.*delay\(x, T\)"):
         ac.steady_state(DelayedDecay())
+    from acausal.analysis.sensitivity import simulate_sensitivities
+    compiled = ac.compile(DelayedDecay())
+    with pytest.raises(ac.ModelError, match=r"sensitivities do not follow delay\(\).*delay\(x"):
+        simulate_sensitivities(compiled, [compiled.param_names.index("a")], [0.0, 1.0])
+    model = DelayedStep()
+    with pytest.raises(ac.ModelError, match=r"energy audit does not evaluate delay\(\)"):
+        ac.energy_balance(ac.simulate(model, t_end=1.0), model)
     pytest.importorskip("fmpy")
     from acausal.compiler.cbackend import compiler_available
     if compiler_available() is None:
