@@ -184,6 +184,20 @@ def test_delayed_decay_rate_is_the_lambert_w_root(a, T, window):
     assert abs(s_fit - s0) < 1e-7 * abs(s0)      # measured: 4e-10 and 1.4e-9
 
 
+def test_nested_delays_add_up():
+    """delay(delay(x, 0.3), 0.2) is x(t - 0.5): the outer delay's history is sampled
+    from the inner delayed value; the method of steps with T = 0.5 is the reference."""
+    class Nested(ac.Component):
+        x = ac.Variable(start=1.0, fixed=True)
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.x), -ac.delay(ac.delay(self.x, 0.3), 0.2))]
+
+    res = ac.simulate(Nested(), t_end=2.5, rtol=1e-9)
+    exact = _exact_pieces(res.t, method_of_steps(1.0, 0.5, 5), 0.5)
+    assert np.max(np.abs(res["x"] - exact)) < 1e-7 * np.max(np.abs(exact))
+
+
 class FixedDelayLoop(ac.Component):
     """The same loop from blocks: an Integrator (gain -a) fed through a FixedDelay."""
 
