@@ -104,7 +104,8 @@ class Result:
     """
 
     def __init__(self, compiled, t, y, stats=None, events=(), success=True, message="",
-                 discrete_states=(), discrete_index=(), *, state_switches=()):
+                 discrete_states=(), discrete_index=(), *, state_switches=(),
+                 delay_values=()):
         self.compiled = compiled
         self.t = np.asarray(t, dtype=float)
         self._z = np.asarray(y, dtype=float).reshape(len(self.t), -1)
@@ -121,6 +122,8 @@ class Result:
         # the discrete state (relation and floor values) each point was integrated in
         self._discrete = [np.asarray(d, dtype=float) for d in discrete_states]
         self._discrete_index = list(discrete_index)
+        # the delayed values at every point (delay(): recorded, the history is gone)
+        self._delayed = np.asarray(delay_values, dtype=float) if len(delay_values) else None
         meta = getattr(compiled, "meta", None) or {}
         self.units = dict(meta.get("units", {}))
         self.descriptions = dict(meta.get("descriptions", {}))
@@ -183,7 +186,7 @@ class Result:
             return np.full(len(self.t), k(self.parameters) if callable(k) else k)
         if self._y is None:
             self._y = _expand(self.compiled, self.t, self._z, self.parameters,
-                              self._discrete, self._discrete_index)
+                              self._discrete, self._discrete_index, self._delayed)
         return sign * self._y[:, k]
 
     @staticmethod
@@ -292,18 +295,26 @@ class Result:
                 f"{len(self.events)} events, {status}>")
 
 
-def _expand(compiled, t, z, p, discrete, index) -> np.ndarray:
+def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
     """Every variable at every output time, from the solver vector z, each point in the
     discrete state (relation values) it was integrated in: values computed from
     if-expressions are those of the branch the integrator used there, so an output never
     contradicts the trajectory (at an event, the point before it is in the old modes and
-    the point after it in the new)."""
+    the point after it in the new).  ``delayed``: the delayed values recorded at each
+    point, for a model with delay()."""
     saved, saved_p = compiled.m.copy(), compiled.p.copy()
     compiled.p[:] = p
     known = len(index) == len(t) and discrete
+    lines = getattr(compiled, "delays", None)
+    if lines is not None and (delayed is None or len(delayed) != len(t)):
+        raise ValueError("the values of this result's delay() expressions were not "
+                         "recorded (a result of a model with delays needs the values the "
+                         "run recorded at its points)")
     try:
         rows = []
         for k, (tk, zk) in enumerate(zip(t, z)):
+            if lines is not None:
+                lines.held = delayed[k]
             if known:
                 compiled.m[:] = discrete[index[k]]
             else:                      # a result without its modes: take them from the point
@@ -311,5 +322,7 @@ def _expand(compiled, t, z, p, discrete, index) -> np.ndarray:
             rows.append(compiled.expand(tk, zk))
         return np.array(rows).reshape(len(t), -1)
     finally:
+        if lines is not None:
+            lines.held = None
         compiled.m[:] = saved
         compiled.p[:] = saved_p

@@ -178,7 +178,9 @@ def save_result(res: Result, path) -> None:
             [res.descriptions.get(n, "") for n in names], dtype=object))
         fh.create_dataset("parameter_names", dtype=text,
                           data=np.array(res.parameter_names, dtype=object))
-        fh.create_dataset("parameter_values", data=np.asarray(res.parameters, float))
+        # the named parameters only (a model with delays keeps its delayed values after them)
+        fh.create_dataset("parameter_values",
+                          data=np.asarray(res.parameters, float)[:len(res.parameter_names)])
         fh.attrs["states"] = json.dumps(res.states)
         fh.attrs["events"] = json.dumps([e.as_dict() for e in res.events])
         fh.attrs["state_switches"] = json.dumps([e.as_dict() for e in res.state_switches])

@@ -117,8 +117,12 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         # nothing to integrate: every variable is an explicit function of time, and each
         # point is evaluated with the relations as they hold there
         t = t_eval if t_eval is not None else np.linspace(t_start, t_end, 501)
+        delayed = ()
+        if compiled.delays is not None:
+            from .runtime.delays import explicit_values
+            delayed = explicit_values(compiled, compiled.delays, t)
         return Result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], True,
-                      "no states: evaluated explicitly")
+                      "no states: evaluated explicitly", delay_values=delayed)
     from .solvers import integrate
     marks = _log_marks(compiled)
     bar = _Progress.make(progress, t_start, t_end)
@@ -164,7 +168,8 @@ def _singular_start(compiled, t_start) -> str | None:
 def _result(compiled, out, success, message, marks=(0, 0, "")) -> Result:
     events, switches = _event_records(compiled, out, marks)
     return Result(compiled, out.t, out.y, out.stats, events, success, message,
-                  out.discrete_states, out.discrete_index, state_switches=switches)
+                  out.discrete_states, out.discrete_index, state_switches=switches,
+                  delay_values=getattr(out, "point_values", ()))
 
 
 def _log_marks(compiled) -> tuple:

@@ -38,6 +38,9 @@ class Trajectory:
         self.result, self.model = result, model
         self.c = result.compiled
         self.t = np.asarray(result.t, dtype=float)
+        from ..runtime.delays import refuse_delays
+        refuse_delays(self.c, "the energy audit does not evaluate delay() (the rates of "
+                              "delayed values need the run's history)", "Use PadeDelay")
         self.X, self.Xdot = _values_and_rates(self.c, result)
         self._params = dict(zip(self.c.param_names, result.parameters.tolist()))
 

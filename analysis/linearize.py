@@ -42,6 +42,7 @@ import warnings
 import numpy as np
 
 from ..components.component import Component
+from ..runtime.delays import refuse_delays
 from .modes import describe_items, mode_values, relations_at_switch
 from .operating import OperatingPoint, OperatingPointError, operating_point
 from .plant import as_plant, compile_plant, parameters_set, top_level_inputs
@@ -122,6 +123,8 @@ def linearize(model, inputs=(), outputs=(), at=None, *, t: float = 0.0) -> State
 
 def _linearize(plant, inputs, outputs, at, values, t):
     c = plant.compiled
+    refuse_delays(c, "a model with delay() has no finite-dimensional linearization "
+                     "(exp(-sT) is not rational)", "Use PadeDelay for a linear model")
     params = {k: v for k, v in values.items() if plant.parameter_index(k) is not None}
     with parameters_set(plant, params):
         op = operating_point(plant, at, t)

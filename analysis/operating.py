@@ -286,6 +286,10 @@ def steady_state(model, *, hold=(), t: float = 0.0, inputs=None, parameters=None
     """
     plant = as_plant(model, inputs)
     c = plant.compiled
+    from ..runtime.delays import refuse_delays
+    refuse_delays(c, "steady_state does not solve models with delay() (at a steady state "
+                     "delay(expr, T) = expr, which this solver does not substitute)",
+                  "Simulate to the steady state, or use PadeDelay")
     if parameters:
         c.set_parameters({plant.internal(k): v for k, v in parameters.items()})
     for name, v in (inputs or {}).items():

@@ -33,6 +33,10 @@ class ForwardSensitivity(DAEProblem):
     def __init__(self, compiled, params, z0):
         if compiled.dynamic is not None:
             raise NotImplementedError("forward sensitivities need a static choice of states")
+        from ..runtime.delays import refuse_delays
+        refuse_delays(compiled, "forward sensitivities do not follow delay() (the "
+                                "sensitivities would need their own history)",
+                      "Use PadeDelay, or differences of simulations")
         c, n, k = compiled, compiled.n, len(params)
         names = list(c.names) + [f"d({z})/dln({c.param_names[j]})" for j in params
                                  for z in c.names]

@@ -178,7 +178,8 @@ class ParameterFunction:
 
 def _codes(mc) -> dict:
     return {"code": mc.code, "initial": mc.initial.code,
-            **({"whens": mc.whens.code} if mc.whens is not None else {})}
+            **({"whens": mc.whens.code} if mc.whens is not None else {}),
+            **({"delays": mc.delays.code} if mc.delays is not None else {})}
 
 
 def _load_program(path: str, which: str):
@@ -198,13 +199,16 @@ def portable(mc):
                   meta=dict(mc.meta))
     if mc.whens is not None:
         out.whens = replace(mc.whens, code=LoadedCode.of(mc.whens.code))
+    if mc.delays is not None:
+        out.delays = replace(mc.delays, code=LoadedCode.of(mc.delays.code))
     return out
 
 
 def load_notes(mc) -> list:
     """What went differently when the codes of ``mc`` were loaded: a C library that could
     be neither loaded nor rebuilt makes the numpy backend run the whole model."""
-    codes = [mc.code, mc.initial.code] + ([mc.whens.code] if mc.whens is not None else [])
+    codes = [mc.code, mc.initial.code] + ([mc.whens.code] if mc.whens is not None else []) \
+        + ([mc.delays.code] if mc.delays is not None else [])
     notes = [c.load_note for c in codes if getattr(c, "load_note", None)]
     if notes:
         for c in codes:           # one backend for all: the Python functions

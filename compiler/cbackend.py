@@ -344,6 +344,8 @@ def bind(mc, backend: str, report) -> None:
     codes = {"f_": mc.code, "i_": mc.initial.code}
     if mc.whens is not None:
         codes["w_"] = mc.whens.code
+    if mc.delays is not None:
+        codes["d_"] = mc.delays.code
     try:
         source, sizes = c_source({k: c.program for k, c in codes.items()})
         lib = build(source)

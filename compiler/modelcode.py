@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["ModelCode", "RelationInfo", "WhenCode", "DynamicSets", "InitialCode"]
+__all__ = ["ModelCode", "RelationInfo", "WhenCode", "DynamicSets", "InitialCode", "DelayCode"]
 
 
 @dataclass
@@ -100,6 +100,21 @@ class InitialCode:
 
 
 @dataclass
+class DelayCode:
+    """The delays of a model (:mod:`acausal.compiler.delays`): row j of ``code``'s
+    residual is the delayed expression of delay j, whose value the generated functions
+    read from ``p[n_params + j]``; ``times[j]`` is its delay time, a float or a function
+    of the tunable parameters ``f(p)``; ``texts``/``wheres`` name it and its component;
+    ``feedback``: whether a delayed value may reach a delayed expression (a loop)."""
+
+    code: object
+    texts: list
+    times: list
+    wheres: list
+    feedback: bool = True
+
+
+@dataclass
 class ModelCode:
     code: object                      # GeneratedCode: residual, jacobian, roots, scales, expand
     names: list                       # name of each z entry
@@ -118,3 +133,4 @@ class ModelCode:
     dynamic: DynamicSets | None = None
     report: object = None
     meta: dict = field(default_factory=dict)
+    delays: DelayCode | None = None

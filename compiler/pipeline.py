@@ -1,7 +1,8 @@
 """The compiler pipeline: the passes by name, in order (as OpenModelica lists its modules).
 
     flatten -> discrete (floor/mod frozen) -> sampled (discrete variables held,
-            when-assignments checked) -> alias -> balance -> conversion (Pryce's
+            when-assignments checked) -> delays (delay() read from a history) -> alias ->
+            balance -> conversion (Pryce's
             success test, exact; LC conversion of singular constant blocks) ->
             index_reduction (Pantelides) -> state_selection (dummy derivatives, exact
             rank on constant blocks) -> assemble (BLT, tearing checked numerically)
@@ -21,7 +22,7 @@ import numpy as np
 
 from ..components.component import Component
 from .graph import UNASSIGNED
-from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
+from .modelcode import DelayCode, DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
 from .report import IndexReport
 
 # The passes and sympy are imported where they run: a model found in the compile cache
@@ -29,7 +30,7 @@ from .report import IndexReport
 
 __all__ = ["PASSES", "compile_model"]
 
-PASSES = ("flatten", "discrete", "sampled", "alias", "balance", "conversion",
+PASSES = ("flatten", "discrete", "sampled", "delays", "alias", "balance", "conversion",
           "index_reduction", "state_selection", "assemble", "codegen")
 
 
@@ -62,6 +63,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
     from .alias import eliminate_aliases
     from .balance import check_balance
     from .conversion import convert_model
+    from .delays import extract_delays
     from .discrete import freeze_integer_functions
     from .sampled import declare_discrete_variables, explain_overdetermined, pre_after_aliases
     from .flatten import flatten
@@ -83,6 +85,13 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
         report.timings["cache_key"] = _time.perf_counter() - t1 + t_tree
     discretes = clock("discrete", freeze_integer_functions, flat)
     helds = clock("sampled", declare_discrete_variables, flat)
+    delays = clock("delays", extract_delays, flat)
+    if delays:
+        report.notes.append(
+            f"{len(delays)} delay(s), read from a history of their expressions; the "
+            "integrator's step is limited to the shortest delay time: "
+            + "; ".join(f"{d.text} in {d.where}" for d in delays[:10])
+            + (" ..." if len(delays) > 10 else ""))
     _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
     if helds:
@@ -95,11 +104,12 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
                             + ", ".join(flat.structural_zeros[:20])
                             + (" ..." if len(flat.structural_zeros) > 20 else ""))
     reduced, aliases = clock("alias", eliminate_aliases, flat)
-    _resolve_aliases_in(discretes, flat, aliases)
+    _resolve_aliases_in(list(discretes) + list(delays), flat, aliases)
     pre_after_aliases(reduced, aliases, helds)
     report.aliases = aliases
     report.count("alias", equations=len(reduced.equations), variables=len(reduced.variables))
-    system, structure = clock("structure", _symbolic_system, reduced, discretes, helds)
+    system, structure = clock("structure", _symbolic_system, reduced, discretes, helds,
+                              delays)
     try:
         clock("balance", check_balance, system, structure, reduced, aliases,
               (len(flat.equations), len(flat.variables)))
@@ -114,7 +124,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
     report.count("index_reduction", equations=len(system.equations),
                  variables=len(system.symbols))
     out = clock("codegen", _assemble, system, reduction, reduced, flat, aliases, report,
-                discretes, helds)
+                discretes, helds, delays)
     clock("report", report.fill, system, reduction, out)
     from .cbackend import bind
     clock("c_backend", bind, out, backend, report)
@@ -138,9 +148,9 @@ def _from_cache(found, seconds, how) -> ModelCode:
 
 
 def _resolve_aliases_in(discretes, flat, aliases) -> None:
-    """The frozen floor values were found before alias elimination: their arguments get
-    the same substitution as the equations (``mod(u, 1)`` of a ``u`` that is an alias of
-    the state ``x`` reads ``x``)."""
+    """The frozen floor values and the delays were found before alias elimination: their
+    arguments get the same substitution as the equations (``mod(u, 1)`` of a ``u`` that
+    is an alias of the state ``x`` reads ``x``)."""
     if not discretes:
         return
     import sympy as sp
@@ -158,11 +168,12 @@ def _resolve_aliases_in(discretes, flat, aliases) -> None:
             d.argument = d.argument.xreplace(subs)
 
 
-def _symbolic_system(reduced, discretes, helds=()):
+def _symbolic_system(reduced, discretes, helds=(), delays=()):
     from .symbolic import SymbolicSystem
     system = SymbolicSystem.from_flat(reduced)
     system.parameters |= {d.symbol for d in discretes}   # constant between events
     system.parameters |= {s for h in helds for s in (h.symbol, h.pre)}
+    system.delays = {d.symbol: d for d in delays}        # inputs that vary: never constant
     return system, system.structure()
 
 
@@ -194,7 +205,7 @@ def _reinit_targets_are_states(flat) -> None:
 
 
 def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
-              helds=()) -> ModelCode:
+              helds=(), delays=()) -> ModelCode:
     import sympy as sp
     from types import SimpleNamespace
     from .causalize import causalize, full_form
@@ -225,23 +236,28 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
     else:
         state_z, pairs, dummies = [], reduction.pairs, reduction.dummies
     init_rows, init_text, n_mandatory = _initial_rows(system, reduced, reduction, caus)
-    when_rows_, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
-    sizes = [len(assigned), len(rows), len(init_rows), len(when_rows_)]
+    when_rows, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
+    delay_rows = [d.argument for d in delays]
+    sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
     exprs, crossings, modes, origin = extract_relations(
-        [e for _, e in assigned] + rows + init_rows + when_rows_)
+        [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows)
     parts = np.split(np.array(exprs, dtype=object), np.cumsum(sizes)[:-1])
     assigned = [(a, e) for (a, _), e in zip(assigned, parts[0])]
     rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
+    delay_rows = list(parts[4])
     zeros = set(reduced.structural_zeros)
     params = [p for p in reduced.parameters if _is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
     # m: relation values, floor values, then held(y) and pre(y) of the discrete variables
     dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + [h.pre for h in helds]
+    # the delayed values are read from p after the tunable parameters (runtime/delays.py)
+    inputs = psyms + [d.symbol for d in delays]
     rel_list = list(modes.values())
-    code = generate(rows, z_syms, psyms, len(modes), crossings + [d.argument for d in discretes],
-                    assigned, outputs=syms, discretes=dsyms,
-                    scales=[sp.Abs(r.lhs) + sp.Abs(r.rhs) for r in rel_list])
-    init_code = generate(init_rows, z_syms, psyms, len(modes), None, assigned, discretes=dsyms)
+    code = generate(rows, z_syms, inputs, len(modes),
+                    crossings + [d.argument for d in discretes], assigned, outputs=syms,
+                    discretes=dsyms, scales=[sp.Abs(r.lhs) + sp.Abs(r.rhs) for r in rel_list])
+    init_code = generate(init_rows, z_syms, inputs, len(modes), None, assigned,
+                         discretes=dsyms)
     names = [q.name for q in z_syms]
     relations = RelationInfo(
         ops=[type(r).__name__ for r in rel_list],
@@ -269,8 +285,14 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms)})
+    if delays:
+        from .delays import delay_code, feeds_back
+        out.delays = delay_code(delays, delay_rows, generate(
+            delay_rows, z_syms, inputs, len(modes), None, assigned, discretes=dsyms),
+            reduced.parameters, psyms, set(z_syms) | {a for a, _ in assigned} | set(inputs)
+            | set(dsyms) | set(modes), feeds_back(system, delays))
     if reduced.whens:
-        out.whens = WhenCode(generate(when_rows, z_syms, psyms, len(modes), None, assigned,
+        out.whens = WhenCode(generate(when_rows, z_syms, inputs, len(modes), None, assigned,
                                       discretes=dsyms),
                              len(reduced.whens), texts=[
                                  f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} "

@@ -88,6 +88,7 @@ class SymbolicSystem:
     var_info: dict = field(default_factory=dict)  # base symbol -> FlatVariable
     derivatives: dict = field(default_factory=dict)  # symbol -> der symbol
     index: dict = field(default_factory=dict)     # symbol -> index
+    delays: dict = field(default_factory=dict)    # delayed-value symbol -> DelayValue
 
     @classmethod
     def from_flat(cls, flat) -> "SymbolicSystem":
@@ -182,7 +183,20 @@ class SymbolicSystem:
 
     def time_derivative(self, r: sp.Expr) -> sp.Expr:
         """d/dt r = sum_v dr/dv der(v) + dr/dt over the variables v of r, creating the
-        der(v) symbols it needs (appended to ``symbols`` in the order of v)."""
+        der(v) symbols it needs (appended to ``symbols`` in the order of v).  A delayed
+        value in r is refused: its derivative would be the delay of a derivative, which
+        has no history."""
+        if self.delays:
+            found = [self.delays[q] for q in symbols_of(r) if q in self.delays]
+            if found:
+                from ..components.component import ModelError
+                d = found[0]
+                raise ModelError(
+                    f"{d.text} in {d.where} appears in an equation that index reduction "
+                    "must differentiate (a constraint on a state, e.g. a delayed position "
+                    "imposed on a mass); a delay cannot be differentiated: delay a "
+                    "signal that enters the model through an integrator or a force, or "
+                    "use PadeDelay")
         dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
         for sym in sorted((q for q in symbols_of(r) if q in self.index),
                           key=lambda q: self.index[q]):

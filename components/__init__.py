@@ -13,11 +13,11 @@ __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidV
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
            "InvalidIndex",
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
-           "der", "if_else", "no_event", "when", "When", "reinit", "pre", "sign", "time",
+           "der", "if_else", "no_event", "delay", "when", "When", "reinit", "pre", "sign", "time",
            "sample", "assign"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".arrays": ("InvalidIndex",),
-    ".symbols": ("Eq", "Equation", "When", "der", "if_else", "no_event", "pre", "reinit",
-                 "sign", "time", "when", "sample", "assign"),
+    ".symbols": ("Eq", "Equation", "When", "delay", "der", "if_else", "no_event", "pre",
+                 "reinit", "sign", "time", "when", "sample", "assign"),
 })

@@ -20,8 +20,9 @@ from sympy import S
 from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
-__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "sympify_value",
-           "When", "when", "reinit", "pre", "text", "sample", "Sample", "assign", "Assign"]
+__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
+           "sympify_value", "When", "when", "reinit", "pre", "text", "sample", "Sample",
+           "assign", "Assign"]
 
 time = sp.Symbol("time", real=True)
 
@@ -335,6 +336,35 @@ class no_event(sp.Function):
 
     def fdiff(self, argindex=1):
         return sp.Integer(1)   # the identity: d no_event(u) = du
+
+
+class delay(sp.Function):
+    """delay(expr, T): the value expr had T seconds ago, expr(time - T) (Modelica's
+    ``delay``, Modelica Language Specification 3.7.2.2); before t0 + T it is expr at
+    the start time t0.  T must be a positive expression of parameters (fixed during a
+    run).  The runtime keeps a history of expr (:mod:`acausal.runtime.delays`) and the
+    integrator's step is limited to T, so the delayed value is always read from the
+    past; a discontinuity of expr at t1 reappears at t1 + T as a time event.
+    """
+
+    nargs = 2
+
+    @classmethod
+    def eval(cls, expr, T):
+        logical = (sp.core.relational.Relational, sp.logic.boolalg.BooleanFunction,
+                   sp.logic.boolalg.BooleanAtom)
+        if not isinstance(expr, sp.Expr) or isinstance(expr, logical):
+            raise _invalid(f"delay({_text(expr)}, {_text(T)}): the delayed expression must "
+                           "be a real value")
+        if not isinstance(T, sp.Expr) or (T.is_number and not (T.is_extended_real
+                                                               and T > 0 and T.is_finite)):
+            raise _invalid(f"delay({_text(expr)}, {_text(T)}): the delay time must be a "
+                           "positive, finite expression of parameters")
+        return None
+
+    def fdiff(self, argindex=1):
+        raise _invalid(f"{_text(self)} cannot be differentiated (d/dt of a delay is the "
+                       "delay of the derivative; write the delay of a variable instead)")
 
 
 class pre(sp.Function):

@@ -69,7 +69,7 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
 
     Raises ValueError for an unknown fmi_type, :class:`acausal.BackendError` without a C
     compiler or the FMI headers (fmpy), :class:`acausal.ModelError` for a model whose
-    states are selected dynamically.
+    states are selected dynamically or that uses ``delay()``.
     """
     kind = _fmi_type(fmi_type)
     if rtol is not None and not (0 < float(rtol) < 1):
@@ -83,6 +83,7 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
     plant, meta, ports = _compiled(model)
     mc = plant.compiled.model_code
     _static_states(plant.compiled)
+    _no_delays(plant.compiled)
     _inputs_not_differentiated(plant, ports)
     name = model_name or (getattr(mc.report, "model_name", None) if ports is None
                           else type(model).__name__) or "Model"
@@ -229,6 +230,13 @@ def _metadata(model):
                  for v in flat.variables}
     params = {p.name: (p.unit or "", p.description or "") for p in flat.parameters}
     return variables, params
+
+
+def _no_delays(compiled) -> None:
+    """An FMU's engine keeps no history of the solution, so delay() cannot run in it."""
+    from ..runtime.delays import refuse_delays
+    refuse_delays(compiled, "an FMU cannot export delay() (its engine keeps no history "
+                            "of the solution)", "Replace FixedDelay by PadeDelay to export")
 
 
 def _static_states(compiled) -> None:

@@ -39,6 +39,11 @@ What the runtime provides (numbered, so the code can cite it)
 8. Failures in the generated code (a ``sqrt`` of a negative, a division by zero) make
    the point unusable (NaN, which Newton and the integrator treat as a failed iterate)
    and are kept in words in ``evaluation_errors``, naming the equation.
+9. Delays (:mod:`.delays`): ``delay(expr, T)`` is read from a history of expr kept on
+   the accepted solution (``commit``), written into ``p`` before every call of the
+   generated code; the step is limited to the shortest T (``max_step``), jumps come
+   back as time events at t_e + T, and the delayed values are recorded at every
+   output point (``point_values``).
 """
 from .. import _lazy_exports
 

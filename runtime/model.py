@@ -30,6 +30,7 @@ import scipy.sparse as sps
 
 from ..components.component import InvalidValue, NotInModel
 from ..solvers.base import DAEProblem
+from .delays import DelayLines, FilledCode
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from .dynamic import DynamicStateSelection
 from .events import WhenClauses, iterate_event
@@ -55,9 +56,23 @@ class CompiledModel(DAEProblem):
     def __init__(self, mc):
         super().__init__(len(mc.names), mc.names)
         self.model_code = mc
-        self.code = code = mc.code
         self.param_names = list(mc.param_names)
-        self.p = np.asarray(mc.param_values, dtype=float)
+        # delay(): the delayed values follow the tunable parameters in p, written from
+        # the history before every call of the generated code (runtime/delays.py)
+        self.delays = None
+        self.code = code = mc.code
+        initial, whens = mc.initial, mc.whens
+        if getattr(mc, "delays", None) is not None:
+            from dataclasses import replace
+            self.delays = DelayLines(mc.delays, len(self.param_names))
+            fill = self.delays.fill
+            self.code = code = FilledCode(mc.code, fill)
+            initial = replace(initial, code=FilledCode(initial.code, fill))
+            if whens is not None:
+                whens = replace(whens, code=FilledCode(whens.code, fill))
+            self._delay_code = FilledCode(mc.delays.code, fill)
+        self.p = np.concatenate([np.asarray(mc.param_values, dtype=float),
+                                 np.zeros(self.delays.n if self.delays else 0)])
         self.n_res = int(mc.n_res)
         self.state_z = np.asarray(mc.state_z, dtype=np.int64)
         self.pair_s = np.asarray([a for a, _ in mc.pairs], dtype=np.int64)
@@ -73,8 +88,8 @@ class CompiledModel(DAEProblem):
         self.backend = mc.meta.get("backend", "numpy")   # which code runs: "c" or "numpy"
         self.discrete = DiscreteState(mc.relations, code.roots, code.scales)
         self.n_roots = self.discrete.n_roots
-        self.whens = WhenClauses(mc.whens) if mc.whens is not None else None
-        self.initial = InitialConditions(mc.initial)
+        self.whens = WhenClauses(whens) if whens is not None else None
+        self.initial = InitialConditions(initial)
         self.dynamic = None
         if mc.dynamic is not None:
             self.dynamic = DynamicStateSelection(mc.dynamic, self.nominal)
@@ -84,6 +99,7 @@ class CompiledModel(DAEProblem):
         self.evaluation_errors = []        # what failed in the generated code, in words
         self.resolution = 0.0             # how precisely the driver locates crossings
         self._z_ref = self.start.copy()    # a point for time-event predictions
+        self._next_own = None              # the model's own next time event
         self._update_links()
 
     # -- pickling -----------------------------------------------------------------------
@@ -270,26 +286,63 @@ class CompiledModel(DAEProblem):
     def handle_event(self, t, z, zp, crossed):
         """Settle the discrete state at the event and fire when-clauses
         (:func:`acausal.runtime.events.iterate_event`)."""
+        if self.delays is not None:
+            tol = max(self.resolution, 64 * np.finfo(float).eps * max(1.0, abs(t)))
+            own = self._next_own is not None and abs(self._next_own - t) <= tol
+            self.delays.event_at(t, self.resolution, fresh=bool(np.any(crossed)) or own)
         return iterate_event(self, t, z, zp, crossed)
 
     def next_time_event(self, t):
-        """The next time a relation or floor value of time alone switches (exact)."""
+        """The next time a relation or floor value of time alone switches (exact), or a
+        discontinuity comes back through a delay."""
         t_min = t + 64 * np.finfo(float).eps * max(1.0, abs(t))
         te = self.discrete.next_time_event(t, self._z_ref, self.p, t_min)
         tick = self.whens.next_tick(t_min) if self.whens is not None else None
-        return te if tick is None else (tick if te is None else min(te, tick))
+        if tick is not None and (te is None or tick < te):
+            te = tick          # a clock's tick changes held values: the model's own event
+        self._next_own = te
+        if self.delays is not None:
+            tb = self.delays.next_break(t_min)
+            if tb is not None and (te is None or tb < te):
+                te = tb
+        return te
+
+    # -- delays (solver contract items 14-16) ---------------------------------------------
+    @property
+    def max_step(self) -> float:
+        """The longest step the model allows: the shortest delay time (a delayed value
+        is then always read from the accepted past, runtime/delays.py)."""
+        if self.delays is None:
+            return np.inf
+        return float(np.min(self.delays.times(self.p)))
+
+    def delay_arguments(self, t, z) -> np.ndarray:
+        """The delayed expressions (the arguments of every delay()) at (t, z)."""
+        return self._call(self._delay_code.residual, t, z, self.delays.n)
+
+    def commit(self, t_lo, t_hi, interpolate, rtol=1e-6) -> None:
+        """The solution on [t_lo, t_hi] is accepted: keep the delayed expressions."""
+        if self.delays is not None:
+            self.delays.commit(self, t_lo, t_hi, interpolate, rtol)
+
+    def point_values(self, t) -> np.ndarray | None:
+        """The delayed values at an output point (recorded with it), or None."""
+        return None if self.delays is None else self.delays.values_at(t)
 
     # -- initialization (runtime contract) ------------------------------------------------
     def initialize(self, t0: float):
         """Consistent (z, z') at t0, discrete state settled (:mod:`.initial`).  The
         discrete variables start from their start values; clocks that tick at t0 fire
-        once the initial values are found (:mod:`.events`)."""
+        once the initial values are found (:mod:`.events`); with delays, the history
+        before t0 agrees with the solution at t0."""
         self.discrete.reset_held()
-        if self.whens is None:
-            return initialize(self, t0)
-        self.whens.reset_clocks(t0, self.start, self.p, self.m)
-        z, zp = initialize(self, t0)
-        if self.whens.due(t0).any():
+        if self.whens is not None:
+            self.whens.reset_clocks(t0, self.start, self.p, self.m)
+        if self.delays is not None:
+            z, zp = self.delays.initialize(self, t0, initialize)
+        else:
+            z, zp = initialize(self, t0)
+        if self.whens is not None and self.whens.due(t0).any():
             action = iterate_event(self, t0, z, zp, np.zeros(self.n_roots, dtype=bool))
             if action.changed:
                 z, zp = reinitialize(self, t0, z if action.y is None else action.y, zp)

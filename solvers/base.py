@@ -71,6 +71,16 @@ What a problem provides (numbered, so integrators can cite it)
    (optional) returns a copy of the discrete state: the driver records, for every output
    point, the state it was computed in (``SolverOutput.discrete_states`` and
    ``discrete_index``), so that results are evaluated in the modes that were integrated.
+14. ``max_step`` (optional float): the problem's own bound on the step size, combined
+   with the caller's (a model with delays: the shortest delay time).
+15. ``commit(t_lo, t_hi, interpolate, rtol=)`` (optional): called by the driver once
+   the solution on [t_lo, t_hi] is final -- after every accepted step, or up to a
+   located event before the event is handled -- with ``interpolate(t) -> (y, y')``
+   valid on it (the integrator's dense output) and the run's relative tolerance.  A
+   problem with delays keeps its history so.
+16. ``point_values(t) -> ndarray | None`` (optional): values the problem wants recorded
+   with every output point (``SolverOutput.point_values``, one row per point): the
+   delayed values, which results need after the history is gone.
 
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
@@ -169,6 +179,7 @@ class SolverOutput:
     event_times: list = field(default_factory=list)
     discrete_states: list = field(default_factory=list)   # snapshots (item 13)
     discrete_index: list = field(default_factory=list)    # per point: its snapshot
+    point_values: list = field(default_factory=list)      # per point, item 16
 
 
 def equation_label(problem: DAEProblem, i: int) -> str:

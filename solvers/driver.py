@@ -136,6 +136,8 @@ class _Run:
             raise ValueError("need rtol > 0, atol >= 0 and max_step > 0")
         self.span = self.tf - self.t0
         self.rtol, self.atol = rtol, atol
+        # a problem may limit the step itself (item 14: delays read from the past)
+        max_step = min(max_step, float(getattr(problem, "max_step", np.inf)))
         self.max_step, self.suppress_alg = max_step, suppress_alg
         self.max_steps, self.max_event_iterations = max_steps, max_event_iterations
         self.t_eval = None if t_eval is None else np.asarray(t_eval, float)
@@ -154,6 +156,10 @@ class _Run:
         # when it may have changed, and for each point the snapshot it was computed in
         self.keeps_discrete = callable(getattr(problem, "discrete_state", None))
         self.snapshots, self.snapshot_of = [], []
+        # the accepted solution (item 15) and values recorded per output point (item 16)
+        self.commit = getattr(problem, "commit", None)
+        self.point_values = getattr(problem, "point_values", None)
+        self.values = []
 
     # ------------------------------------------------------------------ main loop
     def go(self, y0, yp0, first_step, initialize) -> SolverOutput:
@@ -207,6 +213,8 @@ class _Run:
             hit = self._find_crossing()
             if hit is not None:
                 return self._state_event(*hit)
+        if self.commit is not None:
+            self.commit(s.t_prev, s.t, s.interpolate, rtol=self.rtol)
         at_event = s.t < self.tf and s.t == s.t_stop
         self._emit_step(s.t_prev, s.t, s.y, s.yp, before_event=at_event)
         if at_event:
@@ -266,6 +274,10 @@ class _Run:
         self.yps.append(yp)
         if self.keeps_discrete:
             self.snapshot_of.append(len(self.snapshots) - 1 if snapshot is None else snapshot)
+        if self.point_values is not None:
+            v = self.point_values(float(t))
+            if v is not None:
+                self.values.append(v)
 
     def _snapshot(self) -> None:
         """Record the problem's discrete state (it may have changed at an event)."""
@@ -285,6 +297,7 @@ class _Run:
                            list(self.event_times), list(self.snapshots),
                            list(self.snapshot_of))
         out.event_log = list(self.event_log)
+        out.point_values = list(self.values)
         return out
 
     # ------------------------------------------------------------------ failures
@@ -395,6 +408,8 @@ class _Run:
         s = self.solver
         y, yp = s.interpolate(t_e)
         t_prev = s.t_prev
+        if self.commit is not None:          # the solution up to the event, old modes
+            self.commit(t_prev, t_e, s.interpolate, rtol=self.rtol)
         before = len(self.snapshots) - 1
         y_new, yp_new, action, changed = self._iterate_event(t_e, y, yp, crossed)
         # A relation flipping straight back after the previous event (a ball leaving
