@@ -348,7 +348,9 @@ def test_relay_on_a_delayed_value_is_the_exact_triangle_wave():
     tau = np.mod(t - 0.8, 4 * T)
     exact = np.where(t <= 0.8, 0.5 - t, np.where(tau <= 2 * T, -T + tau, 3 * T - tau))
     assert np.max(np.abs(res["x"] - exact)) < 1e-9 * T
-    switches = [e.time for e in res.events if e.kind != "time"]
+    # a switch may fall on a discontinuity scheduled one delay after an event (a time
+    # event) or be located as a crossing: count the events that changed the relation
+    switches = [e.time for e in res.events if e.changes]
     assert np.allclose(switches, 0.8 + 2 * T * np.arange(len(switches)), rtol=1e-10)
     assert len(switches) == 6
 
