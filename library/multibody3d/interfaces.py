@@ -1,0 +1,49 @@
+"""Partial models of spatial multibody mechanics (Modelica.Mechanics.MultiBody.Interfaces).
+
+Which component writes a frame's orientation R and gravity g_0 (the overdetermined
+part of the connector, ``acausal.ports.spatial``): the World, and every joint and rigid
+part for its frame_b from its frame_a (``propagate``).  Bodies, force elements and
+sensors only read them.
+"""
+import sympy as sp
+
+import acausal as ac
+from acausal.ports.spatial import Frame
+
+from .frames import gravity, orientation
+
+__all__ = ["PartialOneFrame_a", "PartialTwoFrames", "PartialRigidTwoFrames", "propagate",
+           "equal"]
+
+
+def equal(lhs, rhs) -> list:
+    """Entry-wise ac.Eq of two equally shaped matrices (vector and matrix equations as
+    the MSL writes them)."""
+    lhs, rhs = sp.Matrix(lhs), sp.Matrix(rhs)
+    return [ac.Eq(a, b) for a, b in zip(lhs, rhs)]
+
+
+def propagate(frame_a, frame_b, R_rel=None) -> list:
+    """The branch of the spanning tree from frame_a to frame_b (MSL Connections.branch
+    written in one direction): R_b = R_rel R_a and g_0 passed on unchanged."""
+    R_a = orientation(frame_a)
+    R_b = R_a if R_rel is None else R_rel * R_a
+    return [*equal(orientation(frame_b), R_b), *equal(gravity(frame_b), gravity(frame_a))]
+
+
+class PartialOneFrame_a(ac.Component):
+    """One frame, frame_a, that reads its orientation from what it is connected to."""
+
+    frame_a = Frame()
+
+
+class PartialTwoFrames(ac.Component):
+    """Two frames, frame_a and frame_b."""
+
+    frame_a = Frame()
+    frame_b = Frame()
+
+
+class PartialRigidTwoFrames(PartialTwoFrames):
+    """Two frames of which frame_b follows frame_a: the component writes frame_b's
+    position and orientation from frame_a's, and frame_a's cut force and torque."""
