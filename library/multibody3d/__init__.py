@@ -4,10 +4,16 @@ overdetermined orientation is carried."""
 from ... import _lazy_exports
 
 __all__ = ["World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation", "FixedRotation",
-           "Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal"]
+           "Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal", "Spring", "Damper",
+           "SpringDamper", "WorldForce", "WorldTorque", "AbsolutePosition",
+           "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
+           "CutForceAndTorque"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".parts": ("World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation",
                "FixedRotation"),
     ".joints": ("Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal"),
+    ".forces": ("Spring", "Damper", "SpringDamper", "WorldForce", "WorldTorque"),
+    ".sensors": ("AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
+                 "RelativePosition", "CutForceAndTorque"),
 }, submodules=("frames", "interfaces"))

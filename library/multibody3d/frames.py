@@ -14,12 +14,19 @@ for the transpose), w the angular velocity resolved in the frame, so
 Euler parameters (quaternion) Q = (q_1, q_2, q_3, q_4) = (n sin(phi/2), cos(phi/2)), the
 MSL order (Egeland & Gravdahl's epsilon, eta, (6.160)):
 
-    R(Q) = (2 q_4^2 - 1) I + 2 q q^T - 2 q_4 skew(q)             (E&G (6.164), transposed)
+    R(Q) = ((q_4^2 - q^T q) I + 2 q q^T - 2 q_4 skew(q)) / (Q^T Q)   (E&G (6.164), transposed)
     der(Q) = 1/2 G(Q)^T w + lam/2 (1 - Q^T Q) Q                   (E&G (6.329)-(6.336))
 
 where G(Q) is the 3x4 matrix of MSL Quaternions.angularVelocity2, w = 2 G(Q) der(Q).
 The second term is the normalization of E&G section 6.9.6: with e = 1 - Q^T Q it gives
 der(e) = -lam e (1 - e), so a drift of |Q| decays with the time constant 1/lam.
+
+R(Q) is written in its homogeneous form, divided by Q^T Q (on the unit sphere it is
+E&G's (2 q_4^2 - 1) I + 2 q q^T - 2 q_4 skew(q)): it is then orthogonal for every Q != 0
+and depends on the direction of Q only, so a drift of |Q| never reaches the bodies, and
+the angular velocity the bodies compute from R is exactly w (G(Q) Q = 0 and
+G(Q) G(Q)^T = Q^T Q I).  Without the division a drift of 1e-6 in |Q| made R
+non-orthogonal by as much, and the stabilization then fought the bodies' dynamics.
 """
 import sympy as sp
 
@@ -81,9 +88,11 @@ def planar_rotation(e, phi) -> sp.Matrix:
 
 def from_Q(Q) -> sp.Matrix:
     """R of the Euler parameters Q = (q_1, q_2, q_3, q_4), q_4 the scalar part (MSL
-    Frames.Quaternions.to_T): (2 q_4^2 - 1) I + 2 q q^T - 2 q_4 skew(q)."""
+    Frames.Quaternions.to_T in its homogeneous form, module docstring):
+    ((q_4^2 - q^T q) I + 2 q q^T - 2 q_4 skew(q)) / (Q^T Q)."""
     q = sp.Matrix(Q[:3])
-    return (2 * Q[3]**2 - 1) * sp.eye(3) + 2 * q * q.T - 2 * Q[3] * skew(q)
+    qq = q.dot(q)
+    return ((Q[3]**2 - qq) * sp.eye(3) + 2 * q * q.T - 2 * Q[3] * skew(q)) / (qq + Q[3]**2)
 
 
 def _G(Q) -> sp.Matrix:
