@@ -57,6 +57,7 @@ class Frame(Port):
     ty = Through(unit="N.m", description="cut torque acting on the component, frame y")
     tz = Through(unit="N.m", description="cut torque acting on the component, frame z")
     effort, flow = "fx", "der(x)"
-    hint = ("the World is missing, a frame is not connected, or a joint or rigid part "
-            "is connected backwards (its frame_a must face the World; a body has no "
-            "orientation of its own: attach a free one with FreeMotion)")
+    hint = ("the World is missing or a frame is not connected; or a joint or rigid part is "
+            "connected backwards (its frame_a must face the World); or a body is held only "
+            "by force elements (attach a free body with FreeMotion); or the frames close a "
+            "kinematic loop, which fixes an orientation twice (not supported)")
