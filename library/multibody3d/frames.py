@@ -86,13 +86,16 @@ def planar_rotation(e, phi) -> sp.Matrix:
     return eet + (sp.eye(3) - eet) * sp.cos(phi) - skew(e) * sp.sin(phi)
 
 
-def from_Q(Q) -> sp.Matrix:
+def from_Q(Q, Q_2=None) -> sp.Matrix:
     """R of the Euler parameters Q = (q_1, q_2, q_3, q_4), q_4 the scalar part (MSL
     Frames.Quaternions.to_T in its homogeneous form, module docstring):
-    ((q_4^2 - q^T q) I + 2 q q^T - 2 q_4 skew(q)) / (Q^T Q)."""
+    ((q_4^2 - q^T q) I + 2 q q^T - 2 q_4 skew(q)) / Q_2, Q_2 = Q^T Q (a variable equal
+    to it may be passed: the derivatives index reduction takes then stay short)."""
     q = sp.Matrix(Q[:3])
     qq = q.dot(q)
-    return ((Q[3]**2 - qq) * sp.eye(3) + 2 * q * q.T - 2 * Q[3] * skew(q)) / (qq + Q[3]**2)
+    if Q_2 is None:
+        Q_2 = qq + Q[3]**2
+    return ((Q[3]**2 - qq) * sp.eye(3) + 2 * q * q.T - 2 * Q[3] * skew(q)) / Q_2
 
 
 def _G(Q) -> sp.Matrix:
