@@ -187,7 +187,13 @@ def power_ports(comp) -> list:
 
 
 def port_power(traj, port) -> np.ndarray:
-    """Power into the component through one port (module docstring)."""
+    """Power into the component through one port (module docstring).  A port whose
+    power is not a sum of across-rate x through products defines ``power(value, rate)``
+    (of functions giving a port variable's values and rates by its name)."""
+    own = getattr(type(port), "power", None)
+    if own is not None:
+        return own(port, lambda name: traj.value(f"{port.path}.{name}"),
+                   lambda name: traj.value(f"der({port.path}.{name})"))
     if isinstance(port, HeatPort):
         return traj.value(f"{port.path}.{port.flow}")
     if port.flow.startswith("der("):

@@ -22,6 +22,8 @@ that sets R and g_0 (see the package docstring for the reasoning and what it exc
 Power into the component: f . (R der(r_0)) + t . w, w the frame's angular velocity
 resolved in the frame.
 """
+import numpy as np
+
 from ..components.declarations import Across, Through
 from .base import Port
 
@@ -61,3 +63,15 @@ class Frame(Port):
             "connected backwards (its frame_a must face the World); or a body is held only "
             "by force elements (attach a free body with FreeMotion); or the frames close a "
             "kinematic loop, which fixes an orientation twice (not supported)")
+
+    def power(self, value, rate):
+        """Power into the component over a trajectory (the energy audit):
+        f . (R der(r_0)) + t . w, with skew(w) = -der(R) R^T."""
+        R = np.array([[value(f"R{i}{j}") for j in (1, 2, 3)] for i in (1, 2, 3)])
+        Rdot = np.array([[rate(f"R{i}{j}") for j in (1, 2, 3)] for i in (1, 2, 3)])
+        v = np.einsum("ijn,jn->in", R, np.array([rate(c) for c in "xyz"]))
+        W = -np.einsum("ikn,jkn->ijn", Rdot, R)
+        w = np.array([W[2, 1], W[0, 2], W[1, 0]])
+        f = np.array([value(f"f{c}") for c in "xyz"])
+        t = np.array([value(f"t{c}") for c in "xyz"])
+        return np.sum(f * v + t * w, axis=0)
