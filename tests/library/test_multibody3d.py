@@ -113,6 +113,16 @@ def test_furuta_power_balance_7_196(furuta_run):
     assert np.max(np.abs(bodies - V)) < 1e-8 * scale
 
 
+def test_furuta_energy_audit_every_component(furuta_run):
+    """The audit books the motor's work into the bodies' energy, and finds the joints
+    and bars lossless through the spatial frame's power f . (R der(r_0)) + t . w."""
+    _, _, res = furuta_run
+    audit = ac.energy_balance(res, FurutaPendulum())
+    assert audit.ok, audit.violations
+    assert audit.roles["arm_joint"] == "lossless" and audit.roles["mass"] == "storage"
+    assert np.max(np.abs(audit.lossless["pendulum_joint"])) < 1e-6 * audit.power_scale
+
+
 # -- heavy symmetric top on a spherical joint ------------------------------------------
 
 def _top_invariants(res):
