@@ -17,7 +17,8 @@ The nine entries of R have three degrees of freedom, and the three of g_0 none: 
 the direction of the spanning tree that starts at the World: the World sets them, every
 joint and rigid part sets those of its frame_b from its frame_a, and bodies, force
 elements and sensors only read them.  Each connection set then holds exactly one frame
-that sets R and g_0 (see the package docstring for the reasoning and what it excludes).
+that sets R and g_0 (``acausal.library.multibody3d`` gives the reasoning and what it
+excludes).
 
 Power into the component: f . (R der(r_0)) + t . w, w the frame's angular velocity
 resolved in the frame.
