@@ -409,3 +409,30 @@ def test_loop_or_unattached_body_is_refused_with_the_frame_hint(model, error):
     with pytest.raises(error, match="kinematic loop") as err:
         ac.compile(model())
     assert "FreeMotion" in str(err.value)
+
+
+# -- animation ------------------------------------------------------------------------
+
+def test_animation_of_the_furuta_pendulum_is_written_and_moves(furuta_run, tmp_path):
+    from acausal.display.animation import spatial_frames
+    _, _, res = furuta_run
+    frames = spatial_frames(res)
+    assert "mass.frame_a" in frames
+    # frames joined at one point with one orientation are drawn once
+    assert not {"pendulum_rod.frame_a", "pendulum_joint.frame_b"} <= set(frames)
+    out = ac.animate(res, tmp_path / "furuta.gif", n_frames=4,
+                     links=[("arm_rod.frame_a", "arm_rod.frame_b"),
+                            ("pendulum_rod.frame_a", "pendulum_rod.frame_b")])
+    assert out.exists() and out.stat().st_size > 0
+    if out.suffix == ".gif":
+        Image = pytest.importorskip("PIL.Image")
+        with Image.open(out) as im:
+            assert im.n_frames == 4
+            first = np.asarray(im.convert("RGB"), dtype=float)
+            im.seek(3)
+            last = np.asarray(im.convert("RGB"), dtype=float)
+        below_title = slice(first.shape[0] // 6, None)
+        change = np.abs(first[below_title] - last[below_title])
+        assert np.mean(change) > 0.1                    # the pendulum moved in the picture
+    else:                                               # no Pillow: the HTML player
+        assert "<script" in out.read_text()
