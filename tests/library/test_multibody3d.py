@@ -281,7 +281,8 @@ def test_cut_force_and_torque_hold_the_weight_and_its_moment():
 
 class PushedSpinningBody(ac.Component):
     """A free body (no gravity) spinning about a non-principal direction, pushed by a
-    constant force F given in the world, with sensors on it."""
+    constant force F and twisted by a constant torque T, both given in the world, at its
+    centre of mass, with sensors on it."""
 
     world = mb.World(g=0.0)
     joint = mb.FreeMotion(w_x={"start": 1.0, "fixed": True}, w_y={"start": 2.0, "fixed": True},
@@ -292,6 +293,8 @@ class PushedSpinningBody(ac.Component):
     body = mb.Body(m=2.0, I_11=0.1, I_22=0.2, I_33=0.3, I_21=0.01)
     push = mb.WorldForce()
     F_x, F_y, F_z = Constant(k=1.0), Constant(k=2.0), Constant(k=-1.0)
+    twist = mb.WorldTorque()
+    T_x, T_y, T_z = Constant(k=0.1), Constant(k=0.0), Constant(k=0.2)
     position = mb.AbsolutePosition()
     velocity = mb.AbsoluteVelocity()
     spin = mb.AbsoluteAngularVelocity()
@@ -304,10 +307,16 @@ class PushedSpinningBody(ac.Component):
                            self.velocity.frame_a, self.spin.frame_a, self.relative.frame_b),
                 ac.connect(self.F_x.y, self.push.force_x),
                 ac.connect(self.F_y.y, self.push.force_y),
-                ac.connect(self.F_z.y, self.push.force_z)]
+                ac.connect(self.F_z.y, self.push.force_z),
+                ac.connect(b, self.twist.frame_b),
+                ac.connect(self.T_x.y, self.twist.torque_x),
+                ac.connect(self.T_y.y, self.twist.torque_y),
+                ac.connect(self.T_z.y, self.twist.torque_z)]
 
 
-def test_world_force_on_spinning_body_and_sensors():
+def test_world_force_and_torque_on_spinning_body_and_sensors():
+    """r = F t^2/(2 m) and the angular momentum in the world H = H_0 + T t, whatever
+    the body's tumbling."""
     t = np.linspace(0, 2.0, 101)
     res = ac.simulate(PushedSpinningBody(), t_end=2.0, rtol=1e-10, atol=1e-10, t_eval=t)
     F, m = np.array([1.0, 2.0, -1.0]), 2.0
@@ -318,8 +327,60 @@ def test_world_force_on_spinning_body_and_sensors():
     w = np.array([res[f"spin.w_{k}.signal"] for k in "xyz"])
     assert np.max(np.abs(w - _vec(res, "joint.w"))) < 1e-8 * np.max(np.abs(w))
     assert np.ptp(w[2]) > 0.1                         # a torque-free body that tumbles
+    I = np.array([[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.3]])
+    H = np.einsum("jin,jn->in", _R(res, "body.frame_a"), I @ _vec(res, "body.w"))
+    H_exact = H[:, :1] + np.outer([0.1, 0.0, 0.2], t)
+    assert np.max(np.abs(H - H_exact)) < 1e-8 * np.max(np.abs(H))
     rel = np.array([res[f"relative.r_{k}.signal"] for k in "xyz"])
     assert np.max(np.abs(rel - r)) < 1e-12 * np.max(np.abs(r))     # world = frame_a here
+
+
+class UniversalPendulum(ac.Component):
+    """A 1 kg point mass on a 1 m rod hanging from a universal joint (x, then z)."""
+
+    world = mb.World()
+    joint = mb.Universal(n_b_2=0.0, n_b_3=1.0,
+                         revolute_a={"phi": {"start": 0.3, "fixed": True},
+                                     "w": {"start": 0.0, "fixed": True}},
+                         revolute_b={"phi": {"start": 0.4, "fixed": True},
+                                     "w": {"start": 1.0, "fixed": True}})
+    rod = mb.FixedTranslation(r_2=-1.0)
+    mass = mb.Body(m=1.0, I_11=0.0, I_22=0.0, I_33=0.0)
+
+    def equations(self):
+        return [ac.connect(self.world.frame_b, self.joint.frame_a),
+                ac.connect(self.joint.frame_b, self.rod.frame_a),
+                ac.connect(self.rod.frame_b, self.mass.frame_a)]
+
+
+def _universal_lagrange():
+    """Lagrange's equations of the point mass at R_x(a) R_z(b) (0, -1, 0), derived here
+    with sympy: M(q) q'' = rhs(q, q')."""
+    import sympy as sp
+    a, b, da, db = sp.symbols("a b da db")
+    Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
+    Rz = sp.Matrix([[sp.cos(b), -sp.sin(b), 0], [sp.sin(b), sp.cos(b), 0], [0, 0, 1]])
+    r = Rx * Rz * sp.Matrix([0, -1, 0])
+    q, dq = sp.Matrix([a, b]), sp.Matrix([da, db])
+    v = r.jacobian(q) * dq
+    L = v.dot(v) / 2 - G * r[1]
+    M = sp.hessian(L, dq)
+    rhs = sp.Matrix([sp.diff(L, qi) for qi in q]) - sp.Matrix(
+        [sum(sp.diff(sp.diff(L, dqi), qj) * dqj for qj, dqj in zip(q, dq)) for dqi in dq])
+    return sp.lambdify((a, b, da, db), M), sp.lambdify((a, b, da, db), rhs)
+
+
+def test_universal_joint_pendulum_against_lagrange():
+    M, rhs = _universal_lagrange()
+
+    def f(_, s):
+        return [s[2], s[3], *np.linalg.solve(M(*s), np.ravel(rhs(*s)))]
+
+    t = np.linspace(0, 2.0, 201)
+    res = ac.simulate(UniversalPendulum(), t_end=2.0, rtol=1e-10, atol=1e-10, t_eval=t)
+    ode = _ode(f, [0.3, 0.4, 0.0, 1.0], t)
+    for name, ref in (("joint.revolute_a.phi", ode.y[0]), ("joint.revolute_b.phi", ode.y[1])):
+        assert np.max(np.abs(res[name] - ref)) < 1e-6 * np.max(np.abs(ref))
 
 
 class ElasticPendulum(ac.Component):
