@@ -18,6 +18,8 @@ fx der(x) + fy der(y) + tau der(phi)).
 """
 from __future__ import annotations
 
+from types import FunctionType
+
 import numpy as np
 import sympy as sp
 
@@ -191,7 +193,7 @@ def port_power(traj, port) -> np.ndarray:
     power is not a sum of across-rate x through products defines ``power(value, rate)``
     (of functions giving a port variable's values and rates by its name)."""
     own = getattr(type(port), "power", None)
-    if own is not None:
+    if isinstance(own, FunctionType):          # a method, not a variable named power
         return own(port, lambda name: traj.value(f"{port.path}.{name}"),
                    lambda name: traj.value(f"der({port.path}.{name})"))
     if isinstance(port, HeatPort):
