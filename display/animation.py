@@ -70,7 +70,6 @@ def animate(res, path, frames=None, links=(), n_frames: int = 60, fps: int = 20,
     axis_length : float, optional
         Length of the drawn frame axes [m] (default a tenth of the motion's extent).
     """
-    import matplotlib
     from matplotlib.animation import FuncAnimation, PillowWriter
     from matplotlib.figure import Figure
 

@@ -17,8 +17,6 @@ The book's inertial frame has n_3 up; the World's y is up, so the book's axes
 The arm (the book's b_2) is then along the turned frame's x, the pendulum rod (c_3)
 along y, and theta_1 = ``arm_joint.phi``, theta_2 = ``pendulum_joint.phi``.
 """
-import numpy as np
-
 import acausal as ac
 from acausal.library.blocks import Sine
 from acausal.library.multibody3d import Body, FixedTranslation, Revolute, World
