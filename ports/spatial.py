@@ -31,6 +31,8 @@ from .base import Port
 __all__ = ["Frame"]
 
 _R = "orientation R[{i},{j}] (MSL R.T): world vector -> frame coordinates"
+# R's start values are the identity: the guess of a Newton iteration that solves for an
+# orientation (in a closed loop) must not be the singular R = 0
 
 
 class Frame(Port):
@@ -41,15 +43,15 @@ class Frame(Port):
     x = Across(unit="m", description="x of the frame origin in the world frame (r_0[1])")
     y = Across(unit="m", description="y of the frame origin in the world frame (r_0[2])")
     z = Across(unit="m", description="z of the frame origin in the world frame (r_0[3])")
-    R11 = Across(description=_R.format(i=1, j=1))
+    R11 = Across(start=1.0, description=_R.format(i=1, j=1))
     R12 = Across(description=_R.format(i=1, j=2))
     R13 = Across(description=_R.format(i=1, j=3))
     R21 = Across(description=_R.format(i=2, j=1))
-    R22 = Across(description=_R.format(i=2, j=2))
+    R22 = Across(start=1.0, description=_R.format(i=2, j=2))
     R23 = Across(description=_R.format(i=2, j=3))
     R31 = Across(description=_R.format(i=3, j=1))
     R32 = Across(description=_R.format(i=3, j=2))
-    R33 = Across(description=_R.format(i=3, j=3))
+    R33 = Across(start=1.0, description=_R.format(i=3, j=3))
     gx = Across(unit="m/s2", description="world's gravity acceleration, world x")
     gy = Across(unit="m/s2", description="world's gravity acceleration, world y")
     gz = Across(unit="m/s2", description="world's gravity acceleration, world z")
@@ -63,7 +65,8 @@ class Frame(Port):
     hint = ("the World is missing or a frame is not connected; or a joint or rigid part is "
             "connected backwards (its frame_a must face the World); or a body is held only "
             "by force elements (attach a free body with FreeMotion); or the frames close a "
-            "kinematic loop, which fixes an orientation twice (not supported)")
+            "kinematic loop, which fixes an orientation twice (close a planar loop with a "
+            "RevolutePlanarLoopConstraint)")
 
     def power(self, value, rate):
         """Power into the component over a trajectory (the energy audit):

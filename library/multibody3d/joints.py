@@ -19,6 +19,7 @@ needs to be detected and refused.  R(Q) is divided by Q^T Q (``frames.from_Q``),
 the joint's variable Q_2 = Q^T Q: index reduction differentiates R twice, and the
 quotient of the full polynomial made the generated code of a free body 3.5 times longer.
 """
+import numpy as np
 import sympy as sp
 
 import acausal as ac
@@ -26,9 +27,10 @@ from acausal.ports import RotationalFlange, TranslationalFlange
 
 from .frames import (force, from_Q, orientation, planar_rotation, position, quaternion_rates,
                      resolve1, torque, unit, vector)
-from .interfaces import PartialRigidTwoFrames, equal, propagate
+from .interfaces import PartialRigidTwoFrames, PartialTwoFrames, equal, propagate
 
-__all__ = ["Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal"]
+__all__ = ["Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
+           "RevolutePlanarLoopConstraint"]
 
 
 def _axis(c):
@@ -225,3 +227,52 @@ class Universal(PartialRigidTwoFrames):
         return [ac.connect(self.frame_a, self.revolute_a.frame_a),
                 ac.connect(self.revolute_a.frame_b, self.revolute_b.frame_a),
                 ac.connect(self.revolute_b.frame_b, self.frame_b)]
+
+
+class RevolutePlanarLoopConstraint(PartialTwoFrames):
+    """Closes a planar kinematic loop with a revolute joint about n, writing only the
+    constraints that are not redundant in the plane (MSL MultiBody.Joints.
+    RevolutePlanarLoopConstraint):
+
+        r_rel = R_a (r_0,b - r_0,a),   e_1 . r_rel = 0,   e_2 . r_rel = 0,
+        f_a = f_1 e_1 + f_2 e_2,   f_b = -R_b R_a^T f_a,   t_a = t_b = 0
+
+    e_1, e_2 span the plane normal to n in frame_a.  Both frames keep the orientations
+    their own branches of the tree give them: the joint writes neither, so the loop
+    does not write an orientation twice.  It has no joint coordinate and no flange.  In
+    a planar loop of revolutes (and prismatics) the position along n and the
+    orientation are fixed by the other joints; the loop closes only in the plane.
+
+    n is structural (it chooses which directions are constrained): give it when the
+    joint is created, ``RevolutePlanarLoopConstraint(n=(0, 0, 1))``.
+    """
+
+    f_1 = ac.Variable(unit="N", description="constraint force along e_1 on frame_a")
+    f_2 = ac.Variable(unit="N", description="constraint force along e_2 on frame_a")
+
+    energy_role = "lossless"  # ideal constraint: its forces do no work
+
+    def __init__(self, n=(0.0, 0.0, 1.0), **modifications):
+        super().__init__(**modifications)
+        n = np.asarray(n, dtype=float)
+        if n.shape != (3,) or not np.all(np.isfinite(n)) or np.linalg.norm(n) == 0:
+            raise ac.ModelError(f"RevolutePlanarLoopConstraint: n = {tuple(n.ravel())} is "
+                                "not a nonzero 3-vector")
+        n = n / np.linalg.norm(n)
+        # the world axis least parallel to n, made orthogonal to it (as the MSL does)
+        helper = np.eye(3)[int(np.argmin(np.abs(n)))]
+        e1 = helper - n * (helper @ n)
+        e1 /= np.linalg.norm(e1)
+        self.e_1, self.e_2 = e1, np.cross(n, e1)
+
+    def equations(self):
+        a, b = self.frame_a, self.frame_b
+        e1, e2 = sp.Matrix(self.e_1), sp.Matrix(self.e_2)
+        R_a, R_b = orientation(a), orientation(b)
+        r_rel = R_a * (position(b) - position(a))
+        f_a = self.f_1 * e1 + self.f_2 * e2
+        zero = sp.zeros(3, 1)
+        return [ac.Eq(0, e1.dot(r_rel)), ac.Eq(0, e2.dot(r_rel)),
+                *equal(force(a), f_a),
+                *equal(force(b), -R_b * (R_a.T * f_a)),
+                *equal(torque(a), zero), *equal(torque(b), zero)]
