@@ -14,6 +14,7 @@ from acausal.library.blocks import Constant
 from acausal.library.multibody.examples.pendulums import DoublePendulum as PlanarDoublePendulum
 from acausal.library.multibody3d.examples.furuta import FurutaPendulum
 from acausal.library.multibody3d.examples.pendulums import DoublePendulum
+from acausal.library.multibody3d.examples.slider_crank import SliderCrank, slider_position
 from acausal.library.multibody3d.examples.tops import (RACKET, TOP, HeavyTop, TennisRacket,
                                                        top_precession_rate)
 
@@ -214,6 +215,24 @@ def test_double_pendulum_in_a_plane_equals_the_planar_library():
             assert np.max(np.abs(spatial[f"link{i}.mass.frame_a.{c}"]
                                  - planar[f"link{i}.mass.{c}"])) < 1e-6
         assert np.max(np.abs(spatial[f"link{i}.mass.frame_a.z"])) == 0.0
+
+
+# -- a closed loop: slider-crank ------------------------------------------------------
+
+def test_slider_crank_loop_closed_in_the_plane_against_closed_form():
+    t = np.linspace(0, 1.0, 2001)
+    res = ac.simulate(SliderCrank(), t_end=1.0, rtol=1e-9, atol=1e-9, t_eval=t)
+    theta = res["crank_joint.phi"]
+    assert theta[-1] > 0.3 + 2 * np.pi                  # past both dead centres
+    assert np.max(np.abs(res["guide.s"] - slider_position(theta))) < 1e-8 * 0.4
+    assert np.max(np.abs(res["rod_b.frame_b.z"])) < 1e-12   # the loop stays in its plane
+    # the drive's work is the mechanism's energy
+    m_rod, I_rod, m_s = 0.5, 0.5 * 0.3**2 / 12, 1.0
+    v_rod = _vec(res, "rod.v")
+    E = (0.5 * m_rod * np.sum(v_rod**2, axis=0) + 0.5 * I_rod * res["rod.w_z"]**2
+         + m_rod * 9.81 * res["rod.frame_a.y"] + 0.5 * m_s * res["slider.v_x"]**2)
+    work = cumulative_trapezoid(-res["drive.flange.tau"] * 10.0, t, initial=0.0)
+    assert np.max(np.abs(E - E[0] - work)) < 1e-5 * np.max(np.abs(E - E[0]))
 
 
 # -- bodies whose frame is not at the centre of mass -----------------------------------
@@ -444,7 +463,8 @@ def test_prismatic_spring_damper_oscillator_closed_form():
 # -- what the connector cannot express ------------------------------------------------
 
 class ParallelJoints(ac.Component):
-    """Two revolutes between the World and one bar: a kinematic loop."""
+    """Two revolutes between the World and one bar: a kinematic loop closed without a
+    RevolutePlanarLoopConstraint."""
 
     world = mb.World()
     joint1 = mb.Revolute()
