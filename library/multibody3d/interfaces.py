@@ -10,10 +10,10 @@ import sympy as sp
 import acausal as ac
 from acausal.ports.spatial import Frame
 
-from .frames import gravity, orientation
+from .frames import gravity, orientation, unit
 
 __all__ = ["PartialOneFrame_a", "PartialTwoFrames", "PartialRigidTwoFrames", "propagate",
-           "equal"]
+           "equal", "direction"]
 
 
 def equal(lhs, rhs) -> list:
@@ -21,6 +21,20 @@ def equal(lhs, rhs) -> list:
     the MSL writes them)."""
     lhs, rhs = sp.Matrix(lhs), sp.Matrix(rhs)
     return [ac.Eq(a, b) for a, b in zip(lhs, rhs)]
+
+
+def direction(component, prefix: str = "n") -> sp.Matrix:
+    """The unit vector of the component's parameters ``<prefix>_1..3`` (an axis, the
+    direction of gravity).  All three equal to 0 define no direction: an
+    ``InvalidValue`` naming the component, rather than a division by zero that the
+    compiler would report as a structurally singular model."""
+    names = [f"{prefix}_{k}" for k in (1, 2, 3)]
+    values = [component.parameter_value(n) for n in names]
+    if all(isinstance(v, (int, float)) and v == 0 for v in values):
+        where = f"'{component.path}' ({type(component).__name__})"
+        raise ac.InvalidValue(f"{where}: {', '.join(names)} are all 0, so the vector "
+                              f"{prefix} has no direction")
+    return unit([getattr(component, n) for n in names])
 
 
 def propagate(frame_a, frame_b, R_rel=None) -> list:

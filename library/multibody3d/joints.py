@@ -26,15 +26,15 @@ import acausal as ac
 from acausal.ports import RotationalFlange, TranslationalFlange
 
 from .frames import (force, from_Q, orientation, planar_rotation, position, quaternion_rates,
-                     resolve1, torque, unit, vector)
-from .interfaces import PartialRigidTwoFrames, PartialTwoFrames, equal, propagate
+                     resolve1, torque, vector)
+from .interfaces import PartialRigidTwoFrames, PartialTwoFrames, direction, equal, propagate
 
 __all__ = ["Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
            "RevolutePlanarLoopConstraint"]
 
 
 def _axis(c):
-    return unit([c.n_1, c.n_2, c.n_3])
+    return direction(c, "n")
 
 
 class Revolute(PartialRigidTwoFrames):
@@ -256,7 +256,7 @@ class RevolutePlanarLoopConstraint(PartialTwoFrames):
         super().__init__(**modifications)
         n = np.asarray(n, dtype=float)
         if n.shape != (3,) or not np.all(np.isfinite(n)) or np.linalg.norm(n) == 0:
-            raise ac.ModelError(f"RevolutePlanarLoopConstraint: n = {tuple(n.ravel())} is "
+            raise ac.ModelError(f"RevolutePlanarLoopConstraint: n = {n.ravel().tolist()} is "
                                 "not a nonzero 3-vector")
         n = n / np.linalg.norm(n)
         # the world axis least parallel to n, made orthogonal to it (as the MSL does)

@@ -10,8 +10,8 @@ import acausal as ac
 from acausal.ports.spatial import Frame
 
 from .frames import (angular_velocity2, force, gravity, orientation, planar_rotation,
-                     position, resolve1, resolve2, torque, unit, vector)
-from .interfaces import PartialOneFrame_a, PartialRigidTwoFrames, equal, propagate
+                     position, resolve1, resolve2, torque, vector)
+from .interfaces import PartialOneFrame_a, PartialRigidTwoFrames, direction, equal, propagate
 
 __all__ = ["World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation", "FixedRotation"]
 
@@ -38,7 +38,7 @@ class World(ac.Component):
         f = self.frame_b
         return [*equal(position(f), sp.zeros(3, 1)),
                 *equal(orientation(f), sp.eye(3)),
-                *equal(gravity(f), self.g * unit([self.n_1, self.n_2, self.n_3]))]
+                *equal(gravity(f), self.g * direction(self, "n"))]
 
 
 class Body(PartialOneFrame_a):
@@ -157,7 +157,7 @@ class FixedRotation(PartialRigidTwoFrames):
     def equations(self):
         a, b = self.frame_a, self.frame_b
         r = vector(self.r_1, self.r_2, self.r_3)
-        R_rel = planar_rotation(unit([self.n_1, self.n_2, self.n_3]), self.angle)
+        R_rel = planar_rotation(direction(self, "n"), self.angle)
         f_b_in_a = resolve1(R_rel, force(b))
         return [*equal(position(b), position(a) + resolve1(orientation(a), r)),
                 *propagate(a, b, R_rel),

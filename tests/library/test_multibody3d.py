@@ -520,3 +520,19 @@ def test_animation_of_the_furuta_pendulum_is_written_and_moves(furuta_run, tmp_p
         assert np.mean(change) > 0.1                    # the pendulum moved in the picture
     else:                                               # no Pillow: the HTML player
         assert "<script" in out.read_text()
+
+
+def test_joint_axis_without_direction_is_named():
+    class ZeroAxis(ac.Component):
+        world = mb.World()
+        joint = mb.Revolute(n_3=0.0)
+        body = mb.Body()
+
+        def equations(self):
+            return [ac.connect(self.world.frame_b, self.joint.frame_a),
+                    ac.connect(self.joint.frame_b, self.body.frame_a)]
+
+    with pytest.raises(ac.InvalidValue, match=r"'joint' \(Revolute\): n_1, n_2, n_3 are all 0"):
+        ac.compile(ZeroAxis())
+    with pytest.raises(ac.ModelError, match="not a nonzero 3-vector"):
+        mb.RevolutePlanarLoopConstraint(n=(0.0, 0.0, 0.0))
