@@ -73,7 +73,7 @@ def _fixed(value):
 
 class TennisRacket(ac.Component):
     """Principal inertias 1, 2, 3 kg m^2; w = (0.01, 1, 0.01) rad/s in the body at the
-    start, no gravity; the body flips about every 11 s."""
+    start, no gravity; the body flips over five times in 100 s."""
 
     stop_time = 100.0
     world = World(g=0.0)
