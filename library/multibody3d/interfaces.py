@@ -25,15 +25,24 @@ def equal(lhs, rhs) -> list:
 
 def direction(component, prefix: str = "n") -> sp.Matrix:
     """The unit vector of the component's parameters ``<prefix>_1..3`` (an axis, the
-    direction of gravity).  All three equal to 0 define no direction: an
+    direction of gravity).
+
+    Given as numbers, the vector is normalized here and enters the equations as numbers
+    (an axis is structural: the compiler already takes its zero entries as structural
+    zeros, and sqrt(n_2^2) of the symbolic form would become |n_2|, a relation that the
+    solver watched as a zero crossing).  Bound to other parameters (``ac.ref``), it is
+    normalized symbolically.  All three equal to 0 define no direction: an
     ``InvalidValue`` naming the component, rather than a division by zero that the
     compiler would report as a structurally singular model."""
     names = [f"{prefix}_{k}" for k in (1, 2, 3)]
     values = [component.parameter_value(n) for n in names]
-    if all(isinstance(v, (int, float)) and v == 0 for v in values):
-        where = f"'{component.path}' ({type(component).__name__})"
-        raise ac.InvalidValue(f"{where}: {', '.join(names)} are all 0, so the vector "
-                              f"{prefix} has no direction")
+    if all(isinstance(v, (int, float)) for v in values):
+        norm = sum(v * v for v in values) ** 0.5
+        if norm == 0:
+            where = f"'{component.path}' ({type(component).__name__})"
+            raise ac.InvalidValue(f"{where}: {', '.join(names)} are all 0, so the vector "
+                                  f"{prefix} has no direction")
+        return sp.Matrix([v / norm for v in values])
     return unit([getattr(component, n) for n in names])
 
 
