@@ -32,6 +32,7 @@ _EXPORTS = {
                   "linearize", "linearize_grid", "linearize_symbolic", "steady_state"),
     ".fmi": ("export_fmu",),
     ".results_io": ("load_result",),
+    ".display.animation": ("animate",),
     ".sweeps": ("sweep", "ensemble"),
     ".functions": ("sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan",
                    "atan2", "sinh", "cosh", "tanh", "abs", "min", "max", "pi"),
@@ -48,7 +49,7 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "linearize", "linearize_grid", "linearize_symbolic", "StateSpace", "steady_state",
            "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
            "energy_balance", "is_passive", "estimate", "BackendError", "export_fmu",
-           "load_result", "sweep", "ensemble", "sqrt", "exp", "log", "log10", "sin", "cos",
+           "load_result", "animate", "sweep", "ensemble", "sqrt", "exp", "log", "log10", "sin", "cos",
            "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi"]
 # ac.abs, ac.min and ac.max exist too, but not in __all__: `import *` must not shadow builtins
 

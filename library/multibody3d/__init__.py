@@ -1,0 +1,37 @@
+"""Spatial multibody mechanics (shaped like Modelica.Mechanics.MultiBody).
+
+The frame (``acausal.ports.spatial.Frame``) carries the orientation R as nine across
+variables, three of them independent: an overdetermined connector.  The MSL writes the
+nine equalities along a spanning tree of the connections (Connections.root/branch) and
+three residues where a loop closes; this framework has no such rule, and a connection
+writes every across equality.  So R is written in one direction only: the World writes
+its frame's R = I, every joint and rigid part writes R_b = R_rel R_a for its frame_b,
+and bodies, force elements and sensors only read R.  Every connection set then holds
+exactly one frame whose R is written, and the nine equalities of a connection are
+balanced.  The price: a kinematic loop would write R twice (the compiler refuses it as
+over-determined, naming the frame's hint) unless it is closed by a joint that writes no
+orientation (``RevolutePlanarLoopConstraint``, the MSL's joint for planar loops);
+frame_a of a joint must face the World; and a free body needs an explicit FreeMotion
+joint (the MSL's body states, made a component).
+
+There is no inner/outer either: the World's gravity field travels with R along the
+same tree (the frame's g_0 variables), so every body reads the one World's field.
+"""
+from ... import _lazy_exports
+
+__all__ = ["World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation", "FixedRotation",
+           "Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
+           "RevolutePlanarLoopConstraint", "Spring", "Damper",
+           "SpringDamper", "WorldForce", "WorldTorque", "AbsolutePosition",
+           "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
+           "CutForceAndTorque"]
+
+__getattr__, __dir__ = _lazy_exports(globals(), {
+    ".parts": ("World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation",
+               "FixedRotation"),
+    ".joints": ("Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
+                "RevolutePlanarLoopConstraint"),
+    ".forces": ("Spring", "Damper", "SpringDamper", "WorldForce", "WorldTorque"),
+    ".sensors": ("AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
+                 "RelativePosition", "CutForceAndTorque"),
+}, submodules=("frames", "interfaces"))

@@ -1,0 +1,2 @@
+"""Spatial multibody examples: each module is runnable (``python -m``) and each model
+has a ``stop_time``."""

@@ -1,0 +1,127 @@
+"""Orientation algebra of spatial frames (Modelica.Mechanics.MultiBody.Frames), on sympy
+matrices of the frames' variables.
+
+R (MSL ``R.T``) maps world coordinates to frame coordinates: v_frame = R v_0.  A frame b
+turned relative to a frame a by R_rel has R_b = R_rel R_a (MSL absoluteRotation).
+resolve1(R, v) = R^T v takes a vector from the frame to the world (or to the parent),
+resolve2(R, v) = R v the other way.
+
+With R(t) orthogonal, der(R) = -skew(w) R (Egeland & Gravdahl (6.256)-(6.257), written
+for the transpose), w the angular velocity resolved in the frame, so
+
+    skew(w) = -der(R) R^T                                        (angular_velocity2)
+
+Euler parameters (quaternion) Q = (q_1, q_2, q_3, q_4) = (n sin(phi/2), cos(phi/2)), the
+MSL order (Egeland & Gravdahl's epsilon, eta, (6.160)):
+
+    R(Q) = ((q_4^2 - q^T q) I + 2 q q^T - 2 q_4 skew(q)) / (Q^T Q)   (E&G (6.164), transposed)
+    der(Q) = 1/2 G(Q)^T w + lam/2 (1 - Q^T Q) Q                   (E&G (6.329)-(6.336))
+
+where G(Q) is the 3x4 matrix of MSL Quaternions.angularVelocity2, w = 2 G(Q) der(Q).
+The second term is the normalization of E&G section 6.9.6: with e = 1 - Q^T Q it gives
+der(e) = -lam e (1 - e), so a drift of |Q| decays with the time constant 1/lam.
+
+R(Q) is written in its homogeneous form, divided by Q^T Q (on the unit sphere it is
+E&G's (2 q_4^2 - 1) I + 2 q q^T - 2 q_4 skew(q)): it is then orthogonal for every Q != 0
+and depends on the direction of Q only, so a drift of |Q| never reaches the bodies, and
+the angular velocity the bodies compute from R is exactly w (G(Q) Q = 0 and
+G(Q) G(Q)^T = Q^T Q I).  Without the division a drift of 1e-6 in |Q| made R
+non-orthogonal by as much, and the stabilization then fought the bodies' dynamics.
+"""
+import sympy as sp
+
+__all__ = ["orientation", "position", "gravity", "force", "torque", "vector", "skew",
+           "planar_rotation", "from_Q", "quaternion_rates", "angular_velocity2",
+           "resolve1", "resolve2", "unit"]
+
+
+def vector(*entries) -> sp.Matrix:
+    """A 3-vector (column) of expressions or numbers."""
+    return sp.Matrix(entries)
+
+
+def orientation(frame) -> sp.Matrix:
+    """The frame's R as a 3x3 matrix of its variables."""
+    return sp.Matrix(3, 3, [frame.R11, frame.R12, frame.R13, frame.R21, frame.R22,
+                            frame.R23, frame.R31, frame.R32, frame.R33])
+
+
+def position(frame) -> sp.Matrix:
+    """r_0, the frame origin in world coordinates."""
+    return vector(frame.x, frame.y, frame.z)
+
+
+def gravity(frame) -> sp.Matrix:
+    """g_0, the world's gravity acceleration carried by the frame (world coordinates)."""
+    return vector(frame.gx, frame.gy, frame.gz)
+
+
+def force(frame) -> sp.Matrix:
+    """f, the cut force on the component, in frame coordinates."""
+    return vector(frame.fx, frame.fy, frame.fz)
+
+
+def torque(frame) -> sp.Matrix:
+    """t, the cut torque on the component, in frame coordinates."""
+    return vector(frame.tx, frame.ty, frame.tz)
+
+
+def skew(v) -> sp.Matrix:
+    """skew(v) u = v x u."""
+    return sp.Matrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+
+
+def unit(n) -> sp.Matrix:
+    """n / |n| (n of parameters: the normalization stays symbolic, as MSL's
+    Modelica.Math.Vectors.normalizeWithAssert)."""
+    n = sp.Matrix(n)
+    return n / sp.sqrt(n.dot(n))
+
+
+def planar_rotation(e, phi) -> sp.Matrix:
+    """R_rel of a rotation by phi about the unit axis e (MSL Frames.planarRotation):
+    R_rel = e e^T + (I - e e^T) cos(phi) - skew(e) sin(phi)."""
+    e = sp.Matrix(e)
+    eet = e * e.T
+    return eet + (sp.eye(3) - eet) * sp.cos(phi) - skew(e) * sp.sin(phi)
+
+
+def from_Q(Q, Q_2=None) -> sp.Matrix:
+    """R of the Euler parameters Q = (q_1, q_2, q_3, q_4), q_4 the scalar part (MSL
+    Frames.Quaternions.to_T in its homogeneous form, module docstring):
+    ((q_4^2 - q^T q) I + 2 q q^T - 2 q_4 skew(q)) / Q_2, Q_2 = Q^T Q (a variable equal
+    to it may be passed: the derivatives index reduction takes then stay short)."""
+    q = sp.Matrix(Q[:3])
+    qq = q.dot(q)
+    if Q_2 is None:
+        Q_2 = qq + Q[3]**2
+    return ((Q[3]**2 - qq) * sp.eye(3) + 2 * q * q.T - 2 * Q[3] * skew(q)) / Q_2
+
+
+def _G(Q) -> sp.Matrix:
+    q1, q2, q3, q4 = Q
+    return sp.Matrix([[q4, q3, -q2, -q1], [-q3, q4, q1, -q2], [q2, -q1, q4, -q3]])
+
+
+def quaternion_rates(Q, w, lam) -> sp.Matrix:
+    """der(Q) for the angular velocity w resolved in the rotated frame, with the
+    normalization term of Egeland & Gravdahl (6.336):
+    der(Q) = 1/2 G(Q)^T w + lam/2 (1 - Q^T Q) Q."""
+    Q = sp.Matrix(Q)
+    return _G(Q).T * sp.Matrix(w) / 2 + lam / 2 * (1 - Q.dot(Q)) * Q
+
+
+def angular_velocity2(R, Rdot) -> sp.Matrix:
+    """w resolved in the frame, from skew(w) = -der(R) R^T."""
+    W = -Rdot * R.T
+    return vector(W[2, 1], W[0, 2], W[1, 0])
+
+
+def resolve1(R, v) -> sp.Matrix:
+    """R^T v: a vector in frame coordinates, in the parent (world) coordinates."""
+    return R.T * sp.Matrix(v)
+
+
+def resolve2(R, v) -> sp.Matrix:
+    """R v: a vector in parent (world) coordinates, in frame coordinates."""
+    return R * sp.Matrix(v)
