@@ -21,9 +21,10 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from ..components import inheritance
 from ..components.component import (Component, Connection, InvalidConnection,
                                      InvalidEquation, InvalidValue, ModelError, NotInModel,
-                                     Port, compiling, flatten_equation_list)
+                                     Port, compiling)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
 from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
@@ -158,18 +159,23 @@ def _walk(root: Component):
 
 
 def _read(comp: Component, method: str) -> list:
+    """The items of ``comp``'s ``method`` over its class hierarchy (``inheritance``):
+    each class's own method once, base classes first, each item checked."""
     where = f"{comp._describe()}.{method}()"
     try:
-        raw = getattr(comp, method)()
-        items = None if raw is None else flatten_equation_list(raw)
+        parts = inheritance.collect(comp, method)
     except ModelError as err:
         raise _in_context(err, where) from err
     except Exception as err:  # the user's equations() raised: say where
         raise ModelError(f"while reading the {method.replace('_', ' ')} of "
                          f"{comp._describe()}: {type(err).__name__}: {err}") from err
-    if items is None:
-        raise InvalidEquation(f"{where} returned None; it must return a list of equations "
-                              "(is a 'return' missing?)")
+    items = []
+    for klass, part in parts:
+        if part is None:
+            whose = where if klass is type(comp) else f"{where} (of {klass.__name__})"
+            raise InvalidEquation(f"{whose} returned None; it must return a list of "
+                                  "equations (is a 'return' missing?)")
+        items.extend(part)
     for item in items:
         if not isinstance(item, (Equation, Connection, When)):
             hint = ""

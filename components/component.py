@@ -10,6 +10,10 @@ attributes and returns its equations from ``equations()``::
         def equations(self):
             return [ac.Eq(self.v, self.R * self.i)]
 
+``equations()`` returns only the class's own equations: the bases' (here OnePort's) are
+included by the framework, as Modelica's ``extends`` includes them (``inheritance.py``;
+``@ac.replaces(Base)`` replaces a base's equations instead).
+
 Instantiation takes modifications, several levels down if needed:
 ``SeriesRLC(R1={"R": 5.0}, C1={"v": {"start": 1.0, "fixed": True}})``.  A number given
 for a variable sets its start value.  Sub-components may also be created in ``__init__``
@@ -31,6 +35,7 @@ import copy
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
+from . import inheritance
 from .declarations import (Parameter, Variable, check_parameter_value, declaration_doc,
                            is_symbolic, parameter_signature, ref, shown_value)
 
@@ -38,7 +43,8 @@ if TYPE_CHECKING:
     import sympy
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
-           "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel"]
+           "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
+           "InvalidInheritance"]
 
 
 class ModelError(ValueError):
@@ -63,6 +69,12 @@ class InvalidConnection(ModelError):
 
 class InvalidHierarchy(ModelError):
     """A component that contains itself, or one instance held at two places."""
+
+
+class InvalidInheritance(ModelError):
+    """An ``equations()`` (or ``initial_equations()``) that calls its base's, which the
+    framework already includes, or an ``@ac.replaces`` naming a class that is not a base
+    with equations of its own."""
 
 
 class NotInModel(ModelError):
@@ -132,6 +144,7 @@ class Component:
                     decl.check()
                 except ValueError as err:
                     raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
+        inheritance.prepare_class(cls)
         _describe_class(cls)
 
     # -- the instance tree -------------------------------------------------------------
@@ -293,11 +306,13 @@ class Component:
         return _declarations(type(self))
 
     def equations(self) -> Iterable:
-        """The component's equations and connections (override)."""
+        """The equations and connections this class adds (override); the base classes'
+        are included by the framework (``inheritance.collect``), never by super()."""
         return []
 
     def initial_equations(self) -> Iterable:
-        """Equations that hold only at the initial time (override), e.g. der(w) = 0."""
+        """Equations that hold only at the initial time (override), e.g. der(w) = 0;
+        the base classes' are included as for ``equations``."""
         return []
 
     def __repr__(self):

@@ -146,7 +146,7 @@ class PI(_LimitedController):
     """
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, self.k * self.u + self.x_i)]
+        return [ac.Eq(self.v, self.k * self.u + self.x_i)]
 
 
 class PID(_LimitedController):
@@ -165,6 +165,5 @@ class PID(_LimitedController):
 
     def equations(self):
         d = self.k * self.Nd * (self.u - self.x_d)
-        return [*super().equations(),
-                ac.Eq(self.v, self.k * self.u + self.x_i + d),
+        return [ac.Eq(self.v, self.k * self.u + self.x_i + d),
                 ac.Eq(self.Td / self.Nd * ac.der(self.x_d), self.u - self.x_d)]

@@ -34,9 +34,6 @@ class StribeckFriction(_Stribeck, PartialRotationalFriction):
         """tau w >= 0: friction opposes the relative motion (stuck: w = 0)."""
         return self.tau * self.w
 
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]
-
 
 class KarnoppFriction(_Karnopp, PartialRotationalFriction):
     """Karnopp's stick-slip friction (Egeland & Gravdahl 5.2.3, 5.2.5-5.2.6, (5.14),
@@ -64,9 +61,6 @@ class KarnoppFriction(_Karnopp, PartialRotationalFriction):
         """tau w >= 0: friction opposes the relative motion (stuck: w = 0)."""
         return self.tau * self.w
 
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]
-
 
 class DahlFriction(_Dahl, PartialRotationalFriction):
     """Dahl's friction model (Egeland & Gravdahl 5.3.2, (5.35)):
@@ -87,9 +81,6 @@ class DahlFriction(_Dahl, PartialRotationalFriction):
     def loss_power(self):
         """tau w - d/dt F^2/(2 sigma) = |w| F^2 / F_c >= 0  (from (5.35))."""
         return sp.Abs(self.w) * self.F**2 / self.F_c
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]
 
 
 class LuGreFriction(_LuGre, PartialRotationalFriction):
@@ -120,9 +111,6 @@ class LuGreFriction(_LuGre, PartialRotationalFriction):
         """tau w - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
         sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
         return self.tau * self.w - self.sigma_0 * self.z * self.z_dot
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]
 
 
 class ElastoPlasticFriction(_ElastoPlastic, PartialRotationalFriction):
@@ -155,6 +143,3 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialRotationalFriction):
         (its sign over a run is what the energy audit checks; Dupont et al. 2002 give
         the conditions under which the elasto-plastic model is passive)."""
         return self.tau * self.w - self.sigma_0 * self.z * self.z_dot
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]

@@ -34,9 +34,6 @@ class StribeckFriction(_Stribeck, PartialTranslationalFriction):
         """f v >= 0: friction opposes the relative motion (stuck: v = 0)."""
         return self.f * self.v
 
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
-
 
 class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
     """Karnopp's stick-slip friction (Egeland & Gravdahl 5.2.3, 5.2.5-5.2.6, (5.14),
@@ -64,9 +61,6 @@ class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
         """f v >= 0: friction opposes the relative motion (stuck: v = 0)."""
         return self.f * self.v
 
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
-
 
 class DahlFriction(_Dahl, PartialTranslationalFriction):
     """Dahl's friction model (Egeland & Gravdahl 5.3.2, (5.35)):
@@ -87,9 +81,6 @@ class DahlFriction(_Dahl, PartialTranslationalFriction):
     def loss_power(self):
         """f v - d/dt F^2/(2 sigma) = |v| F^2 / F_c >= 0  (from (5.35))."""
         return sp.Abs(self.v) * self.F**2 / self.F_c
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
 
 
 class LuGreFriction(_LuGre, PartialTranslationalFriction):
@@ -120,9 +111,6 @@ class LuGreFriction(_LuGre, PartialTranslationalFriction):
         """f v - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
         sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
         return self.f * self.v - self.sigma_0 * self.z * self.z_dot
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
 
 
 class ElastoPlasticFriction(_ElastoPlastic, PartialTranslationalFriction):
@@ -155,6 +143,3 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialTranslationalFriction):
         (its sign over a run is what the energy audit checks; Dupont et al. 2002 give
         the conditions under which the elasto-plastic model is passive)."""
         return self.f * self.v - self.sigma_0 * self.z * self.z_dot
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
