@@ -56,6 +56,7 @@ class IndexReport:
     sigma: dict = field(default_factory=dict)
     conversion: object = None       # compiler.conversion.ConversionResult
     notes: list = field(default_factory=list)
+    units: object = None            # compiler.unitcheck.UnitCheck
 
     def __getstate__(self):
         state = dict(self.__dict__)
@@ -145,6 +146,7 @@ class IndexReport:
             "conversion": _conversion_dict(self.conversion),
             "timings_s": self.timings,
             "notes": self.notes,
+            "units": self.units.as_dict() if self.units is not None else None,
         }
 
     def blt_order(self) -> tuple[list, list]:
@@ -252,6 +254,8 @@ class IndexReport:
                              "of freedom in the equations as written; the model has "
                              f"{len(self.states)} states after alias elimination, structural "
                              "zeros and index reduction")
+        if self.units is not None:
+            lines.append("  " + self.units.summary())
         for note in self.notes:
             lines.append(f"  note: {note}")
         total = sum(self.timings.values())

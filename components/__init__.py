@@ -9,11 +9,12 @@ from .component import (Component, Connection, InvalidConnection, InvalidEquatio
                         NotInModel, Port, connect)
 from .declarations import Across, Parameter, Signal, Through, Variable, ref
 from .inheritance import replaces
+from .units import UnitError, UnitWarning
 from .. import _lazy_exports
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
-           "InvalidInheritance", "replaces", "Parameter", "Variable", "Across", "Through",
+           "InvalidInheritance", "UnitError", "UnitWarning", "replaces", "Parameter", "Variable", "Across", "Through",
            "Signal", "ref", "Eq", "Equation",
            "der", "if_else", "no_event", "when", "When", "reinit", "pre", "sign", "time"]
 

@@ -55,7 +55,11 @@ class KarnoppFriction(_Karnopp, PartialRotationalFriction):
     F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous coefficient")
     dv = ac.Parameter(1e-6, unit="rad/s", min=0, description="half width of the sticking band")
     a = ac.Variable(unit="rad/s2", description="relative acceleration")
-    sa = ac.Variable(start=0.0, description="curve parameter (applied torque when stuck)")
+    sa = ac.Variable(start=0.0, unit="1",
+                     description="curve parameter (applied torque when stuck, in unit_f)")
+    unit_f = ac.Parameter(1.0, unit="N.m", min=0, description="1 N.m: the unit of sa as a torque")
+    unit_a = ac.Parameter(1.0, unit="rad/s2", min=0,
+                          description="1 rad/s2: the unit of sa as an acceleration")
 
     def loss_power(self):
         """tau w >= 0: friction opposes the relative motion (stuck: w = 0)."""

@@ -55,7 +55,11 @@ class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
     F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous coefficient")
     dv = ac.Parameter(1e-6, unit="m/s", min=0, description="half width of the sticking band")
     a = ac.Variable(unit="m/s2", description="relative acceleration")
-    sa = ac.Variable(start=0.0, description="curve parameter (applied force when stuck)")
+    sa = ac.Variable(start=0.0, unit="1",
+                     description="curve parameter (applied force when stuck, in unit_f)")
+    unit_f = ac.Parameter(1.0, unit="N", min=0, description="1 N: the unit of sa as a force")
+    unit_a = ac.Parameter(1.0, unit="m/s2", min=0,
+                          description="1 m/s2: the unit of sa as an acceleration")
 
     def loss_power(self):
         """f v >= 0: friction opposes the relative motion (stuck: v = 0)."""
