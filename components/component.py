@@ -120,7 +120,21 @@ def _describe_class(cls) -> None:
         cls.__doc__ = declaration_doc(own_doc, params, variables, children)
 
 
-class Component:
+class _ComponentType(type):
+    """Checks an instance's modifications once its ``__init__`` (a subclass's too, which
+    may create sub-components) has run: a bad modification fails at the line that made
+    the instance (``validation.py``)."""
+
+    def __call__(cls, *args, **kwargs):
+        obj = super().__call__(*args, **kwargs)
+        mods = getattr(obj, "_mods", None)
+        if mods:
+            from .validation import validate_modifications
+            object.__setattr__(obj, "_mods", validate_modifications(obj, mods, cls.__name__))
+        return obj
+
+
+class Component(metaclass=_ComponentType):
     """Base class of every model and component (see the module docstring)."""
 
     def __init__(self, **modifications):
