@@ -26,7 +26,7 @@ __all__ = ["validate_modifications", "suggestion"]
 
 def suggestion(name: str, known) -> str:
     """`` (did you mean 'R'?)`` for the closest known name, or ''."""
-    close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.6)
+    close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.5)
     if not close:
         lowered = {k.lower(): k for k in known}
         if name.lower() in lowered:
@@ -52,6 +52,12 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
         elif isinstance(decls.get(key), Parameter):
             out[key] = _parameter_value(decls[key], key, mod, where)
         elif isinstance(decls.get(key), Variable):
+            allowed = list(decls[key].attributes.__dataclass_fields__)
+            for attr in (mod if isinstance(mod, dict) else ()):
+                if attr not in allowed:
+                    raise InvalidValue(f"{where}: variable '{key}' has no attribute "
+                                       f"'{attr}'{suggestion(attr, allowed)} (its "
+                                       f"attributes: {', '.join(allowed)})")
             try:
                 decls[key].attributes.modified(mod)
             except (TypeError, ValueError) as err:
