@@ -79,6 +79,13 @@ class FlatEquation(_Located):
     label: str | None = None
 
     @property
+    def where(self) -> str:
+        """The component, and the equation's label if it has one:
+        ``spring (Spring), "Hooke's law"``."""
+        base = _Located.where.fget(self)
+        return f'{base}, "{self.label}"' if self.label else base
+
+    @property
     def text(self) -> str:
         """The equation as written (printed lazily: printing is slow on large models)."""
         if not isinstance(self.source, str):
@@ -102,6 +109,7 @@ class FlatModel:
     structural_zeros: list = field(default_factory=list)  # parameters evaluated as 0
     ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
     components: dict = field(default_factory=dict)    # path -> class name
+    derived: dict = field(default_factory=dict)       # bound parameter -> (binding, value)
 
     def variable(self, name: str) -> FlatVariable:
         for v in self.variables:
@@ -464,6 +472,7 @@ def _check_bounds(flat: FlatModel, resolved: dict) -> None:
             text = f"{sp.sstr(p.value)} (= {value!r})"
             if value != value:
                 raise InvalidValue(f"{p.describe()} = {text} is not a number (NaN)")
+            flat.derived[p.name] = (sp.sstr(p.value), value)
         else:
             value, text = float(p.value), f"{p.value!r}"
         why = bound_violation(value, p.min, p.max)

@@ -138,8 +138,7 @@ def _check_equation(eq, walker) -> None:
 
 
 def _message(eq, m: _Mismatch) -> str:
-    label = f" ({eq.label})" if getattr(eq, "label", None) else ""
-    return f"equation{label} '{eq.text}' in {eq.where}: {m.describe()}"
+    return f"equation '{eq.text}' in {eq.where}: {m.describe()}"
 
 
 def _check_binding(p, walker, dims, result) -> None:

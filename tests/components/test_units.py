@@ -64,8 +64,8 @@ class Oscillator(ac.Component):
                 ac.connect(self.spring.flange_b, self.mass.flange_a)]
 
 
-WRONG = ("equation (Hooke's law) 'spring.tau = spring.c*der(spring.phi_rel)' in spring "
-         "(WrongSpring): the sides differ: 'spring.tau' is N.m (kg.m2/s2) but "
+WRONG = ("equation 'spring.tau = spring.c*der(spring.phi_rel)' in spring (WrongSpring), "
+         "\"Hooke's law\": the sides differ: 'spring.tau' is N.m (kg.m2/s2) but "
          "'spring.c*der(spring.phi_rel)' is W (kg.m2/s3)")
 
 
