@@ -78,6 +78,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
     flat = clock("flatten", flatten, model)
     from .unitcheck import check_units as unit_check
     report.units = clock("units", unit_check, flat, check_units)
+    report.derived_parameters = dict(flat.derived)
     key = None
     if use_cache:
         t1 = _time.perf_counter()
@@ -258,7 +259,8 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes) -> M
               "self_scaled": _self_scaled(system, z_syms),
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
                                    if p.min is not None or p.max is not None},
-              "derived_bounds": _derived_bounds(reduced.parameters, psyms)})
+              "derived_bounds": _derived_bounds(reduced.parameters, psyms),
+              "derived_parameters": dict(flat.derived)})
     if reduced.whens:
         out.whens = WhenCode(generate(when_rows, z_syms, psyms, len(modes), None, assigned,
                                       discretes=dsyms),

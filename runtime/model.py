@@ -46,8 +46,11 @@ class CompiledModel(DAEProblem):
 
     Built by :func:`acausal.compile` from the compiler's
     :class:`~acausal.compiler.modelcode.ModelCode`.  ``compiled.report`` is the index
-    report; ``param_names``/``p`` the tunable parameters; ``outputs`` maps every
-    variable's name to where its value comes from; ``states`` names the states.
+    report; ``param_names``/``p`` the tunable parameters; ``derived_parameters`` the
+    parameters bound to an expression of others (``m = rho * V``), by name, with their
+    values at compile time (their equations use the binding, so they follow the tunable
+    parameters they depend on); ``outputs`` maps every variable's name to where its
+    value comes from; ``states`` names the states.
     """
 
     oriented_roots = True
@@ -57,6 +60,8 @@ class CompiledModel(DAEProblem):
         self.model_code = mc
         self.code = code = mc.code
         self.param_names = list(mc.param_names)
+        self.derived_parameters = {name: value for name, (_, value)
+                                   in mc.meta.get("derived_parameters", {}).items()}
         self.p = np.asarray(mc.param_values, dtype=float)
         self.n_res = int(mc.n_res)
         self.state_z = np.asarray(mc.state_z, dtype=np.int64)
