@@ -36,8 +36,9 @@ from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
 from . import inheritance
-from .declarations import (Parameter, Variable, check_parameter_value, declaration_doc,
-                           is_symbolic, parameter_signature, ref, shown_value)
+from .declarations import (Parameter, Variable, check_parameter_value,
+                           check_structural_value, declaration_doc, is_symbolic,
+                           parameter_signature, ref, shown_value)
 
 if TYPE_CHECKING:
     import sympy
@@ -138,6 +139,19 @@ class Component(metaclass=_ComponentType):
     """Base class of every model and component (see the module docstring)."""
 
     def __init__(self, **modifications):
+        structural = {}
+        for name, decl in _structurals(type(self)).items():
+            if name in modifications:
+                value = copy.deepcopy(modifications.pop(name))
+                if hasattr(value, "tolist"):        # a numpy array of coefficients
+                    value = value.tolist()
+                try:
+                    check_structural_value(value, f"structural parameter {name}",
+                                           decl.min, decl.max)
+                except ValueError as err:
+                    raise InvalidValue(f"{type(self).__name__}: {err}") from None
+                structural[name] = value
+        object.__setattr__(self, "_structural", structural)
         object.__setattr__(self, "_mods", dict(modifications))
         object.__setattr__(self, "_path", None)
         object.__setattr__(self, "_parent", None)
@@ -148,6 +162,13 @@ class Component(metaclass=_ComponentType):
         object.__setattr__(self, "_var_attrs", {})
         for name, decl in _class_children(type(self)).items():
             setattr(self, name, decl._clone())
+        self.build()
+
+    def build(self) -> None:
+        """Create the sub-components that the structural parameters imply (override):
+        called once, when the instance is made, after its structural parameters are set
+        and its declared sub-components are created.  ``TransferFunction`` makes one
+        integrator state per order of ``den`` here."""
 
     def __init_subclass__(cls, **kwargs):
         """Check the class's own declarations once, naming them ``Class.attribute``."""
@@ -166,6 +187,10 @@ class Component(metaclass=_ComponentType):
         if value is self or (_is_component_list(value) and any(v is self for v in value)):
             raise InvalidHierarchy(f"{type(self).__name__}.{name}: a component cannot "
                                    "contain itself")
+        if name in _structurals(type(self)):
+            raise InvalidValue(f"{type(self).__name__}.{name} is a structural parameter; set "
+                               f"it when the component is made, {type(self).__name__}"
+                               f"({name}=...)")
         if isinstance(_declarations(type(self)).get(name), (Parameter, Variable)):
             # the assignment would hide the declaration: the equations would use the
             # value while the model still declares the parameter or variable
@@ -424,6 +449,7 @@ Port.connection_type = _connection_type
 
 _CHILD_CACHE: dict = {}
 _DECL_CACHE: dict = {}
+_STRUCTURAL_CACHE: dict = {}
 
 
 def _class_children(cls) -> dict:
@@ -439,14 +465,28 @@ def _class_children(cls) -> dict:
 
 
 def _declarations(cls) -> dict:
+    """Parameters and variables of the model over the MRO (not structural parameters,
+    which shape the model and are no part of it)."""
     if cls not in _DECL_CACHE:
-        out = {}
+        out, structural = {}, {}
         for klass in reversed(cls.__mro__):
             for name, value in vars(klass).items():
-                if isinstance(value, (Parameter, Variable)):
+                if isinstance(value, Parameter) and value.structural:
+                    structural[name] = value
+                    out.pop(name, None)
+                elif isinstance(value, (Parameter, Variable)):
                     out[name] = value
+                    structural.pop(name, None)
         _DECL_CACHE[cls] = out
+        _STRUCTURAL_CACHE[cls] = structural
     return _DECL_CACHE[cls]
+
+
+def _structurals(cls) -> dict:
+    """The structural parameters of ``cls`` over the MRO."""
+    if cls not in _STRUCTURAL_CACHE:
+        _declarations(cls)
+    return _STRUCTURAL_CACHE[cls]
 
 
 def _hierarchy_error(comp, where: str, above, first: str) -> InvalidHierarchy:

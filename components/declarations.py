@@ -24,7 +24,8 @@ from decimal import Decimal
 import numpy as np
 
 __all__ = ["Parameter", "Variable", "Across", "Through", "Signal", "VariableAttributes", "ref",
-           "real_number", "check_parameter_value", "bound_violation", "is_symbolic"]
+           "real_number", "check_parameter_value", "check_structural_value",
+           "bound_violation", "is_symbolic"]
 
 _STATE_SELECT = ("never", "avoid", "default", "prefer", "always")
 
@@ -74,6 +75,22 @@ def check_parameter_value(value, what: str) -> None:
     if callable(value) and not isinstance(value, (numbers.Number, Decimal, np.generic)):
         return
     real_number(value, what)
+
+
+def check_structural_value(value, what: str, lo=None, hi=None) -> None:
+    """A structural parameter's value is a number or a bool, or a list or tuple of them
+    (numbers within [lo, hi]); else ValueError."""
+    items = value if isinstance(value, (list, tuple)) else [value]
+    for item in items:
+        if isinstance(item, (bool, np.bool_)):
+            continue
+        if isinstance(item, (list, tuple)):
+            check_structural_value(item, what, lo, hi)
+            continue
+        x = real_number(item, what)
+        why = bound_violation(x, lo, hi)
+        if why:
+            raise ValueError(f"{what} = {item!r} {why}")
 
 
 def bound_violation(value: float, lo, hi) -> str | None:
@@ -185,15 +202,29 @@ class Parameter(_Declaration):
     component's parameter with ``ref``.  ``min`` and ``max`` are enforced when the model
     is flattened.  An infinite value is accepted where the equations stay finite with it
     (a time constant in ``1/Tt``, an output limit); a bool is not a real number.
+
+    ``structural=True`` declares a parameter that shapes the model rather than entering
+    its equations (a number of segments, the coefficients of a transfer function): its
+    value is a plain Python value (a number or a bool, or a list or tuple of them)
+    fixed when the component is made; ``self.name`` reads that value, and the
+    component's ``build()`` creates the sub-components it implies.  It is not a
+    parameter of the compiled model (changing it means a new model).
     """
 
     def __init__(self, value=None, unit: str = "", description: str = "",
-                 min: float | None = None, max: float | None = None):
+                 min: float | None = None, max: float | None = None,
+                 structural: bool = False):
         self.value = value
         self.unit = unit
         self.description = description
         self.min = min
         self.max = max
+        self.structural = bool(structural)
+
+    def __get__(self, instance, owner=None):
+        if instance is None or not self.structural:
+            return super().__get__(instance, owner)
+        return instance._structural.get(self.name, self.value)
 
     def __repr__(self):
         # help() lists a declaration by its repr: show what it declares
@@ -204,6 +235,9 @@ class Parameter(_Declaration):
 
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
+        if self.structural:
+            check_structural_value(self.value, "default value", self.min, self.max)
+            return
         check_parameter_value(self.value, "default value")
         lo = None if self.min is None else real_number(self.min, "min")
         hi = None if self.max is None else real_number(self.max, "max")
@@ -329,7 +363,8 @@ def parameter_signature(cls, parameters: dict):
     for name, decl in parameters.items():
         if name in taken or not name.isidentifier():
             continue
-        annotation = _Shown(f"float [{decl.unit}]") if decl.unit else float
+        annotation = (_Shown("structural") if getattr(decl, "structural", False)
+                      else _Shown(f"float [{decl.unit}]") if decl.unit else float)
         keyword.append(inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY,
                                          default=shown_value(decl.value),
                                          annotation=annotation))
@@ -370,7 +405,8 @@ def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
         for name, d in parameters.items():
             bounds = ", ".join(b for b in (f"min {d.min!r}" if d.min is not None else "",
                                            f"max {d.max!r}" if d.max is not None else "") if b)
-            lines.append(f"{name} : float{_unit(d.unit)}, default {shown_value(d.value)!r}"
+            kind = "structural" if getattr(d, "structural", False) else "float"
+            lines.append(f"{name} : {kind}{_unit(d.unit)}, default {shown_value(d.value)!r}"
                          + (f" ({bounds})" if bounds else ""))
             if d.description:
                 lines.append(f"    {d.description}")

@@ -17,7 +17,7 @@ from __future__ import annotations
 import difflib
 import math
 
-from .component import InvalidValue, NotInModel, _declarations
+from .component import InvalidValue, NotInModel, _declarations, _structurals
 from .declarations import (Parameter, Variable, bound_violation, check_parameter_value,
                            is_symbolic)
 
@@ -63,6 +63,10 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
             except (TypeError, ValueError) as err:
                 raise InvalidValue(f"{where}: variable '{key}': {err}") from None
             out[key] = mod
+        elif key in _structurals(type(comp)):
+            raise InvalidValue(f"{where}: '{key}' is a structural parameter, fixed when the "
+                               f"component is made: write {type(comp).__name__}({key}=...) "
+                               "where it is declared")
         else:
             known = sorted(set(decls) | set(children))
             raise NotInModel(f"{where} has no parameter, variable or sub-component named "
