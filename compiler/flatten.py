@@ -24,7 +24,7 @@ import sympy as sp
 from ..components import inheritance
 from ..components.component import (Component, Connection, InvalidConnection,
                                      InvalidEquation, InvalidValue, ModelError, NotInModel,
-                                     Port, compiling)
+                                     Port, compiling, in_context)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
 from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
@@ -35,7 +35,10 @@ __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatte
 class _Located:
     @property
     def where(self) -> str:
-        return f"{self.component or '(model)'} ({self.component_class})"
+        """The component, and an equation's label: ``spring (Spring), "Hooke's law"``."""
+        base = f"{self.component or '(model)'} ({self.component_class})"
+        label = getattr(self, "label", None)
+        return f'{base}, "{label}"' if label else base
 
 
 @dataclass
@@ -77,13 +80,6 @@ class FlatEquation(_Located):
     component_class: str
     kind: str = "equation"       # equation | connect | unconnected | initial
     label: str | None = None
-
-    @property
-    def where(self) -> str:
-        """The component, and the equation's label if it has one:
-        ``spring (Spring), "Hooke's law"``."""
-        base = _Located.where.fget(self)
-        return f'{base}, "{self.label}"' if self.label else base
 
     @property
     def text(self) -> str:
@@ -173,7 +169,7 @@ def _read(comp: Component, method: str) -> list:
     try:
         parts = inheritance.collect(comp, method)
     except ModelError as err:
-        raise _in_context(err, where) from err
+        raise in_context(err, where) from err
     except Exception as err:  # the user's equations() raised: say where
         raise ModelError(f"while reading the {method.replace('_', ' ')} of "
                          f"{comp._describe()}: {type(err).__name__}: {err}") from err
@@ -193,15 +189,6 @@ def _read(comp: Component, method: str) -> list:
             raise InvalidEquation(f"{where} returned {item!r}{hint}; expected "
                                   "ac.Eq(lhs, rhs), ac.connect(a, b) or ac.when(...)")
     return items
-
-
-def _in_context(err: ModelError, where: str) -> ModelError:
-    """The same kind of error, its message prefixed by where it happened."""
-    text = f"in {where}: {err}"
-    try:
-        return type(err)(text)
-    except TypeError:   # a subclass with another constructor
-        return ModelError(text)
 
 
 def _collect_declarations(comp: Component, flat: FlatModel) -> None:

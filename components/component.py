@@ -436,6 +436,15 @@ def connect(a: Port, b: Port, *more: Port) -> Connection:
     return Connection(ports)
 
 
+def in_context(err: ModelError, where: str) -> ModelError:
+    """The same kind of error, its message prefixed by where it happened."""
+    text = f"in {where}: {err}"
+    try:
+        return type(err)(text)
+    except TypeError:   # a subclass with another constructor
+        return ModelError(text)
+
+
 def _port_name(p: Port) -> str:
     return p.path or repr(p)
 
