@@ -24,9 +24,10 @@ A component becomes part of a model when the root is bound (``_bind``), which ha
 
 Bad input raises a ``ModelError`` naming the component path, the declaration and the
 value, at the earliest point where those names are known: declarations when their class
-is created (``Resistor.R: ...``), modifications and the instance tree when the model is
-bound (``'R1' (Resistor): parameter R = 'ten' is not a real number``), equations and
-connections when they are read by flattening.
+is created (``Resistor.R: ...``), modifications when the instance is made
+(``'R1' (Resistor): parameter R = 'ten' is not a real number``, ``validation.py``), the
+instance tree when the model is bound, equations and connections when they are read by
+flattening, units when the model is compiled (``units.py``).
 """
 from __future__ import annotations
 
