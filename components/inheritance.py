@@ -136,22 +136,15 @@ def _guarded(cls, name: str, func):
 
 # -- reading the equations ------------------------------------------------------------------
 
-_SOURCES: dict = {}
-
-
 def own_methods(cls, name: str) -> tuple:
     """``(class, function)`` of every class in ``cls``'s MRO that defines ``name`` itself,
-    most basic first, without those a subclass replaces (cached per class)."""
-    key = (cls, name)
-    found = _SOURCES.get(key)
-    if found is None:
-        mro = [k for k in reversed(cls.__mro__) if name in vars(k)]
-        replaced = set()
-        for klass in mro:
-            replaced.update(getattr(vars(klass)[name], _REPLACES, ()))
-        found = tuple((k, vars(k)[name]) for k in mro if k not in replaced)
-        _SOURCES[key] = found
-    return found
+    most basic first, without those a subclass replaces.  Read afresh each time (a few
+    dictionary look-ups), so a method assigned after the class was made counts too."""
+    mro = [k for k in reversed(cls.__mro__) if name in vars(k)]
+    replaced = set()
+    for klass in mro:
+        replaced.update(getattr(vars(klass)[name], _REPLACES, ()))
+    return tuple((k, vars(k)[name]) for k in mro if k not in replaced)
 
 
 def collect(comp, name: str) -> list:
