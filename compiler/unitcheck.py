@@ -112,6 +112,15 @@ def check_units(flat, mode: str = "warn") -> UnitCheck:
         except _Mismatch as m:
             result.mismatches.append(_message(eq, m))
         result.checked += 1
+    for w in flat.whens:          # the relations of the condition; reinit(x, expr)
+        try:
+            walker.condition(w.condition)
+            for act in w.actions:
+                walker.same([act.variable, act.value], "reinit changes the dimension")
+        except _Mismatch as m:
+            result.mismatches.append(f"when {sp.sstr(w.condition)} in {w.origin or '(model)'}"
+                                     f" ({w.origin_class}): {m.describe()}")
+        result.checked += 1
     for p in flat.parameters:
         if isinstance(p.value, sp.Basic) and not p.value.is_number and p.unit:
             _check_binding(p, walker, dims, result)
@@ -249,7 +258,7 @@ class _Walker:
             return DIMENSIONLESS
         if isinstance(e, sp.Piecewise):
             for _, cond in e.args:
-                self._condition(cond)
+                self.condition(cond)
             return self.same([v for v, _ in e.args], "the branches of if_else differ")
         if isinstance(e, sp.Derivative):
             d = self._value(e.expr)
@@ -309,9 +318,9 @@ class _Walker:
         if _known(d) and d != DIMENSIONLESS:
             raise _Mismatch(f"{what} must be dimensionless", a, d)
 
-    def _condition(self, cond) -> None:
+    def condition(self, cond) -> None:
         if isinstance(cond, sp.core.relational.Relational):
             self.same(cond.args, "the sides of a relation differ")
         elif isinstance(cond, sp.logic.boolalg.BooleanFunction):
             for c in cond.args:
-                self._condition(c)
+                self.condition(c)

@@ -207,3 +207,19 @@ def test_resistor_given_in_kilo_ohm_simulates_as_the_analytic_rc():
 def test_a_value_with_a_wrong_unit_fails_where_it_is_given(given, why):
     with pytest.raises(ac.InvalidValue, match=re.escape(f"Resistor: {why}")):
         Resistor(R=given)
+
+
+def test_a_reinit_that_changes_the_dimension_is_rejected():
+    class Ball(ac.Component):
+        h = ac.Variable(start=1.0, fixed=True, unit="m")
+        v = ac.Variable(start=0.0, fixed=True, unit="m/s")
+        e = ac.Parameter(0.8, unit="1")
+        g = ac.Parameter(9.81, unit="m/s2")
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.h), self.v), ac.Eq(ac.der(self.v), -self.g),
+                    ac.when(self.h < 0, ac.reinit(self.v, -self.e * ac.pre(self.h)))]
+
+    with pytest.raises(UnitError, match=r"when h < 0 in \(model\) \(Ball\): reinit changes "
+                                        r"the dimension: 'v' is m/s but '-e\*pre\(h\)' is m"):
+        check_units(flatten(Ball()), "error")
