@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
+from acausal.compiler.flatten import flatten
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
 
 
@@ -75,9 +76,15 @@ def test_nested_value_outside_its_bounds_names_the_path():
 
 @pytest.mark.parametrize("value", [2.0, 2, np.float64(2.0), np.int32(2),
                                    fractions.Fraction(4, 2), "2 Ohm", "0.002 kOhm"])
-def test_good_values_of_every_kind_give_the_analytic_rc(value):
-    """v_C = 1 - exp(-t/(R C)) with R = 2 Ohm however it was written."""
+def test_good_values_of_every_kind_are_taken_as_written(value):
+    flat = flatten(RC(R1={"R": value}))
+    R = next(p for p in flat.parameters if p.name == "R1.R")
+    assert float(R.value) == pytest.approx(2.0, rel=1e-15)
+
+
+def test_a_value_with_a_unit_gives_the_analytic_rc():
+    """v_C = 1 - exp(-t/(R C)) with R = 0.002 kOhm = 2 Ohm."""
     t = np.linspace(0, 4, 9)
-    res = ac.simulate(RC(R1={"R": value}, C1={"v": {"start": 0.0, "fixed": True}}),
+    res = ac.simulate(RC(R1={"R": "0.002 kOhm"}, C1={"v": {"start": 0.0, "fixed": True}}),
                       t_end=4.0, t_eval=t, rtol=1e-10, atol=1e-12)
     assert np.max(np.abs(res["C1.v"] - (1 - np.exp(-t / 2.0)))) < 1e-7
