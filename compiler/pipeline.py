@@ -54,7 +54,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
     (``cache="tree"``) is not checked again."""
     if cache not in (True, False, "tree"):
         raise ValueError(f"cache must be True, False or 'tree', got {cache!r}")
-    from .unitcheck import MODES
+    from ..components.units import MODES
     if check_units not in MODES:
         raise ValueError(f"check_units must be one of {MODES}, got {check_units!r}")
     from . import cache as store

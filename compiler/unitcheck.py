@@ -24,18 +24,16 @@ changes the model.
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass, field
 from fractions import Fraction
 
 import sympy as sp
 
 from ..components.symbols import Equation, der, no_event, pre
-from ..components.units import (DIMENSIONLESS, UnitError, UnitWarning, dimension_text,
-                                 parse_unit)
+from ..components.units import (DIMENSIONLESS, MODES, UnitCheck, UnitError, UnitWarning,
+                                 dimension_text, parse_unit)
 
 __all__ = ["check_units", "UnitCheck", "MODES"]
 
-MODES = ("error", "warn", "off")
 _TIME = (0, 0, 1, 0, 0, 0, 0)
 
 # functions whose arguments and value are dimensionless
@@ -52,33 +50,6 @@ class _Literal:
 
 
 LITERAL = _Literal()
-
-
-@dataclass
-class UnitCheck:
-    """What the unit check found: ``checked`` equations, ``mismatches`` (messages),
-    ``unitless_variables``/``unitless_parameters`` (names declared without a unit),
-    ``seconds`` spent."""
-
-    mode: str = "off"
-    checked: int = 0
-    mismatches: list = field(default_factory=list)
-    unitless_variables: list = field(default_factory=list)
-    unitless_parameters: list = field(default_factory=list)
-    seconds: float = 0.0
-
-    def as_dict(self) -> dict:
-        return dict(self.__dict__)
-
-    def summary(self) -> str:
-        if self.mode == "off":
-            return "units: not checked (check_units='off')"
-        text = (f"units: {self.checked} equations checked, "
-                f"{len(self.mismatches)} inconsistent")
-        if self.unitless_variables:
-            text += (f"; {len(self.unitless_variables)} variable(s) without a unit (any "
-                     f"dimension): {', '.join(self.unitless_variables)}")
-        return text
 
 
 class _Mismatch(Exception):

@@ -19,14 +19,18 @@ that is installed).
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import lru_cache
 from typing import NamedTuple
 
 from .component import ModelError
 
-__all__ = ["UnitError", "UnitWarning", "Unit", "parse_unit", "dimension_text",
-           "convert_value", "BASE_DIMENSIONS", "DIMENSIONLESS"]
+__all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "parse_unit",
+           "dimension_text", "convert_value", "BASE_DIMENSIONS", "DIMENSIONLESS"]
+
+# check_units= of acausal.compile (the check itself: compiler/unitcheck.py)
+MODES = ("error", "warn", "off")
 
 
 class UnitError(ModelError):
@@ -218,3 +222,31 @@ def convert_value(value: str, declared: str, what: str) -> float:
                          f"({dimension_text(target.dims)})")
     si = (number + given.offset) * given.scale
     return si / target.scale - target.offset
+
+
+@dataclass
+class UnitCheck:
+    """What the compiler's unit check found (kept here, without sympy, so that a
+    compiled model loads without it): ``checked`` equations, ``mismatches`` (messages),
+    ``unitless_variables``/``unitless_parameters`` (names declared without a unit),
+    ``seconds`` spent."""
+
+    mode: str = "off"
+    checked: int = 0
+    mismatches: list = field(default_factory=list)
+    unitless_variables: list = field(default_factory=list)
+    unitless_parameters: list = field(default_factory=list)
+    seconds: float = 0.0
+
+    def as_dict(self) -> dict:
+        return dict(self.__dict__)
+
+    def summary(self) -> str:
+        if self.mode == "off":
+            return "units: not checked (check_units='off')"
+        text = (f"units: {self.checked} equations checked, "
+                f"{len(self.mismatches)} inconsistent")
+        if self.unitless_variables:
+            text += (f"; {len(self.unitless_variables)} variable(s) without a unit (any "
+                     f"dimension): {', '.join(self.unitless_variables)}")
+        return text
