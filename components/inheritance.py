@@ -27,7 +27,8 @@ so on the method::
             ...
 
 Then the named classes' own ``equations`` are left out for this class and its
-subclasses (their bases' equations still count).  Replacing is an explicit, visible
+subclasses (their bases' equations still count); the replacing method may call the
+replaced ones (``Diode.equations(self)``, to filter what they return).  Replacing is an explicit, visible
 act, as Modelica's ``redeclare``; nothing is ever dropped silently.
 """
 from __future__ import annotations
@@ -81,7 +82,7 @@ def prepare_class(cls) -> None:
         func = vars(cls).get(name)
         if not isinstance(func, types.FunctionType) or getattr(func, _WRAPPED, None):
             continue
-        if _calls_super(func.__code__, name):
+        if _calls_super(func.__code__, name) and not getattr(func, _REPLACES, ()):
             raise _error_class()(_super_message(cls, name))
         for base in getattr(func, _REPLACES, ()):
             _check_replaced(cls, name, base)
@@ -127,11 +128,17 @@ def _guarded(cls, name: str, func):
     def own(self, *args, **kwargs):
         active = _CALLING.get()
         if active is not None and active[0] is self and active[1] == name \
-                and active[2] is not cls:
+                and active[2] is not cls and cls not in _replaced_by(active[2], name):
             raise _error_class()(_super_message(active[2], name, cls))
         return func(self, *args, **kwargs)
     setattr(own, _WRAPPED, cls)
     return own
+
+
+def _replaced_by(klass, name: str) -> tuple:
+    """The classes whose own ``name`` the method of ``klass`` replaces: it may call those
+    (to reuse or filter what they return), since the framework leaves them out."""
+    return getattr(vars(klass).get(name), _REPLACES, ())
 
 
 # -- reading the equations ------------------------------------------------------------------

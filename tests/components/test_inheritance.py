@@ -193,3 +193,19 @@ def test_library_has_no_super_equation_calls():
                     checked += 1
                     assert not _calls_super(f.__wrapped__.__code__, name), cls
     assert checked > 100
+
+
+def test_a_replacing_method_may_call_the_replaced_one():
+    class Shorted(Resistor):
+        """Ohm's law kept as written by Resistor, filtered to nothing: v = 0 instead."""
+
+        @ac.replaces(Resistor)
+        def equations(self):
+            kept = [e for e in Resistor.equations(self) if "R" not in str(e.rhs)]
+            return kept + [ac.Eq(self.v, 0)]
+
+    class Top(ac.Component):
+        r = Shorted()
+
+    assert _texts(Top()) == ["r.v = -r.n.v + r.p.v", "0 = r.n.i + r.p.i", "r.i = r.p.i",
+                             "r.v = 0"]
