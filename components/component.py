@@ -362,7 +362,8 @@ class Component(metaclass=_ComponentType):
         if isinstance(self, Port):
             return f"<{type(self).__name__} {where}>"
         given = {**getattr(self, "_mods", {}), **getattr(self, "_param_values", {})}
-        shown = []
+        shown = [f"{name}={getattr(self, '_structural', {}).get(name, decl.value)!r}"
+                 for name, decl in _structurals(type(self)).items()]
         for name, decl in self.declarations().items():
             if isinstance(decl, Parameter):
                 value = given.get(name, decl.value)
