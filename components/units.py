@@ -27,7 +27,8 @@ from typing import NamedTuple
 from .component import ModelError
 
 __all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "parse_unit",
-           "dimension_text", "convert_value", "BASE_DIMENSIONS", "DIMENSIONLESS"]
+           "dimension_text", "has_unit", "convert_value", "BASE_DIMENSIONS",
+           "DIMENSIONLESS"]
 
 # check_units= of acausal.compile (the check itself: compiler/unitcheck.py)
 MODES = ("error", "warn", "off")
@@ -198,10 +199,21 @@ def _named() -> dict:
 _VALUE = re.compile(r"^\s*(?P<num>[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(?P<unit>.*)$")
 
 
-def convert_value(value: str, declared: str, what: str) -> float:
+def has_unit(value) -> bool:
+    """True for a string that is a number followed by a unit (``"2 kOhm"``); other
+    strings are no values (the caller's type check says so)."""
+    if not isinstance(value, str):
+        return False
+    m = _VALUE.match(value)
+    return m is not None and bool(m["unit"].strip())
+
+
+def convert_value(value: str, declared: str, what: str, name: str | None = None) -> float:
     """``"2 kOhm"`` given for a parameter declared in ``"Ohm"``: 2000.0.  Raises
     ValueError (naming ``what``) for a string that is not a number with a unit, a unit of
-    another dimension, or a declaration without a unit."""
+    another dimension, or a declaration without a unit (``name``: the declaration's, by
+    default the last word of ``what``)."""
+    name = name or what.split()[-1]
     m = _VALUE.match(value)
     if m is None:
         raise ValueError(f"{what} = {value!r} is not a real number (nor a number with a "
@@ -210,15 +222,15 @@ def convert_value(value: str, declared: str, what: str) -> float:
     if not m["unit"].strip():
         return number
     if not declared:
-        raise ValueError(f"{what} = {value!r} gives a unit, but {what.split()[-1]} "
-                         "declares none to convert it to")
+        raise ValueError(f"{what} = {value!r} gives a unit, but {name} declares none "
+                         "to convert it to")
     try:
         given, target = parse_unit(m["unit"]), parse_unit(declared)
     except UnitError as err:
         raise ValueError(f"{what} = {value!r}: {err}") from None
     if given.dims != target.dims:
         raise ValueError(f"{what} = {value!r} has dimension {dimension_text(given.dims)}, "
-                         f"but {what.split()[-1]} is declared in {declared!r} "
+                         f"but {name} is declared in {declared!r} "
                          f"({dimension_text(target.dims)})")
     si = (number + given.offset) * given.scale
     return si / target.scale - target.offset

@@ -6,7 +6,8 @@ that wrote them, with the names the user wrote: ``NotInModel`` for a name the co
 does not have (with difflib's "did you mean 'R'?"), ``InvalidValue`` for a value that
 is not a real number, NaN, outside the declared [min, max], or a sub-component
 modification that is not a dict.  A value given as a string with a unit,
-``Resistor(R="2 kOhm")``, is converted to the declared unit (``components.units``).
+``Resistor(R="2 kOhm")``, ``Inertia(w={"start": "60 rpm"})``, is converted to the
+declared unit (``components.units``).
 
 Only what the modification itself decides is checked here; a value that is an
 expression of other parameters (``ref``, a function of the component, a sympy
@@ -58,6 +59,7 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
                     raise InvalidValue(f"{where}: variable '{key}' has no attribute "
                                        f"'{attr}'{suggestion(attr, allowed)} (its "
                                        f"attributes: {', '.join(allowed)})")
+            mod = _variable_values(decls[key], key, mod, where)
             try:
                 decls[key].attributes.modified(mod)
             except (TypeError, ValueError) as err:
@@ -82,7 +84,7 @@ def _child_path(where: str, key: str) -> str:
 
 def _parameter_value(decl: Parameter, key: str, value, where: str):
     what = f"parameter {key}"
-    if isinstance(value, str):
+    if isinstance(value, str) and _has_unit(value):
         from .units import convert_value
         try:
             value = convert_value(value, decl.unit, what)
@@ -97,6 +99,35 @@ def _parameter_value(decl: Parameter, key: str, value, where: str):
         if why:
             raise InvalidValue(f"{where}: {what} = {value!r} {why}")
     return value
+
+
+_WITH_UNIT = ("start", "nominal", "min", "max")
+
+
+def _has_unit(value) -> bool:
+    if not isinstance(value, str):
+        return False
+    from .units import has_unit
+    return has_unit(value)
+
+
+def _variable_values(decl: Variable, key: str, mod, where: str):
+    """A variable's start value (or start/nominal/min/max in a dict) given with a unit,
+    ``Inertia(w="60 rpm")``, converted to the variable's declared unit."""
+    unit = decl.attributes.unit
+
+    def converted(value, attr):
+        if not _has_unit(value):
+            return value          # a number, or what the attribute check rejects
+        from .units import convert_value
+        try:
+            return convert_value(value, unit, attr, key)
+        except ValueError as err:
+            raise InvalidValue(f"{where}: variable '{key}': {err}") from None
+
+    if isinstance(mod, dict):
+        return {a: converted(v, a) if a in _WITH_UNIT else v for a, v in mod.items()}
+    return converted(mod, "start")
 
 
 def _plain_number(value) -> bool:

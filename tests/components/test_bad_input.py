@@ -50,7 +50,7 @@ def _raises(exc, text):
 # -- parameter values ------------------------------------------------------------------
 @pytest.mark.parametrize("value, why", [
     ([1, 2], "parameter R = [1, 2] is not a real number (it is a list)"),
-    ("ten", "parameter R = 'ten' is not a real number (nor a number with a unit"),
+    ("ten", "parameter R = 'ten' is not a real number (it is a str)"),
     (1j, "parameter R = 1j is not a real number (it is a complex)"),
     (float("nan"), "parameter R = nan is not a number (NaN)"),
     (True, "parameter R = True is a bool, not a real number"),

@@ -202,7 +202,7 @@ def test_resistor_given_in_kilo_ohm_simulates_as_the_analytic_rc():
 @pytest.mark.parametrize("given, why", [
     ("2 kg", "parameter R = '2 kg' has dimension kg, but R is declared in 'Ohm'"),
     ("2 parsec", "parameter R = '2 parsec': unit 'parsec': unknown unit 'parsec'"),
-    ("two", "parameter R = 'two' is not a real number"),
+    ("two", "parameter R = 'two' is not a real number (it is a str)"),
 ])
 def test_a_value_with_a_wrong_unit_fails_where_it_is_given(given, why):
     with pytest.raises(ac.InvalidValue, match=re.escape(f"Resistor: {why}")):

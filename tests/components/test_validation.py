@@ -50,7 +50,9 @@ def test_unknown_name_several_levels_down_names_the_path():
     (dict(R=-1.0), ac.InvalidValue, "Resistor: parameter R = -1.0 is below its minimum 0"),
     (dict(R=True), ac.InvalidValue, "Resistor: parameter R = True is a bool"),
     (dict(v="high"), ac.InvalidValue, "Resistor: variable 'v': a modification of a "
-                                      "variable is a number (its start value)"),
+                                      "variable is a number (its start value) or a dict"),
+    (dict(v=[1.0]), ac.InvalidValue, "Resistor: variable 'v': a modification of a "
+                                     "variable is a number (its start value)"),
     (dict(v={"strat": 1.0}), ac.InvalidValue, "Resistor: variable 'v' has no attribute "
                                               "'strat' (did you mean 'start'?)"),
     (dict(v={"start": float("nan")}), ac.InvalidValue, "Resistor: variable 'v': start = "
@@ -88,3 +90,15 @@ def test_a_value_with_a_unit_gives_the_analytic_rc():
     res = ac.simulate(RC(R1={"R": "0.002 kOhm"}, C1={"v": {"start": 0.0, "fixed": True}}),
                       t_end=4.0, t_eval=t, rtol=1e-10, atol=1e-12)
     assert np.max(np.abs(res["C1.v"] - (1 - np.exp(-t / 2.0)))) < 1e-7
+
+
+def test_start_values_given_with_units_are_converted():
+    from acausal.library import rotational as rot
+    inertia = rot.Inertia(J=1.0, w={"start": "60 rpm", "fixed": True}, phi="90 deg")
+    flat = flatten(inertia)
+    w, phi = flat.variable("w"), flat.variable("phi")
+    assert w.attrs.start == pytest.approx(2 * np.pi, rel=1e-14)
+    assert phi.attrs.start == pytest.approx(np.pi / 2, rel=1e-14)
+    with _raises(ac.InvalidValue, "Inertia: variable 'w': start = '3 m' has dimension m, "
+                                  "but w is declared in 'rad/s'"):
+        rot.Inertia(w="3 m")
