@@ -14,9 +14,9 @@ from .. import _lazy_exports
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
-           "InvalidInheritance", "UnitError", "UnitWarning", "replaces", "Parameter", "Variable", "Across", "Through",
-           "Signal", "ref", "Eq", "Equation",
-           "der", "if_else", "no_event", "when", "When", "reinit", "pre", "sign", "time"]
+           "InvalidInheritance", "UnitError", "UnitWarning", "replaces", "Parameter",
+           "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation", "der",
+           "if_else", "no_event", "when", "When", "reinit", "pre", "sign", "time"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".symbols": ("Eq", "Equation", "When", "der", "if_else", "no_event", "pre", "reinit",

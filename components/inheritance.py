@@ -28,8 +28,8 @@ so on the method::
 
 Then the named classes' own ``equations`` are left out for this class and its
 subclasses (their bases' equations still count); the replacing method may call the
-replaced ones (``Diode.equations(self)``, to filter what they return).  Replacing is an explicit, visible
-act, as Modelica's ``redeclare``; nothing is ever dropped silently.
+replaced ones (``Diode.equations(self)``, to filter what they return).  Replacing is an
+explicit, visible act, as Modelica's ``redeclare``; nothing is ever dropped silently.
 """
 from __future__ import annotations
 
