@@ -162,9 +162,8 @@ class Result:
         return {n: float(v) for n, v in zip(self.parameter_names, self.parameters)}
 
     def __contains__(self, name) -> bool:
-        if self._table is not None:
-            return name in self._table
-        return name in self.compiled.outputs
+        known = self._table if self._table is not None else self.compiled.outputs
+        return name in known or _signal_name(name, known) is not None
 
     def __getitem__(self, name: str) -> np.ndarray:
         known = self._table if self._table is not None else self.compiled.outputs
@@ -174,6 +173,8 @@ class Result:
                 shape, elements = array
                 return np.stack([self[n] for n in elements], axis=-1).reshape(
                     (len(self.t),) + shape)
+            # a signal port reads by its own name: res["ship.y"] is "ship.y.signal"
+            name = _signal_name(name, known) or name
         if self._table is not None:
             if name not in self._table:
                 raise KeyError(self._missing(name, self._table))
@@ -293,6 +294,15 @@ class Result:
         span = f"t = {self.t[0]:g} .. {self.t[-1]:g}, " if len(self.t) else ""
         return (f"<Result {len(self.t)} points, {span}{n_vars} variables, "
                 f"{len(self.events)} events, {status}>")
+
+
+def _signal_name(name, known):
+    """``name + ".signal"`` if that is the value of a signal port in ``known``."""
+    if isinstance(name, str):
+        full = f"{name}.signal"
+        if full in known:
+            return full
+    return None
 
 
 def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:

@@ -24,7 +24,8 @@ if TYPE_CHECKING:
 __all__ = ["compile", "simulate", "initial_values"]
 
 
-def compile(model: Component, backend: str = "auto", cache=True) -> CompiledModel:  # noqa: A001
+def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
+            check_units: str = "warn") -> CompiledModel:
     """Flatten, reduce and generate code for a model instance; see ``compiled.report``.
 
     ``backend``: ``"c"`` (generated C, compiled once per model into a cache; raises
@@ -34,7 +35,11 @@ def compile(model: Component, backend: str = "auto", cache=True) -> CompiledMode
     ``$ACAUSAL_CACHE`` or ``~/.cache/acausal``, found by its flattened equations and
     parameter values; ``"tree"`` also by its instance tree, without flattening or
     importing sympy (for models whose equations read nothing but their classes, modules
-    and parameters); ``False`` always compiles (see :mod:`acausal.compiler.cache`)."""
+    and parameters); ``False`` always compiles (see :mod:`acausal.compiler.cache`).
+    ``check_units``: ``"warn"`` (default) warns (``UnitWarning``) at an equation whose
+    terms have different dimensions, ``"error"`` raises ``UnitError``, ``"off"`` skips
+    the check (:mod:`acausal.compiler.unitcheck`); ``compiled.report.units`` says what
+    was checked and lists the variables declared without a unit."""
     # imported here: the compiler brings sympy and the runtime scipy, which importing
     # acausal (or this module, for its names) does not need
     from .compiler.pipeline import compile_model
@@ -43,7 +48,7 @@ def compile(model: Component, backend: str = "auto", cache=True) -> CompiledMode
         return model
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r} ({type(model).__name__})")
-    mc = compile_model(model, backend, cache=cache)
+    mc = compile_model(model, backend, cache=cache, check_units=check_units)
     _declare_units(mc, model)
     return CompiledModel(mc)
 

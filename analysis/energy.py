@@ -58,7 +58,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..components.component import Component, Connection, Port, flatten_equation_list
+from ..components.component import Component, Connection, Port
+from ..components.inheritance import all_items
 from .energy_terms import (Trajectory, find_component, leaf_port_power, port_power,
                            power_ports, storage_rate, symbolic_term)
 
@@ -186,7 +187,7 @@ def _structural(comp) -> bool:
     ports = power_ports(comp)
     if not ports:
         return True
-    connected = {id(p) for item in flatten_equation_list(comp.equations())
+    connected = {id(p) for item in all_items(comp, "equations")
                  if isinstance(item, Connection) for p in item.ports}
     return all(id(p) in connected for p in ports)
 

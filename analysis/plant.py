@@ -178,17 +178,16 @@ def driven_class(cls, name: str):
         name = name_value + name_rate (time - name_t_ref) + name_accel (time - name_t_ref)^2 / 2
 
     (new parameters, the rates 0 outside linearize): the component's equations are
-    those of ``cls``, so where index reduction differentiates one that holds ``name``,
-    its derivative is name_rate at time = name_t_ref instead of a silent 0."""
+    those of ``cls`` (included as a base's), so where index reduction differentiates one
+    that holds ``name``, its derivative is name_rate at time = name_t_ref instead of a
+    silent 0."""
     key = (cls, name)
     if key not in _DRIVEN:
-        base = cls.equations
-
         def equations(self):
             dt = time - getattr(self, f"{name}_t_ref")
             drive = (getattr(self, f"{name}_value") + getattr(self, f"{name}_rate") * dt
                      + getattr(self, f"{name}_accel") * dt**2 / 2)
-            return [*base(self), Eq(getattr(self, name), drive)]
+            return [Eq(getattr(self, name), drive)]
 
         ns = {name: Variable(description=f"parameter {name}, driven for linearization"),
               f"{name}_value": Parameter(1.0, description=f"value of {name}"),

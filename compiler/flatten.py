@@ -21,9 +21,10 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from ..components import inheritance
 from ..components.component import (Component, Connection, InvalidConnection,
                                      InvalidEquation, InvalidValue, ModelError, NotInModel,
-                                     Port, compiling, flatten_equation_list)
+                                     Port, compiling, in_context)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
 from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
@@ -34,7 +35,10 @@ __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatte
 class _Located:
     @property
     def where(self) -> str:
-        return f"{self.component or '(model)'} ({self.component_class})"
+        """The component, and an equation's label: ``spring (Spring), "Hooke's law"``."""
+        base = f"{self.component or '(model)'} ({self.component_class})"
+        label = getattr(self, "label", None)
+        return f'{base}, "{label}"' if label else base
 
 
 @dataclass
@@ -101,6 +105,7 @@ class FlatModel:
     structural_zeros: list = field(default_factory=list)  # parameters evaluated as 0
     ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
     components: dict = field(default_factory=dict)    # path -> class name
+    derived: dict = field(default_factory=dict)       # bound parameter -> (binding, value)
 
     def variable(self, name: str) -> FlatVariable:
         for v in self.variables:
@@ -158,18 +163,23 @@ def _walk(root: Component):
 
 
 def _read(comp: Component, method: str) -> list:
+    """The items of ``comp``'s ``method`` over its class hierarchy (``inheritance``):
+    each class's own method once, base classes first, each item checked."""
     where = f"{comp._describe()}.{method}()"
     try:
-        raw = getattr(comp, method)()
-        items = None if raw is None else flatten_equation_list(raw)
+        parts = inheritance.collect(comp, method)
     except ModelError as err:
-        raise _in_context(err, where) from err
+        raise in_context(err, where) from err
     except Exception as err:  # the user's equations() raised: say where
         raise ModelError(f"while reading the {method.replace('_', ' ')} of "
                          f"{comp._describe()}: {type(err).__name__}: {err}") from err
-    if items is None:
-        raise InvalidEquation(f"{where} returned None; it must return a list of equations "
-                              "(is a 'return' missing?)")
+    items = []
+    for klass, part in parts:
+        if part is None:
+            whose = where if klass is type(comp) else f"{where} (of {klass.__name__})"
+            raise InvalidEquation(f"{whose} returned None; it must return a list of "
+                                  "equations (is a 'return' missing?)")
+        items.extend(part)
     for item in items:
         if not isinstance(item, (Equation, Connection, When)):
             hint = ""
@@ -179,15 +189,6 @@ def _read(comp: Component, method: str) -> list:
             raise InvalidEquation(f"{where} returned {item!r}{hint}; expected "
                                   "ac.Eq(lhs, rhs), ac.connect(a, b) or ac.when(...)")
     return items
-
-
-def _in_context(err: ModelError, where: str) -> ModelError:
-    """The same kind of error, its message prefixed by where it happened."""
-    text = f"in {where}: {err}"
-    try:
-        return type(err)(text)
-    except TypeError:   # a subclass with another constructor
-        return ModelError(text)
 
 
 def _collect_declarations(comp: Component, flat: FlatModel) -> None:
@@ -462,6 +463,7 @@ def _check_bounds(flat: FlatModel, resolved: dict) -> None:
             text = f"{sp.sstr(p.value)} (= {value!r})"
             if value != value:
                 raise InvalidValue(f"{p.describe()} = {text} is not a number (NaN)")
+            flat.derived[p.name] = (sp.sstr(p.value), value)
         else:
             value, text = float(p.value), f"{p.value!r}"
         why = bound_violation(value, p.min, p.max)

@@ -34,7 +34,8 @@ PASSES = ("flatten", "discrete", "sampled", "delays", "alias", "balance", "conve
           "index_reduction", "state_selection", "assemble", "codegen")
 
 
-def compile_model(model: Component, backend: str = "auto", cache=False) -> ModelCode:
+def compile_model(model: Component, backend: str = "auto", cache=False,
+                  check_units: str = "warn") -> ModelCode:
     """Compile a model instance to generated code and name maps (see the module docstring);
     :class:`acausal.runtime.CompiledModel` runs it.  ``backend``: ``"c"``, ``"numpy"`` or
     ``"auto"`` (:func:`acausal.compiler.cbackend.bind`).
@@ -47,9 +48,17 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
     classes and modules at call time (a file, the environment, a mutable object), so it
     is only taken when asked for; ``False`` compiles afresh.  The report of a loaded
     model says so in a note, and its timings are those of the original compile plus
-    ``cache_lookup``."""
+    ``cache_lookup``.
+
+    ``check_units`` (:mod:`acausal.compiler.unitcheck`): ``"error"`` raises UnitError
+    at a dimensionally inconsistent equation, ``"warn"`` warns, ``"off"`` skips the
+    check; it runs on the flat model, so a model found by its instance tree
+    (``cache="tree"``) is not checked again."""
     if cache not in (True, False, "tree"):
         raise ValueError(f"cache must be True, False or 'tree', got {cache!r}")
+    from ..components.units import MODES
+    if check_units not in MODES:
+        raise ValueError(f"check_units must be one of {MODES}, got {check_units!r}")
     from . import cache as store
     use_cache = bool(cache) and store.enabled()
     t0 = _time.perf_counter()
@@ -72,6 +81,9 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
     report.modes = _mode_structures(model)
+    from .unitcheck import check_units as unit_check
+    report.units = clock("units", unit_check, flat, check_units)
+    report.derived_parameters = dict(flat.derived)
     key = None
     if use_cache:
         t1 = _time.perf_counter()
@@ -81,6 +93,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False) -> Model
             if tree is not None:
                 store.store_index(tree, key)
             lookup = _time.perf_counter() - t1 + report.timings["flatten"] + t_tree
+            found[0].report.units = report.units     # checked in this mode, just now
             return _from_cache(found, lookup, "its flat model")
         report.timings["cache_key"] = _time.perf_counter() - t1 + t_tree
     discretes = clock("discrete", freeze_integer_functions, flat)
@@ -284,7 +297,8 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
               "self_scaled": _self_scaled(system, z_syms),
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
                                    if p.min is not None or p.max is not None},
-              "derived_bounds": _derived_bounds(reduced.parameters, psyms)})
+              "derived_bounds": _derived_bounds(reduced.parameters, psyms),
+              "derived_parameters": dict(flat.derived)})
     if delays:
         from .delays import delay_code, feeds_back
         out.delays = delay_code(delays, delay_rows, generate(

@@ -59,6 +59,8 @@ class IndexReport:
     # per component with modes (a ``mode_structure()`` method): path, class and, per
     # mode, the relations that select it and what determines its unknowns there
     modes: list = field(default_factory=list)
+    units: object = None            # compiler.unitcheck.UnitCheck
+    derived_parameters: dict = field(default_factory=dict)   # name -> (binding, value)
 
     def __getstate__(self):
         state = dict(self.__dict__)
@@ -105,7 +107,8 @@ class IndexReport:
                 f"{', '.join(names_of(system, before))} has a singular constant coefficient "
                 f"matrix; chosen by exact rank instead: {', '.join(names_of(system, after))}")
         self.equations = [{
-            "index": k, "text": eq.name(system), "component": eq.component,
+            "index": k, "text": eq.name(system), "label": _label(system, eq),
+            "component": eq.component,
             "kind": eq.kind, "order": eq.order,
             "derivative_of": eq.derivative_of,
             "differentiated": _times_differentiated(s, k),
@@ -149,6 +152,9 @@ class IndexReport:
             "conversion": _conversion_dict(self.conversion),
             "timings_s": self.timings,
             "notes": self.notes,
+            "units": self.units.as_dict() if self.units is not None else None,
+            "derived_parameters": {k: {"binding": b, "value": v}
+                                   for k, (b, v) in self.derived_parameters.items()},
         }
 
     def blt_order(self) -> tuple[list, list]:
@@ -221,7 +227,7 @@ class IndexReport:
         if diffed:
             lines.append("  differentiated equations (Pantelides):")
             for e in diffed:
-                lines.append(f"    {e['differentiated']}x  {e['text']}")
+                lines += _wrapped(f"    {e['differentiated']}x  ", e["text"])
         lines.append("  states: " + (", ".join(self.states) or "(none)"))
         if self.dummy_derivatives:
             lines.append("  dummy derivatives: " + ", ".join(self.dummy_derivatives))
@@ -261,6 +267,12 @@ class IndexReport:
                          "whose relation holds:")
             for m in comp["modes"]:
                 lines.append(f"    {m['mode']:<15}[{m['when']}]  {m['structure']}")
+        if self.derived_parameters:
+            lines.append("  derived parameters (bound to other parameters):")
+            for name, (binding, value) in self.derived_parameters.items():
+                lines += _wrapped(f"    {name} = ", f"{binding} = {value:.6g}")
+        if self.units is not None:
+            lines += _wrapped("  ", self.units.summary())
         for note in self.notes:
             lines.append(f"  note: {note}")
         total = sum(self.timings.values())
@@ -280,6 +292,25 @@ def _conversion_dict(conv):
             "numeric_blocks": [{"equations": b.equation_names, "variables": b.variables}
                                for b in conv.numeric_blocks],
             "error": conv.error}
+
+
+WIDTH = 100      # the text report wraps at this width; it never cuts an equation
+
+
+def _wrapped(first: str, text: str) -> list:
+    """``first + text`` as lines of at most WIDTH characters where it can break, the
+    continuation lines indented under the text (no character of it is dropped)."""
+    import textwrap
+    return textwrap.wrap(text, WIDTH, initial_indent=first,
+                         subsequent_indent=" " * len(first), break_long_words=False,
+                         break_on_hyphens=False) or [first]
+
+
+def _label(system, eq):
+    """The user's label of the equation an equation of the system derives from."""
+    while eq.derivative_of is not None:
+        eq = system.equations[eq.derivative_of]
+    return eq.label
 
 
 def names_of(system, variables) -> list:

@@ -43,10 +43,12 @@ class SymbolicEquation:
     derivative_of: int | None = None     # index of the equation this is d/dt of
     order: int = 0                       # how many times differentiated from the source
     combination: tuple = ()              # (coefficient, name, order) of combined equations
+    label: str | None = None             # the user's label (ac.Eq(..., label=...))
 
     @property
     def where(self) -> str:
-        return f"{self.component or '(model)'} ({self.component_class})"
+        base = f"{self.component or '(model)'} ({self.component_class})"
+        return f'{base}, "{self.label}"' if self.label else base
 
     @property
     def text(self) -> str:
@@ -64,9 +66,8 @@ class SymbolicEquation:
             base = system.equations[base.derivative_of]
         if base.combination:          # its text names every equation and component
             core = base.text
-        else:
-            text = base.text if len(base.text) <= 60 else base.text[:57] + "..."
-            core = f"{text}  [{base.where}]"
+        else:                         # whole: a report wraps it, never cuts it
+            core = f"{base.text}  [{base.where}]"
         if self.order == 0:
             return core
         power = f"^{self.order}" if self.order > 1 else ""
@@ -92,7 +93,8 @@ class SymbolicSystem:
 
     @classmethod
     def from_flat(cls, flat) -> "SymbolicSystem":
-        eqs = [SymbolicEquation(e.residual, e, e.component, e.component_class, e.kind)
+        eqs = [SymbolicEquation(e.residual, e, e.component, e.component_class, e.kind,
+                                label=e.label)
                for e in flat.equations]
         system = cls(eqs, [], {p.symbol for p in flat.parameters},
                      {v.symbol: v for v in flat.variables}, dict(flat.derivatives))

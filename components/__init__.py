@@ -5,16 +5,19 @@ Components, ports and declarations are plain Python; the symbolic vocabulary
 component classes does not load sympy (their symbols and equations do).
 """
 from .component import (Component, Connection, InvalidConnection, InvalidEquation,
-                        InvalidHierarchy, InvalidValue, ModelError, NotInModel, Port, connect)
+                        InvalidHierarchy, InvalidInheritance, InvalidValue, ModelError,
+                        NotInModel, Port, connect)
 from .declarations import Across, Parameter, Signal, Through, Variable, ref
+from .inheritance import replaces
+from .units import UnitError, UnitWarning
 from .. import _lazy_exports
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
-           "InvalidIndex",
+           "InvalidIndex", "InvalidInheritance", "UnitError", "UnitWarning", "replaces",
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
-           "der", "if_else", "no_event", "delay", "when", "When", "reinit", "pre", "sign", "time",
-           "sample", "assign"]
+           "der", "if_else", "no_event", "delay", "when", "When", "reinit", "pre", "sign",
+           "time", "sample", "assign"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".arrays": ("InvalidIndex",),

@@ -10,6 +10,10 @@ attributes and returns its equations from ``equations()``::
         def equations(self):
             return [ac.Eq(self.v, self.R * self.i)]
 
+``equations()`` returns only the class's own equations: the bases' (here OnePort's) are
+included by the framework, as Modelica's ``extends`` includes them (``inheritance.py``;
+``@ac.replaces(Base)`` replaces a base's equations instead).
+
 Instantiation takes modifications, several levels down if needed:
 ``SeriesRLC(R1={"R": 5.0}, C1={"v": {"start": 1.0, "fixed": True}})``.  A number given
 for a variable sets its start value.  Sub-components may also be created in ``__init__``
@@ -20,9 +24,10 @@ A component becomes part of a model when the root is bound (``_bind``), which ha
 
 Bad input raises a ``ModelError`` naming the component path, the declaration and the
 value, at the earliest point where those names are known: declarations when their class
-is created (``Resistor.R: ...``), modifications and the instance tree when the model is
-bound (``'R1' (Resistor): parameter R = 'ten' is not a real number``), equations and
-connections when they are read by flattening.
+is created (``Resistor.R: ...``), modifications when the instance is made
+(``'R1' (Resistor): parameter R = 'ten' is not a real number``, ``validation.py``), the
+instance tree when the model is bound, equations and connections when they are read by
+flattening, units when the model is compiled (``units.py``).
 """
 from __future__ import annotations
 
@@ -31,14 +36,17 @@ import copy
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
-from .declarations import (Parameter, Variable, check_parameter_value, declaration_doc,
-                           is_symbolic, parameter_signature, ref, shown_value)
+from . import inheritance
+from .declarations import (Parameter, Variable, check_parameter_value,
+                           check_structural_value, declaration_doc, is_symbolic,
+                           parameter_signature, ref, shown_value)
 
 if TYPE_CHECKING:
     import sympy
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
-           "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel"]
+           "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
+           "InvalidInheritance"]
 
 
 class ModelError(ValueError):
@@ -63,6 +71,12 @@ class InvalidConnection(ModelError):
 
 class InvalidHierarchy(ModelError):
     """A component that contains itself, or one instance held at two places."""
+
+
+class InvalidInheritance(ModelError):
+    """An ``equations()`` (or ``initial_equations()``) that calls its base's, which the
+    framework already includes, or an ``@ac.replaces`` naming a class that is not a base
+    with equations of its own."""
 
 
 class NotInModel(ModelError):
@@ -108,10 +122,37 @@ def _describe_class(cls) -> None:
         cls.__doc__ = declaration_doc(own_doc, params, variables, children)
 
 
-class Component:
+class _ComponentType(type):
+    """Checks an instance's modifications once its ``__init__`` (a subclass's too, which
+    may create sub-components) has run: a bad modification fails at the line that made
+    the instance (``validation.py``)."""
+
+    def __call__(cls, *args, **kwargs):
+        obj = super().__call__(*args, **kwargs)
+        mods = getattr(obj, "_mods", None)
+        if mods:
+            from .validation import validate_modifications
+            object.__setattr__(obj, "_mods", validate_modifications(obj, mods, cls.__name__))
+        return obj
+
+
+class Component(metaclass=_ComponentType):
     """Base class of every model and component (see the module docstring)."""
 
     def __init__(self, **modifications):
+        structural = {}
+        for name, decl in _structurals(type(self)).items():
+            if name in modifications:
+                value = copy.deepcopy(modifications.pop(name))
+                if hasattr(value, "tolist"):        # a numpy array of coefficients
+                    value = value.tolist()
+                try:
+                    check_structural_value(value, f"structural parameter {name}",
+                                           decl.min, decl.max)
+                except ValueError as err:
+                    raise InvalidValue(f"{type(self).__name__}: {err}") from None
+                structural[name] = value
+        object.__setattr__(self, "_structural", structural)
         object.__setattr__(self, "_mods", dict(modifications))
         object.__setattr__(self, "_path", None)
         object.__setattr__(self, "_parent", None)
@@ -122,6 +163,13 @@ class Component:
         object.__setattr__(self, "_var_attrs", {})
         for name, decl in _class_children(type(self)).items():
             setattr(self, name, decl._clone())
+        self.build()
+
+    def build(self) -> None:
+        """Create the sub-components that the structural parameters imply (override):
+        called once, when the instance is made, after its structural parameters are set
+        and its declared sub-components are created.  ``TransferFunction`` makes one
+        integrator state per order of ``den`` here."""
 
     def __init_subclass__(cls, **kwargs):
         """Check the class's own declarations once, naming them ``Class.attribute``."""
@@ -132,6 +180,7 @@ class Component:
                     decl.check()
                 except ValueError as err:
                     raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
+        inheritance.prepare_class(cls)
         _describe_class(cls)
 
     # -- the instance tree -------------------------------------------------------------
@@ -139,6 +188,10 @@ class Component:
         if value is self or (_is_component_list(value) and any(v is self for v in value)):
             raise InvalidHierarchy(f"{type(self).__name__}.{name}: a component cannot "
                                    "contain itself")
+        if name in _structurals(type(self)):
+            raise InvalidValue(f"{type(self).__name__}.{name} is a structural parameter; set "
+                               f"it when the component is made, {type(self).__name__}"
+                               f"({name}=...)")
         if isinstance(_declarations(type(self)).get(name), (Parameter, Variable)):
             # the assignment would hide the declaration: the equations would use the
             # value while the model still declares the parameter or variable
@@ -304,11 +357,13 @@ class Component:
         return _declarations(type(self))
 
     def equations(self) -> Iterable:
-        """The component's equations and connections (override)."""
+        """The equations and connections this class adds (override); the base classes'
+        are included by the framework (``inheritance.collect``), never by super()."""
         return []
 
     def initial_equations(self) -> Iterable:
-        """Equations that hold only at the initial time (override), e.g. der(w) = 0."""
+        """Equations that hold only at the initial time (override), e.g. der(w) = 0;
+        the base classes' are included as for ``equations``."""
         return []
 
     def __repr__(self):
@@ -318,7 +373,8 @@ class Component:
         if isinstance(self, Port):
             return f"<{type(self).__name__} {where}>"
         given = {**getattr(self, "_mods", {}), **getattr(self, "_param_values", {})}
-        shown = []
+        shown = [f"{name}={getattr(self, '_structural', {}).get(name, decl.value)!r}"
+                 for name, decl in _structurals(type(self)).items()]
         for name, decl in self.declarations().items():
             if isinstance(decl, Parameter):
                 value = given.get(name, decl.value)
@@ -393,6 +449,15 @@ def connect(a: Port, b: Port, *more: Port) -> Connection:
     return Connection(ports)
 
 
+def in_context(err: ModelError, where: str) -> ModelError:
+    """The same kind of error, its message prefixed by where it happened."""
+    text = f"in {where}: {err}"
+    try:
+        return type(err)(text)
+    except TypeError:   # a subclass with another constructor
+        return ModelError(text)
+
+
 def _port_name(p: Port) -> str:
     return p.path or repr(p)
 
@@ -406,6 +471,7 @@ Port.connection_type = _connection_type
 
 _CHILD_CACHE: dict = {}
 _DECL_CACHE: dict = {}
+_STRUCTURAL_CACHE: dict = {}
 
 
 def _class_children(cls) -> dict:
@@ -421,14 +487,28 @@ def _class_children(cls) -> dict:
 
 
 def _declarations(cls) -> dict:
+    """Parameters and variables of the model over the MRO (not structural parameters,
+    which shape the model and are no part of it)."""
     if cls not in _DECL_CACHE:
-        out = {}
+        out, structural = {}, {}
         for klass in reversed(cls.__mro__):
             for name, value in vars(klass).items():
-                if isinstance(value, (Parameter, Variable)):
+                if isinstance(value, Parameter) and value.structural:
+                    structural[name] = value
+                    out.pop(name, None)
+                elif isinstance(value, (Parameter, Variable)):
                     out[name] = value
+                    structural.pop(name, None)
         _DECL_CACHE[cls] = out
+        _STRUCTURAL_CACHE[cls] = structural
     return _DECL_CACHE[cls]
+
+
+def _structurals(cls) -> dict:
+    """The structural parameters of ``cls`` over the MRO."""
+    if cls not in _STRUCTURAL_CACHE:
+        _declarations(cls)
+    return _STRUCTURAL_CACHE[cls]
 
 
 def _hierarchy_error(comp, where: str, above, first: str) -> InvalidHierarchy:

@@ -24,7 +24,8 @@ from decimal import Decimal
 import numpy as np
 
 __all__ = ["Parameter", "Variable", "Across", "Through", "Signal", "VariableAttributes", "ref",
-           "real_number", "check_parameter_value", "bound_violation", "is_symbolic"]
+           "real_number", "check_parameter_value", "check_structural_value",
+           "bound_violation", "is_symbolic"]
 
 _STATE_SELECT = ("never", "avoid", "default", "prefer", "always")
 
@@ -78,6 +79,22 @@ def check_parameter_value(value, what: str) -> None:
     if callable(value) and not isinstance(value, (numbers.Number, Decimal, np.generic)):
         return
     real_number(value, what)
+
+
+def check_structural_value(value, what: str, lo=None, hi=None) -> None:
+    """A structural parameter's value is a number or a bool, or a list or tuple of them
+    (numbers within [lo, hi]); else ValueError."""
+    items = value if isinstance(value, (list, tuple)) else [value]
+    for item in items:
+        if isinstance(item, (bool, np.bool_)):
+            continue
+        if isinstance(item, (list, tuple)):
+            check_structural_value(item, what, lo, hi)
+            continue
+        x = real_number(item, what)
+        why = bound_violation(x, lo, hi)
+        if why:
+            raise ValueError(f"{what} = {item!r} {why}")
 
 
 def bound_violation(value: float, lo, hi) -> str | None:
@@ -204,11 +221,20 @@ class Parameter(_Declaration):
     (a time constant in ``1/Tt``, an output limit); a bool is not a real number.
     An array value (``Parameter(np.eye(2))``) or ``shape=`` declares an array of
     parameters, one tunable parameter per element (:mod:`acausal.components.arrays`).
+
+    ``structural=True`` declares a parameter that shapes the model rather than entering
+    its equations (a number of segments, the coefficients of a transfer function): its
+    value is a plain Python value (a number or a bool, or a list or tuple of them)
+    fixed when the component is made; ``self.name`` reads that value, and the
+    component's ``build()`` creates the sub-components it implies.  It is not a
+    parameter of the compiled model (changing it means a new model).
     """
 
     def __init__(self, value=None, unit: str = "", description: str = "",
-                 min: float | None = None, max: float | None = None, shape=None):
-        if shape is None and isinstance(value, (np.ndarray, list, tuple)):
+                 min: float | None = None, max: float | None = None, shape=None,
+                 structural: bool = False):
+        structural = bool(structural)
+        if shape is None and not structural and isinstance(value, (np.ndarray, list, tuple)):
             shape = np.shape(value)      # a matrix parameter: its shape from its value
         self.shape = _declared_shape(shape)
         self.value = value
@@ -216,6 +242,12 @@ class Parameter(_Declaration):
         self.description = description
         self.min = min
         self.max = max
+        self.structural = structural
+
+    def __get__(self, instance, owner=None):
+        if instance is None or not self.structural:
+            return super().__get__(instance, owner)
+        return instance._structural.get(self.name, self.value)
 
     def __repr__(self):
         # help() lists a declaration by its repr: show what it declares
@@ -228,6 +260,9 @@ class Parameter(_Declaration):
 
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
+        if self.structural:
+            check_structural_value(self.value, "default value", self.min, self.max)
+            return
         if self.shape is not None:
             from .arrays import check_array_declaration
             check_array_declaration(self)    # value, min and max element by element
@@ -407,7 +442,10 @@ def _shape(shape) -> str:
 
 
 def _kind(decl) -> str:
-    """``float``, or ``array [2, 2]`` / ``array [n]`` for an array parameter."""
+    """``float``, ``structural``, or ``array [2, 2]`` / ``array [n]`` for an array
+    parameter."""
+    if getattr(decl, "structural", False):
+        return "structural"
     return "float" if decl.shape is None else f"array {_shape(decl.shape)}"
 
 

@@ -88,7 +88,8 @@ def _bound(comp):
 def diagram(comp) -> Schematic:
     """The top level of ``comp`` as a :class:`Schematic`."""
     from ..components import Port
-    from ..components.component import Connection, flatten_equation_list
+    from ..components.component import Connection
+    from ..components.inheritance import all_items
     comp = _bound(comp)
     prefix = f"{comp.path}." if comp.path else ""
     sch = Schematic(type(comp).__name__)
@@ -98,7 +99,7 @@ def diagram(comp) -> Schematic:
         else:
             sch.boxes[name] = (type(child).__name__, _component_domain(child))
     try:
-        items = [i for i in flatten_equation_list(comp.equations())
+        items = [i for i in all_items(comp, "equations")
                  if isinstance(i, Connection)]
     except Exception as err:     # the equations fail: compile will say why; draw the boxes
         sch.note = f"connections not shown: equations() raised {type(err).__name__}: {err}"

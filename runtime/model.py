@@ -47,8 +47,11 @@ class CompiledModel(DAEProblem):
 
     Built by :func:`acausal.compile` from the compiler's
     :class:`~acausal.compiler.modelcode.ModelCode`.  ``compiled.report`` is the index
-    report; ``param_names``/``p`` the tunable parameters; ``outputs`` maps every
-    variable's name to where its value comes from; ``states`` names the states.
+    report; ``param_names``/``p`` the tunable parameters; ``derived_parameters`` the
+    parameters bound to an expression of others (``m = rho * V``), by name, with their
+    values at compile time (their equations use the binding, so they follow the tunable
+    parameters they depend on); ``outputs`` maps every variable's name to where its
+    value comes from; ``states`` names the states.
     """
 
     oriented_roots = True
@@ -57,6 +60,8 @@ class CompiledModel(DAEProblem):
         super().__init__(len(mc.names), mc.names)
         self.model_code = mc
         self.param_names = list(mc.param_names)
+        self.derived_parameters = {name: value for name, (_, value)
+                                   in mc.meta.get("derived_parameters", {}).items()}
         # delay(): the delayed values follow the tunable parameters in p, written from
         # the history before every call of the generated code (runtime/delays.py)
         self.delays = None

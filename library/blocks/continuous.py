@@ -83,8 +83,8 @@ class TransferFunction(SISO):
         der(x[i]) = x[i+1]  (i < n),   der(x[n]) = u - sum_k alpha_k x[n-k+1],
         y = beta_0 der(x[n]) + sum_{j>=1} beta_j x[n-j+1]
 
-    ``num`` and ``den`` are structural (they set the number of states), so they are
-    plain numbers fixed when the block is created, not parameters.
+    ``num`` and ``den`` are structural parameters (they set the number of states): plain
+    numbers fixed when the block is made; ``build`` creates the states.
 
     Examples
     --------
@@ -93,9 +93,13 @@ class TransferFunction(SISO):
     1
     """
 
-    def __init__(self, num=(1.0,), den=(1.0, 1.0), **mods):
-        super().__init__(**mods)
-        num, den = [float(c) for c in num], [float(c) for c in den]
+    num = ac.Parameter((1.0,), structural=True,
+                       description="numerator coefficients, highest power of s first")
+    den = ac.Parameter((1.0, 1.0), structural=True,
+                       description="denominator coefficients, highest power of s first")
+
+    def build(self):
+        num, den = [float(c) for c in self.num], [float(c) for c in self.den]
         if not den or den[0] == 0:
             raise ac.ModelError("TransferFunction: the leading coefficient of den must not be 0")
         if len(num) > len(den):
@@ -146,7 +150,7 @@ class PI(_LimitedController):
     """
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, self.k * self.u + self.x_i)]
+        return [ac.Eq(self.v, self.k * self.u + self.x_i)]
 
 
 class PID(_LimitedController):
@@ -165,6 +169,5 @@ class PID(_LimitedController):
 
     def equations(self):
         d = self.k * self.Nd * (self.u - self.x_d)
-        return [*super().equations(),
-                ac.Eq(self.v, self.k * self.u + self.x_i + d),
+        return [ac.Eq(self.v, self.k * self.u + self.x_i + d),
                 ac.Eq(self.Td / self.Nd * ac.der(self.x_d), self.u - self.x_d)]

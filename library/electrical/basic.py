@@ -29,7 +29,7 @@ class Resistor(OnePort):
         return self.R * self.i**2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, self.R * self.i)]
+        return [ac.Eq(self.v, self.R * self.i)]
 
 
 class Capacitor(OnePort):
@@ -43,7 +43,7 @@ class Capacitor(OnePort):
         return self.C * self.v**2 / 2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.C * ac.der(self.v), self.i)]
+        return [ac.Eq(self.C * ac.der(self.v), self.i)]
 
 
 class Inductor(OnePort):
@@ -57,7 +57,7 @@ class Inductor(OnePort):
         return self.L * self.i**2 / 2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.L * ac.der(self.i), self.v)]
+        return [ac.Eq(self.L * ac.der(self.i), self.v)]
 
 
 class HeatingResistor(OnePort):
@@ -78,8 +78,7 @@ class HeatingResistor(OnePort):
     energy_role = "lossless"  # v i leaves as heat through heatPort
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.R, self.R_ref * (1 + self.alpha * (self.heatPort.T - self.T_ref))),
+        return [ac.Eq(self.R, self.R_ref * (1 + self.alpha * (self.heatPort.T - self.T_ref))),
                 ac.Eq(self.v, self.R * self.i),
                 ac.Eq(self.heatPort.Q_flow, -self.v * self.i)]
 
@@ -95,7 +94,7 @@ class IdealTransformer(TwoPort):
     energy_role = "lossless"  # v1 i1 + v2 i2 = 0
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v1, self.n * self.v2),
+        return [ac.Eq(self.v1, self.n * self.v2),
                 ac.Eq(self.i2, -self.n * self.i1)]
 
 
@@ -140,8 +139,7 @@ class _IdealSwitch(OnePort):
 
     def equations(self):
         closed = self.closed()
-        return [*super().equations(),
-                ac.Eq(self.v, self.s * ac.if_else(closed, self.Ron, 1)),
+        return [ac.Eq(self.v, self.s * ac.if_else(closed, self.Ron, 1)),
                 ac.Eq(self.i, self.s * ac.if_else(closed, 1, self.Goff))]
 
 

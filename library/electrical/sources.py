@@ -24,7 +24,7 @@ class ConstantVoltage(OnePort):
     energy_role = "source"  # delivers -v i
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, self.V)]
+        return [ac.Eq(self.v, self.V)]
 
 
 class _VoltageSource(OnePort):
@@ -39,7 +39,7 @@ class _VoltageSource(OnePort):
         raise NotImplementedError
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, self.offset + self.signal())]
+        return [ac.Eq(self.v, self.offset + self.signal())]
 
 
 class _CurrentSource(OnePort):
@@ -54,7 +54,7 @@ class _CurrentSource(OnePort):
         raise NotImplementedError
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.i, self.offset + self.signal())]
+        return [ac.Eq(self.i, self.offset + self.signal())]
 
 
 class StepVoltage(_VoltageSource):
@@ -88,7 +88,7 @@ class SineVoltage(OnePort):
 
     def equations(self):
         wave = self.V * sp.sin(2 * sp.pi * self.f * ac.time + self.phase)
-        return [*super().equations(), ac.Eq(self.v, self.offset + wave)]
+        return [ac.Eq(self.v, self.offset + wave)]
 
 
 class PulseVoltage(_VoltageSource):
@@ -110,7 +110,7 @@ class SignalVoltage(OnePort):
     energy_role = "source"  # delivers -v i
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, self.v_ref)]
+        return [ac.Eq(self.v, self.v_ref)]
 
 
 class ConstantCurrent(OnePort):
@@ -121,7 +121,7 @@ class ConstantCurrent(OnePort):
     energy_role = "source"  # delivers -v i
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.i, self.I)]
+        return [ac.Eq(self.i, self.I)]
 
 
 class StepCurrent(_CurrentSource):
@@ -173,4 +173,4 @@ class SignalCurrent(OnePort):
     energy_role = "source"  # delivers -v i
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.i, self.i_ref)]
+        return [ac.Eq(self.i, self.i_ref)]

@@ -25,8 +25,7 @@ class EMF(OnePort):
     energy_role = "lossless"  # v i = tau w
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.w, ac.der(self.flange.phi)),
+        return [ac.Eq(self.w, ac.der(self.flange.phi)),
                 ac.Eq(self.v, self.k * self.w),
                 ac.Eq(self.tau, self.k * self.i),
                 ac.Eq(self.flange.tau, -self.tau)]

@@ -25,15 +25,19 @@ class _Karnopp:
     """
 
     def law(self, v, f):
+        # sa is a number; unit_f and unit_a (both 1) give it the force's and the
+        # acceleration's unit where it stands for either (the MSL's unitForce and
+        # unitAcceleration)
         sa, stuck = self.sa, ac.if_else(v >= self.dv, 0, ac.if_else(v <= -self.dv, 0, 1))
-        held = saturation(sa, self.F_s)
+        held = saturation(sa * self.unit_f, self.F_s)
         # outside the band sgn(v) is read from the band's own relations: a relation on
         # v itself would be armed exactly at v = 0 whenever the body sticks
         direction = ac.if_else(v >= self.dv, 1, -1)
         sliding = stribeck_level(v, self.F_c, self.F_s, self.v_s) * direction + self.F_v * v
         return [ac.Eq(self.a, ac.der(v)),
                 ac.Eq(f, ac.if_else(stuck > 0, held, sliding)),
-                ac.Eq(self.a, ac.if_else(stuck > 0, sa - held, sa)),
+                ac.Eq(self.a, self.unit_a * ac.if_else(stuck > 0, sa - held / self.unit_f,
+                                                       sa)),
                 ac.when(sp.And(v < self.dv, v > -self.dv), ac.reinit(v, 0))]
 
 

@@ -4,6 +4,9 @@ force (torque) between them, like a damper (``PartialCompliant``).
 The friction f acts on flange_b against the relative velocity v = der(flange_b -
 flange_a) and with -f on flange_a; a dissipative law has f v >= 0.  Connect flange_a
 to a ``Fixed`` housing for friction against the ground.
+
+The equations are written here once: the kinematics and ``law(v, f)``, the friction law
+each element provides (written once for both domains in ``_models``).
 """
 import acausal as ac
 from acausal.library import rotational as rot
@@ -17,8 +20,12 @@ class PartialTranslationalFriction(tr.PartialCompliant):
 
     v = ac.Variable(start=0.0, unit="m/s", description="relative velocity")
 
+    def law(self, v, f) -> list:
+        """The friction law relating the force f to the relative velocity v."""
+        raise NotImplementedError(f"{type(self).__name__} defines no friction law")
+
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, ac.der(self.s_rel))]
+        return [ac.Eq(self.v, ac.der(self.s_rel)), *self.law(self.v, self.f)]
 
 
 class PartialRotationalFriction(rot.PartialCompliant):
@@ -27,5 +34,9 @@ class PartialRotationalFriction(rot.PartialCompliant):
 
     w = ac.Variable(start=0.0, unit="rad/s", description="relative angular velocity")
 
+    def law(self, w, tau) -> list:
+        """The friction law relating the torque tau to the relative velocity w."""
+        raise NotImplementedError(f"{type(self).__name__} defines no friction law")
+
     def equations(self):
-        return [*super().equations(), ac.Eq(self.w, ac.der(self.phi_rel))]
+        return [ac.Eq(self.w, ac.der(self.phi_rel)), *self.law(self.w, self.tau)]

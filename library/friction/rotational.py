@@ -34,9 +34,6 @@ class StribeckFriction(_Stribeck, PartialRotationalFriction):
         """tau w >= 0: friction opposes the relative motion (stuck: w = 0)."""
         return self.tau * self.w
 
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]
-
 
 class KarnoppFriction(_Karnopp, PartialRotationalFriction):
     """Karnopp's stick-slip friction (Egeland & Gravdahl 5.2.3, 5.2.5-5.2.6, (5.14),
@@ -58,14 +55,15 @@ class KarnoppFriction(_Karnopp, PartialRotationalFriction):
     F_v = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="viscous coefficient")
     dv = ac.Parameter(1e-6, unit="rad/s", min=0, description="half width of the sticking band")
     a = ac.Variable(unit="rad/s2", description="relative acceleration")
-    sa = ac.Variable(start=0.0, description="curve parameter (applied torque when stuck)")
+    sa = ac.Variable(start=0.0, unit="1",
+                     description="curve parameter (applied torque when stuck, in unit_f)")
+    unit_f = ac.Parameter(1.0, unit="N.m", min=0, description="1 N.m: the unit of sa as a torque")
+    unit_a = ac.Parameter(1.0, unit="rad/s2", min=0,
+                          description="1 rad/s2: the unit of sa as an acceleration")
 
     def loss_power(self):
         """tau w >= 0: friction opposes the relative motion (stuck: w = 0)."""
         return self.tau * self.w
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]
 
 
 class DahlFriction(_Dahl, PartialRotationalFriction):
@@ -87,9 +85,6 @@ class DahlFriction(_Dahl, PartialRotationalFriction):
     def loss_power(self):
         """tau w - d/dt F^2/(2 sigma) = |w| F^2 / F_c >= 0  (from (5.35))."""
         return sp.Abs(self.w) * self.F**2 / self.F_c
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]
 
 
 class LuGreFriction(_LuGre, PartialRotationalFriction):
@@ -120,9 +115,6 @@ class LuGreFriction(_LuGre, PartialRotationalFriction):
         """tau w - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
         sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
         return self.tau * self.w - self.sigma_0 * self.z * self.z_dot
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]
 
 
 class ElastoPlasticFriction(_ElastoPlastic, PartialRotationalFriction):
@@ -155,6 +147,3 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialRotationalFriction):
         (its sign over a run is what the energy audit checks; Dupont et al. 2002 give
         the conditions under which the elasto-plastic model is passive)."""
         return self.tau * self.w - self.sigma_0 * self.z * self.z_dot
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.w, self.tau)]

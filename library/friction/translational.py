@@ -34,9 +34,6 @@ class StribeckFriction(_Stribeck, PartialTranslationalFriction):
         """f v >= 0: friction opposes the relative motion (stuck: v = 0)."""
         return self.f * self.v
 
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
-
 
 class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
     """Karnopp's stick-slip friction (Egeland & Gravdahl 5.2.3, 5.2.5-5.2.6, (5.14),
@@ -58,14 +55,15 @@ class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
     F_v = ac.Parameter(0.0, unit="N.s/m", min=0, description="viscous coefficient")
     dv = ac.Parameter(1e-6, unit="m/s", min=0, description="half width of the sticking band")
     a = ac.Variable(unit="m/s2", description="relative acceleration")
-    sa = ac.Variable(start=0.0, description="curve parameter (applied force when stuck)")
+    sa = ac.Variable(start=0.0, unit="1",
+                     description="curve parameter (applied force when stuck, in unit_f)")
+    unit_f = ac.Parameter(1.0, unit="N", min=0, description="1 N: the unit of sa as a force")
+    unit_a = ac.Parameter(1.0, unit="m/s2", min=0,
+                          description="1 m/s2: the unit of sa as an acceleration")
 
     def loss_power(self):
         """f v >= 0: friction opposes the relative motion (stuck: v = 0)."""
         return self.f * self.v
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
 
 
 class DahlFriction(_Dahl, PartialTranslationalFriction):
@@ -87,9 +85,6 @@ class DahlFriction(_Dahl, PartialTranslationalFriction):
     def loss_power(self):
         """f v - d/dt F^2/(2 sigma) = |v| F^2 / F_c >= 0  (from (5.35))."""
         return sp.Abs(self.v) * self.F**2 / self.F_c
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
 
 
 class LuGreFriction(_LuGre, PartialTranslationalFriction):
@@ -120,9 +115,6 @@ class LuGreFriction(_LuGre, PartialTranslationalFriction):
         """f v - sigma_0 z der(z): >= 0 where the model is passive (for LuGre
         sigma_1 <= sigma_2 F_c / (F_s - F_c), (5.54))."""
         return self.f * self.v - self.sigma_0 * self.z * self.z_dot
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]
 
 
 class ElastoPlasticFriction(_ElastoPlastic, PartialTranslationalFriction):
@@ -155,6 +147,3 @@ class ElastoPlasticFriction(_ElastoPlastic, PartialTranslationalFriction):
         (its sign over a run is what the energy audit checks; Dupont et al. 2002 give
         the conditions under which the elasto-plastic model is passive)."""
         return self.f * self.v - self.sigma_0 * self.z * self.z_dot
-
-    def equations(self):
-        return [*super().equations(), *self.law(self.v, self.f)]

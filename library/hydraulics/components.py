@@ -82,7 +82,7 @@ class LaminarOrifice(PartialTwoPort):
         return self.dp * self.q
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.q, self.C_l * self.dp)]
+        return [ac.Eq(self.q, self.C_l * self.dp)]
 
 
 class _RegularizedOrifice(PartialTwoPort):
@@ -115,7 +115,7 @@ class TurbulentOrifice(_RegularizedOrifice):
     A = ac.Parameter(1e-5, unit="m2", min=0, description="orifice area")
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.q, self._law(self.A))]
+        return [ac.Eq(self.q, self._law(self.A))]
 
 
 class VariableOrifice(_RegularizedOrifice):
@@ -126,7 +126,7 @@ class VariableOrifice(_RegularizedOrifice):
 
     def equations(self):
         A = ac.if_else(self.A_in > 0, self.A_in, 0)
-        return [*super().equations(), ac.Eq(self.q, self._law(A))]
+        return [ac.Eq(self.q, self._law(A))]
 
 
 class ReliefValve(PartialTwoPort):
@@ -149,7 +149,7 @@ class ReliefValve(PartialTwoPort):
 
     def equations(self):
         opening = ac.if_else(self.dp > self.p_crack, self.G_open * (self.dp - self.p_crack), 0)
-        return [*super().equations(), ac.Eq(self.q, opening + self.G_closed * self.dp)]
+        return [ac.Eq(self.q, opening + self.G_closed * self.dp)]
 
 
 class _DisplacementMachine(ac.Component):

@@ -135,8 +135,7 @@ class PressureCompensatedValve(_OrificeData, PartialTwoPort):
     def equations(self):
         free = (self.F_c0 - self.A_c * (self.p_c - self.port_b.p)) / self.K_c
         clipped = ac.if_else(free < 0, 0, ac.if_else(free > self.x_c_max, self.x_c_max, free))
-        return [*super().equations(),
-                ac.Eq(self.q, self._orifice(self.b_c * self.x_c + self.A_leak,
+        return [ac.Eq(self.q, self._orifice(self.b_c * self.x_c + self.A_leak,
                                             self.dp + self.port_b.p - self.p_c)),
                 ac.Eq(self.q, self._orifice(self.b * _positive(self.x_v) + self.A_leak,
                                             self.p_c - self.port_b.p)),
@@ -178,5 +177,5 @@ class BalanceValve(_OrificeData, PartialTwoPort):
         clipped = ac.if_else(free < 0, 0, ac.if_else(free > self.x_v_max, self.x_v_max, free))
         law = ac.if_else(self.dp > 0, self._orifice(self.b * self.x_v, self.dp),
                          self._orifice(self.A_ch, self.dp))
-        return [*super().equations(), ac.Eq(self.port_p.q, 0), ac.Eq(self.x_v, clipped),
+        return [ac.Eq(self.port_p.q, 0), ac.Eq(self.x_v, clipped),
                 ac.Eq(self.q, law)]

@@ -19,7 +19,7 @@ class Rod(PartialLineForce):
     energy_role = "lossless"  # rigid: f der(s) = 0
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.s, self.L)]
+        return [ac.Eq(self.s, self.L)]
 
 
 class Spring(PartialLineForce):
@@ -33,7 +33,7 @@ class Spring(PartialLineForce):
         return self.c * (self.s - self.s_unstretched)**2 / 2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.f, self.c * (self.s - self.s_unstretched))]
+        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched))]
 
 
 class Damper(PartialLineForce):
@@ -46,7 +46,7 @@ class Damper(PartialLineForce):
         return self.d * ac.der(self.s)**2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.f, self.d * ac.der(self.s))]
+        return [ac.Eq(self.f, self.d * ac.der(self.s))]
 
 
 class SpringDamper(PartialLineForce):
@@ -65,5 +65,4 @@ class SpringDamper(PartialLineForce):
         return self.d * ac.der(self.s)**2
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.f, self.c * (self.s - self.s_unstretched) + self.d * ac.der(self.s))]
+        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched) + self.d * ac.der(self.s))]

@@ -57,7 +57,7 @@ class Spring(PartialCompliant):
         return self.c * (self.phi_rel - self.phi_rel0)**2 / 2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0))]
+        return [ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0))]
 
 
 class Damper(PartialCompliant):
@@ -70,7 +70,7 @@ class Damper(PartialCompliant):
         return self.d * ac.der(self.phi_rel)**2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.tau, self.d * ac.der(self.phi_rel))]
+        return [ac.Eq(self.tau, self.d * ac.der(self.phi_rel))]
 
 
 class SpringDamper(PartialCompliant):
@@ -89,8 +89,7 @@ class SpringDamper(PartialCompliant):
         return self.d * ac.der(self.phi_rel)**2
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0)
+        return [ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0)
                       + self.d * ac.der(self.phi_rel))]
 
 

@@ -14,7 +14,7 @@ class AngleSensor(PartialAbsoluteSensor):
     phi = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.phi, self.flange.phi)]
+        return [ac.Eq(self.phi, self.flange.phi)]
 
 
 class SpeedSensor(PartialAbsoluteSensor):
@@ -23,7 +23,7 @@ class SpeedSensor(PartialAbsoluteSensor):
     w = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.w, ac.der(self.flange.phi))]
+        return [ac.Eq(self.w, ac.der(self.flange.phi))]
 
 
 class RelAngleSensor(PartialRelativeSensor):
@@ -32,7 +32,7 @@ class RelAngleSensor(PartialRelativeSensor):
     phi_rel = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.flange_a.tau, 0),
+        return [ac.Eq(self.flange_a.tau, 0),
                 ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi)]
 
 
@@ -42,7 +42,7 @@ class RelSpeedSensor(PartialRelativeSensor):
     w_rel = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.flange_a.tau, 0),
+        return [ac.Eq(self.flange_a.tau, 0),
                 ac.Eq(self.w_rel, ac.der(self.flange_b.phi - self.flange_a.phi))]
 
 
@@ -55,7 +55,7 @@ class TorqueSensor(PartialRelativeSensor):
     tau = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.flange_a.phi, self.flange_b.phi),
+        return [ac.Eq(self.flange_a.phi, self.flange_b.phi),
                 ac.Eq(self.tau, self.flange_a.tau)]
 
 
@@ -68,5 +68,5 @@ class PowerSensor(PartialRelativeSensor):
     power = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.flange_a.phi, self.flange_b.phi),
+        return [ac.Eq(self.flange_a.phi, self.flange_b.phi),
                 ac.Eq(self.power, self.flange_a.tau * ac.der(self.flange_a.phi))]

@@ -71,7 +71,7 @@ class ConstantSpeed(_SpeedSource):
     w_fixed = ac.Parameter(1.0, unit="rad/s", description="imposed speed")
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.w, self.w_fixed)]
+        return [ac.Eq(self.w, self.w_fixed)]
 
 
 class Speed(_SpeedSource):
@@ -80,7 +80,7 @@ class Speed(_SpeedSource):
     w_ref = RealInput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.w, self.w_ref)]
+        return [ac.Eq(self.w, self.w_ref)]
 
 
 class Position(PartialElementaryOneFlange):

@@ -31,7 +31,7 @@ class ThermalConductor(Element1D):
     energy_role = "lossless"  # heat in at one port leaves at the other
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.Q_flow, self.G * self.dT)]
+        return [ac.Eq(self.Q_flow, self.G * self.dT)]
 
 
 class ThermalResistor(Element1D):
@@ -42,7 +42,7 @@ class ThermalResistor(Element1D):
     energy_role = "lossless"  # heat in at one port leaves at the other
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.dT, self.R * self.Q_flow)]
+        return [ac.Eq(self.dT, self.R * self.Q_flow)]
 
 
 class Convection(Element1D):
@@ -56,4 +56,4 @@ class Convection(Element1D):
     energy_role = "lossless"  # heat in at one port leaves at the other
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.Q_flow, self.Gc * self.dT)]
+        return [ac.Eq(self.Q_flow, self.Gc * self.dT)]

@@ -54,7 +54,7 @@ class Spring(PartialCompliant):
         return self.c * (self.s_rel - self.s_rel0)**2 / 2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0))]
+        return [ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0))]
 
 
 class Damper(PartialCompliant):
@@ -68,7 +68,7 @@ class Damper(PartialCompliant):
         return self.d * ac.der(self.s_rel)**2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.f, self.d * ac.der(self.s_rel))]
+        return [ac.Eq(self.f, self.d * ac.der(self.s_rel))]
 
 
 class SpringDamper(PartialCompliant):
@@ -87,8 +87,7 @@ class SpringDamper(PartialCompliant):
         return self.d * ac.der(self.s_rel)**2
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0) + self.d * ac.der(self.s_rel))]
+        return [ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0) + self.d * ac.der(self.s_rel))]
 
 
 class MassWithStop(PartialTwoFlanges):

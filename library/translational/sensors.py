@@ -14,7 +14,7 @@ class PositionSensor(PartialAbsoluteSensor):
     s = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.s, self.flange.s)]
+        return [ac.Eq(self.s, self.flange.s)]
 
 
 class SpeedSensor(PartialAbsoluteSensor):
@@ -23,7 +23,7 @@ class SpeedSensor(PartialAbsoluteSensor):
     v = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, ac.der(self.flange.s))]
+        return [ac.Eq(self.v, ac.der(self.flange.s))]
 
 
 class RelPositionSensor(PartialRelativeSensor):
@@ -32,7 +32,7 @@ class RelPositionSensor(PartialRelativeSensor):
     s_rel = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.flange_a.f, 0),
+        return [ac.Eq(self.flange_a.f, 0),
                 ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s)]
 
 
@@ -45,7 +45,7 @@ class ForceSensor(PartialRelativeSensor):
     f = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.flange_a.s, self.flange_b.s),
+        return [ac.Eq(self.flange_a.s, self.flange_b.s),
                 ac.Eq(self.f, self.flange_a.f)]
 
 
@@ -58,5 +58,5 @@ class PowerSensor(PartialRelativeSensor):
     power = RealOutput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.flange_a.s, self.flange_b.s),
+        return [ac.Eq(self.flange_a.s, self.flange_b.s),
                 ac.Eq(self.power, self.flange_a.f * ac.der(self.flange_a.s))]

@@ -66,7 +66,7 @@ class ConstantSpeed(_SpeedSource):
     v_fixed = ac.Parameter(1.0, unit="m/s", description="imposed speed")
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, self.v_fixed)]
+        return [ac.Eq(self.v, self.v_fixed)]
 
 
 class Speed(_SpeedSource):
@@ -75,7 +75,7 @@ class Speed(_SpeedSource):
     v_ref = RealInput()
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, self.v_ref)]
+        return [ac.Eq(self.v, self.v_ref)]
 
 
 class Position(PartialElementaryOneFlange):

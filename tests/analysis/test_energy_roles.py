@@ -21,9 +21,8 @@ J, W0, F_C, F_V = 0.05, 2.0, 0.2, 0.05
 class WrongFriction(frot.StribeckFriction):
     """A friction law with the sign error tau = -(F_c sgn(w) + F_v w): it pushes."""
 
-    def equations(self):
-        return [*frot.PartialRotationalFriction.equations(self),
-                ac.Eq(self.tau, -(self.F_c * ac.sign(self.w) + self.F_v * self.w))]
+    def law(self, w, tau):
+        return [ac.Eq(tau, -(self.F_c * ac.sign(w) + self.F_v * w))]
 
 
 class Coasting(ac.Component):
@@ -101,7 +100,7 @@ class NegativeResistor(OnePort):
     R = ac.Parameter(1.0)
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.v, -self.R * self.i)]
+        return [ac.Eq(self.v, -self.R * self.i)]
 
 
 class ClaimsLossless(NegativeResistor):

@@ -122,7 +122,7 @@ class CubicDamper(PartialCompliant):
     d = ac.Parameter(1e-3)
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.tau, self.d * ac.der(self.phi_rel) ** 3)]
+        return [ac.Eq(self.tau, self.d * ac.der(self.phi_rel) ** 3)]
 
 
 class GearedMotor(ac.Component):

@@ -216,8 +216,7 @@ class TwoMotorsWithEnergy(TwoMotorsElasticLoad):
         loss = (self.gear1_elasticity.d * ac.der(self.gear1_elasticity.phi_rel)**2
                 + self.gear2_elasticity.d * ac.der(self.gear2_elasticity.phi_rel)**2
                 + 0.2 * w2**2)
-        return [*super().equations(),
-                ac.Eq(ac.der(self.E_in), self.torque_reference.y.signal * w1),
+        return [ac.Eq(ac.der(self.E_in), self.torque_reference.y.signal * w1),
                 ac.Eq(ac.der(self.E_loss), loss)]
 
 

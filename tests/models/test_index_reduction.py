@@ -171,7 +171,7 @@ class SineCurrent(OnePort):
     f = ac.Parameter(1.0, unit="Hz")
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.i, self.I * sp.sin(2 * sp.pi * self.f * ac.time))]
+        return [ac.Eq(self.i, self.I * sp.sin(2 * sp.pi * self.f * ac.time))]
 
 
 class InductorOnCurrentSource(ac.Component):
