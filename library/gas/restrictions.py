@@ -27,8 +27,7 @@ class Throttle(PartialTwoPort):
     rho = ac.Parameter(1.2, unit="kg/m3", min=0, description="gas density in the orifice")
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.m_flow, self.C_d * self.A * (2 * self.rho)**0.5
+        return [ac.Eq(self.m_flow, self.C_d * self.A * (2 * self.rho)**0.5
                       * signed_sqrt(self.dp, _DP_REG))]
 
 
@@ -70,8 +69,7 @@ class CompressibleThrottle(PartialTwoPort):
         r_c = (2 / (k + 1))**(k / (k - 1))
         psi = ac.if_else(r > r_c, self._psi(r), self._psi(r_c))
         m_flow = (self.C_d * self.A * p_u * (2 * k / ((k - 1) * self.R * self.T))**0.5 * psi)
-        return [*super().equations(),
-                ac.Eq(self.m_flow, ac.if_else(forward, m_flow, -m_flow))]
+        return [ac.Eq(self.m_flow, ac.if_else(forward, m_flow, -m_flow))]
 
 
 class LaminarThrottle(PartialTwoPort):
@@ -80,4 +78,4 @@ class LaminarThrottle(PartialTwoPort):
     G = ac.Parameter(1e-7, unit="kg/(s.Pa)", min=0, description="mass flow conductance")
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.m_flow, self.G * self.dp)]
+        return [ac.Eq(self.m_flow, self.G * self.dp)]

@@ -35,8 +35,7 @@ class Penstock(PartialTwoPort):
         return self.rho * self.L / self.A_p * self.q**2 / 2
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.rho * self.L / self.A_p * ac.der(self.q),
+        return [ac.Eq(self.rho * self.L / self.A_p * ac.der(self.q),
                       self.dp + self.rho * self.g * self.h)]
 
 
@@ -74,8 +73,7 @@ class PeltonTurbine(PartialTwoPort):
     def equations(self):
         q = self.q
         q_abs_q = q * (q**2 + _Q_REG**2)**sp.Rational(1, 2)
-        return [*super().equations(),
-                ac.Eq(self.dp, self.rho / 2 * q_abs_q * (1 / self.A**2 - 1 / self.A_p**2)),
+        return [ac.Eq(self.dp, self.rho / 2 * q_abs_q * (1 / self.A**2 - 1 / self.A_p**2)),
                 ac.Eq(self.w, ac.der(self.flange.phi)),
                 ac.Eq(self.T_t, 2 * self.r_t * self.rho * q * (q / self.A - self.r_t * self.w)),
                 ac.Eq(self.flange.tau, -self.T_t)]

@@ -53,7 +53,7 @@ class Spring(PartialLineForce):
         return self.c * (self.s - self.s_unstretched)**2 / 2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.f, self.c * (self.s - self.s_unstretched))]
+        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched))]
 
 
 class Damper(PartialLineForce):
@@ -66,7 +66,7 @@ class Damper(PartialLineForce):
         return self.d * ac.der(self.s)**2
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.f, self.d * ac.der(self.s))]
+        return [ac.Eq(self.f, self.d * ac.der(self.s))]
 
 
 class SpringDamper(PartialLineForce):
@@ -85,8 +85,7 @@ class SpringDamper(PartialLineForce):
         return self.d * ac.der(self.s)**2
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.f, self.c * (self.s - self.s_unstretched) + self.d * ac.der(self.s))]
+        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched) + self.d * ac.der(self.s))]
 
 
 class WorldForce(ac.Component):

@@ -53,7 +53,7 @@ class _PressedFriction(PartialFriction, PartialTwoFlanges):
 
     def equations(self):
         _check_positive(self, "fn_max")
-        return [*super().equations(), ac.Eq(self.fn, self.fn_max * self.f_normalized)]
+        return [ac.Eq(self.fn, self.fn_max * self.f_normalized)]
 
 
 def _check_positive(comp, name):
@@ -95,8 +95,7 @@ class Clutch(_PressedFriction):
         return self.a_rel
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
+        return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
                 ac.Eq(self.w_rel, ac.der(self.phi_rel)),
                 ac.Eq(self.a_rel, ac.der(self.w_rel)),
                 ac.Eq(self.flange_b.tau, self.tau),
@@ -146,8 +145,7 @@ class _ShaftOnHousing(PartialTwoFlanges):
         return self.a
 
     def equations(self):
-        return [*super().equations(),
-                ac.Eq(self.phi, self.flange_a.phi),
+        return [ac.Eq(self.phi, self.flange_a.phi),
                 ac.Eq(self.flange_b.phi, self.flange_a.phi),
                 ac.Eq(self.w, ac.der(self.phi)),
                 ac.Eq(self.a, ac.der(self.w)),
