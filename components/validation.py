@@ -84,6 +84,10 @@ def _child_path(where: str, key: str) -> str:
 
 def _parameter_value(decl: Parameter, key: str, value, where: str):
     what = f"parameter {key}"
+    if decl.shape is not None:
+        # an array parameter: its shape may be the instance's (shape="n"), so its value
+        # is checked element by element where it is applied (components.arrays)
+        return value
     if isinstance(value, str) and _has_unit(value):
         from .units import convert_value
         try:

@@ -20,6 +20,7 @@ whose branches are the modes:
 
     0 = a                       locked      (sa: the torque the lock must carry)
     0 = a - (sa - tau0_max)     start forward,   0 = a - (sa + tau0_max)  start backward
+                                (sa in N.m read as rad/s2: unit_a/unit_tau = 1)
     0 = sa                      free, forward, backward (sa is not needed)
     tau = sa  locked,  else the sliding law of the mode
 
@@ -146,6 +147,11 @@ class PartialFriction(ac.Component):
     sa = ac.Variable(start=0.0, unit="N.m",
                      description="path parameter: torque held while locked, else 0 "
                                  "or the acceleration past break-away")
+    # sa is a torque; past break-away it also measures an acceleration, 1 N.m for
+    # 1 rad/s2 (the MSL's unitTorque and unitAngularAcceleration)
+    unit_a = ac.Parameter(1.0, unit="rad/s2", min=0,
+                          description="1 rad/s2: the unit of sa as an acceleration")
+    unit_tau = ac.Parameter(1.0, unit="N.m", min=0, description="1 N.m: the unit of sa")
 
     def mode_relations(self) -> dict:
         """The relations that decide the mode (module docstring), by name."""
@@ -163,13 +169,14 @@ class PartialFriction(ac.Component):
         a, sa, tau0_max = self.a_relfric, self.sa, self.tau0_max()
         forward = self.sliding_torque(self.w_relfric)
         backward = -self.sliding_torque(-self.w_relfric)
-        modes = {"forward": (sa, forward), "start forward": (a - (sa - tau0_max), forward),
-                 "locked": (a, sa)}
+        per = self.unit_a / self.unit_tau
+        modes = {"forward": (per * sa, forward),
+                 "start forward": (a - per * (sa - tau0_max), forward), "locked": (a, sa)}
         if self.free() is not None:
-            modes["free"] = (sa, sp.Integer(0))
+            modes["free"] = (per * sa, sp.Integer(0))
         if self.backward:
-            modes.update({"backward": (sa, backward),
-                          "start backward": (a - (sa + tau0_max), backward)})
+            modes.update({"backward": (per * sa, backward),
+                          "start backward": (a - per * (sa + tau0_max), backward)})
         return modes
 
     def mode_structure(self) -> list:
