@@ -19,15 +19,15 @@ same tree (the frame's g_0 variables), so every body reads the one World's field
 """
 from ... import _lazy_exports
 
-__all__ = ["World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation", "FixedRotation",
-           "Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
+__all__ = ["World", "Body", "BodyShape", "BodyBox", "BodyCylinder", "FixedTranslation",
+           "FixedRotation", "Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
            "RevolutePlanarLoopConstraint", "Spring", "Damper",
            "SpringDamper", "WorldForce", "WorldTorque", "AbsolutePosition",
            "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
            "CutForceAndTorque"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".parts": ("World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation",
+    ".parts": ("World", "Body", "BodyShape", "BodyBox", "BodyCylinder", "FixedTranslation",
                "FixedRotation"),
     ".joints": ("Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
                 "RevolutePlanarLoopConstraint"),

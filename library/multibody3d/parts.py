@@ -1,5 +1,5 @@
 """Rigid parts of spatial multibody systems (Modelica.Mechanics.MultiBody: World,
-Parts.Body, BodyBox, BodyCylinder, FixedTranslation, FixedRotation).
+Parts.Body, BodyShape, BodyBox, BodyCylinder, FixedTranslation, FixedRotation).
 
 Vectors are given as three scalar parameters with the MSL's index (``r_CM_1``, ``r_CM_2``,
 ``r_CM_3`` for r_CM), so that each can be modified and bound with ``ac.ref``.
@@ -13,7 +13,8 @@ from .frames import (angular_velocity2, force, gravity, orientation, planar_rota
                      position, resolve1, resolve2, torque, vector)
 from .interfaces import PartialOneFrame_a, PartialRigidTwoFrames, direction, equal, propagate
 
-__all__ = ["World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation", "FixedRotation"]
+__all__ = ["World", "Body", "BodyShape", "BodyBox", "BodyCylinder", "FixedTranslation",
+           "FixedRotation"]
 
 
 class World(ac.Component):
@@ -163,6 +164,40 @@ class FixedRotation(PartialRigidTwoFrames):
                 *propagate(a, b, R_rel),
                 *equal(force(a), -f_b_in_a),
                 *equal(torque(a), -resolve1(R_rel, torque(b)) - r.cross(f_b_in_a))]
+
+
+class BodyShape(PartialRigidTwoFrames):
+    """Rigid body with a second frame: a Body at frame_a and a massless bar from frame_a
+    to frame_b at r (MSL MultiBody.Parts.BodyShape, without its visual shape):
+
+        Body(m, r_CM, I) at frame_a,   FixedTranslation(r) from frame_a to frame_b
+
+    r and r_CM are resolved in frame_a, I is about the centre of mass; the body's
+    Newton-Euler equations and the bar's are those of ``Body`` and ``FixedTranslation``.
+    """
+
+    r_1 = ac.Parameter(0.0, unit="m", description="frame_b from frame_a, x in frame_a")
+    r_2 = ac.Parameter(0.0, unit="m", description="frame_b from frame_a, y in frame_a")
+    r_3 = ac.Parameter(0.0, unit="m", description="frame_b from frame_a, z in frame_a")
+    m = ac.Parameter(1.0, unit="kg", min=0, description="mass")
+    r_CM_1 = ac.Parameter(0.0, unit="m", description="centre of mass from frame_a, x")
+    r_CM_2 = ac.Parameter(0.0, unit="m", description="centre of mass from frame_a, y")
+    r_CM_3 = ac.Parameter(0.0, unit="m", description="centre of mass from frame_a, z")
+    I_11 = ac.Parameter(0.001, unit="kg.m2", min=0, description="inertia I[1,1] about the CM")
+    I_22 = ac.Parameter(0.001, unit="kg.m2", min=0, description="inertia I[2,2] about the CM")
+    I_33 = ac.Parameter(0.001, unit="kg.m2", min=0, description="inertia I[3,3] about the CM")
+    I_21 = ac.Parameter(0.0, unit="kg.m2", description="product of inertia I[2,1] = I[1,2]")
+    I_31 = ac.Parameter(0.0, unit="kg.m2", description="product of inertia I[3,1] = I[1,3]")
+    I_32 = ac.Parameter(0.0, unit="kg.m2", description="product of inertia I[3,2] = I[2,3]")
+    body = Body(m=ac.ref("m"), r_CM_1=ac.ref("r_CM_1"), r_CM_2=ac.ref("r_CM_2"),
+                r_CM_3=ac.ref("r_CM_3"), I_11=ac.ref("I_11"), I_22=ac.ref("I_22"),
+                I_33=ac.ref("I_33"), I_21=ac.ref("I_21"), I_31=ac.ref("I_31"),
+                I_32=ac.ref("I_32"))
+    bar = FixedTranslation(r_1=ac.ref("r_1"), r_2=ac.ref("r_2"), r_3=ac.ref("r_3"))
+
+    def equations(self):
+        return [ac.connect(self.frame_a, self.body.frame_a, self.bar.frame_a),
+                ac.connect(self.bar.frame_b, self.frame_b)]
 
 
 class _ShapedBody(PartialRigidTwoFrames):

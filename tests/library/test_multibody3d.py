@@ -536,3 +536,33 @@ def test_joint_axis_without_direction_is_named():
         ac.compile(ZeroAxis())
     with pytest.raises(ac.ModelError, match="not a nonzero 3-vector"):
         mb.RevolutePlanarLoopConstraint(n=(0.0, 0.0, 0.0))
+
+
+class ShapePendulum(ac.Component):
+    """A BodyShape on a revolute about z, its centre of mass off the bar (r_CM = (0.25,
+    0.05, 0)), a point mass Body at its frame_b (r = (0.5, 0, 0)); released horizontal."""
+
+    world = mb.World()
+    joint = mb.Revolute(phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
+    link = mb.BodyShape(r_1=0.5, m=2.0, r_CM_1=0.25, r_CM_2=0.05, I_33=0.05)
+    tip = mb.Body(m=0.5, I_11=0.0, I_22=0.0, I_33=0.0)
+
+    def equations(self):
+        return [ac.connect(self.world.frame_b, self.joint.frame_a),
+                ac.connect(self.joint.frame_b, self.link.frame_a),
+                ac.connect(self.link.frame_b, self.tip.frame_a)]
+
+
+def test_body_shape_carries_a_second_frame_and_an_offset_centre_of_mass():
+    """I_o phi'' = -g (m d cos(phi + alpha) + m_tip L cos(phi)), d = |r_CM|, alpha its angle
+    above the bar, I_o = I_33 + m d^2 + m_tip L^2 (the bar carries the tip's weight)."""
+    t = np.linspace(0, 1.5, 151)
+    res = ac.simulate(ShapePendulum(), t_end=1.5, rtol=1e-10, atol=1e-10, t_eval=t)
+    d, alpha = np.hypot(0.25, 0.05), np.arctan2(0.05, 0.25)
+    I_o = 0.05 + 2.0 * d**2 + 0.5 * 0.5**2
+    ode = _ode(lambda _, s: [s[1], -G * (2.0 * d * np.cos(s[0] + alpha)
+                                         + 0.5 * 0.5 * np.cos(s[0])) / I_o], [0.0, 0.0], t)
+    assert np.max(np.abs(res["joint.phi"] - ode.y[0])) < 1e-7 * np.max(np.abs(ode.y[0]))
+    # the tip rides at frame_b, L from the pivot
+    tip = np.hypot(res["tip.frame_a.x"], res["tip.frame_a.y"])
+    assert np.max(np.abs(tip - 0.5)) < 1e-9 * 0.5
