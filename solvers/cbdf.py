@@ -129,7 +129,7 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
 
 
 def _ptr(a: np.ndarray) -> int:
-    return a.ctypes.data
+    return a.__array_interface__["data"][0]     # cheaper than a.ctypes.data
 
 
 class CompiledBDF(BDF):

@@ -237,9 +237,11 @@ class _Run:
         ts, ys, yps = s.points
         if self.t_eval is not None:
             self.i_eval = s.i_eval
-        self.ts.extend(ts.tolist())
-        self.ys.extend(ys)
-        self.yps.extend(yps)
+        if len(ts):
+            # a block of points as one (k, n) array: _output stacks blocks and rows
+            self.ts.extend(ts.tolist())
+            self.ys.append(ys)
+            self.yps.append(yps)
         if self.keeps_discrete:
             self.snapshot_of.extend([len(self.snapshots) - 1] * len(ts))
         if code == R_FAIL:
@@ -330,8 +332,8 @@ class _Run:
             self.stats.linear_solver = "dense"
         elif lin is not None and lin.sparse is not None:
             self.stats.linear_solver = "sparse" if lin.sparse else "dense"
-        y = np.array(self.ys) if self.ys else np.empty((0, n))
-        yp = np.array(self.yps) if self.yps else np.empty((0, n))
+        y = np.vstack(self.ys) if self.ys else np.empty((0, n))
+        yp = np.vstack(self.yps) if self.yps else np.empty((0, n))
         out = SolverOutput(np.array(self.ts), y, yp, success, message, self.stats,
                            list(self.event_times), list(self.snapshots),
                            list(self.snapshot_of))
