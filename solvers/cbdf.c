@@ -16,6 +16,11 @@
 #include <math.h>
 #include <string.h>
 #include <float.h>
+/* dense_factor and dense_solve: cbdf_lu.c, put in front of this file by cbdf.py */
+int dense_factor(const double *J, double *A, long *piv, double *r, double *c, long n,
+                 int *equil);
+void dense_solve(const double *A, const long *piv, const double *r, const double *c,
+                 long n, double *b);
 
 /* dv */
 enum { D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO, D_SS,
@@ -132,87 +137,16 @@ static void roots(ctx_t *c, double t, const double *y, const double *yp, double 
   for (long k = 0; k < iv[I_NROOTS]; ++k) r[k] += off[k];
 }
 
-/* ------------------------------------------------------------------ dense LU */
-static int lu_factor(double *A, long *piv, long n, double *dmin, double *dmax) {
-  *dmin = INFINITY; *dmax = 0.0;
-  for (long k = 0; k < n; ++k) {
-    long p = k; double big = fabs(A[k * n + k]);
-    for (long i = k + 1; i < n; ++i) {
-      double a = fabs(A[i * n + k]);
-      if (a > big) { big = a; p = i; }
-    }
-    piv[k] = p;
-    if (p != k)
-      for (long j = 0; j < n; ++j) { double s = A[k * n + j]; A[k * n + j] = A[p * n + j]; A[p * n + j] = s; }
-    double d = A[k * n + k];
-    if (fabs(d) < *dmin) *dmin = fabs(d);
-    if (fabs(d) > *dmax) *dmax = fabs(d);
-    if (d == 0.0) return 1;
-    double inv = 1.0 / d;
-    for (long i = k + 1; i < n; ++i) {
-      double l = A[i * n + k] * inv;
-      A[i * n + k] = l;
-      if (l != 0.0) {
-        double *ri = A + i * n, *rk = A + k * n;
-        for (long j = k + 1; j < n; ++j) ri[j] -= l * rk[j];
-      }
-    }
-  }
-  return 0;
-}
-
-static void lu_solve(const double *A, const long *piv, long n, double *b) {
-  for (long k = 0; k < n; ++k)
-    if (piv[k] != k) { double s = b[k]; b[k] = b[piv[k]]; b[piv[k]] = s; }
-  for (long i = 1; i < n; ++i) {
-    double s = b[i]; const double *ri = A + i * n;
-    for (long j = 0; j < i; ++j) s -= ri[j] * b[j];
-    b[i] = s;
-  }
-  for (long i = n - 1; i >= 0; --i) {
-    double s = b[i]; const double *ri = A + i * n;
-    for (long j = i + 1; j < n; ++j) s -= ri[j] * b[j];
-    b[i] = s / ri[i];
-  }
-}
-
-static int pivots_ok(double dmin, double dmax) {
-  return dmax > 0.0 && dmin > 64.0 * DBL_EPSILON * dmax;
-}
-
-/* factor J (in c->lu); 0, or F_SINGULAR / F_NONFINITE */
+/* ------------------------------------------------------------------ linear algebra */
 static int factor(ctx_t *c, double *J) {
-  long n = c->n; double dmin, dmax;
-  for (long i = 0; i < n * n; ++i) if (!isfinite(J[i])) return F_NONFINITE;
-  double *A = c->lu;
-  memcpy(A, J, sizeof(double) * n * n);
-  c->iv[I_EQUIL] = 0;
-  if (!lu_factor(A, c->piv, n, &dmin, &dmax) && pivots_ok(dmin, dmax)) return 0;
-  /* equilibrated: rows, then columns to a largest magnitude of one */
-  for (long i = 0; i < n; ++i) {
-    double a = 0.0;
-    for (long j = 0; j < n; ++j) if (fabs(J[i * n + j]) > a) a = fabs(J[i * n + j]);
-    c->req[i] = 1.0 / (a > 1e-300 ? a : 1e-300);
-  }
-  for (long j = 0; j < n; ++j) {
-    double a = 0.0;
-    for (long i = 0; i < n; ++i) { double b = fabs(J[i * n + j]) * c->req[i]; if (b > a) a = b; }
-    c->ceq[j] = 1.0 / (a > 1e-300 ? a : 1e-300);
-  }
-  for (long i = 0; i < n; ++i)
-    for (long j = 0; j < n; ++j) A[i * n + j] = J[i * n + j] * c->req[i] * c->ceq[j];
-  if (lu_factor(A, c->piv, n, &dmin, &dmax) || !pivots_ok(dmin, dmax)) return F_SINGULAR;
-  c->iv[I_EQUIL] = 1;
-  return 0;
+  int equil = 0;
+  int k = dense_factor(J, c->lu, c->piv, c->req, c->ceq, c->n, &equil);
+  c->iv[I_EQUIL] = equil;
+  return k;
 }
 
 static void solve(ctx_t *c, double *b) {
-  long n = c->n;
-  if (c->iv[I_EQUIL]) {
-    for (long i = 0; i < n; ++i) b[i] *= c->req[i];
-    lu_solve(c->lu, c->piv, n, b);
-    for (long i = 0; i < n; ++i) b[i] *= c->ceq[i];
-  } else lu_solve(c->lu, c->piv, n, b);
+  dense_solve(c->lu, c->piv, c->iv[I_EQUIL] ? c->req : 0, c->ceq, c->n, b);
 }
 
 static double wrms(const double *v, const double *w, long n) {

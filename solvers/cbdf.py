@@ -27,7 +27,7 @@ problem of at most :data:`MAX_DENSE` unknowns, calling its Python residual, Jaco
 zero-crossing functions back (for tests against the Python loop; no faster).  Without a C
 compiler ``"auto"`` is the Python loop.  Results agree with the Python loop to the
 integration tolerance, not bitwise: the LU is not LAPACK's, so the iteration matrix's
-solutions differ in rounding.
+solutions differ in rounding.  The dense LU is ``cbdf_lu.c``.
 """
 from __future__ import annotations
 
@@ -75,9 +75,13 @@ def library():
     global _lib
     if _lib is None:
         from ..compiler.cbackend import build
+        here = os.path.dirname(__file__)
         try:
-            with open(os.path.join(os.path.dirname(__file__), "cbdf.c")) as f:
-                lib = ctypes.CDLL(build(f.read()))
+            source = ""
+            for name in ("cbdf_lu.c", "cbdf.c"):     # one translation unit
+                with open(os.path.join(here, name)) as f:
+                    source += f.read() + "\n"
+            lib = ctypes.CDLL(build(source))
         except (BackendError, OSError):
             _lib = False
             return None
@@ -160,6 +164,7 @@ class CompiledBDF(BDF):
         for name, slot in (("g", P_G), ("gprev", P_GPREV), ("signref", P_SIGNREF)):
             self._buf(name, max(nr, 1), slot)
         self.iv[I_N], self.iv[I_NROOTS], self.iv[I_MODE] = n, nr, mode
+        self._n_roots = nr
         self.iv[I_CAP] = CAPACITY
         if mode == 0:
             self._bind_model(problem)
@@ -300,7 +305,8 @@ class CompiledBDF(BDF):
         self.iv[I_HASLAST] = 0
 
     def step(self) -> None:
-        """One step through the compiled loop (the driver uses :meth:`run`)."""
+        """One step through the compiled loop, without looking at zero crossings (the
+        driver uses :meth:`run`)."""
         code = self.run(1, None, 0, None, None)
         if code == R_FAIL:
             raise self.failure()
@@ -320,6 +326,8 @@ class CompiledBDF(BDF):
             self._set("teval", t_eval, P_TEVAL)
             iv[I_NEVAL], iv[I_IEVAL] = len(t_eval), i_eval
         nr = iv[I_NROOTS]
+        if sign_ref is None:     # no zero crossings watched (step())
+            iv[I_NROOTS], nr = 0, 0
         if nr:
             self._keep["signref"][:nr] = sign_ref
             self._keep["gprev"][:nr] = g_prev
@@ -333,6 +341,7 @@ class CompiledBDF(BDF):
             self._keep["par"], self._keep["m"] = p.p, p.discrete.m
             pv[P_PAR], pv[P_M] = _ptr(p.p), _ptr(p.discrete.m)
         code = self.lib.cbdf_run(_ptr(self.dv), _ptr(iv), ctypes.addressof(pv))
+        iv[I_NROOTS] = self._n_roots
         self._pull()
         if nr:
             sign_ref[:] = self._keep["signref"][:nr]

@@ -11,7 +11,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.errors import SimulationError
+from acausal.errors import BackendError, SimulationError
+from acausal.solvers import DAEProblem, cbdf
 from acausal.library.examples.motor_drive import MotorDrive
 from acausal.library.examples.pendulum import Pendulum
 from acausal.solvers.cbdf import CAPACITY, library
@@ -79,6 +80,41 @@ def test_a_blow_up_fails_as_in_the_python_loop():
     assert msgs["c"] == msgs["python"]
 
 
+class _SingularRow(DAEProblem):
+    """x' = -x and a row that does not involve z: the iteration matrix is singular."""
+
+    def __init__(self):
+        super().__init__(2, ["x", "z"])
+        self.algebraic[1] = True
+
+    def residual(self, t, y, yp):
+        return np.array([yp[0] + y[0], 0.0 * y[1]])
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj + 1.0, 0.0], [0.0, 0.0]])
+
+
+def test_a_singular_iteration_matrix_is_reported_as_in_the_python_loop():
+    msgs = {}
+    for loop in ("python", "c"):
+        with pytest.raises(SimulationError) as info:
+            integrate(_SingularRow(), (0, 1), [1.0, 0.0], [-1.0, 0.0], initialize=False,
+                      step_loop=loop)
+        msgs[loop] = str(info.value)
+        assert info.value.variables == ["z"]
+    assert msgs["c"] == msgs["python"]
+
+
+def test_single_steps_follow_the_closed_form():
+    p = DampedOscillator()
+    s = cbdf.CompiledBDF(p, 0.0, [1.0, 0.0], [0.0, -4.0], mode=1, rtol=1e-10, atol=1e-12)
+    for _ in range(50):
+        s.step()
+    x, v = p.exact(s.t)
+    assert s.stats.steps == 50 and s.t > 0
+    assert abs(s.y[0] - x) < 1e-8 and abs(s.y[1] - v) < 1e-8
+
+
 # ---------------------------------------------------------------- compiled models
 def test_library_bouncing_ball_bounces_at_the_closed_form_times():
     c = ac.compile(Ball(), backend="c")
@@ -129,3 +165,11 @@ def test_the_loop_is_chosen_by_backend_and_model():
         ac.simulate(pend, t_end=0.1, step_loop="c")
     with pytest.raises(ValueError, match="step_loop"):
         ac.simulate(pend, t_end=0.1, step_loop="fast")
+
+
+def test_without_a_c_compiler_the_python_loop_runs(monkeypatch):
+    c = ac.compile(MotorDrive(), backend="c")
+    monkeypatch.setattr(cbdf, "_lib", False)        # as when no compiler was found
+    assert ac.simulate(c, t_end=0.01).stats["step_loop"] == "python"
+    with pytest.raises(BackendError, match="C compiler"):
+        ac.simulate(c, t_end=0.01, step_loop="c")
