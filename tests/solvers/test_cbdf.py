@@ -8,6 +8,7 @@ Python loop at a tolerance 100 times tighter), relative to the signal.
 """
 import numpy as np
 import pytest
+import sympy as sp
 from scipy.integrate import solve_ivp
 
 import acausal as ac
@@ -135,6 +136,28 @@ def test_ideal_rectifier_matches_solve_ivp_and_switches_with_the_python_loop():
     ta, tb = np.array(runs["python"].events), np.array(runs["c"].events)
     assert len(ta) == len(tb) >= 4
     assert np.max(np.abs(ta - tb)) < 1e-9 * 0.04
+
+
+class _Staircase(ac.Component):
+    """x' = 1 + x/10 from 0, so x = 10 (e^{t/10} - 1) reaches k at t_k = 10 ln(1 + k/10);
+    z' = floor(x): a frozen floor value of a state, switched at those crossings."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    z = ac.Variable(start=0.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1 + self.x / 10), ac.Eq(ac.der(self.z), sp.floor(self.x))]
+
+
+def test_a_floor_of_a_state_switches_at_the_closed_form_times():
+    c = ac.compile(_Staircase(), backend="c")
+    res = ac.simulate(c, t_end=3.0, rtol=1e-10, atol=1e-12)
+    assert res.stats["step_loop"] == "c"
+    tk = 10 * np.log(1 + np.arange(1, 4) / 10)
+    assert len(res.events) == 3
+    assert np.max(np.abs(np.array(res.events) - tk)) < 1e-8
+    z_end = (tk[1] - tk[0]) + 2 * (tk[2] - tk[1]) + 3 * (3.0 - tk[2])
+    assert abs(res["z"][-1] - z_end) < 1e-8 * z_end
 
 
 def test_motor_drive_matches_the_python_loop_at_a_tighter_tolerance():
