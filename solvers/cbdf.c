@@ -24,8 +24,8 @@ void dense_solve(const double *A, const long *piv, const double *r, const double
 
 /* dv */
 enum { D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO, D_SS,
-       D_RTOL, D_MAXSTEP, D_FAIL_T, D_FAIL_H, D_FAIL_CJ, D_FAIL_TJ, D_PSI = 16, D_ALPHA = 24,
-       D_BETA = 32, D_SIGMA = 40, D_GAMMA = 48, D_ALPHAS = 56, D_SIZE = 64 };
+       D_RTOL, D_MAXSTEP, D_FAIL_T, D_FAIL_H, D_FAIL_CJ, D_FAIL_TJ, D_PSI = 16,
+       D_ALPHA = 24, D_BETA = 32, D_SIGMA = 40, D_GAMMA = 48, D_ALPHAS = 56, D_SIZE = 64 };
 /* iv */
 enum { I_N, I_KK, I_KUSED, I_PHASE, I_NS, I_NST, I_FORCE, I_KMAX, I_MAXORD, I_NROOTS,
        I_MODE, I_BUDGET, I_CAP, I_COUNT, I_NEVAL, I_IEVAL, I_ALLSTEPS, I_FAILKIND,
@@ -173,7 +173,8 @@ static int setup(ctx_t *c, double t, const double *y, const double *yp) {
   return 0;
 }
 
-/* one simplified-Newton iteration: 1 converged (ee), 0 failed; *fb: fallback in c->fallback */
+/* one simplified-Newton iteration: 1 converged (ee), 0 failed; *fb: a fallback iterate
+   (the test without the self-scaled components passed) is in c->fallback */
 static int iterate(ctx_t *c, double tnew, double cj, int *fb, int *have_last) {
   double *dv = c->dv; long *iv = c->iv; long n = c->n;
   double *ee = c->ee, *delta = c->delta, *w = c->ewt_n;
@@ -184,7 +185,10 @@ static int iterate(ctx_t *c, double tnew, double cj, int *fb, int *have_last) {
   for (int m = 0; m < MAXCOR; ++m) {
     if (m == 0) residual(c, tnew, c->ypred, c->yppred, delta);
     else {
-      for (long i = 0; i < n; ++i) { c->ytmp[i] = c->ypred[i] + ee[i]; c->yptmp[i] = c->yppred[i] + cj * ee[i]; }
+      for (long i = 0; i < n; ++i) {
+        c->ytmp[i] = c->ypred[i] + ee[i];
+        c->yptmp[i] = c->yppred[i] + cj * ee[i];
+      }
       residual(c, tnew, c->ytmp, c->yptmp, delta);
     }
     iv[I_NNI]++;
@@ -242,7 +246,10 @@ static int corrector(ctx_t *c, double tnew) {
     if (iterate(c, tnew, cj, &fb, &have_last)) {
       if (dv[D_CJRATIO] != 1.0 && iv[I_ANYALG]) {
         /* one unscaled correction: the algebraic rows do not contain cj */
-        for (long i = 0; i < n; ++i) { c->ytmp[i] = c->ypred[i] + c->ee[i]; c->yptmp[i] = c->yppred[i] + cj * c->ee[i]; }
+        for (long i = 0; i < n; ++i) {
+          c->ytmp[i] = c->ypred[i] + c->ee[i];
+          c->yptmp[i] = c->yppred[i] + cj * c->ee[i];
+        }
         iv[I_NNI]++;
         residual(c, tnew, c->ytmp, c->yptmp, c->delta);
         solve(c, c->delta);
@@ -342,7 +349,10 @@ static void complete_step(ctx_t *c, double err_k, double err_km1, long knew) {
   iv[I_KUSED] = kk; dv[D_HUSED] = dv[D_HH];
   if (knew == kk - 1 || kk >= iv[I_KMAX]) iv[I_PHASE] = 1;
   if (iv[I_PHASE] == 0) {
-    if (iv[I_NST] > 1) { iv[I_KK] = kk + 1; dv[D_HH] = fmin(2.0 * dv[D_HH], dv[D_MAXSTEP]); }
+    if (iv[I_NST] > 1) {
+      iv[I_KK] = kk + 1;
+      dv[D_HH] = fmin(2.0 * dv[D_HH], dv[D_MAXSTEP]);
+    }
   } else {
     int action = 0;   /* 0 maintain, 1 raise, -1 lower */
     double err_kp1 = 0.0;
@@ -350,7 +360,10 @@ static void complete_step(ctx_t *c, double err_k, double err_km1, long knew) {
     else if (kk >= iv[I_KMAX] || kk + 1 >= iv[I_NS] || kdiff == 1) action = 0;
     else {
       double *p1 = phi + (kk + 1) * n, s = 0.0;
-      for (long i = 0; i < n; ++i) { double x = (ee[i] - p1[i]) * c->ewt_err[i]; s += x * x; }
+      for (long i = 0; i < n; ++i) {
+        double x = (ee[i] - p1[i]) * c->ewt_err[i];
+        s += x * x;
+      }
       err_kp1 = sqrt(s / n) / (kk + 2);
       double terr_k = (kk + 1) * err_k, terr_kp1 = (kk + 2) * err_kp1;
       if (kk == 1) action = terr_kp1 >= 0.5 * terr_k ? 0 : 1;
@@ -370,7 +383,10 @@ static void complete_step(ctx_t *c, double err_k, double err_km1, long knew) {
     for (long j = 0; j < n; ++j) phi[k * n + j] += phi[(k + 1) * n + j];
   dv[D_TPREV] = dv[D_TN] - dv[D_HUSED];
   double *le = (double *)c->pv[P_LASTERR], *yp = (double *)c->pv[P_YP];
-  for (long i = 0; i < n; ++i) { le[i] = ee[i] * c->ewt_err[i]; yp[i] = c->yppred[i] + dv[D_CJ] * ee[i]; }
+  for (long i = 0; i < n; ++i) {
+    le[i] = ee[i] * c->ewt_err[i];
+    yp[i] = c->yppred[i] + dv[D_CJ] * ee[i];
+  }
   iv[I_HASLAST] = 1;
 }
 
@@ -385,13 +401,17 @@ static int step(ctx_t *c) {
   for (;;) {
     dv[D_HH] = fmin(dv[D_HH], dv[D_MAXSTEP]);
     double tstop = dv[D_TSTOP], remaining = tstop - saved_t;
-    double hmin = 16.0 * DBL_EPSILON * fmax(fmax(fabs(dv[D_TN]), fabs(dv[D_HUSED])), 1e-300);
+    double hmin = 16.0 * DBL_EPSILON *
+                  fmax(fmax(fabs(dv[D_TN]), fabs(dv[D_HUSED])), 1e-300);
     int landing = isfinite(tstop) && dv[D_HH] >= remaining - 64 * DBL_EPSILON * fabs(tstop);
     if (landing) {
       if (remaining <= hmin) { dv[D_TPREV] = saved_t; dv[D_TN] = tstop; return -1; }
       dv[D_HH] = remaining;
     }
-    if (dv[D_HH] < hmin) { dv[D_FAIL_T] = saved_t; dv[D_FAIL_H] = dv[D_HH]; return F_STEPSIZE; }
+    if (dv[D_HH] < hmin) {
+      dv[D_FAIL_T] = saved_t; dv[D_FAIL_H] = dv[D_HH];
+      return F_STEPSIZE;
+    }
     ck = set_coeffs(c);
     double tnew = landing ? tstop : saved_t + dv[D_HH];
     dv[D_TN] = tnew;
@@ -399,7 +419,10 @@ static int step(ctx_t *c) {
     const double *gamma = dv + D_GAMMA;
     for (long j = 0; j < n; ++j) {
       double s = c->phi[j], sp = 0.0;
-      for (long i = 1; i <= kk; ++i) { s += c->phi[i * n + j]; sp += gamma[i] * c->phi[i * n + j]; }
+      for (long i = 1; i <= kk; ++i) {
+        s += c->phi[i * n + j];
+        sp += gamma[i] * c->phi[i * n + j];
+      }
       c->ypred[j] = s; c->yppred[j] = sp;
     }
     int k = corrector(c, tnew);
@@ -411,7 +434,10 @@ static int step(ctx_t *c) {
     if (k == -1) {
       restore(c, saved_t);
       iv[I_NCF]++; ncf++; iv[I_PHASE] = 1;
-      if (ncf >= MAXNCF) { dv[D_FAIL_T] = saved_t; dv[D_FAIL_H] = dv[D_HH]; return F_NEWTON; }
+      if (ncf >= MAXNCF) {
+        dv[D_FAIL_T] = saved_t; dv[D_FAIL_H] = dv[D_HH];
+        return F_NEWTON;
+      }
       shrink(c, 0.25); iv[I_FORCE] = 1; continue;
     }
     /* the error test (IDATestError) */
@@ -422,12 +448,20 @@ static int step(ctx_t *c) {
     err_km1 = 0.0; knew = kk;
     if (kk > 1) {
       double *d = c->delta, s = 0.0;
-      for (long j = 0; j < n; ++j) { d[j] = c->phi[kk * n + j] + c->ee[j]; double x = d[j] * w[j]; s += x * x; }
+      for (long j = 0; j < n; ++j) {
+        d[j] = c->phi[kk * n + j] + c->ee[j];
+        double x = d[j] * w[j];
+        s += x * x;
+      }
       err_km1 = sigma[kk - 1] * sqrt(s / n);
       double terr_km1 = kk * err_km1;
       if (kk > 2) {
         s = 0.0;
-        for (long j = 0; j < n; ++j) { d[j] += c->phi[(kk - 1) * n + j]; double x = d[j] * w[j]; s += x * x; }
+        for (long j = 0; j < n; ++j) {
+          d[j] += c->phi[(kk - 1) * n + j];
+          double x = d[j] * w[j];
+          s += x * x;
+        }
         double terr_km2 = (kk - 1) * sigma[kk - 2] * sqrt(s / n);
         if (fmax(terr_km1, terr_km2) <= terr_k) knew = kk - 1;
       } else if (terr_km1 <= 0.5 * terr_k) knew = kk - 1;
@@ -438,7 +472,10 @@ static int step(ctx_t *c) {
     double *wt = (double *)c->pv[P_WEIGHTED];
     for (long j = 0; j < n; ++j) wt[j] = c->ee[j] * w[j];
     iv[I_HASFAIL] = 1; iv[I_PHASE] = 1;
-    if (nef >= MAXNEF) { dv[D_FAIL_T] = saved_t; dv[D_FAIL_H] = dv[D_HH]; return F_ERRTEST; }
+    if (nef >= MAXNEF) {
+      dv[D_FAIL_T] = saved_t; dv[D_FAIL_H] = dv[D_HH];
+      return F_ERRTEST;
+    }
     iv[I_KMAX] = iv[I_MAXORD];
     if (iv[I_NST] == 0 && nef <= 3) {
       double rr = 0.9 * pow(2.0 * err_k + 1e-4, -0.5);
@@ -536,7 +573,8 @@ int cbdf_run(double *dv, long *iv, void **pv) {
       }
       /* offsets of items armed at zero end once they have left it on their own side */
       if (iv[I_MODE] == 0)
-        for (long i = 0; i < nr; ++i) if (off[i] != 0.0 && g[i] - off[i] >= 0.0) off[i] = 0.0;
+        for (long i = 0; i < nr; ++i)
+          if (off[i] != 0.0 && g[i] - off[i] >= 0.0) off[i] = 0.0;
     }
     if (!emit_step(&c)) { iv[I_PENDING] = 1; return R_FULL; }
   }

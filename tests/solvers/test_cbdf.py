@@ -21,7 +21,8 @@ from acausal.solvers.driver import integrate
 from acausal.tests.library.test_electrical import IdealRectifier, _ideal_rectifier_reference
 from acausal.tests.models.test_events import BouncingBall as Ball, _bounce_times
 
-from .problems import BlowUp, BouncingBall, DampedOscillator, LinearIndex1, Robertson, VanDerPol
+from .problems import (BlowUp, BouncingBall, DampedOscillator, LinearIndex1, Robertson,
+                       VanDerPol)
 
 pytestmark = pytest.mark.skipif(library() is None, reason="no C compiler on this machine")
 
@@ -146,7 +147,8 @@ class _Staircase(ac.Component):
     z = ac.Variable(start=0.0, fixed=True)
 
     def equations(self):
-        return [ac.Eq(ac.der(self.x), 1 + self.x / 10), ac.Eq(ac.der(self.z), sp.floor(self.x))]
+        return [ac.Eq(ac.der(self.x), 1 + self.x / 10),
+                ac.Eq(ac.der(self.z), sp.floor(self.x))]
 
 
 def test_a_floor_of_a_state_switches_at_the_closed_form_times():
