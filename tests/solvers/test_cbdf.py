@@ -45,6 +45,20 @@ def test_damped_oscillator_and_an_index_1_dae_match_their_closed_forms():
     assert _rel(out.y[:, 0], x) < 1e-8 and _rel(out.y[:, 1], z) < 1e-8
 
 
+def test_options_suppress_alg_max_step_and_max_steps_act_as_in_the_python_loop():
+    t = np.linspace(0, 5, 51)
+    q = LinearIndex1()
+    out = integrate(q, (0, 5), [1.0, 1.5], rtol=1e-9, atol=1e-11, t_eval=t,
+                    suppress_alg=True, max_step=0.05, step_loop="c")
+    x, z = q.exact(t, 1.0)
+    assert _rel(out.y[:, 0], x) < 1e-7 and _rel(out.y[:, 1], z) < 1e-7
+    assert out.stats.steps >= 100                     # 5 s in steps of at most 0.05 s
+    for loop in ("python", "c"):
+        with pytest.raises(SimulationError, match="maximum number of steps") as info:
+            integrate(LinearIndex1(), (0, 5), [1.0, 1.5], max_steps=20, step_loop=loop)
+        assert info.value.partial.stats.steps == 20
+
+
 @pytest.mark.parametrize("make, y0, t_end", [(lambda: VanDerPol(10.0), [2.0, 0.0], 3.0),
                                              (Robertson, [1.0, 0.0, 0.0], 40.0)],
                          ids=["vanderpol", "robertson"])
