@@ -78,7 +78,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              atol: float | None = None, t_eval=None, n_points: int | None = None,
              max_step: float = np.inf, parameters: dict | None = None,
              max_order: int = 5, raise_on_failure: bool = False,
-             backend: str = "auto", progress: bool | None = None) -> Result:
+             backend: str = "auto", progress: bool | None = None,
+             step_loop: str = "auto") -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -92,6 +93,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     ``backend``: how a Component is compiled (see :func:`compile`).  ``progress``: a
     progress bar in simulated time (tqdm, the ``progress`` extra; a widget in notebooks);
     None shows it only when stderr is a terminal and the run takes more than 2 s.
+    ``step_loop``: where the BDF steps run: "auto" (the compiled loop when the model runs
+    on the C backend and qualifies, see :mod:`acausal.solvers.cbdf`), "c" or "python".
     """
     t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
     if not t_end > t_start:
@@ -134,7 +137,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     try:
         out = integrate(compiled, (t_start, t_end), y0, yp0, rtol=rtol, atol=atol,
                         t_eval=t_eval, max_step=max_step, max_order=int(max_order),
-                        initialize=False, progress=bar)
+                        initialize=False, progress=bar, step_loop=step_loop)
     except SimulationError as err:
         partial = err.partial
         start = _singular_start(compiled, t_start)

@@ -188,7 +188,8 @@ def main(argv=None) -> int:
     ap.add_argument("--repeats", type=int, default=3, help="timed runs per solver")
     ap.add_argument("--rtol", type=float, default=1e-6)
     ap.add_argument("--backends", default="numpy,c",
-                    help="acausal code backends to run, when compile takes backend=")
+                    help="acausal code backends to run, when compile takes backend= "
+                         "(c-pyloop: the C backend with the Python step loop)")
     ap.add_argument("--reference", type=float, default=None, metavar="RTOL",
                     help="add each row's deviation from acausal at this tight rtol")
     ap.add_argument("--quick", action="store_true", help=f"N = {QUICK_N} (for run_all.py)")

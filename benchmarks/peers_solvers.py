@@ -93,13 +93,19 @@ def acausal_runners(ac, make_model: Callable, t_end: float, rtol: float,
 
 def _acausal_runner(ac, make_model, t_end, rtol, names, where, backend) -> Runner:
     label = "acausal" if backend is None else f"acausal [{backend}]"
+    # "c-pyloop": the C backend with the BDF steps in the Python loop, not the compiled one
+    loop = None
+    if backend is not None and backend.endswith("-pyloop"):
+        backend, loop = backend[:-len("-pyloop")], "python"
     extra = {} if backend is None else {"backend": backend}
     try:
         compiled, build = _timed(ac.compile, make_model(), **(extra if where == "compile"
                                                                else {}))
     except Exception as err:          # noqa: BLE001  (a backend that is not available)
         return Runner(label, "generated DAE", reason=f"compile failed: {err}")
-    sim_extra = extra if where == "simulate" else {}
+    sim_extra = dict(extra) if where == "simulate" else {}
+    if loop is not None:
+        sim_extra["step_loop"] = loop
 
     def run():
         res, seconds = _timed(ac.simulate, compiled, t_end=t_end, rtol=rtol, **sim_extra)

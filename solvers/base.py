@@ -163,6 +163,7 @@ class SolverStats:
     orders: dict = field(default_factory=dict)
     stability_limit_reductions: int = 0   # order lowered by stability limit detection
     linear_solver: str = ""      # "dense" or "sparse" LU, as chosen for the problem
+    step_loop: str = "python"    # where the steps ran: "python" or "c" (solvers.cbdf)
 
     def as_dict(self) -> dict:
         return dict(self.__dict__)

@@ -59,7 +59,7 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
               first_step: float | None = None, suppress_alg: bool = False,
               max_steps: int = 500000, initialize: bool = True,
               max_event_iterations: int = 20, max_order: int = 5,
-              stald: bool = False, progress=None) -> SolverOutput:
+              stald: bool = False, progress=None, step_loop: str = "auto") -> SolverOutput:
     """Integrate the DAE ``problem`` over ``t_span`` with the variable-order BDF.
 
     Parameters
@@ -98,7 +98,12 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
         stability on such a mode rather than by accuracy.
     progress : callable or None
         ``progress(t)`` after every accepted step (it should be cheap: it is on the
-        step loop).
+        step loop; with the compiled loop, after every return to Python).
+    step_loop : {"auto", "c", "python"}
+        Where the BDF steps run: "auto" is the compiled loop
+        (:mod:`acausal.solvers.cbdf`) when the problem qualifies (a compiled model on
+        the C backend, at most 200 unknowns, no dynamic state selection, no ``stald``)
+        and a C compiler works, else the Python loop; "c" and "python" force one.
 
     Returns
     -------
@@ -118,6 +123,8 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     run = _Run(problem, t_span, t_eval, rtol, atol, max_step, suppress_alg, max_steps,
                max_event_iterations)
     run.bdf_options = {"max_order": max_order, "stald": stald}
+    from .cbdf import choose_step_loop
+    run.mode = choose_step_loop(problem, step_loop, stald)
     run.progress = progress
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         return run.go(y0, yp0, first_step, initialize)
@@ -152,6 +159,7 @@ class _Run:
         self.n_roots = int(getattr(problem, "n_roots", 0) or 0)
         self.oriented = bool(getattr(problem, "oriented_roots", False))
         self.bdf_options = {}
+        self.mode = None          # the compiled step loop's mode, None: the Python loop
         # the discrete state of every output point (contract item 13): snapshots taken
         # when it may have changed, and for each point the snapshot it was computed in
         self.keeps_discrete = callable(getattr(problem, "discrete_state", None))
@@ -171,13 +179,21 @@ class _Run:
         self._snapshot()
         self._emit_point(self.t0, y, yp)
         self._arm_roots(self.t0, y, yp)
-        self.solver = BDF(p, self.t0, y, yp, rtol=self.rtol, atol=self.atol,
-                          max_step=self.max_step, first_step=first_step,
-                          suppress_alg=self.suppress_alg, t_stop=self._next_stop(self.t0),
-                          stats=self.stats, **self.bdf_options)
+        options = dict(rtol=self.rtol, atol=self.atol, max_step=self.max_step,
+                       first_step=first_step, suppress_alg=self.suppress_alg,
+                       t_stop=self._next_stop(self.t0), stats=self.stats,
+                       **self.bdf_options)
+        if self.mode is None:
+            self.solver = BDF(p, self.t0, y, yp, **options)
+            advance = self._advance
+        else:
+            from .cbdf import CompiledBDF
+            self.solver = CompiledBDF(p, self.t0, y, yp, mode=self.mode, **options)
+            self.stats.step_loop = "c"
+            advance = self._advance_compiled
         tick = self.progress
         while self.solver.t < self.tf:
-            stop = self._advance()
+            stop = advance()
             if stop is not None:
                 return self._output(False, stop)
             if tick is not None:
@@ -209,6 +225,41 @@ class _Run:
             s.step()
         except StepFailure as exc:
             raise self._step_failure(exc) from None
+        return self._accepted(s)
+
+    def _advance_compiled(self):
+        """Steps in the compiled loop (:mod:`acausal.solvers.cbdf`) up to the next thing
+        that needs Python; that step, if any, then goes on as in :meth:`_advance`."""
+        from .cbdf import R_FAIL, R_FULL, R_SPECIAL
+        s = self.solver
+        if self.stats.steps >= self.max_steps:
+            raise self._error(f"maximum number of steps ({self.max_steps}) reached at "
+                              f"t={s.t:.10g} before t_end={self.tf:.10g}", s.t, ())
+        if self.n_roots:
+            self.sign_ref = np.array(self.sign_ref, float)
+            self.g_prev = np.array(self.g_prev, float)
+        code = s.run(self.max_steps - self.stats.steps, self.t_eval, self.i_eval,
+                     getattr(self, "sign_ref", None), getattr(self, "g_prev", None))
+        ts, ys, yps = s.points
+        if self.t_eval is not None:
+            self.i_eval = s.i_eval
+        if len(ts):
+            # a block of points as one (k, n) array: _output stacks blocks and rows
+            self.ts.extend(ts.tolist())
+            self.ys.append(ys)
+            self.yps.append(yps)
+        if self.keeps_discrete:
+            self.snapshot_of.extend([len(self.snapshots) - 1] * len(ts))
+        if code == R_FAIL:
+            raise self._step_failure(s.failure())
+        if code == R_FULL and s.pending:
+            self._emit_step(s.t_prev, s.t, s.y, s.yp)
+        if code == R_SPECIAL:
+            return self._accepted(s)
+        return None
+
+    def _accepted(self, s):
+        """After an accepted step: events, output, the problem's after-step hook."""
         if self.n_roots:
             hit = self._find_crossing()
             if hit is not None:
@@ -289,10 +340,12 @@ class _Run:
     def _output(self, success: bool, message: str) -> SolverOutput:
         n = self.problem.n
         lin = getattr(getattr(self, "solver", None), "lin", None)
-        if lin is not None and lin.sparse is not None:
+        if self.stats.step_loop == "c":
+            self.stats.linear_solver = "dense"
+        elif lin is not None and lin.sparse is not None:
             self.stats.linear_solver = "sparse" if lin.sparse else "dense"
-        y = np.array(self.ys) if self.ys else np.empty((0, n))
-        yp = np.array(self.yps) if self.yps else np.empty((0, n))
+        y = np.vstack(self.ys) if self.ys else np.empty((0, n))
+        yp = np.vstack(self.yps) if self.yps else np.empty((0, n))
         out = SolverOutput(np.array(self.ts), y, yp, success, message, self.stats,
                            list(self.event_times), list(self.snapshots),
                            list(self.snapshot_of))
