@@ -119,6 +119,8 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         why = "stability limit detection runs in the Python loop"
     elif getattr(problem, "dynamic", None) is not None:
         why = "dynamic state selection re-chooses the states in Python after every step"
+    elif getattr(problem, "delays", None) is not None:
+        why = "delay() keeps the history of every accepted step in Python"
     elif not model and getattr(problem, "after_step", None) is not None:
         why = ("its after_step hook runs in Python after every step (a compiled model "
                "needs backend='c')")

@@ -102,7 +102,8 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     step_loop : {"auto", "c", "python"}
         Where the BDF steps run: "auto" is the compiled loop
         (:mod:`acausal.solvers.cbdf`) when the problem qualifies (a compiled model on
-        the C backend, at most 200 unknowns, no dynamic state selection, no ``stald``)
+        the C backend, at most 200 unknowns, no dynamic state selection, no delay, no
+        ``stald``)
         and a C compiler works, else the Python loop; "c" and "python" force one.
 
     Returns

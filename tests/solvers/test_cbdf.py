@@ -212,3 +212,14 @@ def test_without_a_c_compiler_the_python_loop_runs(monkeypatch):
     assert ac.simulate(c, t_end=0.01).stats["step_loop"] == "python"
     with pytest.raises(BackendError, match="C compiler"):
         ac.simulate(c, t_end=0.01, step_loop="c")
+
+
+def test_a_model_with_a_delay_keeps_the_python_loop():
+    """delay() records its history after every accepted step, in Python: "auto" keeps
+    the Python loop there and "c" says why it cannot run."""
+    from acausal.tests.library.test_delays import DelayedDecay
+    c = ac.compile(DelayedDecay(a=1.0, T=1.0), backend="auto")
+    res = ac.simulate(c, t_end=2.0)
+    assert res.success and res.stats["step_loop"] == "python"
+    with pytest.raises(ValueError, match="delay"):
+        ac.simulate(c, t_end=2.0, step_loop="c")
