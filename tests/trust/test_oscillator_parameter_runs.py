@@ -6,7 +6,9 @@ released at s = -0.5 m:
 
 A run with other parameter values (``simulate(..., parameters=...)``) is for that run
 only: the next run of the same compiled model, and an equilibrium found afterwards, are
-at the values it was compiled with.  Reference: the equation above under solve_ivp
+at the values it was compiled with.  An operating point keeps the values it was found at:
+read or linearized after another ``steady_state(..., parameters=...)`` of the same model,
+it is still that equilibrium.  Reference: the equation above under solve_ivp
 (DOP853, rtol 1e-12) with each run's values.
 """
 import numpy as np
@@ -61,3 +63,26 @@ def test_a_parameter_run_leaves_the_compiled_model_as_it_was():
     # the equilibrium is the compiled one's: s = s0 - s_rel0 + F(0)/c = 0.5
     op = ac.steady_state(compiled)
     assert abs(op["mass.s"] - (S0 - S_REL0)) < 1e-9
+
+
+class LoadedOscillator(Oscillator):
+    """The same oscillator under a constant 5 N force (the sine's offset)."""
+
+    sine = bl.Sine(amplitude=0.0, f=1.0, offset=5.0)
+
+
+def test_an_operating_point_keeps_the_parameters_it_was_found_at():
+    """Equilibria at two spring rates of one compiled model: each point is read and
+    linearized at its own rate.  Closed form: s* = s0 - s_rel0 + F/c, the spring force
+    -F, poles the roots of m s^2 + d s + c."""
+    compiled = ac.compile(LoadedOscillator(), backend="numpy")
+    soft = ac.steady_state(compiled, parameters={"sd.c": 2000.0})
+    stiff = ac.steady_state(compiled, parameters={"sd.c": 1e4})
+    assert abs(stiff["mass.s"] - (S0 - S_REL0 + 5.0 / 1e4)) < 1e-9
+    assert abs(soft["mass.s"] - (S0 - S_REL0 + 5.0 / 2000.0)) < 1e-9
+    assert abs(soft["sd.f"] + 5.0) < 1e-9 * 5.0
+    poles = np.sort_complex(np.linalg.eigvals(ac.linearize(compiled, at=soft).A))
+    expected = np.sort_complex(np.roots([M, D, 2000.0]))
+    assert np.max(np.abs(poles - expected)) < 1e-6 * np.max(np.abs(expected))
+    # the compiled model is at the last values set, and reading a point leaves it there
+    assert compiled.p[compiled.param_names.index("sd.c")] == 1e4
