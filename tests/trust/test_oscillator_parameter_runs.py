@@ -12,6 +12,7 @@ it is still that equilibrium.  Reference: the equation above under solve_ivp
 (DOP853, rtol 1e-12) with each run's values.
 """
 import numpy as np
+import pytest
 from scipy.integrate import solve_ivp
 
 import acausal as ac
@@ -86,3 +87,17 @@ def test_an_operating_point_keeps_the_parameters_it_was_found_at():
     assert np.max(np.abs(poles - expected)) < 1e-6 * np.max(np.abs(expected))
     # the compiled model is at the last values set, and reading a point leaves it there
     assert compiled.p[compiled.param_names.index("sd.c")] == 1e4
+
+
+def test_linearize_through_the_force_input_and_a_port_named_for_it():
+    """Force to position: poles the roots of m s^2 + d s + c, static gain 1/c.  Naming
+    the RealInput port itself (``force.f``) is refused with its signal named."""
+    compiled = ac.compile(Oscillator(), backend="numpy")
+    ss = ac.linearize(compiled, inputs=["force.f.signal"], outputs=["mass.s"])
+    poles = np.sort_complex(np.linalg.eigvals(ss.A))
+    expected = np.sort_complex(np.roots([M, D, C]))
+    assert np.max(np.abs(poles - expected)) < 1e-6 * np.max(np.abs(expected))
+    gain = (ss.C @ np.linalg.solve(-ss.A, ss.B) + ss.D).item()
+    assert abs(gain * C - 1.0) < 1e-5
+    with pytest.raises(KeyError, match="did you mean force.f.signal"):
+        ac.linearize(compiled, inputs=["force.f"], outputs=["mass.s"])
