@@ -22,6 +22,10 @@ descriptions, as a user new to acausal writes them.  References are in
   ``TransferFunction`` on a unit step.
 * ``CartesianPendulum``: the planar pendulum in Cartesian coordinates with its Lagrange
   multiplier (the index-3 DAE of every DAE textbook).
+* ``TorqueSliderCrank``: a slider-crank (crank r = 0.1 m with a hub inertia, a 0.3 m
+  uniform rod of 0.5 kg, a 0.8 kg slider on a horizontal guide, gravity) spun up from
+  rest by a constant 0.5 N.m on the crank, from planar multibody parts: a closed loop
+  with no cut joint.
 * ``Robertson``: Robertson's reaction kinetics with the mass balance as the algebraic
   equation (Hairer & Wanner II, IV.1 and VI.1).
 * ``AkzoNobel``: the chemical Akzo Nobel problem of the Test Set for IVP Solvers
@@ -33,6 +37,7 @@ import numpy as np
 
 import acausal as ac
 from acausal.library import blocks as bl
+from acausal.library import multibody as mb
 from acausal.library import rotational as ro
 from acausal.library import thermal as th
 from acausal.library import translational as tr
@@ -245,3 +250,32 @@ class Hires(ac.Component):
                       - 0.43 * y[5] + 0.69 * y[6]),
                 ac.Eq(ac.der(y[6]), 280 * y[5] * y[7] - 1.81 * y[6]),
                 ac.Eq(ac.der(y[7]), -280 * y[5] * y[7] + 1.81 * y[6])]
+
+
+CRANK = dict(r=0.1, l=0.3, J_hub=0.01, m_rod=0.5, m_slider=0.8, tau=0.5, g=9.81, theta0=0.3)
+
+
+class TorqueSliderCrank(ac.Component):
+    world = mb.FixedFrame()
+    drive = ro.ConstantTorque(tau_constant=CRANK["tau"])
+    crank_joint = mb.Revolute(phi={"start": CRANK["theta0"], "fixed": True},
+                              w={"start": 0.0, "fixed": True})
+    hub = mb.Body(m=1.0, J=CRANK["J_hub"], g=CRANK["g"])
+    crank = mb.FixedTranslation(rx=CRANK["r"], ry=0.0)
+    pin = mb.Revolute(phi={"start": -0.4})
+    rod_a = mb.FixedTranslation(rx=CRANK["l"] / 2, ry=0.0)
+    rod = mb.Body(m=CRANK["m_rod"], J=CRANK["m_rod"] * CRANK["l"] ** 2 / 12, g=CRANK["g"])
+    rod_b = mb.FixedTranslation(rx=CRANK["l"] / 2, ry=0.0)
+    slider_joint = mb.Revolute(phi={"start": 0.1})
+    slider = mb.Body(m=CRANK["m_slider"], J=0.0, g=CRANK["g"])
+    guide = mb.Prismatic(ex=1.0, ey=0.0, s={"start": 0.39})
+
+    def equations(self):
+        return [ac.connect(self.drive.flange, self.crank_joint.flange),
+                ac.connect(self.world.frame, self.crank_joint.frame_a, self.guide.frame_a),
+                ac.connect(self.crank_joint.frame_b, self.hub.frame, self.crank.frame_a),
+                ac.connect(self.crank.frame_b, self.pin.frame_a),
+                ac.connect(self.pin.frame_b, self.rod_a.frame_a),
+                ac.connect(self.rod_a.frame_b, self.rod.frame, self.rod_b.frame_a),
+                ac.connect(self.rod_b.frame_b, self.slider_joint.frame_a),
+                ac.connect(self.slider_joint.frame_b, self.slider.frame, self.guide.frame_b)]

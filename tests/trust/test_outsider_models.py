@@ -5,6 +5,7 @@ each against an independent reference:
 * hand-written equations of the same system under solve_ivp (DOP853, or Radau where
   stiff, rtol 1e-10..1e-12), an implicit node equation solved by brentq where the
   circuit has one;
+* Lagrange's equation of a one-degree-of-freedom mechanism, derived by sympy;
 * closed forms (exponential decay, constant acceleration, an integrated sine, the
   step response of a transfer function by scipy.signal);
 * published reference values: the Test Set for IVP Solvers (F. Mazzia, C. Magherini,
@@ -198,6 +199,26 @@ def robertson(k):
     return ref
 
 
+def slider_crank(t):
+    """Lagrange's equation in the crank angle theta (the rod angle psi from
+    l sin(psi) = -r sin(theta)): M(theta) theta'' + M'(theta) theta'^2 / 2 + V'(theta) = tau,
+    M = J_hub + m_rod |dG/dtheta|^2 + J_rod psi'(theta)^2 + m_slider (dx_s/dtheta)^2."""
+    import sympy as sp
+    c = osy.CRANK
+    th, thd = sp.symbols("theta thetadot")
+    psi = -sp.asin(c["r"] * sp.sin(th) / c["l"])
+    xg = c["r"] * sp.cos(th) + c["l"] / 2 * sp.cos(psi)
+    yg = c["r"] * sp.sin(th) + c["l"] / 2 * sp.sin(psi)
+    xs = c["r"] * sp.cos(th) + c["l"] * sp.cos(psi)
+    d = lambda e: sp.diff(e, th)  # noqa: E731
+    M = (c["J_hub"] + c["m_rod"] * (d(xg) ** 2 + d(yg) ** 2)
+         + c["m_rod"] * c["l"] ** 2 / 12 * d(psi) ** 2 + c["m_slider"] * d(xs) ** 2)
+    acc = sp.lambdify((th, thd), (c["tau"] - d(M) * thd ** 2 / 2 - c["m_rod"] * c["g"] * d(yg))
+                      / M, "numpy")
+    theta = _ivp(lambda _, z: [z[1], acc(z[0], z[1])], t, [c["theta0"], 0.0])[0]
+    return sp.lambdify(th, xs, "numpy")(theta)
+
+
 A_ROLL = 10.0 / (2.0 + 0.05 / 0.25 ** 2)   # F / (m + J / r^2)
 
 # (id, model, t_end, variable, reference(t), rtol of the run, bound relative to the signal)
@@ -228,6 +249,8 @@ TRAJECTORIES = [
     ("CriticalDampingFilter", osy.CriticalFilter, 1.0, "tf.y.signal", critical_filter, 1e-9,
      1e-5),
     ("CartesianPendulum", osy.CartesianPendulum, 5.0, "x", pendulum, 1e-9, 1e-5),
+    ("SliderCrankTorqueDriven", osy.TorqueSliderCrank, 1.5, "guide.s", slider_crank, 1e-9,
+     1e-6),
     ("RobertsonDAE_y2", osy.Robertson, 40.0, "y2", robertson(1), 1e-9, 1e-5),
     ("RobertsonDAE_y3", osy.Robertson, 40.0, "y3", robertson(2), 1e-9, 1e-5),
 ]
