@@ -27,6 +27,7 @@ from ..components.component import (Component, Connection, InvalidConnection,
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
 from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
+from .usercode import failed_reading
 
 __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
 
@@ -165,8 +166,7 @@ def _read(comp: Component, method: str) -> list:
     except ModelError as err:
         raise _in_context(err, where) from err
     except Exception as err:  # the user's equations() raised: say where
-        raise ModelError(f"while reading the {method.replace('_', ' ')} of "
-                         f"{comp._describe()}: {type(err).__name__}: {err}") from err
+        raise ModelError(failed_reading(method, comp._describe(), err)) from err
     if items is None:
         raise InvalidEquation(f"{where} returned None; it must return a list of equations "
                               "(is a 'return' missing?)")
