@@ -20,6 +20,9 @@ descriptions, as a user new to acausal writes them.  References are in
   anti-windup drives an inertia with viscous loss to a speed step.
 * ``CriticalFilter``: a third-order low pass 1/(0.001 s^3 + 0.03 s^2 + 0.3 s + 1) as a
   ``TransferFunction`` on a unit step.
+* ``SaturatedLoop``: an algebraic loop through a limiter, y = sat(u - y/2), no state.
+* ``LeadLag``: (s + 1)/(0.1 s + 1) on a step at 0.1 s, a transfer function with direct
+  feedthrough.
 * ``CartesianPendulum``: the planar pendulum in Cartesian coordinates with its Lagrange
   multiplier (the index-3 DAE of every DAE textbook).
 * ``TorqueSliderCrank``: a slider-crank (crank r = 0.1 m with a hub inertia, a 0.3 m
@@ -175,6 +178,24 @@ FILTER_DEN = (0.001, 0.03, 0.3, 1.0)
 class CriticalFilter(ac.Component):
     step = bl.Step(height=1.0, startTime=0.0)
     tf = bl.TransferFunction(num=[1.0], den=list(FILTER_DEN))
+
+    def equations(self):
+        return [ac.connect(self.step.y, self.tf.u)]
+
+
+class SaturatedLoop(ac.Component):
+    u = bl.Sine(amplitude=2.0, f=1.0)
+    add = bl.Add(k1=1.0, k2=-0.5)
+    lim = bl.Limiter(uMax=1.0, uMin=-1.0)
+
+    def equations(self):
+        return [ac.connect(self.u.y, self.add.u1), ac.connect(self.add.y, self.lim.u),
+                ac.connect(self.lim.y, self.add.u2)]
+
+
+class LeadLag(ac.Component):
+    step = bl.Step(height=1.0, startTime=0.1)
+    tf = bl.TransferFunction(num=[1.0, 1.0], den=[0.1, 1.0])
 
     def equations(self):
         return [ac.connect(self.step.y, self.tf.u)]

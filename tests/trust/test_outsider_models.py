@@ -248,6 +248,12 @@ TRAJECTORIES = [
     ("PID_Controller", osy.SpeedControl, 1.0, "J.w", speed_control, 1e-9, 1e-5),
     ("CriticalDampingFilter", osy.CriticalFilter, 1.0, "tf.y.signal", critical_filter, 1e-9,
      1e-5),
+    # y = u - y/2 inside the limits, +-1 outside: y = clip(u/1.5, -1, 1)
+    ("SaturatedAlgebraicLoop", osy.SaturatedLoop, 1.0, "lim.y.signal",
+     lambda t: np.clip(2 * np.sin(2 * np.pi * t) / 1.5, -1, 1), 1e-9, 1e-6),
+    ("LeadLagStep", osy.LeadLag, 1.0, "tf.y.signal",
+     lambda t: np.where(t >= 0.1, 1 + 9 * np.exp(-10 * np.maximum(t - 0.1, 0)), 0), 1e-9,
+     1e-6),
     ("CartesianPendulum", osy.CartesianPendulum, 5.0, "x", pendulum, 1e-9, 1e-5),
     ("SliderCrankTorqueDriven", osy.TorqueSliderCrank, 1.5, "guide.s", slider_crank, 1e-9,
      1e-6),
