@@ -86,7 +86,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     default atol = rtol).  ``t_eval`` (sorted times within [t_start, t_end]) or
     ``n_points`` (>= 2, evenly spaced): output times (default: every accepted step and
     the points just before and after each event).  ``parameters``: {"R1.R": 5.0} changes
-    parameter values without recompiling.  A run that fails returns what it computed with
+    parameter values for this run, without recompiling (the compiled model keeps its own;
+    ``CompiledModel.set_parameters`` changes those).  A run that fails returns what it computed with
     ``success=False`` and the reason in ``message`` (and warns), or raises
     SimulationError if ``raise_on_failure``.  ``max_order`` caps the BDF order (DASSL's
     maxord: 2 helps on weakly damped high-frequency modes that only need to stay bounded).
@@ -107,10 +108,23 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         raise ValueError(f"simulate: max_order must be an integer from 1 to 5, got {max_order!r}")
     t_eval = _output_times(t_eval, n_points, t_start, t_end)
     compiled = compile(model, backend)
-    if parameters:
-        if not isinstance(parameters, dict):
-            raise ValueError("simulate: parameters must be a dict {name: value}")
-        compiled.set_parameters(parameters)
+    if parameters and not isinstance(parameters, dict):
+        raise ValueError("simulate: parameters must be a dict {name: value}")
+    # the values hold for this run only (as in sweeps and estimation): a later run of the
+    # same compiled model starts again from the values it had before
+    saved = compiled.p.copy()
+    try:
+        if parameters:
+            compiled.set_parameters(parameters)
+        return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
+                    raise_on_failure, progress)
+    finally:
+        compiled.p[:] = saved
+
+
+def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
+         raise_on_failure, progress) -> Result:
+    """One run of a compiled model at its current parameter values."""
     y0, yp0 = compiled.initialize(t_start)
     from .runtime.clocked import has_discrete_events, run_between_events
     if compiled.n == 0 and has_discrete_events(compiled):

@@ -261,12 +261,23 @@ def linear_residual(compiled, t, z):
     return J0, E
 
 
+def _inside(plant, name) -> str:
+    """'; did you mean ...' naming the variables inside ``name`` when it is a port or a
+    component (a RealInput ``force.f`` is read as ``force.f.signal``), else ''."""
+    inner = sorted(plant.external(n) for n in plant.compiled.outputs
+                   if plant.external(n).startswith(name + "."))
+    if not inner:
+        return ""
+    more = ", ..." if len(inner) > 4 else ""
+    return f"; '{name}' is a port or component: did you mean {', '.join(inner[:4])}{more}?"
+
+
 def _output_row(plant, name):
     c = plant.compiled
     internal = plant.internal(name)
     if internal not in c.outputs:
         raise KeyError(f"no variable '{name}' in the model (outputs are variables by their "
-                       "dotted names, or der(x) of a state)")
+                       f"dotted names, or der(x) of a state){_inside(plant, name)}")
     return c.outputs[internal]
 
 
@@ -278,7 +289,7 @@ def _input_column(plant, name, t, z):
     c = plant.compiled
     internal = plant.internal(name)
     if internal not in c.outputs:
-        raise KeyError(f"no parameter, input or variable named '{name}'")
+        raise KeyError(f"no parameter, input or variable named '{name}'{_inside(plant, name)}")
     sign, idx = c.outputs[internal]
     if sign is None and not callable(idx):
         raise ValueError(f"'{name}' is a constant of the model, it cannot be an input")

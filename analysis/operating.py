@@ -59,7 +59,10 @@ class OperatingPoint:
     ``op["J.w"]`` is any variable's value there (evaluated in the point's modes);
     ``op.states`` maps the state names to their values; ``op.inputs`` the values of the
     top-level inputs; ``op.modes`` the value of every relation ({text: bool}).
-    ``m`` None means the modes the point itself gives (``init_modes``).
+    ``m`` None means the modes the point itself gives (``init_modes``).  The point keeps
+    the parameter values it was found at (``p``): it is read, and linearized, at those,
+    whatever the compiled model's values are later (another ``steady_state(...,
+    parameters=...)`` of the same model, ``set_parameters``).
     """
 
     def __init__(self, plant, t: float, z: np.ndarray, m=None):
@@ -67,6 +70,7 @@ class OperatingPoint:
         self.t = float(t)
         self.z = np.asarray(z, dtype=float)
         self.m = None if m is None else np.array(m, dtype=float)
+        self.p = plant.compiled.p.copy()
 
     @property
     def compiled(self) -> CompiledModel:
@@ -75,18 +79,26 @@ class OperatingPoint:
     def __getitem__(self, name: str) -> float:
         c = self.compiled
         if name in self.plant.input_params:
-            return float(c.p[c.param_names.index(self.plant.input_params[name])])
+            return float(self.p[c.param_names.index(self.plant.input_params[name])])
         sign, k = c.outputs[self.plant.internal(name)]
-        if sign is None:
-            return constant_value(c, k)
         with self.in_modes():
+            if sign is None:
+                return constant_value(c, k)
             return float(sign * c.expand(self.t, self.z)[k])
 
+    @contextmanager
     def in_modes(self):
-        """Context: the compiled model in this point's modes (the caller's restored)."""
-        if self.m is None:
-            return _modes_at(self.compiled, self.t, self.z)
-        return modes_set(self.compiled, self.m)
+        """Context: the compiled model at this point's parameter values and in its modes
+        (the caller's restored)."""
+        c = self.compiled
+        saved = c.p.copy()
+        try:
+            c.p[:] = self.p
+            modes = _modes_at(c, self.t, self.z) if self.m is None else modes_set(c, self.m)
+            with modes:
+                yield
+        finally:
+            c.p[:] = saved
 
     @property
     def modes(self) -> dict:

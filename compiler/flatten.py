@@ -11,9 +11,9 @@ component (for the root: its own ports) gets through = 0.
 Flattening, where the names of equations and connections become known, checks what
 the components cannot (raising ``ModelError`` subclasses): every symbol of an equation
 belongs to the model, a connected port lies inside the component that connects it,
-``der()`` applies to something that varies, parameter bindings depend on parameters
-only and are not circular, values respect [min, max], and an infinite parameter leaves
-its equations finite (``1/Tt`` with Tt = inf is 0; ``R*i`` with R = inf is not).
+``der()`` applies to something that varies, parameter bindings depend on parameters only
+and are not circular, values respect [min, max], and an infinite parameter leaves its
+equations finite (``1/Tt`` with Tt = inf is 0; ``R*i`` with R = inf is not).
 """
 from __future__ import annotations
 
@@ -28,6 +28,7 @@ from ..components.component import (Component, Connection, InvalidConnection,
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
 from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
+from .usercode import failed_reading
 
 __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
 
@@ -171,8 +172,7 @@ def _read(comp: Component, method: str) -> list:
     except ModelError as err:
         raise in_context(err, where) from err
     except Exception as err:  # the user's equations() raised: say where
-        raise ModelError(f"while reading the {method.replace('_', ' ')} of "
-                         f"{comp._describe()}: {type(err).__name__}: {err}") from err
+        raise ModelError(failed_reading(method, comp._describe(), err)) from err
     items = []
     for klass, part in parts:
         if part is None:
@@ -182,10 +182,8 @@ def _read(comp: Component, method: str) -> list:
         items.extend(part)
     for item in items:
         if not isinstance(item, (Equation, Connection, When)):
-            hint = ""
-            if isinstance(item, (sp.Basic, bool)):
-                hint = (" (a sympy relation or a truth value: acausal's equation is "
-                        "ac.Eq(lhs, rhs))")
+            hint = (" (a sympy relation or a truth value: acausal's equation is "
+                    "ac.Eq(lhs, rhs))") if isinstance(item, (sp.Basic, bool)) else ""
             raise InvalidEquation(f"{where} returned {item!r}{hint}; expected "
                                   "ac.Eq(lhs, rhs), ac.connect(a, b) or ac.when(...)")
     return items
@@ -481,7 +479,7 @@ def _as_sympy_number(value) -> sp.Expr:
 def _is_zero(value) -> bool:
     try:
         return float(value) == 0.0
-    except (TypeError, ValueError):
+    except (TypeError, ValueError):   # an expression of parameters
         return False
 
 
@@ -592,9 +590,8 @@ def _replace_der(expr, var_syms, derivatives, der_syms):
             out[q] = c
         else:
             return signed_sum(out)
-    # der() nodes replaced in walk order, so that the der(x) symbols are created in the
-    # order a bottom-up replacement would create them; inner der() in an argument are
-    # expanded by total_derivative itself
+    # der() nodes replaced in walk order (the der(x) symbols are created as a bottom-up
+    # replacement would); total_derivative expands inner der() in an argument itself
     values = {}
     for d in _outer_ders(expr):
         if d not in values:

@@ -345,14 +345,26 @@ class StructuralDiagnosis:
         if self.over_equations:
             msg += ("\n  too many equations for their variables: "
                     + ", ".join(en[e] for e in self.over_equations))
-            msg += "\n    (they involve only: " + ", ".join(
-                vn[v] for v in self.over_variables) + ")"
+            if self.over_variables:
+                msg += "\n    (they involve only: " + ", ".join(
+                    vn[v] for v in self.over_variables) + ")"
+            else:
+                # left without unknowns by the aliases and constants: a quantity imposed
+                # twice (two voltage sources in parallel, two motions on one flange)
+                msg += ("\n    (they involve no unknown: each restates a quantity other "
+                        "equations already fix, e.g. two sources imposing the same "
+                        "voltage, speed or position; remove one of them)")
         if self.under_variables:
             msg += ("\n  variables not determined: "
                     + ", ".join(vn[v] for v in self.under_variables))
             if self.under_equations:
                 msg += "\n    (occurring in: " + ", ".join(
                     en[e] for e in self.under_equations) + ")"
+            if self.over_equations:
+                # both parts at once usually have one cause
+                msg += ("\n    (with equations too many, these are usually the flows "
+                        "between two elements that impose the same quantity: remove one "
+                        "of them before adding a ground or a connection)")
         return msg
 
 
