@@ -24,7 +24,7 @@ __all__ = ["World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation", "Fixe
            "RevolutePlanarLoopConstraint", "Spring", "Damper",
            "SpringDamper", "WorldForce", "WorldTorque", "AbsolutePosition",
            "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
-           "CutForceAndTorque"]
+           "CutForceAndTorque", "WhippleBicycle"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".parts": ("World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation",
@@ -34,4 +34,5 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".forces": ("Spring", "Damper", "SpringDamper", "WorldForce", "WorldTorque"),
     ".sensors": ("AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
                  "RelativePosition", "CutForceAndTorque"),
+    ".bicycle": ("WhippleBicycle",),
 }, submodules=("frames", "interfaces"))
