@@ -24,7 +24,7 @@ __all__ = ["World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation", "Fixe
            "RevolutePlanarLoopConstraint", "Spring", "Damper",
            "SpringDamper", "WorldForce", "WorldTorque", "AbsolutePosition",
            "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
-           "CutForceAndTorque", "WhippleBicycle"]
+           "CutForceAndTorque", "WhippleBicycle", "Wheelset"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".parts": ("World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation",
@@ -35,4 +35,5 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".sensors": ("AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
                  "RelativePosition", "CutForceAndTorque"),
     ".bicycle": ("WhippleBicycle",),
+    ".wheelset": ("Wheelset",),
 }, submodules=("frames", "interfaces"))

@@ -16,8 +16,8 @@ centre (m_T, x_T, z_T), the whole bicycle's inertia about the rear contact point
 (m_A, x_A, z_A, I_Axx, I_Axz, I_Azz), its distance u_A ahead of the steer axis and
 its inertias about that axis (I_All, I_Alx, I_Alz for the paper's I_A,lambda lambda,
 I_A,lambda x, I_A,lambda z), the trail ratio mu, the gyrostatic coefficients S_R, S_F,
-S_T and the static moment S_A, and the entries of M, K0, K2 and C1.  Axes as in the paper: x forward, z down, so z_B < 0 for a mass above
-the ground; lambda is the steer axis tilt from the vertical (pi/2 minus the head
+S_T and the static moment S_A, and the entries of M, K0, K2 and C1.  Axes as in the
+paper: x forward, z down, so z_B < 0 for a mass above the ground; lambda is the steer axis tilt from the vertical (pi/2 minus the head
 angle), c the trail, w the wheel base.  I_Byy and I_Hyy (the pitch inertias) are
 parameters of Table 1 that do not enter the linearized equations.
 
