@@ -17,16 +17,18 @@ centre (m_T, x_T, z_T), the whole bicycle's inertia about the rear contact point
 its inertias about that axis (I_All, I_Alx, I_Alz for the paper's I_A,lambda lambda,
 I_A,lambda x, I_A,lambda z), the trail ratio mu, the gyrostatic coefficients S_R, S_F,
 S_T and the static moment S_A, and the entries of M, K0, K2 and C1.  Axes as in the
-paper: x forward, z down, so z_B < 0 for a mass above the ground; lambda is the steer axis tilt from the vertical (pi/2 minus the head
-angle), c the trail, w the wheel base.  I_Byy and I_Hyy (the pitch inertias) are
-parameters of Table 1 that do not enter the linearized equations.
+paper: x forward, z down, so z_B < 0 for a mass above the ground; lambda is the steer
+axis tilt from the vertical (pi/2 minus the head angle), c the trail, w the wheel
+base.  I_Byy and I_Hyy (the pitch inertias) are parameters of Table 1 that do not
+enter the linearized equations.
 
 The defaults are the benchmark bicycle of Table 1, for which the paper prints M, C1,
-K0, K2 to 14 digits (section 5) and the eigenvalues at 0-10 m/s
-(Table 2): self-stable between the weave speed v_w = 4.29238253634111 m/s and the
-capsize speed v_c = 6.02426201538837 m/s.  A nonlinear model assembled from the
-spatial bodies and joints would need rolling-contact (non-holonomic) constraints,
-which the library does not have.
+K0, K2 to 14 digits (section 5) and the eigenvalues at 0-10 m/s (Table 2): self-stable
+between the weave speed v_w = 4.29238253634111 m/s and the capsize speed v_c =
+6.02426201538837 m/s. A speed of exactly 0 given at instantiation is a structural zero
+(the v terms vanish); give a non-zero v and set 0 at run time to keep v tunable. A
+nonlinear model assembled from the spatial bodies and joints would need rolling-
+contact (non-holonomic) constraints, which the library does not have.
 """
 import numpy as np
 
