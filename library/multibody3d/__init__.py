@@ -24,7 +24,7 @@ __all__ = ["World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation", "Fixe
            "RevolutePlanarLoopConstraint", "Spring", "Damper",
            "SpringDamper", "WorldForce", "WorldTorque", "AbsolutePosition",
            "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
-           "CutForceAndTorque", "WhippleBicycle", "Wheelset"]
+           "CutForceAndTorque", "WhippleBicycle", "Wheelset", "WheelsetDAE"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".parts": ("World", "Body", "BodyBox", "BodyCylinder", "FixedTranslation",
@@ -36,4 +36,5 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                  "RelativePosition", "CutForceAndTorque"),
     ".bicycle": ("WhippleBicycle",),
     ".wheelset": ("Wheelset",),
+    ".wheelset_dae": ("WheelsetDAE",),
 }, submodules=("frames", "interfaces"))

@@ -3,7 +3,9 @@ lateral/yaw form: the contact geometry against a Newton solution of the notes' c
 constraints (5.4.1), the stability statements of section 5.9 (V = 100 m/s, k_s = 1.823
 MN/m: delta = 0.05 stable, 0.08 unstable; V = 20 m/s unsuspended, delta = 0.05:
 unstable but flange-limited) by the eigenvalues of ac.linearize and a simulation, and
-Klingel's kinematic wavelength in the creep-free limit.
+Klingel's kinematic wavelength in the creep-free limit; then the notes' own index-3
+contact DAE (WheelsetDAE): its index, its consistent initialization against a Newton
+solution of (5.4.1), and its linearization against the small-motion model.
 """
 import types
 
@@ -15,6 +17,7 @@ import acausal as ac
 from acausal.library.multibody3d.examples.wheelset import (SuspendedWheelset,
                                                           UnsuspendedWheelset)
 from acausal.library.multibody3d.wheelset import Wheelset
+from acausal.library.multibody3d.wheelset_dae import WheelsetDAE
 
 
 def _parameters(**values):
@@ -150,3 +153,55 @@ def test_kinematic_limit_with_the_notes_geometry():
     slow = poles[np.argmin(np.abs(poles))]
     omega = V * np.sqrt(p.lambda_e / (p.e * p.r_0 * (1 + p.r_0 * p.sigma)))
     assert abs(slow.imag) == pytest.approx(omega, rel=1e-8)
+
+
+# -- the notes' own formulation: the index-3 contact DAE ---------------------------------
+def _centred(delta, V):
+    """The centred running state: s12 = -s_0, and the spin perturbation beta that
+    cancels the longitudinal creepage s_0 tan(delta) / r_0 of both wheels."""
+    p = _parameters(delta=delta)
+    t = np.tan(delta)
+    return {"s[2]": -p.s_0, "dq[0]": 0.0,
+            "beta": V * p.s_0 * t / (p.r_0 * (p.r_0 - p.s_0 * t))}
+
+
+@pytest.fixture(scope="module")
+def dae():
+    return ac.compile(WheelsetDAE())
+
+
+def test_the_contact_dae_is_index_3_as_the_notes_state(dae):
+    assert dae.report.differential_index == 3               # section 5.5
+
+
+def test_consistent_initialization_solves_the_contact_constraints(dae):
+    """From y = 1 mm and the start guesses, the compiled model's initialization finds
+    z, phi and s on the constraint manifold (5.4.1), as the notes' Newton does (5.7)."""
+    res = ac.simulate(dae, 0.2, rtol=1e-8)
+    assert res.success
+    (z, phi, s11, s21, s12, s32), _ = _contact(0.05, 0.001)
+    got = [res[n][0] for n in ("q[1]", "q[2]", "s[0]", "s[1]", "s[2]", "s[3]")]
+    np.testing.assert_allclose(got, [z, phi, s11, s21, s12, s32], rtol=1e-9, atol=1e-12)
+    # and the constraints hold along the run (no drift of the index reduction)
+    for k in (len(res.t) // 2, -1):
+        exact, _ = _contact(0.05, res["q[0]"][k])
+        got = [res[n][k] for n in ("q[1]", "q[2]", "s[0]", "s[1]", "s[2]", "s[3]")]
+        np.testing.assert_allclose(got, exact, rtol=1e-9, atol=1e-12)
+
+
+@pytest.mark.parametrize("delta, V, k_s, stable", [
+    (0.05, 100.0, 1.823e6, True), (0.08, 100.0, 1.823e6, False), (0.05, 20.0, 1.0, False)])
+def test_contact_dae_linearized_agrees_with_the_small_motion_model(dae, delta, V, k_s,
+                                                                  stable):
+    """The notes' statements again, now from their own DAE (index reduced by the
+    compiler, nonlinear creep law), and its hunting frequency against the linear
+    model's: they differ by the second-order terms the latter leaves out (the creep
+    law's slope at the spin creepage of the centred state, load transfer), measured
+    below 1 % in frequency."""
+    at = {**_centred(delta, V), "delta": delta, "V": V, "k_s": k_s}
+    poles = ac.linearize(dae, at=at).poles()
+    hunting = poles[np.argmax(poles.real)]
+    assert (hunting.real < 0) == stable and abs(hunting.imag) > 1.0
+    small = ac.linearize(Wheelset(delta=delta, V=V, k_s=k_s)).poles()
+    assert abs(hunting.imag) == pytest.approx(np.abs(small.imag[np.argmax(small.real)]),
+                                              rel=0.02)
