@@ -43,7 +43,8 @@ so the model simulates the flange-limited oscillation of the unsuspended wheelse
 In the kinematic limit (f11, f22 -> infinity, k_s = 0) the motion is Klingel's
 (1883): y' (1 + r_0 sigma) = V psi, psi' = -V lambda_e y / (e r_0), a sine of wavelength
 L = 2 pi sqrt(r_0 e (1 + r_0 sigma) / lambda_e), Klingel's 2 pi sqrt(r_0 e / lambda)
-without roll.
+without roll.  ``WheelsetDAE`` (``wheelset_dae``) is the notes' full index-3 form,
+against which this small-motion model is checked.
 """
 import numpy as np
 
