@@ -68,7 +68,8 @@ class Wheelset(ac.Component):
     y_rail = ac.Parameter(0.79, unit="m", min=0,
                           description="lateral position of the rail crown centre")
     R = ac.Parameter(0.21, unit="m", min=0, description="rail crown radius")
-    delta = ac.Parameter(0.05, unit="rad", min=0, description="conicity (cone angle)")
+    delta = ac.Parameter(0.05, unit="rad", min=0, max=0.5,
+                         description="conicity (cone angle; the geometry needs it small)")
     V = ac.Parameter(100.0, unit="m/s", min=0, description="speed along the track")
     g = ac.Parameter(9.81, unit="m/s2", min=0, description="gravity")
     k_s = ac.Parameter(1.823e6, unit="N/m", min=0, description="lateral suspension stiffness")
