@@ -40,7 +40,12 @@ def _rot_z(angle):
 
 class WheelsetDAE(ac.Component):
     """The notes' wheelset DAE (module docstring); parameters as ``Wheelset``'s, plus
-    the roll inertia and the friction coefficient."""
+    the roll inertia and the friction coefficient.  The start values of ``s`` and
+    ``lam`` are the notes' Newton guesses (section 5.7) for delta = 0.05; y, y', psi,
+    psi' and beta are the given initial values, the rest follows from the constraints.
+    The spin perturbation of centred running is V s_0 tan(delta) / (r_0 (r_0 - s_0
+    tan(delta))) (0.70 rad/s at 100 m/s); started from 0 it gets there within
+    milliseconds, through saturated creep."""
 
     m = Wheelset.m
     I_xx = ac.Parameter(529.8, unit="kg.m2", min=0, description="roll inertia")
