@@ -393,12 +393,29 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     if not bound:
         return
     for eq in flat.equations + flat.initial_equations:
-        if any(q in bound for q in symbols_of(eq.residual)):
+        used = symbols_of(eq.residual) & bound.keys()
+        if used:
             eq.residual = eq.residual.xreplace(bound)
+            if eq.residual.has(sp.zoo, sp.nan):
+                _divided_by_zero(flat, used, zeros, eq)
     for w in flat.whens:
         w.condition = w.condition.xreplace(bound)
         for act in w.actions:
             act.value = act.value.xreplace(bound)
+
+
+def _divided_by_zero(flat: FlatModel, used: set, zeros: dict, eq) -> None:
+    """A structural zero (directly or through a parameter bound to it) that leaves an
+    equation with 1/0: name the zero parameters and the equation."""
+    names = {p.symbol: p for p in flat.parameters}
+    culprits = {s for s in used if s in zeros}
+    culprits |= {z for s in used - culprits
+                 for z in sp.sympify(names[s].value).free_symbols if z in zeros}
+    which = " and ".join(f"{names[s].describe()} = 0"
+                         for s in sorted(culprits or used, key=lambda s: s.name))
+    raise InvalidValue(f"{which} makes the equation '{eq.text}' in {eq.where} divide by "
+                       "zero (a parameter of exactly 0 is a structural zero, substituted "
+                       "before compiling); give it a non-zero value")
 
 
 def _is_expression(value) -> bool:

@@ -295,6 +295,8 @@ def check_array_declaration(decl) -> None:
     shape = decl.shape if concrete else np.broadcast_shapes(*(b.shape for b in
                                                               bounds.values()))
     values = check_array_value(decl.value, shape, "default value") if concrete else None
+    if callable(values):              # a function of the component: checked when read
+        values = None
     try:
         lo, hi = (np.broadcast_to(b, shape) for b in bounds.values())
     except ValueError:

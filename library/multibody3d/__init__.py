@@ -24,7 +24,7 @@ __all__ = ["World", "Body", "BodyShape", "BodyBox", "BodyCylinder", "FixedTransl
            "RevolutePlanarLoopConstraint", "Spring", "Damper",
            "SpringDamper", "WorldForce", "WorldTorque", "AbsolutePosition",
            "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
-           "CutForceAndTorque"]
+           "CutForceAndTorque", "WhippleBicycle", "Wheelset", "WheelsetDAE"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".parts": ("World", "Body", "BodyShape", "BodyBox", "BodyCylinder", "FixedTranslation",
@@ -34,4 +34,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".forces": ("Spring", "Damper", "SpringDamper", "WorldForce", "WorldTorque"),
     ".sensors": ("AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
                  "RelativePosition", "CutForceAndTorque"),
+    ".bicycle": ("WhippleBicycle",),
+    ".wheelset": ("Wheelset",),
+    ".wheelset_dae": ("WheelsetDAE",),
 }, submodules=("frames", "interfaces"))

@@ -327,3 +327,28 @@ def test_a_result_read_from_columns_gives_arrays_whole():
     np.testing.assert_array_equal(res["q"], np.column_stack([t, 2 * t]))
     with pytest.raises(KeyError, match="no variable 'p'"):
         res["p"]
+
+
+class ComputedStiffness(TwoMassOscillator):
+    """K computed from two spring rates: a matrix parameter given as a function of the
+    component (two masses in a chain, wall -k_1- m_1 -k_2- m_2)."""
+
+    k_1 = ac.Parameter(20.0, unit="N/m")
+    k_2 = ac.Parameter(10.0, unit="N/m")
+    K = ac.Parameter(lambda c: [[c.k_1 + c.k_2, -c.k_2], [-c.k_2, c.k_2]], shape=(2, 2),
+                     unit="N/m", description="stiffness matrix from k_1, k_2")
+
+
+def test_matrix_parameter_computed_from_scalar_parameters():
+    compiled = ac.compile(ComputedStiffness())
+    assert _relative_error(_run(compiled), M0) < 1e-7          # K = K0
+    res = _run(compiled, parameters={"k_2": 15.0})
+    x = _expm_solution(M0, C0, np.array([[35.0, -15.0], [-15.0, 15.0]]), res.t)
+    qv = np.hstack([res["q"], res["v"]])
+    assert np.max(np.abs(qv - x)) < 1e-7 * np.max(np.abs(x))
+
+
+def test_computed_matrix_of_the_wrong_shape():
+    with pytest.raises(ac.InvalidValue, match=r"parameter K has shape \(3,\), but it is "
+                                              r"declared with shape \(2, 2\)"):
+        ac.compile(ComputedStiffness(K=lambda c: [c.k_1, c.k_2, 0.0]))

@@ -79,6 +79,19 @@ def test_infinite_parameter_that_makes_an_equation_infinite():
         flatten(RC(R1={"R": float("inf")}))
 
 
+def test_structural_zero_that_divides_names_the_parameter_and_the_equation():
+    class Lag(ac.Component):
+        T = ac.Parameter(1.0, unit="s")
+        x = ac.Variable(start=1.0, fixed=True)
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.x), -self.x / self.T)]
+
+    with _raises(InvalidValue, "parameter T = 0 makes the equation 'der(x) = -x/T' in "
+                               "(model) (Lag) divide by zero"):
+        flatten(Lag(T=0))
+
+
 def test_parameter_below_its_minimum():
     with _raises(InvalidValue, "'R1' (Resistor): parameter R = -1 is below its minimum 0"):
         flatten(RC(R1={"R": -1}))
