@@ -87,8 +87,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     ``n_points`` (>= 2, evenly spaced): output times (default: every accepted step and
     the points just before and after each event).  ``parameters``: {"R1.R": 5.0} changes
     parameter values for this run, without recompiling (the compiled model keeps its own;
-    ``CompiledModel.set_parameters`` changes those).  A run that fails returns what it computed with
-    ``success=False`` and the reason in ``message`` (and warns), or raises
+    ``CompiledModel.set_parameters`` changes those).  A run that fails returns what it
+    computed with ``success=False`` and the reason in ``message`` (and warns), or raises
     SimulationError if ``raise_on_failure``.  ``max_order`` caps the BDF order (DASSL's
     maxord: 2 helps on weakly damped high-frequency modes that only need to stay bounded).
     ``backend``: how a Component is compiled (see :func:`compile`).  ``progress``: a
@@ -117,13 +117,13 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         if parameters:
             compiled.set_parameters(parameters)
         return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
-                    raise_on_failure, progress)
+                    raise_on_failure, progress, step_loop)
     finally:
         compiled.p[:] = saved
 
 
 def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
-         raise_on_failure, progress) -> Result:
+         raise_on_failure, progress, step_loop) -> Result:
     """One run of a compiled model at its current parameter values."""
     y0, yp0 = compiled.initialize(t_start)
     from .runtime.clocked import has_discrete_events, run_between_events
