@@ -3,6 +3,7 @@ from ... import _lazy_exports
 
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
+           "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport",
            "PartialElementaryRotationalToTranslational", "Fixed", "Inertia", "Spring",
            "Damper", "SpringDamper", "IdealGear", "IdealGearR2T", "IdealRollingWheel",
            "RackAndPinion", "ElasticGearWithDeadzone", "GearWithBacklash", "ConstantTorque",
@@ -15,7 +16,9 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "RackAndPinion", "Spring", "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
                     "PartialElementaryOneFlange",
-                    "PartialElementaryRotationalToTranslational", "PartialRelativeSensor",
+                    "PartialElementaryOneFlangeAndSupport",
+                    "PartialElementaryRotationalToTranslational",
+                    "PartialElementaryTwoFlangesAndSupport", "PartialRelativeSensor",
                     "PartialTwoFlanges"),
     ".sensors": ("AngleSensor", "PowerSensor", "RelAngleSensor", "RelSpeedSensor",
                  "SpeedSensor", "TorqueSensor"),

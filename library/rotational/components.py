@@ -4,7 +4,8 @@ import sympy as sp
 import acausal as ac
 
 from .interfaces import (PartialCompliant, PartialElementaryOneFlange,
-                         PartialElementaryRotationalToTranslational, PartialTwoFlanges)
+                         PartialElementaryRotationalToTranslational,
+                         PartialElementaryTwoFlangesAndSupport, PartialTwoFlanges)
 
 __all__ = ["Fixed", "Inertia", "Spring", "Damper", "SpringDamper", "IdealGear",
            "IdealGearR2T", "IdealRollingWheel", "RackAndPinion", "ElasticGearWithDeadzone",
@@ -94,13 +95,17 @@ class SpringDamper(PartialCompliant):
                       + self.d * ac.der(self.phi_rel))]
 
 
-class IdealGear(PartialTwoFlanges):
-    """Ideal gear without inertia (Egeland & Gravdahl 3.2.3, (3.1)-(3.4)):
+class IdealGear(PartialElementaryTwoFlangesAndSupport):
+    """Ideal gear without inertia (Egeland & Gravdahl 3.2.3, (3.1)-(3.4); MSL
+    Rotational.Components.IdealGear), with the angles taken from its housing:
 
-        flange_a.phi = n flange_b.phi,   0 = n flange_a.tau + flange_b.tau
+        flange_a.phi - phi_support = n (flange_b.phi - phi_support)
+        0 = n flange_a.tau + flange_b.tau,   support.tau = -flange_a.tau - flange_b.tau
 
-    With both flanges on inertias this is a position constraint between two states:
-    index 3, which index reduction handles.
+    ``IdealGear(useSupport=True)`` mounts it on a ``support`` flange (a gearbox on a
+    moving or elastic housing, which then takes the reaction torque); by default the
+    housing is fixed.  With both flanges on inertias this is a position constraint
+    between two states: index 3, which index reduction handles.
     """
 
     n = ac.Parameter(1.0, description="gear ratio flange_a.phi / flange_b.phi")
@@ -108,14 +113,18 @@ class IdealGear(PartialTwoFlanges):
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
-        return [ac.Eq(self.flange_a.phi, self.n * self.flange_b.phi),
+        phi_s = self.phi_support()
+        return [*super().equations(),
+                ac.Eq(self.flange_a.phi - phi_s, self.n * (self.flange_b.phi - phi_s)),
                 ac.Eq(0, self.n * self.flange_a.tau + self.flange_b.tau)]
 
 
 class IdealGearR2T(PartialElementaryRotationalToTranslational):
-    """Ideal gear from rotation to translation (Modelica IdealGearR2T):
+    """Ideal gear from rotation to translation (MSL IdealGearR2T), each side measured
+    from its support:
 
-        flangeR.phi = ratio flangeT.s,   0 = ratio flangeR.tau + flangeT.f
+        flangeR.phi - phi_supportR = ratio (flangeT.s - s_supportT)
+        0 = ratio flangeR.tau + flangeT.f
     """
 
     ratio = ac.Parameter(1.0, unit="rad/m", description="flangeR.phi / flangeT.s")
@@ -123,14 +132,17 @@ class IdealGearR2T(PartialElementaryRotationalToTranslational):
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
-        return [ac.Eq(self.flangeR.phi, self.ratio * self.flangeT.s),
+        return [*super().equations(),
+                ac.Eq(self.flangeR.phi - self.phi_supportR(),
+                      self.ratio * (self.flangeT.s - self.s_supportT())),
                 ac.Eq(0, self.ratio * self.flangeR.tau + self.flangeT.f)]
 
 
 class IdealRollingWheel(PartialElementaryRotationalToTranslational):
-    """Wheel rolling without slip on the ground (Modelica IdealRollingWheel):
+    """Wheel rolling without slip (MSL IdealRollingWheel), on supports:
 
-        flangeT.s = radius flangeR.phi,   0 = radius flangeT.f + flangeR.tau
+        flangeT.s - s_supportT = radius (flangeR.phi - phi_supportR)
+        0 = radius flangeT.f + flangeR.tau
     """
 
     radius = ac.Parameter(0.3, unit="m", min=0, description="wheel radius")
@@ -138,15 +150,19 @@ class IdealRollingWheel(PartialElementaryRotationalToTranslational):
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
-        return [ac.Eq(self.flangeT.s, self.radius * self.flangeR.phi),
+        return [*super().equations(),
+                ac.Eq(self.flangeT.s - self.s_supportT(),
+                      self.radius * (self.flangeR.phi - self.phi_supportR())),
                 ac.Eq(0, self.radius * self.flangeT.f + self.flangeR.tau)]
 
 
 class RackAndPinion(PartialElementaryRotationalToTranslational):
     """Rack and pinion, the rotation-to-translation transformer of Egeland & Gravdahl
-    3.2.5, (3.14)-(3.15):  v = r w_m,  F = T_L / r.  At position level:
+    3.2.5, (3.14)-(3.15):  v = r w_m,  F = T_L / r.  At position level, each side
+    measured from its support:
 
-        flangeT.s = r flangeR.phi,   0 = r flangeT.f + flangeR.tau
+        flangeT.s - s_supportT = r (flangeR.phi - phi_supportR)
+        0 = r flangeT.f + flangeR.tau
 
     (flangeR.tau = T_L is the load torque on the motor, -flangeT.f = F the force on
     the rack.)
@@ -157,7 +173,9 @@ class RackAndPinion(PartialElementaryRotationalToTranslational):
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
-        return [ac.Eq(self.flangeT.s, self.r * self.flangeR.phi),
+        return [*super().equations(),
+                ac.Eq(self.flangeT.s - self.s_supportT(),
+                      self.r * (self.flangeR.phi - self.phi_supportR())),
                 ac.Eq(0, self.r * self.flangeT.f + self.flangeR.tau)]
 
 

@@ -6,8 +6,11 @@ component), so rigid couplings are position constraints.
 import acausal as ac
 from acausal.ports import RotationalFlange, TranslationalFlange
 
+from ..support import SupportMixin
+
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
+           "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport",
            "PartialElementaryRotationalToTranslational"]
 
 
@@ -60,9 +63,87 @@ class PartialRelativeSensor(PartialTwoFlanges):
         return [ac.Eq(0, self.flange_a.tau + self.flange_b.tau)]
 
 
-class PartialElementaryRotationalToTranslational(ac.Component):
+class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFlange):
+    """One flange acting against a support (MSL PartialElementaryOneFlangeAndSupport2):
+
+        support.tau = -flange.tau          (the reaction goes into the housing)
+
+    ``useSupport=True`` creates the flange ``support`` (it must then be connected);
+    without it the housing is fixed, phi_support = 0.  ``phi_support()`` is the
+    support's angle for the component's equations.
+    """
+
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+
+    def phi_support(self):
+        return self.support_position("support", "phi")
+
+    def equations(self):
+        if not self.supported("support"):
+            return []
+        return [ac.Eq(self.support.tau, -self.flange.tau)]
+
+
+class PartialElementaryTwoFlangesAndSupport(SupportMixin, PartialTwoFlanges):
+    """Two flanges acting against a support (MSL PartialElementaryTwoFlangesAndSupport2),
+    torque-free as a whole:
+
+        support.tau = -flange_a.tau - flange_b.tau
+
+    ``useSupport=True`` creates the flange ``support``; without it phi_support = 0.
+    """
+
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+
+    def phi_support(self):
+        return self.support_position("support", "phi")
+
+    def equations(self):
+        if not self.supported("support"):
+            return []
+        return [ac.Eq(self.support.tau, -self.flange_a.tau - self.flange_b.tau)]
+
+
+class PartialElementaryRotationalToTranslational(SupportMixin, ac.Component):
     """A rotational flange flangeR and a translational flange flangeT (an ideal,
-    massless converter between the two domains)."""
+    massless converter between the two domains), each acting against its own support
+    (MSL PartialElementaryRotationalToTranslational):
+
+        supportR.tau = -flangeR.tau,   supportT.f = -flangeT.f
+
+    ``useSupportR=True`` / ``useSupportT=True`` create the rotational support
+    ``supportR`` / the translational support ``supportT``; an unused support is fixed
+    at 0 (``phi_supportR()``, ``s_supportT()``).
+    """
 
     flangeR = RotationalFlange()
     flangeT = TranslationalFlange()
+
+    _supports = {"supportR": "useSupportR", "supportT": "useSupportT"}
+
+    def __init__(self, useSupportR=False, useSupportT=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"supportR": RotationalFlange, "supportT": TranslationalFlange},
+                    {"useSupportR": useSupportR, "useSupportT": useSupportT})
+
+    def phi_supportR(self):
+        return self.support_position("supportR", "phi")
+
+    def s_supportT(self):
+        return self.support_position("supportT", "s")
+
+    def equations(self):
+        eqs = []
+        if self.supported("supportR"):
+            eqs.append(ac.Eq(self.supportR.tau, -self.flangeR.tau))
+        if self.supported("supportT"):
+            eqs.append(ac.Eq(self.supportT.f, -self.flangeT.f))
+        return eqs

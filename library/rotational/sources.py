@@ -2,18 +2,21 @@
 
 A torque source drives its flange with ``flange.tau = -tau`` (the cut torque into the
 source is minus the torque it exerts).  Speed and angle sources impose the motion of
-their flange and take whatever torque that needs.
+their flange and take whatever torque that needs.  Every source acts against its
+housing: ``useSupport=True`` gives it a ``support`` flange that takes the reaction
+(support.tau = -flange.tau; a motor on a moving frame), and its speed and angle are
+then relative to the support.  Without it the housing is fixed.
 """
 import acausal as ac
 from acausal.ports import RealInput
 
 from ..blocks import signals
-from .interfaces import PartialElementaryOneFlange
+from .interfaces import PartialElementaryOneFlangeAndSupport
 
 __all__ = ["ConstantTorque", "StepTorque", "Torque", "ConstantSpeed", "Speed", "Position"]
 
 
-class ConstantTorque(PartialElementaryOneFlange):
+class ConstantTorque(PartialElementaryOneFlangeAndSupport):
     """Constant torque driving the flange:  flange.tau = -tau_constant.
 
     (A positive torque accelerates the flange in the positive direction; the cut torque
@@ -25,10 +28,10 @@ class ConstantTorque(PartialElementaryOneFlange):
     energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
-        return [ac.Eq(self.flange.tau, -self.tau_constant)]
+        return [*super().equations(), ac.Eq(self.flange.tau, -self.tau_constant)]
 
 
-class StepTorque(PartialElementaryOneFlange):
+class StepTorque(PartialElementaryOneFlangeAndSupport):
     """Torque step:  flange.tau = -(offsetTorque + (stepTorque if time >= startTime))."""
 
     stepTorque = ac.Parameter(1.0, unit="N.m", description="height of the step")
@@ -39,10 +42,10 @@ class StepTorque(PartialElementaryOneFlange):
 
     def equations(self):
         tau = self.offsetTorque + signals.step(self.stepTorque, self.startTime)
-        return [ac.Eq(self.flange.tau, -tau)]
+        return [*super().equations(), ac.Eq(self.flange.tau, -tau)]
 
 
-class Torque(PartialElementaryOneFlange):
+class Torque(PartialElementaryOneFlangeAndSupport):
     """Torque set by a signal:  flange.tau = -tau."""
 
     tau = RealInput()
@@ -50,23 +53,25 @@ class Torque(PartialElementaryOneFlange):
     energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
-        return [ac.Eq(self.flange.tau, -self.tau)]
+        return [*super().equations(), ac.Eq(self.flange.tau, -self.tau)]
 
 
-class _SpeedSource(PartialElementaryOneFlange):
-    """The flange's angle phi (a state) and speed w = der(phi)."""
+class _SpeedSource(PartialElementaryOneFlangeAndSupport):
+    """The flange's angle phi relative to the support (a state) and its speed
+    w = der(phi)."""
 
-    phi = ac.Variable(start=0.0, unit="rad", description="angle of the flange")
-    w = ac.Variable(unit="rad/s", description="speed of the flange")
+    phi = ac.Variable(start=0.0, unit="rad", description="angle of the flange (to support)")
+    w = ac.Variable(unit="rad/s", description="speed of the flange (to support)")
 
     energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
-        return [ac.Eq(self.phi, self.flange.phi), ac.Eq(self.w, ac.der(self.phi))]
+        return [*super().equations(), ac.Eq(self.phi, self.flange.phi - self.phi_support()),
+                ac.Eq(self.w, ac.der(self.phi))]
 
 
 class ConstantSpeed(_SpeedSource):
-    """Flange turning at constant speed:  der(flange.phi) = w_fixed."""
+    """Flange turning at constant speed:  der(flange.phi - phi_support) = w_fixed."""
 
     w_fixed = ac.Parameter(1.0, unit="rad/s", description="imposed speed")
 
@@ -75,7 +80,7 @@ class ConstantSpeed(_SpeedSource):
 
 
 class Speed(_SpeedSource):
-    """Flange speed set by a signal:  der(flange.phi) = w_ref."""
+    """Flange speed set by a signal:  der(flange.phi - phi_support) = w_ref."""
 
     w_ref = RealInput()
 
@@ -83,8 +88,8 @@ class Speed(_SpeedSource):
         return [*super().equations(), ac.Eq(self.w, self.w_ref)]
 
 
-class Position(PartialElementaryOneFlange):
-    """Flange angle set by a signal:  flange.phi = phi_ref.
+class Position(PartialElementaryOneFlangeAndSupport):
+    """Flange angle set by a signal:  flange.phi - phi_support = phi_ref.
 
     Driving an inertia, this differentiates phi_ref twice (index reduction), so the
     signal must be twice differentiable in the model (a Sine, or a filtered reference);
@@ -96,4 +101,5 @@ class Position(PartialElementaryOneFlange):
     energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
-        return [ac.Eq(self.flange.phi, self.phi_ref)]
+        return [*super().equations(),
+                ac.Eq(self.flange.phi - self.phi_support(), self.phi_ref)]

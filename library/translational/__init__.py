@@ -2,7 +2,8 @@
 from ... import _lazy_exports
 
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
-           "PartialAbsoluteSensor", "PartialRelativeSensor", "Fixed", "Mass", "MassWithStop",
+           "PartialAbsoluteSensor", "PartialRelativeSensor",
+           "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "MassWithStop",
            "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force",
            "ConstantSpeed", "Speed", "Position", "PositionSensor", "SpeedSensor", "RelPositionSensor",
            "ForceSensor", "PowerSensor"]
@@ -10,7 +11,8 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Spring", "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
-                    "PartialElementaryOneFlange", "PartialRelativeSensor",
+                    "PartialElementaryOneFlange", "PartialElementaryOneFlangeAndSupport",
+                    "PartialRelativeSensor",
                     "PartialTwoFlanges"),
     ".sensors": ("ForceSensor", "PositionSensor", "PowerSensor", "RelPositionSensor",
                  "SpeedSensor"),

@@ -2,8 +2,11 @@
 import acausal as ac
 from acausal.ports import TranslationalFlange
 
+from ..support import SupportMixin
+
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
-           "PartialAbsoluteSensor", "PartialRelativeSensor"]
+           "PartialAbsoluteSensor", "PartialRelativeSensor",
+           "PartialElementaryOneFlangeAndSupport"]
 
 
 class PartialTwoFlanges(ac.Component):
@@ -50,3 +53,28 @@ class PartialRelativeSensor(PartialTwoFlanges):
 
     def equations(self):
         return [ac.Eq(0, self.flange_a.f + self.flange_b.f)]
+
+
+class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFlange):
+    """One flange acting against a support (MSL Translational
+    PartialElementaryOneFlangeAndSupport2):
+
+        support.f = -flange.f              (the reaction goes into the housing)
+
+    ``useSupport=True`` creates the flange ``support`` (it must then be connected);
+    without it the housing is fixed, s_support = 0.
+    """
+
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": TranslationalFlange}, {"useSupport": useSupport})
+
+    def s_support(self):
+        return self.support_position("support", "s")
+
+    def equations(self):
+        if not self.supported("support"):
+            return []
+        return [ac.Eq(self.support.f, -self.flange.f)]
