@@ -1,7 +1,8 @@
 """1-D rotational mechanics."""
 from ... import _lazy_exports
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
+           "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport",
            "PartialElementaryRotationalToTranslational", "Fixed", "Inertia", "Spring",
@@ -15,6 +16,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "IdealGear", "IdealGearR2T", "IdealRollingWheel", "Inertia",
                     "RackAndPinion", "Spring", "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
+                    "PartialCompliantWithRelativeStates",
                     "PartialElementaryOneFlange",
                     "PartialElementaryOneFlangeAndSupport",
                     "PartialElementaryRotationalToTranslational",

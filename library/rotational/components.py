@@ -3,7 +3,8 @@ import sympy as sp
 
 import acausal as ac
 
-from .interfaces import (PartialCompliant, PartialElementaryOneFlange,
+from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
+                         PartialElementaryOneFlange,
                          PartialElementaryRotationalToTranslational,
                          PartialElementaryTwoFlangesAndSupport, PartialTwoFlanges)
 
@@ -61,38 +62,52 @@ class Spring(PartialCompliant):
         return [*super().equations(), ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0))]
 
 
-class Damper(PartialCompliant):
-    """Linear torsional damper:  tau = d der(phi_rel)."""
+class Damper(PartialCompliantWithRelativeStates):
+    """Linear torsional damper (MSL Rotational.Components.Damper):
+
+        tau = d w_rel,   lossPower = d w_rel^2
+
+    ``Damper(stateSelect="prefer")`` makes phi_rel and w_rel preferred states.
+    """
 
     d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
+    lossPower = ac.Variable(unit="W", description="power dissipated, d w_rel^2 >= 0")
 
     def loss_power(self):
-        """d der(phi_rel)^2 (the audit checks it against tau der(phi_rel))."""
-        return self.d * ac.der(self.phi_rel)**2
+        """lossPower (the audit checks it against the port power tau w_rel)."""
+        return self.lossPower
 
     def equations(self):
-        return [*super().equations(), ac.Eq(self.tau, self.d * ac.der(self.phi_rel))]
+        return [*super().equations(), ac.Eq(self.tau, self.d * self.w_rel),
+                ac.Eq(self.lossPower, self.d * self.w_rel**2)]
 
 
-class SpringDamper(PartialCompliant):
-    """Spring and damper in parallel:  tau = c (phi_rel - phi_rel0) + d der(phi_rel)."""
+class SpringDamper(PartialCompliantWithRelativeStates):
+    """Spring and damper in parallel (MSL Rotational.Components.SpringDamper):
+
+        tau = c (phi_rel - phi_rel0) + d w_rel,   lossPower = d w_rel^2
+
+    With ``stateSelect="prefer"`` phi_rel and w_rel are preferred states: a stiff
+    shaft keeps its twist accurate however far its ends have turned.
+    """
 
     c = ac.Parameter(1.0e5, unit="N.m/rad", min=0, description="spring constant")
     d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
     phi_rel0 = ac.Parameter(0.0, unit="rad", description="unstretched spring angle")
+    lossPower = ac.Variable(unit="W", description="power dissipated, d w_rel^2 >= 0")
 
     def stored_energy(self):
         """c (phi_rel - phi_rel0)^2 / 2."""
         return self.c * (self.phi_rel - self.phi_rel0)**2 / 2
 
     def loss_power(self):
-        """d der(phi_rel)^2."""
-        return self.d * ac.der(self.phi_rel)**2
+        """lossPower (the audit checks it against the port power tau w_rel)."""
+        return self.lossPower
 
     def equations(self):
         return [*super().equations(),
-                ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0)
-                      + self.d * ac.der(self.phi_rel))]
+                ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0) + self.d * self.w_rel),
+                ac.Eq(self.lossPower, self.d * self.w_rel**2)]
 
 
 class IdealGear(PartialElementaryTwoFlangesAndSupport):

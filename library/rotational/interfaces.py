@@ -6,9 +6,11 @@ component), so rigid couplings are position constraints.
 import acausal as ac
 from acausal.ports import RotationalFlange, TranslationalFlange
 
+from ..relative_states import RelativeStatesMixin
 from ..support import SupportMixin
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
+           "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport",
            "PartialElementaryRotationalToTranslational"]
@@ -32,6 +34,40 @@ class PartialCompliant(PartialTwoFlanges):
 
     def equations(self):
         return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
+                ac.Eq(self.flange_b.tau, self.tau),
+                ac.Eq(self.flange_a.tau, -self.tau)]
+
+
+class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges):
+    """A compliant connection whose relative angle and speed may be chosen as states
+    (MSL PartialCompliantWithRelativeStates):
+
+        phi_rel = flange_b.phi - flange_a.phi,   w_rel = der(phi_rel),
+        a_rel = der(w_rel),   flange_b.tau = tau,   flange_a.tau = -tau
+
+    ``stateSelect`` is the state priority of phi_rel and w_rel: "avoid" by default
+    (the inertias keep their absolute states), "prefer" for a stiff shaft (the MSL's
+    default; see ``acausal.library.relative_states``).  a_rel = der(w_rel) makes w_rel a
+    candidate state at all.
+    """
+
+    phi_rel = ac.Variable(start=0.0, unit="rad", nominal=1e-4, state_select="avoid",
+                          description="relative rotation angle flange_b.phi - flange_a.phi")
+    w_rel = ac.Variable(start=0.0, unit="rad/s", state_select="avoid",
+                        description="relative angular velocity der(phi_rel)")
+    a_rel = ac.Variable(unit="rad/s2", description="relative angular acceleration der(w_rel)")
+    tau = ac.Variable(unit="N.m", description="torque between the flanges")
+
+    _relative_states = ("phi_rel", "w_rel")
+
+    def __init__(self, stateSelect="avoid", **modifications):
+        super().__init__(**modifications)
+        self._select(stateSelect)
+
+    def equations(self):
+        return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
+                ac.Eq(self.w_rel, ac.der(self.phi_rel)),
+                ac.Eq(self.a_rel, ac.der(self.w_rel)),
                 ac.Eq(self.flange_b.tau, self.tau),
                 ac.Eq(self.flange_a.tau, -self.tau)]
 

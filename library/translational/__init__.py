@@ -1,7 +1,8 @@
 """1-D translational mechanics."""
 from ... import _lazy_exports
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
+           "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "MassWithStop",
            "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force",
@@ -11,6 +12,7 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange"
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Spring", "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
+                    "PartialCompliantWithRelativeStates",
                     "PartialElementaryOneFlange", "PartialElementaryOneFlangeAndSupport",
                     "PartialRelativeSensor",
                     "PartialTwoFlanges"),

@@ -2,9 +2,11 @@
 import acausal as ac
 from acausal.ports import TranslationalFlange
 
+from ..relative_states import RelativeStatesMixin
 from ..support import SupportMixin
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
+           "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport"]
 
@@ -27,6 +29,39 @@ class PartialCompliant(PartialTwoFlanges):
 
     def equations(self):
         return [ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s),
+                ac.Eq(self.flange_b.f, self.f),
+                ac.Eq(self.flange_a.f, -self.f)]
+
+
+class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges):
+    """A compliant connection whose relative position and speed may be chosen as
+    states (MSL Translational PartialCompliantWithRelativeStates):
+
+        s_rel = flange_b.s - flange_a.s,   v_rel = der(s_rel),   a_rel = der(v_rel),
+        flange_b.f = f,   flange_a.f = -f
+
+    ``stateSelect`` is the state priority of s_rel and v_rel: "avoid" by default,
+    "prefer" for a stiff coupling (see ``acausal.library.relative_states``).
+    a_rel = der(v_rel) makes v_rel a candidate state at all.
+    """
+
+    s_rel = ac.Variable(start=0.0, unit="m", nominal=1e-4, state_select="avoid",
+                        description="relative distance flange_b.s - flange_a.s")
+    v_rel = ac.Variable(start=0.0, unit="m/s", state_select="avoid",
+                        description="relative velocity der(s_rel)")
+    a_rel = ac.Variable(unit="m/s2", description="relative acceleration der(v_rel)")
+    f = ac.Variable(unit="N", description="force between the flanges")
+
+    _relative_states = ("s_rel", "v_rel")
+
+    def __init__(self, stateSelect="avoid", **modifications):
+        super().__init__(**modifications)
+        self._select(stateSelect)
+
+    def equations(self):
+        return [ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s),
+                ac.Eq(self.v_rel, ac.der(self.s_rel)),
+                ac.Eq(self.a_rel, ac.der(self.v_rel)),
                 ac.Eq(self.flange_b.f, self.f),
                 ac.Eq(self.flange_a.f, -self.f)]
 
