@@ -1,8 +1,10 @@
 """Electrical domain: pins, one-ports, basic components, sources and sensors."""
 from ... import _lazy_exports
 
-__all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Capacitor", "Inductor",
-           "HeatingResistor", "IdealTransformer", "IdealOpAmp", "IdealClosingSwitch",
+__all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Conductor", "Capacitor",
+           "Inductor", "HeatingResistor", "VariableResistor", "VariableConductor",
+           "VariableCapacitor", "VariableInductor", "Transformer", "Gyrator",
+           "IdealTransformer", "VCV", "VCC", "CCV", "CCC", "IdealOpAmp", "IdealClosingSwitch",
            "IdealOpeningSwitch", "Diode", "IdealDiode",
            "ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "PulseVoltage",
            "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
@@ -10,9 +12,11 @@ __all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Capacitor", "I
            "CurrentSensor", "PowerSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".basic": ("Capacitor", "Ground", "HeatingResistor", "IdealClosingSwitch",
-               "IdealOpAmp", "IdealOpeningSwitch", "IdealTransformer", "Inductor",
-               "Resistor"),
+    ".basic": ("Capacitor", "Conductor", "Ground", "Gyrator", "HeatingResistor",
+               "IdealClosingSwitch", "IdealOpAmp", "IdealOpeningSwitch", "IdealTransformer",
+               "Inductor", "Resistor", "Transformer", "VariableCapacitor", "VariableConductor",
+               "VariableInductor", "VariableResistor"),
+    ".controlled": ("CCC", "CCV", "VCC", "VCV"),
     ".interfaces": ("OnePort", "TwoPin", "TwoPort"),
     ".semiconductors": ("Diode", "IdealDiode"),
     ".sensors": ("CurrentSensor", "PotentialSensor", "PowerSensor", "VoltageSensor"),
