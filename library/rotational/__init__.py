@@ -6,14 +6,17 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport",
            "PartialElementaryRotationalToTranslational", "Fixed", "Inertia", "Spring",
-           "Damper", "SpringDamper", "IdealGear", "IdealGearR2T", "IdealRollingWheel",
+           "Damper", "SpringDamper", "IdealGear", "IdealPlanetary", "IdealGearR2T",
+           "IdealRollingWheel",
            "RackAndPinion", "ElasticGearWithDeadzone", "GearWithBacklash", "ConstantTorque",
-           "StepTorque", "Torque", "ConstantSpeed", "Speed", "Position", "AngleSensor",
-           "SpeedSensor", "RelAngleSensor", "RelSpeedSensor", "TorqueSensor", "PowerSensor"]
+           "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
+           "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate", "Position",
+           "AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
+           "RelAccSensor", "TorqueSensor", "PowerSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".components": ("Damper", "ElasticGearWithDeadzone", "Fixed", "GearWithBacklash",
-                    "IdealGear", "IdealGearR2T", "IdealRollingWheel", "Inertia",
+                    "IdealGear", "IdealGearR2T", "IdealPlanetary", "IdealRollingWheel", "Inertia",
                     "RackAndPinion", "Spring", "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
                     "PartialCompliantWithRelativeStates",
@@ -22,8 +25,9 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "PartialElementaryRotationalToTranslational",
                     "PartialElementaryTwoFlangesAndSupport", "PartialRelativeSensor",
                     "PartialTwoFlanges"),
-    ".sensors": ("AngleSensor", "PowerSensor", "RelAngleSensor", "RelSpeedSensor",
-                 "SpeedSensor", "TorqueSensor"),
-    ".sources": ("ConstantSpeed", "ConstantTorque", "Position", "Speed", "StepTorque",
-                 "Torque"),
+    ".sensors": ("AccSensor", "AngleSensor", "PowerSensor", "RelAccSensor", "RelAngleSensor",
+                 "RelSpeedSensor", "SpeedSensor", "TorqueSensor"),
+    ".sources": ("Accelerate", "ConstantSpeed", "ConstantTorque",
+                 "LinearSpeedDependentTorque", "Position", "QuadraticSpeedDependentTorque",
+                 "Speed", "StepTorque", "Torque", "Torque2"),
 })

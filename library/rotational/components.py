@@ -2,6 +2,7 @@
 import sympy as sp
 
 import acausal as ac
+from acausal.ports import RotationalFlange
 
 from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
                          PartialElementaryOneFlange,
@@ -9,8 +10,8 @@ from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
                          PartialElementaryTwoFlangesAndSupport, PartialTwoFlanges)
 
 __all__ = ["Fixed", "Inertia", "Spring", "Damper", "SpringDamper", "IdealGear",
-           "IdealGearR2T", "IdealRollingWheel", "RackAndPinion", "ElasticGearWithDeadzone",
-           "GearWithBacklash"]
+           "IdealPlanetary", "IdealGearR2T", "IdealRollingWheel", "RackAndPinion",
+           "ElasticGearWithDeadzone", "GearWithBacklash"]
 
 
 class Fixed(PartialElementaryOneFlange):
@@ -132,6 +133,30 @@ class IdealGear(PartialElementaryTwoFlangesAndSupport):
         return [*super().equations(),
                 ac.Eq(self.flange_a.phi - phi_s, self.n * (self.flange_b.phi - phi_s)),
                 ac.Eq(0, self.n * self.flange_a.tau + self.flange_b.tau)]
+
+
+class IdealPlanetary(ac.Component):
+    """Ideal planetary gear without inertia (MSL Rotational.Components.IdealPlanetary):
+    sun, planet carrier and ring, with ratio = z_ring / z_sun:
+
+        (1 + ratio) carrier.phi = sun.phi + ratio ring.phi          (Willis' equation)
+        ring.tau = ratio sun.tau,   carrier.tau = -(1 + ratio) sun.tau
+
+    The three torques sum to zero (no housing) and so do the powers.
+    """
+
+    ratio = ac.Parameter(2.0, min=0, description="number of ring teeth / sun teeth")
+    sun = RotationalFlange()
+    carrier = RotationalFlange()
+    ring = RotationalFlange()
+
+    energy_role = "lossless"  # sun.tau (w_sun + ratio w_ring - (1 + ratio) w_carrier) = 0
+
+    def equations(self):
+        r = self.ratio
+        return [ac.Eq((1 + r) * self.carrier.phi, self.sun.phi + r * self.ring.phi),
+                ac.Eq(self.ring.tau, r * self.sun.tau),
+                ac.Eq(self.carrier.tau, -(1 + r) * self.sun.tau)]
 
 
 class IdealGearR2T(PartialElementaryRotationalToTranslational):

@@ -11,9 +11,11 @@ import acausal as ac
 from acausal.ports import RealInput
 
 from ..blocks import signals
-from .interfaces import PartialElementaryOneFlangeAndSupport
+from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
-__all__ = ["ConstantTorque", "StepTorque", "Torque", "ConstantSpeed", "Speed", "Position"]
+__all__ = ["ConstantTorque", "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
+           "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate",
+           "Position"]
 
 
 class ConstantTorque(PartialElementaryOneFlangeAndSupport):
@@ -56,6 +58,74 @@ class Torque(PartialElementaryOneFlangeAndSupport):
         return [*super().equations(), ac.Eq(self.flange.tau, -self.tau)]
 
 
+class Torque2(PartialTwoFlanges):
+    """A signal torque acting between two flanges (MSL Sources.Torque2), pushing
+    flange_b forward and flange_a back:
+
+        flange_a.tau = tau,   flange_b.tau = -tau
+    """
+
+    tau = RealInput()
+
+    energy_role = "source"  # drives the flanges from outside the model
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.tau, self.tau), ac.Eq(self.flange_b.tau, -self.tau)]
+
+
+class _SpeedDependentTorque(PartialElementaryOneFlangeAndSupport):
+    """tau = -flange.tau, a function of the speed w = der(flange.phi - phi_support);
+    ``TorqueDirection=True`` (the MSL's default): the same direction of torque in both
+    directions of rotation, else the torque changes sign with w."""
+
+    tau_nominal = ac.Parameter(1.0, unit="N.m",
+                               description="torque at w_nominal (negative: a load)")
+    w_nominal = ac.Parameter(1.0, unit="rad/s", min=0, description="nominal speed")
+    w = ac.Variable(unit="rad/s", description="speed of the flange (to support)")
+    tau = ac.Variable(unit="N.m", description="accelerating torque at the flange")
+
+    energy_role = "source"  # drives (or brakes) the flange from outside the model
+
+    def __init__(self, TorqueDirection=True, **modifications):
+        super().__init__(**modifications)
+        if not isinstance(TorqueDirection, bool):
+            raise ac.ModelError(f"{type(self).__name__}: TorqueDirection must be True or "
+                                f"False, not {TorqueDirection!r}")
+        object.__setattr__(self, "TorqueDirection", TorqueDirection)
+
+    def law(self, x):
+        raise NotImplementedError
+
+    def equations(self):
+        return [*super().equations(),
+                ac.Eq(self.w, ac.der(self.flange.phi - self.phi_support())),
+                ac.Eq(self.tau, -self.flange.tau),
+                ac.Eq(self.tau, self.tau_nominal * self.law(self.w / self.w_nominal))]
+
+
+class LinearSpeedDependentTorque(_SpeedDependentTorque):
+    """Torque linear in speed (MSL Sources.LinearSpeedDependentTorque):
+
+        tau = tau_nominal |w / w_nominal|   (TorqueDirection=True)
+        tau = tau_nominal w / w_nominal     (TorqueDirection=False)
+    """
+
+    def law(self, x):
+        return ac.abs(x) if self.TorqueDirection else x
+
+
+class QuadraticSpeedDependentTorque(_SpeedDependentTorque):
+    """Torque quadratic in speed (MSL Sources.QuadraticSpeedDependentTorque), e.g. a fan
+    or a pump as a load (tau_nominal < 0, TorqueDirection=False):
+
+        tau = tau_nominal (w / w_nominal)^2             (TorqueDirection=True)
+        tau = tau_nominal (w / w_nominal) |w / w_nominal|   (TorqueDirection=False)
+    """
+
+    def law(self, x):
+        return x**2 if self.TorqueDirection else x * ac.abs(x)
+
+
 class _SpeedSource(PartialElementaryOneFlangeAndSupport):
     """The flange's angle phi relative to the support (a state) and its speed
     w = der(phi)."""
@@ -86,6 +156,21 @@ class Speed(_SpeedSource):
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.w, self.w_ref)]
+
+
+class Accelerate(_SpeedSource):
+    """Flange acceleration set by a signal (MSL Sources.Accelerate), from the start
+    values of phi and w (relative to the support):
+
+        a = der(w) = a_ref
+    """
+
+    a_ref = RealInput()
+    a = ac.Variable(unit="rad/s2", description="acceleration of the flange (to support)")
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.a, ac.der(self.w)),
+                ac.Eq(self.a, self.a_ref)]
 
 
 class Position(PartialElementaryOneFlangeAndSupport):
