@@ -5,9 +5,10 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "MassWithStop",
-           "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force",
-           "ConstantSpeed", "Speed", "Position", "PositionSensor", "SpeedSensor", "RelPositionSensor",
-           "ForceSensor", "PowerSensor"]
+           "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force", "Force2",
+           "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "ConstantSpeed",
+           "Speed", "Accelerate", "Position", "PositionSensor", "SpeedSensor", "AccSensor",
+           "RelPositionSensor", "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Spring", "SpringDamper"),
@@ -16,8 +17,9 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "PartialElementaryOneFlange", "PartialElementaryOneFlangeAndSupport",
                     "PartialRelativeSensor",
                     "PartialTwoFlanges"),
-    ".sensors": ("ForceSensor", "PositionSensor", "PowerSensor", "RelPositionSensor",
-                 "SpeedSensor"),
-    ".sources": ("ConstantForce", "ConstantSpeed", "Force", "Position", "Speed",
-                 "StepForce"),
+    ".sensors": ("AccSensor", "ForceSensor", "PositionSensor", "PowerSensor", "RelAccSensor",
+                 "RelPositionSensor", "RelSpeedSensor", "SpeedSensor"),
+    ".sources": ("Accelerate", "ConstantForce", "ConstantSpeed", "Force", "Force2",
+                 "LinearSpeedDependentForce", "Position", "QuadraticSpeedDependentForce",
+                 "Speed", "StepForce"),
 })

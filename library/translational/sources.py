@@ -10,9 +10,10 @@ import acausal as ac
 from acausal.ports import RealInput
 
 from ..blocks import signals
-from .interfaces import PartialElementaryOneFlangeAndSupport
+from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
-__all__ = ["ConstantForce", "StepForce", "Force", "ConstantSpeed", "Speed", "Position"]
+__all__ = ["ConstantForce", "StepForce", "Force", "Force2", "LinearSpeedDependentForce",
+           "QuadraticSpeedDependentForce", "ConstantSpeed", "Speed", "Accelerate", "Position"]
 
 
 class ConstantForce(PartialElementaryOneFlangeAndSupport):
@@ -51,6 +52,73 @@ class Force(PartialElementaryOneFlangeAndSupport):
         return [*super().equations(), ac.Eq(self.flange.f, -self.f)]
 
 
+class Force2(PartialTwoFlanges):
+    """A signal force acting between two flanges (MSL Sources.Force2), pushing flange_b
+    forward and flange_a back:
+
+        flange_a.f = f,   flange_b.f = -f
+    """
+
+    f = RealInput()
+
+    energy_role = "source"  # drives the flanges from outside the model
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.f, self.f), ac.Eq(self.flange_b.f, -self.f)]
+
+
+class _SpeedDependentForce(PartialElementaryOneFlangeAndSupport):
+    """f = -flange.f, a function of the speed v = der(flange.s - s_support);
+    ``ForceDirection=True`` (the MSL's default): the same direction of force in both
+    directions of motion, else the force changes sign with v."""
+
+    f_nominal = ac.Parameter(1.0, unit="N", description="force at v_nominal (negative: a load)")
+    v_nominal = ac.Parameter(1.0, unit="m/s", min=0, description="nominal speed")
+    v = ac.Variable(unit="m/s", description="speed of the flange (to support)")
+    f = ac.Variable(unit="N", description="accelerating force at the flange")
+
+    energy_role = "source"  # drives (or brakes) the flange from outside the model
+
+    def __init__(self, ForceDirection=True, **modifications):
+        super().__init__(**modifications)
+        if not isinstance(ForceDirection, bool):
+            raise ac.ModelError(f"{type(self).__name__}: ForceDirection must be True or "
+                                f"False, not {ForceDirection!r}")
+        object.__setattr__(self, "ForceDirection", ForceDirection)
+
+    def law(self, x):
+        raise NotImplementedError
+
+    def equations(self):
+        return [*super().equations(),
+                ac.Eq(self.v, ac.der(self.flange.s - self.s_support())),
+                ac.Eq(self.f, -self.flange.f),
+                ac.Eq(self.f, self.f_nominal * self.law(self.v / self.v_nominal))]
+
+
+class LinearSpeedDependentForce(_SpeedDependentForce):
+    """Force linear in speed (MSL Sources.LinearSpeedDependentForce):
+
+        f = f_nominal |v / v_nominal|   (ForceDirection=True)
+        f = f_nominal v / v_nominal     (ForceDirection=False)
+    """
+
+    def law(self, x):
+        return ac.abs(x) if self.ForceDirection else x
+
+
+class QuadraticSpeedDependentForce(_SpeedDependentForce):
+    """Force quadratic in speed (MSL Sources.QuadraticSpeedDependentForce), e.g. the
+    air drag of a vehicle (f_nominal < 0, ForceDirection=False):
+
+        f = f_nominal (v / v_nominal)^2               (ForceDirection=True)
+        f = f_nominal (v / v_nominal) |v / v_nominal|   (ForceDirection=False)
+    """
+
+    def law(self, x):
+        return x**2 if self.ForceDirection else x * ac.abs(x)
+
+
 class _SpeedSource(PartialElementaryOneFlangeAndSupport):
     """The flange's position s relative to the support (a state) and its speed
     v = der(s)."""
@@ -81,6 +149,21 @@ class Speed(_SpeedSource):
 
     def equations(self):
         return [*super().equations(), ac.Eq(self.v, self.v_ref)]
+
+
+class Accelerate(_SpeedSource):
+    """Flange acceleration set by a signal (MSL Sources.Accelerate), from the start
+    values of s and v (relative to the support):
+
+        a = der(v) = a_ref
+    """
+
+    a_ref = RealInput()
+    a = ac.Variable(unit="m/s2", description="acceleration of the flange (to support)")
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.a, ac.der(self.v)),
+                ac.Eq(self.a, self.a_ref)]
 
 
 class Position(PartialElementaryOneFlangeAndSupport):
