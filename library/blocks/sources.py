@@ -1,10 +1,12 @@
 """Signal sources (Modelica.Blocks.Sources)."""
+import sympy as sp
+
 import acausal as ac
 
 from . import signals
 from .interfaces import SO, SignalSource
 
-__all__ = ["Constant", "Step", "Ramp", "Sine", "Pulse"]
+__all__ = ["Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse"]
 
 
 class Constant(SO):
@@ -46,6 +48,39 @@ class Sine(SignalSource):
     def equations(self):
         s = signals.sine(self.amplitude, self.f, self.phase, self.startTime)
         return [ac.Eq(self.y, self.offset + s)]
+
+
+class Cosine(SignalSource):
+    """Cosine:  y = offset + amplitude cos(2 pi f (time - startTime) + phase) after
+    startTime (the MSL's Cosine: a Sine with a quarter period more phase)."""
+
+    amplitude = ac.Parameter(1.0, description="amplitude")
+    f = ac.Parameter(1.0, unit="Hz", description="frequency")
+    phase = ac.Parameter(0.0, unit="rad", description="phase at startTime")
+
+    def equations(self):
+        s = signals.sine(self.amplitude, self.f, self.phase + sp.pi / 2, self.startTime)
+        return [ac.Eq(self.y, self.offset + s)]
+
+
+class ExpSine(SignalSource):
+    """Exponentially damped sine (MSL ExpSine), after startTime:
+
+        y = offset + amplitude exp(-damping (time - startTime))
+                     sin(2 pi f (time - startTime) + phase)
+    """
+
+    amplitude = ac.Parameter(1.0, description="amplitude at startTime")
+    f = ac.Parameter(1.0, unit="Hz", description="frequency")
+    phase = ac.Parameter(0.0, unit="rad", description="phase at startTime")
+    damping = ac.Parameter(1.0, unit="1/s", description="damping coefficient")
+
+    def equations(self):
+        tau = ac.time - self.startTime
+        wave = (self.amplitude * ac.exp(-self.damping * tau)
+                * ac.sin(2 * sp.pi * self.f * tau + self.phase))
+        # gated as a whole: exp(-damping tau) before startTime may overflow
+        return [ac.Eq(self.y, self.offset + ac.if_else(tau >= 0, wave, 0))]
 
 
 class Pulse(SignalSource):
