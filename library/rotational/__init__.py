@@ -8,14 +8,16 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "PartialElementaryRotationalToTranslational", "Fixed", "Inertia", "Spring",
            "Damper", "SpringDamper", "IdealGear", "IdealPlanetary", "IdealGearR2T",
            "IdealRollingWheel",
-           "RackAndPinion", "ElasticGearWithDeadzone", "GearWithBacklash", "ConstantTorque",
+           "RackAndPinion", "ElastoBacklash", "ElasticGearWithDeadzone", "GearWithBacklash",
+           "ConstantTorque",
            "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
            "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate", "Position",
            "AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
            "RelAccSensor", "TorqueSensor", "PowerSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".components": ("Damper", "ElasticGearWithDeadzone", "Fixed", "GearWithBacklash",
+    ".components": ("Damper", "ElastoBacklash", "ElasticGearWithDeadzone", "Fixed",
+                    "GearWithBacklash",
                     "IdealGear", "IdealGearR2T", "IdealPlanetary", "IdealRollingWheel", "Inertia",
                     "RackAndPinion", "Spring", "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",

@@ -11,7 +11,7 @@ from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
 
 __all__ = ["Fixed", "Inertia", "Spring", "Damper", "SpringDamper", "IdealGear",
            "IdealPlanetary", "IdealGearR2T", "IdealRollingWheel", "RackAndPinion",
-           "ElasticGearWithDeadzone", "GearWithBacklash"]
+           "ElastoBacklash", "ElasticGearWithDeadzone", "GearWithBacklash"]
 
 
 class Fixed(PartialElementaryOneFlange):
@@ -217,6 +217,58 @@ class RackAndPinion(PartialElementaryRotationalToTranslational):
                 ac.Eq(self.flangeT.s - self.s_supportT(),
                       self.r * (self.flangeR.phi - self.phi_supportR())),
                 ac.Eq(0, self.r * self.flangeT.f + self.flangeR.tau)]
+
+
+class ElastoBacklash(PartialCompliantWithRelativeStates):
+    """Backlash in series with a spring and damper in parallel (MSL
+    Rotational.Components.ElastoBacklash), with phi_diff = phi_rel - phi_rel0:
+
+        tau_c = c (phi_diff - b/2) above b/2,  c (phi_diff + b/2) below -b/2,  else 0
+        tau_d = d w_rel
+        tau = 0 in the backlash (|phi_diff| <= b/2); in contact above b/2
+        tau = 0 if tau_c + tau_d <= 0 (it would pull: the teeth separate),
+              else tau_c + min(tau_c, tau_d)          (mirrored below -b/2)
+        lossPower = (tau - tau_c) w_rel
+
+    The damping torque is limited by the spring torque, so the contact torque starts
+    from 0 and never pulls.  lossPower is what the stored energy c (|phi_diff| - b/2)^2/2
+    does not account for: the limited damping and, while the teeth separate with the
+    spring still deflected, the spring energy that is released (the MSL books 0 there).  Entering and leaving the backlash are events; the
+    limiting inside the contact is evaluated without events (as the MSL's noEvent).
+    b must be positive (the MSL replaces a backlash below 1e-10 rad by a plain
+    spring-damper).  The MSL's smoothed characteristic during initialization is not
+    reproduced: give start values that fix the initial contact state.
+    """
+
+    c = ac.Parameter(1.0e5, unit="N.m/rad", min=0, description="spring constant")
+    d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
+    b = ac.Parameter(0.01, unit="rad", min=0, description="total backlash")
+    phi_rel0 = ac.Parameter(0.0, unit="rad", description="unstretched spring angle")
+    tau_c = ac.Variable(unit="N.m", description="spring torque")
+    tau_d = ac.Variable(unit="N.m", description="damper torque d w_rel")
+    lossPower = ac.Variable(unit="W", description="power dissipated, >= 0")
+
+    def stored_energy(self):
+        """c (|phi_diff| - b/2)^2 / 2 in contact, 0 in the backlash."""
+        phi, half = self.phi_rel - self.phi_rel0, self.b / 2
+        return ac.if_else(phi > half, self.c * (phi - half)**2 / 2,
+                          ac.if_else(phi < -half, self.c * (phi + half)**2 / 2, 0))
+
+    def loss_power(self):
+        return self.lossPower
+
+    def equations(self):
+        phi, half = self.phi_rel - self.phi_rel0, self.b / 2
+        tau_c, tau_d = self.tau_c, self.tau_d
+        pushing = ac.no_event(ac.if_else(tau_c + tau_d <= 0, 0, tau_c + ac.min(tau_c, tau_d)))
+        pulling = ac.no_event(ac.if_else(tau_c + tau_d >= 0, 0, tau_c + ac.max(tau_c, tau_d)))
+        return [*super().equations(),
+                ac.Eq(tau_c, ac.if_else(phi > half, self.c * (phi - half),
+                                        ac.if_else(phi < -half, self.c * (phi + half), 0))),
+                ac.Eq(tau_d, self.d * self.w_rel),
+                ac.Eq(self.tau, ac.if_else(phi > half, pushing,
+                                           ac.if_else(phi < -half, pulling, 0))),
+                ac.Eq(self.lossPower, (self.tau - tau_c) * self.w_rel)]
 
 
 class ElasticGearWithDeadzone(PartialTwoFlanges):
