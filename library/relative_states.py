@@ -10,14 +10,14 @@ its own, phi_rel is integrated to its own tolerance:
 MSL's default), and phi_rel has a small nominal value (the MSL's
 ``phi_nominal = 1e-4``) so that its absolute tolerance is on its own scale.
 
-The default here is ``stateSelect="avoid"``: the relative variables become states only
-where the model needs them (a damper ending on a massless flange), and otherwise the
-inertias keep their absolute states.  This keeps the meaning of models that give start
-values without ``fixed=True``: such a start is used only when its variable is a state,
-so preferring the relative states would start them from w_rel = 0 instead of from the
-inertias' starts.  ``stateSelect`` is an argument of the constructor (a priority, not a
-number); an explicit ``state_select`` in a modification of phi_rel or w_rel takes
-precedence.
+The default here is ``stateSelect="default"``, which keeps the states a model had with
+the plain ``PartialCompliant``: phi_rel competes with the inertias' angles by the
+compiler's usual rule, and w_rel -- a candidate at all only through a_rel = der(w_rel)
+-- is kept below the inertias' speeds ("avoid").  This matters beyond accuracy: a start
+value given without ``fixed=True`` is used only when its variable is a state, so a
+change of states would start a model from w_rel = 0 instead of from its inertias'
+starts.  ``stateSelect`` is an argument of the constructor (a priority, not a number);
+an explicit ``state_select`` in a modification of phi_rel or w_rel takes precedence.
 """
 from dataclasses import replace
 
@@ -29,7 +29,8 @@ _CHOICES = ("never", "avoid", "default", "prefer", "always")
 
 
 class RelativeStatesMixin:
-    """Applies ``stateSelect`` to the variables named in ``_relative_states``."""
+    """Applies ``stateSelect`` to the (position, speed) pair named in
+    ``_relative_states``; with "default" the speed is "avoid" (module docstring)."""
 
     _relative_states: tuple = ()
 
@@ -44,5 +45,8 @@ class RelativeStatesMixin:
         mod = self._mods.get(name)
         if name in self._relative_states and not (isinstance(mod, dict)
                                                   and "state_select" in mod):
-            attrs = replace(attrs, state_select=self.stateSelect)
+            choice = self.stateSelect
+            if choice == "default" and name == self._relative_states[1]:
+                choice = "avoid"
+            attrs = replace(attrs, state_select=choice)
         return attrs

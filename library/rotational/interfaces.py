@@ -45,13 +45,13 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
         phi_rel = flange_b.phi - flange_a.phi,   w_rel = der(phi_rel),
         a_rel = der(w_rel),   flange_b.tau = tau,   flange_a.tau = -tau
 
-    ``stateSelect`` is the state priority of phi_rel and w_rel: "avoid" by default
-    (the inertias keep their absolute states), "prefer" for a stiff shaft (the MSL's
-    default; see ``acausal.library.relative_states``).  a_rel = der(w_rel) makes w_rel a
+    ``stateSelect`` is the state priority of phi_rel and w_rel: "prefer" for a stiff
+    shaft (the MSL's default); by default ("default") the model keeps the states it
+    would have with ``PartialCompliant`` (see ``acausal.library.relative_states``).  a_rel = der(w_rel) makes w_rel a
     candidate state at all.
     """
 
-    phi_rel = ac.Variable(start=0.0, unit="rad", nominal=1e-4, state_select="avoid",
+    phi_rel = ac.Variable(start=0.0, unit="rad", nominal=1e-4,
                           description="relative rotation angle flange_b.phi - flange_a.phi")
     w_rel = ac.Variable(start=0.0, unit="rad/s", state_select="avoid",
                         description="relative angular velocity der(phi_rel)")
@@ -60,7 +60,7 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
 
     _relative_states = ("phi_rel", "w_rel")
 
-    def __init__(self, stateSelect="avoid", **modifications):
+    def __init__(self, *, stateSelect="default", **modifications):
         super().__init__(**modifications)
         self._select(stateSelect)
 
@@ -111,7 +111,7 @@ class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFla
 
     _supports = {"support": "useSupport"}
 
-    def __init__(self, useSupport=False, **modifications):
+    def __init__(self, *, useSupport=False, **modifications):
         super().__init__(**modifications)
         self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
 
@@ -135,7 +135,7 @@ class PartialElementaryTwoFlangesAndSupport(SupportMixin, PartialTwoFlanges):
 
     _supports = {"support": "useSupport"}
 
-    def __init__(self, useSupport=False, **modifications):
+    def __init__(self, *, useSupport=False, **modifications):
         super().__init__(**modifications)
         self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
 
@@ -165,7 +165,7 @@ class PartialElementaryRotationalToTranslational(SupportMixin, ac.Component):
 
     _supports = {"supportR": "useSupportR", "supportT": "useSupportT"}
 
-    def __init__(self, useSupportR=False, useSupportT=False, **modifications):
+    def __init__(self, *, useSupportR=False, useSupportT=False, **modifications):
         super().__init__(**modifications)
         self._mount({"supportR": RotationalFlange, "supportT": TranslationalFlange},
                     {"useSupportR": useSupportR, "useSupportT": useSupportT})

@@ -86,7 +86,7 @@ class _SpeedDependentTorque(PartialElementaryOneFlangeAndSupport):
 
     energy_role = "source"  # drives (or brakes) the flange from outside the model
 
-    def __init__(self, TorqueDirection=True, **modifications):
+    def __init__(self, *, TorqueDirection=True, **modifications):
         super().__init__(**modifications)
         if not isinstance(TorqueDirection, bool):
             raise ac.ModelError(f"{type(self).__name__}: TorqueDirection must be True or "

@@ -40,12 +40,13 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
         s_rel = flange_b.s - flange_a.s,   v_rel = der(s_rel),   a_rel = der(v_rel),
         flange_b.f = f,   flange_a.f = -f
 
-    ``stateSelect`` is the state priority of s_rel and v_rel: "avoid" by default,
-    "prefer" for a stiff coupling (see ``acausal.library.relative_states``).
+    ``stateSelect`` is the state priority of s_rel and v_rel: "prefer" for a stiff
+    coupling; by default ("default") the states of ``PartialCompliant`` (see
+    ``acausal.library.relative_states``).
     a_rel = der(v_rel) makes v_rel a candidate state at all.
     """
 
-    s_rel = ac.Variable(start=0.0, unit="m", nominal=1e-4, state_select="avoid",
+    s_rel = ac.Variable(start=0.0, unit="m", nominal=1e-4,
                         description="relative distance flange_b.s - flange_a.s")
     v_rel = ac.Variable(start=0.0, unit="m/s", state_select="avoid",
                         description="relative velocity der(s_rel)")
@@ -54,7 +55,7 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
 
     _relative_states = ("s_rel", "v_rel")
 
-    def __init__(self, stateSelect="avoid", **modifications):
+    def __init__(self, *, stateSelect="default", **modifications):
         super().__init__(**modifications)
         self._select(stateSelect)
 
@@ -102,7 +103,7 @@ class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFla
 
     _supports = {"support": "useSupport"}
 
-    def __init__(self, useSupport=False, **modifications):
+    def __init__(self, *, useSupport=False, **modifications):
         super().__init__(**modifications)
         self._mount({"support": TranslationalFlange}, {"useSupport": useSupport})
 

@@ -79,7 +79,7 @@ class _SpeedDependentForce(PartialElementaryOneFlangeAndSupport):
 
     energy_role = "source"  # drives (or brakes) the flange from outside the model
 
-    def __init__(self, ForceDirection=True, **modifications):
+    def __init__(self, *, ForceDirection=True, **modifications):
         super().__init__(**modifications)
         if not isinstance(ForceDirection, bool):
             raise ac.ModelError(f"{type(self).__name__}: ForceDirection must be True or "

@@ -66,8 +66,10 @@ def test_stiff_shaft_twist_stays_accurate_at_large_absolute_angles():
 
 
 def test_state_select_of_the_relative_variables():
-    # by default ("avoid") the inertias keep their absolute states
-    assert rot.SpringDamper().stateSelect == "avoid"
+    # by default the speeds stay the inertias' (w_rel "avoid"), as with PartialCompliant
+    assert rot.SpringDamper().stateSelect == "default"
+    assert set(ac.compile(stiff_shaft("default")).states) == {"a.phi", "a.w",
+                                                              "shaft.phi_rel", "b.w"}
     assert set(ac.compile(stiff_shaft("avoid")).states) == {"a.phi", "a.w", "b.phi", "b.w"}
     # an explicit state_select of the variable takes precedence over stateSelect
     class Host(ac.Component):
