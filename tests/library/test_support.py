@@ -3,12 +3,15 @@ its housing.  Checked against conservation of angular and linear momentum and th
 closed-form motion of a gear on a rotating housing."""
 import numpy as np
 import pytest
+from scipy.linalg import expm
 
 import acausal as ac
 from acausal.analysis import energy_balance
+from acausal.library import electrical as el
 from acausal.library import rotational as rot
 from acausal.library import translational as tr
 from acausal.library.blocks import Constant, Sine
+from acausal.library.electromechanical import DCMotor
 
 A, F = 2.0, 0.5            # torque amplitude [N m] and frequency [Hz]
 J1, J2 = 2.0, 5.0          # rotor and housing inertias [kg m2]
@@ -146,6 +149,44 @@ def test_rotation_to_translation_with_both_supports():
     assert np.max(np.abs(p)) < 1e-9 * 2.0 * np.max(np.abs(res["nut.v"]))
     L = 0.01 * res["screw.w"] + 0.5 * res["frame.w"]
     assert np.max(np.abs(L)) < 1e-9 * 0.01 * np.max(np.abs(res["screw.w"]))
+    audit = energy_balance(res, model)
+    assert not audit.violations and audit.relative_residual() < 1e-6
+
+
+class MotorInFreeHousing(ac.Component):
+    """A DC motor whose stator is mounted on a free housing inertia, driving a load."""
+
+    source = el.ConstantVoltage(V=12.0)
+    ground = el.Ground()
+    motor = DCMotor(R=1.0, L=1e-3, k=0.05, J=1e-4, useSupport=True)
+    load = rot.Inertia(J=2e-4)
+    housing = rot.Inertia(J=5e-3)
+
+    def equations(self):
+        return [ac.connect(self.source.p, self.motor.p),
+                ac.connect(self.source.n, self.motor.n, self.ground.p),
+                ac.connect(self.motor.flange, self.load.flange_a),
+                ac.connect(self.motor.support, self.housing.flange_a)]
+
+
+def test_dc_motor_stator_reaction_into_its_housing():
+    model = MotorInFreeHousing()
+    t = np.linspace(0, 0.2, 41)
+    res = ac.simulate(model, t_end=0.2, rtol=1e-10, atol=1e-12, t_eval=t)
+    w_r, w_h = res["load.w"], res["housing.w"]
+    # no torque from outside: rotor + load + housing keep zero angular momentum
+    L = 3e-4 * w_r + 5e-3 * w_h
+    assert np.max(np.abs(L)) < 1e-10 * 3e-4 * np.max(np.abs(w_r))
+    # the back EMF sees the speed relative to the stator
+    assert np.max(np.abs(res["motor.emf.v"] - 0.05 * (w_r - w_h))) < 1e-10 * 12.0
+    # relative to the housing the motor drives J_eff = J_r J_h / (J_r + J_h):
+    # L i' = V - R i - k w_rel,  J_eff w_rel' = k i, from rest (matrix exponential)
+    J_eff = 3e-4 * 5e-3 / (3e-4 + 5e-3)
+    A = np.array([[-1.0 / 1e-3, -0.05 / 1e-3], [0.05 / J_eff, 0.0]])
+    B = np.array([12.0 / 1e-3, 0.0])
+    exact = np.array([np.linalg.solve(A, (expm(A * ti) - np.eye(2)) @ B) for ti in t])
+    assert np.max(np.abs((w_r - w_h) - exact[:, 1])) < 1e-7 * 12.0 / 0.05
+    assert np.max(np.abs(res["motor.La.i"] - exact[:, 0])) < 1e-7 * 12.0
     audit = energy_balance(res, model)
     assert not audit.violations and audit.relative_residual() < 1e-6
 
