@@ -196,3 +196,11 @@ def test_missing_support_is_named():
         rot.Torque().support
     with pytest.raises(ac.ModelError, match="useSupport must be True or False"):
         rot.IdealGear(useSupport="yes")
+
+    # a structural argument given as a modification from the parent is named as such
+    class Drive(ac.Component):
+        motor = rot.Torque()
+
+    named = r"'motor' \(Torque\): 'useSupport' is an argument of the constructor"
+    with pytest.raises(ac.ModelError, match=named + r".*Torque\(useSupport=True\)"):
+        ac.compile(Drive(motor={"useSupport": True}))
