@@ -9,13 +9,14 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "Damper", "SpringDamper", "IdealGear", "IdealPlanetary", "IdealGearR2T",
            "IdealRollingWheel",
            "RackAndPinion", "ElastoBacklash", "ElasticGearWithDeadzone", "GearWithBacklash",
-           "ConstantTorque",
+           "Clutch", "ConstantTorque",
            "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
            "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate", "Position",
            "AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
            "RelAccSensor", "TorqueSensor", "PowerSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
+    ".clutches": ("Clutch",),
     ".components": ("Damper", "ElastoBacklash", "ElasticGearWithDeadzone", "Fixed",
                     "GearWithBacklash",
                     "IdealGear", "IdealGearR2T", "IdealPlanetary", "IdealRollingWheel", "Inertia",
