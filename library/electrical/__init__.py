@@ -3,8 +3,8 @@ from ... import _lazy_exports
 
 __all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Conductor", "Capacitor",
            "Inductor", "HeatingResistor", "VariableResistor", "VariableConductor",
-           "VariableCapacitor", "VariableInductor", "Transformer", "Gyrator",
-           "IdealTransformer", "VCV", "VCC", "CCV", "CCC", "IdealOpAmp", "IdealClosingSwitch",
+           "VariableCapacitor", "VariableInductor", "Potentiometer", "Transformer",
+           "Gyrator", "IdealTransformer", "VCV", "VCC", "CCV", "CCC", "IdealOpAmp", "IdealClosingSwitch",
            "IdealOpeningSwitch", "Diode", "IdealDiode",
            "ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "PulseVoltage",
            "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
@@ -14,8 +14,8 @@ __all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Conductor", "C
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".basic": ("Capacitor", "Conductor", "Ground", "Gyrator", "HeatingResistor",
                "IdealClosingSwitch", "IdealOpAmp", "IdealOpeningSwitch", "IdealTransformer",
-               "Inductor", "Resistor", "Transformer", "VariableCapacitor", "VariableConductor",
-               "VariableInductor", "VariableResistor"),
+               "Inductor", "Potentiometer", "Resistor", "Transformer", "VariableCapacitor",
+               "VariableConductor", "VariableInductor", "VariableResistor"),
     ".controlled": ("CCC", "CCV", "VCC", "VCV"),
     ".interfaces": ("OnePort", "TwoPin", "TwoPort"),
     ".semiconductors": ("Diode", "IdealDiode"),

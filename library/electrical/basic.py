@@ -6,6 +6,7 @@ from .interfaces import OnePort, TwoPort
 
 __all__ = ["Ground", "Resistor", "Conductor", "Capacitor", "Inductor", "HeatingResistor",
            "VariableResistor", "VariableConductor", "VariableCapacitor", "VariableInductor",
+           "Potentiometer",
            "Transformer", "Gyrator", "IdealTransformer", "IdealOpAmp", "IdealClosingSwitch",
            "IdealOpeningSwitch"]
 
@@ -183,6 +184,50 @@ class VariableInductor(OnePort):
         return [*super().equations(),
                 ac.Eq(self.Psi, ac.max(self.L.signal, self.Lmin) * self.i),
                 ac.Eq(self.v, ac.der(self.Psi))]
+
+
+class Potentiometer(ac.Component):
+    """Adjustable resistor with a sliding contact (MSL Analog.Basic.Potentiometer), the
+    contact at r between pin_n (r = 0) and pin_p (r = 1):
+
+        Rp = R (1 - r_c),   Rn = R r_c,   r_c = min(1, max(0, r))
+        pin_p.v - contact.v = Rp pin_p.i,   pin_n.v - contact.v = Rn pin_n.i
+        pin_p.i + pin_n.i + contact.i = 0
+
+    r is the parameter rConstant, or with ``Potentiometer(useRinput=True)`` the signal
+    input ``r`` (a structural choice, as the MSL's useRinput).
+    """
+
+    R = ac.Parameter(1.0, unit="Ohm", min=0, description="total resistance")
+    rConstant = ac.Parameter(0.5, min=0, max=1,
+                             description="contact position without the input r")
+    pin_p = Pin()
+    pin_n = Pin()
+    contact = Pin()
+    Rp = ac.Variable(unit="Ohm", description="resistance between pin_p and contact")
+    Rn = ac.Variable(unit="Ohm", description="resistance between contact and pin_n")
+
+    def __init__(self, *, useRinput=False, **modifications):
+        super().__init__(**modifications)
+        if not isinstance(useRinput, bool):
+            raise ac.ModelError(f"Potentiometer: useRinput must be True or False, not "
+                                f"{useRinput!r}")
+        object.__setattr__(self, "useRinput", useRinput)
+        if useRinput:
+            self.r = RealInput()
+
+    def loss_power(self):
+        """Rp pin_p.i^2 + Rn pin_n.i^2."""
+        return self.Rp * self.pin_p.i**2 + self.Rn * self.pin_n.i**2
+
+    def equations(self):
+        # the parameter is checked against [0, 1]; only the signal needs the clipping
+        r_c = ac.min(1, ac.max(0, self.r.signal)) if self.useRinput else self.rConstant
+        return [ac.Eq(0, self.pin_p.i + self.pin_n.i + self.contact.i),
+                ac.Eq(self.Rp, self.R * (1 - r_c)),
+                ac.Eq(self.Rn, self.R * r_c),
+                ac.Eq(self.pin_p.v - self.contact.v, self.Rp * self.pin_p.i),
+                ac.Eq(self.pin_n.v - self.contact.v, self.Rn * self.pin_n.i)]
 
 
 class Transformer(TwoPort):

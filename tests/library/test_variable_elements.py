@@ -144,3 +144,45 @@ def test_variable_inductor_flux_law():
     assert np.max(np.abs(res["L.i"] - Psi / (L0 + KL * t))) < 1e-8 * I0
     audit = energy_balance(res, model)
     assert not audit.violations and audit.relative_residual() < 1e-6
+
+
+RP, VS, RLOAD = 100.0, 10.0, 50.0      # potentiometer, supply [V], load
+
+
+def divider(**options):
+    class LoadedDivider(ac.Component):
+        """A potentiometer across a supply, its contact loaded by a resistor."""
+
+        supply = el.ConstantVoltage(V=VS)
+        pot = el.Potentiometer(R=RP, **options)
+        load = el.Resistor(R=RLOAD)
+        ground = el.Ground()
+        wiper = Ramp(offset=0.1, height=1.1, duration=1.0)
+
+        def equations(self):
+            eqs = [ac.connect(self.supply.p, self.pot.pin_p),
+                   ac.connect(self.supply.n, self.pot.pin_n, self.load.n, self.ground.p),
+                   ac.connect(self.pot.contact, self.load.p)]
+            if self.pot.useRinput:
+                eqs.append(ac.connect(self.wiper.y, self.pot.r))
+            return eqs
+
+    return LoadedDivider()
+
+
+def test_potentiometer_loaded_divider():
+    """v_c = (V/Rp) / (1/Rp + 1/Rn + 1/R_L) with Rp = R (1 - r), Rn = R r; the wiper
+    r = 0.1 + 1.1 t is clipped to 1 (v_c = V) after t = 9/11."""
+    t = np.linspace(0, 1, 45)
+    model = divider(useRinput=True)
+    res = ac.simulate(model, t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    r = np.minimum(0.1 + 1.1 * t, 1.0)
+    Rp, Rn = RP * (1 - r), RP * r
+    with np.errstate(divide="ignore", invalid="ignore"):
+        vc = np.where(Rp > 0, (VS / Rp) / (1 / Rp + 1 / Rn + 1 / RLOAD), VS)
+    assert np.max(np.abs(res["load.v"] - vc)) < 1e-9 * VS
+    assert not energy_balance(res, model).violations
+    fixed = ac.simulate(divider(rConstant=0.25), t_end=0.1, rtol=1e-10, n_points=3)
+    Rp, Rn = 0.75 * RP, 0.25 * RP
+    assert np.allclose(fixed["load.v"], (VS / Rp) / (1 / Rp + 1 / Rn + 1 / RLOAD),
+                       rtol=1e-9, atol=0)
