@@ -43,19 +43,18 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
     (MSL PartialCompliantWithRelativeStates):
 
         phi_rel = flange_b.phi - flange_a.phi,   w_rel = der(phi_rel),
-        a_rel = der(w_rel),   flange_b.tau = tau,   flange_a.tau = -tau
+        flange_b.tau = tau,   flange_a.tau = -tau
+        acc.a_rel = der(w_rel)          (only with stateSelect "prefer" or "always")
 
     ``stateSelect`` is the state priority of phi_rel and w_rel: "prefer" for a stiff
     shaft (the MSL's default); by default ("default") the model keeps the states it
-    would have with ``PartialCompliant`` (see ``acausal.library.relative_states``).  a_rel = der(w_rel) makes w_rel a
-    candidate state at all.
+    would have with ``PartialCompliant`` (see ``acausal.library.relative_states``).
     """
 
     phi_rel = ac.Variable(start=0.0, unit="rad", nominal=1e-4,
                           description="relative rotation angle flange_b.phi - flange_a.phi")
-    w_rel = ac.Variable(start=0.0, unit="rad/s", state_select="avoid",
+    w_rel = ac.Variable(start=0.0, unit="rad/s",
                         description="relative angular velocity der(phi_rel)")
-    a_rel = ac.Variable(unit="rad/s2", description="relative angular acceleration der(w_rel)")
     tau = ac.Variable(unit="N.m", description="torque between the flanges")
 
     _relative_states = ("phi_rel", "w_rel")
@@ -67,7 +66,7 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
     def equations(self):
         return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
                 ac.Eq(self.w_rel, ac.der(self.phi_rel)),
-                ac.Eq(self.a_rel, ac.der(self.w_rel)),
+                *self.acceleration_equations(),
                 ac.Eq(self.flange_b.tau, self.tau),
                 ac.Eq(self.flange_a.tau, -self.tau)]
 

@@ -2,7 +2,7 @@
 import acausal as ac
 from acausal.ports import TranslationalFlange
 
-from ..relative_states import RelativeStatesMixin
+from ..relative_states import LinearAcceleration, RelativeStatesMixin
 from ..support import SupportMixin
 
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
@@ -37,23 +37,22 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
     """A compliant connection whose relative position and speed may be chosen as
     states (MSL Translational PartialCompliantWithRelativeStates):
 
-        s_rel = flange_b.s - flange_a.s,   v_rel = der(s_rel),   a_rel = der(v_rel),
+        s_rel = flange_b.s - flange_a.s,   v_rel = der(s_rel),
         flange_b.f = f,   flange_a.f = -f
+        acc.a_rel = der(v_rel)          (only with stateSelect "prefer" or "always")
 
     ``stateSelect`` is the state priority of s_rel and v_rel: "prefer" for a stiff
     coupling; by default ("default") the states of ``PartialCompliant`` (see
     ``acausal.library.relative_states``).
-    a_rel = der(v_rel) makes v_rel a candidate state at all.
     """
 
     s_rel = ac.Variable(start=0.0, unit="m", nominal=1e-4,
                         description="relative distance flange_b.s - flange_a.s")
-    v_rel = ac.Variable(start=0.0, unit="m/s", state_select="avoid",
-                        description="relative velocity der(s_rel)")
-    a_rel = ac.Variable(unit="m/s2", description="relative acceleration der(v_rel)")
+    v_rel = ac.Variable(start=0.0, unit="m/s", description="relative velocity der(s_rel)")
     f = ac.Variable(unit="N", description="force between the flanges")
 
     _relative_states = ("s_rel", "v_rel")
+    _acceleration = LinearAcceleration
 
     def __init__(self, *, stateSelect="default", **modifications):
         super().__init__(**modifications)
@@ -62,7 +61,7 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
     def equations(self):
         return [ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s),
                 ac.Eq(self.v_rel, ac.der(self.s_rel)),
-                ac.Eq(self.a_rel, ac.der(self.v_rel)),
+                *self.acceleration_equations(),
                 ac.Eq(self.flange_b.f, self.f),
                 ac.Eq(self.flange_a.f, -self.f)]
 

@@ -63,6 +63,10 @@ def test_stiff_shaft_twist_stays_accurate_at_large_absolute_angles():
     assert np.max(np.abs(res["shaft.phi_rel"] - exact[:, 0])) < 1e-6 * scale
     w_scale = np.max(np.abs(exact[:, 1]))
     assert np.max(np.abs(res["shaft.w_rel"] - exact[:, 1])) < 1e-6 * w_scale
+    # "prefer" brings the relative acceleration: a_rel = -(c phi_rel + d w_rel)/J_eff - T0/J1
+    J_eff = 1 / (1 / J1 + 1 / J2)
+    a_rel = -(C * exact[:, 0] + D * exact[:, 1]) / J_eff - T0 / J1
+    assert np.max(np.abs(res["shaft.acc.a_rel"] - a_rel)) < 1e-5 * np.max(np.abs(a_rel))
 
 
 def test_state_select_of_the_relative_variables():
