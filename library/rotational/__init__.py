@@ -5,7 +5,7 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport",
-           "PartialElementaryRotationalToTranslational", "Fixed", "Inertia", "Spring",
+           "PartialElementaryRotationalToTranslational", "Fixed", "Inertia", "Disc", "Spring",
            "Damper", "SpringDamper", "IdealGear", "IdealPlanetary", "IdealGearR2T",
            "IdealRollingWheel",
            "RackAndPinion", "ElastoBacklash", "ElasticGearWithDeadzone", "GearWithBacklash",
@@ -13,11 +13,11 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
            "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate", "Position",
            "AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
-           "RelAccSensor", "TorqueSensor", "PowerSensor"]
+           "RelAccSensor", "TorqueSensor", "PowerSensor", "MultiSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".clutches": ("Clutch",),
-    ".components": ("Damper", "ElastoBacklash", "ElasticGearWithDeadzone", "Fixed",
+    ".components": ("Damper", "Disc", "ElastoBacklash", "ElasticGearWithDeadzone", "Fixed",
                     "GearWithBacklash",
                     "IdealGear", "IdealGearR2T", "IdealPlanetary", "IdealRollingWheel", "Inertia",
                     "RackAndPinion", "Spring", "SpringDamper"),
@@ -28,8 +28,8 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "PartialElementaryRotationalToTranslational",
                     "PartialElementaryTwoFlangesAndSupport", "PartialRelativeSensor",
                     "PartialTwoFlanges"),
-    ".sensors": ("AccSensor", "AngleSensor", "PowerSensor", "RelAccSensor", "RelAngleSensor",
-                 "RelSpeedSensor", "SpeedSensor", "TorqueSensor"),
+    ".sensors": ("AccSensor", "AngleSensor", "MultiSensor", "PowerSensor", "RelAccSensor",
+                 "RelAngleSensor", "RelSpeedSensor", "SpeedSensor", "TorqueSensor"),
     ".sources": ("Accelerate", "ConstantSpeed", "ConstantTorque",
                  "LinearSpeedDependentTorque", "Position", "QuadraticSpeedDependentTorque",
                  "Speed", "StepTorque", "Torque", "Torque2"),

@@ -23,9 +23,9 @@ class Clutch(_Karnopp, PartialRotationalFriction):
     w = der(phi_rel) is the slip speed; the clutch sticks (w = 0 exactly, an event)
     when the slip speed reaches the band and breaks away when the torque it must carry
     exceeds peak mu cgeo fn (see ``KarnoppFriction``; the sticking event sets the slip
-    speed from the band's edge to 0, so it changes a speed by at most dv).  With f_normalized = 0 the
-    clutch is open (no torque).  A brake is a clutch whose flange_a is on a ``Fixed``
-    housing.
+    speed from the band's edge to 0, so it changes a speed by at most dv).  With
+    f_normalized = 0 the clutch is open (no torque).  A brake is a clutch whose
+    flange_a is on a ``Fixed`` housing.
     """
 
     mu = ac.Parameter(0.5, min=0, description="coefficient of sliding friction")

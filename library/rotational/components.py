@@ -9,7 +9,7 @@ from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
                          PartialElementaryRotationalToTranslational,
                          PartialElementaryTwoFlangesAndSupport, PartialTwoFlanges)
 
-__all__ = ["Fixed", "Inertia", "Spring", "Damper", "SpringDamper", "IdealGear",
+__all__ = ["Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
            "IdealPlanetary", "IdealGearR2T", "IdealRollingWheel", "RackAndPinion",
            "ElastoBacklash", "ElasticGearWithDeadzone", "GearWithBacklash"]
 
@@ -47,6 +47,22 @@ class Inertia(PartialTwoFlanges):
                 ac.Eq(self.w, ac.der(self.phi)),
                 ac.Eq(self.a, ac.der(self.w)),
                 ac.Eq(self.J * self.a, self.flange_a.tau + self.flange_b.tau)]
+
+
+class Disc(PartialTwoFlanges):
+    """A massless disc that turns flange_b by a fixed angle against flange_a (MSL
+    Components.Disc):
+
+        flange_b.phi = flange_a.phi + deltaPhi,   0 = flange_a.tau + flange_b.tau
+    """
+
+    deltaPhi = ac.Parameter(0.0, unit="rad", description="angle of flange_b to flange_a")
+
+    energy_role = "lossless"  # rigid and massless
+
+    def equations(self):
+        return [ac.Eq(self.flange_b.phi, self.flange_a.phi + self.deltaPhi),
+                ac.Eq(0, self.flange_a.tau + self.flange_b.tau)]
 
 
 class Spring(PartialCompliant):
@@ -233,8 +249,9 @@ class ElastoBacklash(PartialCompliantWithRelativeStates):
     The damping torque is limited by the spring torque, so the contact torque starts
     from 0 and never pulls.  lossPower is what the stored energy c (|phi_diff| - b/2)^2/2
     does not account for: the limited damping and, while the teeth separate with the
-    spring still deflected, the spring energy that is released (the MSL books 0 there).  Entering and leaving the backlash are events; the
-    limiting inside the contact is evaluated without events (as the MSL's noEvent).
+    spring still deflected, the spring energy that is released (the MSL books 0 there).
+    Entering and leaving the backlash are events; the limiting inside the contact is
+    evaluated without events (as the MSL's noEvent).
     b must be positive (the MSL replaces a backlash below 1e-10 rad by a plain
     spring-damper).  The MSL's smoothed characteristic during initialization is not
     reproduced: give start values that fix the initial contact state.

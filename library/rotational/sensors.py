@@ -5,7 +5,7 @@ from acausal.ports import RealOutput
 from .interfaces import PartialAbsoluteSensor, PartialRelativeSensor
 
 __all__ = ["AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
-           "RelAccSensor", "TorqueSensor", "PowerSensor"]
+           "RelAccSensor", "TorqueSensor", "PowerSensor", "MultiSensor"]
 
 
 class AngleSensor(PartialAbsoluteSensor):
@@ -94,3 +94,22 @@ class PowerSensor(PartialRelativeSensor):
     def equations(self):
         return [*super().equations(), ac.Eq(self.flange_a.phi, self.flange_b.phi),
                 ac.Eq(self.power, self.flange_a.tau * ac.der(self.flange_a.phi))]
+
+
+class MultiSensor(PartialRelativeSensor):
+    """Torque, speed and power at one place of a shaft (MSL Sensors.MultiSensor), put in
+    series, rigid:
+
+        flange_a.phi = flange_b.phi,   tau = flange_a.tau,   w = der(flange_a.phi),
+        power = tau w
+    """
+
+    tau = RealOutput()
+    w = RealOutput()
+    power = RealOutput()
+
+    def equations(self):
+        return [*super().equations(), ac.Eq(self.flange_a.phi, self.flange_b.phi),
+                ac.Eq(self.tau, self.flange_a.tau),
+                ac.Eq(self.w, ac.der(self.flange_a.phi)),
+                ac.Eq(self.power, self.tau * self.w)]

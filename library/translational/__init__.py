@@ -4,14 +4,15 @@ from ... import _lazy_exports
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
            "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
-           "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "MassWithStop",
+           "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "Rod", "MassWithStop",
            "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force", "Force2",
            "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "ConstantSpeed",
            "Speed", "Accelerate", "Position", "PositionSensor", "SpeedSensor", "AccSensor",
            "RelPositionSensor", "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Spring", "SpringDamper"),
+    ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Rod", "Spring",
+                    "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
                     "PartialCompliantWithRelativeStates",
                     "PartialElementaryOneFlange", "PartialElementaryOneFlangeAndSupport",

@@ -7,7 +7,7 @@ import acausal as ac
 from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
                          PartialElementaryOneFlange, PartialTwoFlanges)
 
-__all__ = ["Fixed", "Mass", "Spring", "Damper", "SpringDamper", "MassWithStop"]
+__all__ = ["Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "MassWithStop"]
 
 
 class Fixed(PartialElementaryOneFlange):
@@ -42,6 +42,23 @@ class Mass(PartialTwoFlanges):
                 ac.Eq(self.v, ac.der(self.s)),
                 ac.Eq(self.a, ac.der(self.v)),
                 ac.Eq(self.m * self.a, self.flange_a.f + self.flange_b.f)]
+
+
+class Rod(PartialTwoFlanges):
+    """Massless rigid rod of length L (MSL Translational.Components.Rod), its centre at s:
+
+        flange_a.s = s - L/2,   flange_b.s = s + L/2,   0 = flange_a.f + flange_b.f
+    """
+
+    L = ac.Parameter(0.0, unit="m", min=0, description="length of the rod")
+    s = ac.Variable(start=0.0, unit="m", description="position of the centre")
+
+    energy_role = "lossless"  # rigid and massless
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.s, self.s - self.L / 2),
+                ac.Eq(self.flange_b.s, self.s + self.L / 2),
+                ac.Eq(0, self.flange_a.f + self.flange_b.f)]
 
 
 class Spring(PartialCompliant):
