@@ -9,14 +9,14 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "Damper", "SpringDamper", "IdealGear", "IdealPlanetary", "IdealGearR2T",
            "IdealRollingWheel",
            "RackAndPinion", "ElastoBacklash", "ElasticGearWithDeadzone", "GearWithBacklash",
-           "Clutch", "ConstantTorque",
+           "Clutch", "Brake", "ConstantTorque",
            "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
            "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate", "Position",
            "AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
            "RelAccSensor", "TorqueSensor", "PowerSensor", "MultiSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".clutches": ("Clutch",),
+    ".clutches": ("Brake", "Clutch"),
     ".components": ("Damper", "Disc", "ElastoBacklash", "ElasticGearWithDeadzone", "Fixed",
                     "GearWithBacklash",
                     "IdealGear", "IdealGearR2T", "IdealPlanetary", "IdealRollingWheel", "Inertia",

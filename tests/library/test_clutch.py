@@ -55,3 +55,33 @@ def test_clutch_slips_then_sticks_closed_form():
     J_eff = J1 * J2 / (J1 + J2)
     E = J1 * res["a.w"]**2 / 2 + J2 * res["b.w"]**2 / 2
     assert abs((J1 * W1**2 / 2 - E[-1]) - J_eff * W1**2 / 2) < 1e-5 * J1 * W1**2 / 2
+
+
+class Braking(ac.Component):
+    """A spinning wheel braked from T_ON on, then held against a drive torque below the
+    static friction."""
+
+    pedal = Step(height=1.0, startTime=T_ON)
+    drive = rot.ConstantTorque(tau_constant=5.0)
+    wheel = rot.Inertia(J=J1, phi={"start": 0.0, "fixed": True}, w={"start": W1, "fixed": True})
+    brake = rot.Brake(mu=MU, peak=1.2, cgeo=CGEO, fn_max=FN)
+
+    def equations(self):
+        return [ac.connect(self.pedal.y, self.brake.f_normalized),
+                ac.connect(self.drive.flange, self.wheel.flange_a),
+                ac.connect(self.wheel.flange_b, self.brake.flange_a)]
+
+
+def test_brake_stops_the_wheel_and_holds_it():
+    """J w' = 5 before T_ON, 5 - T while sliding (T = mu cgeo fn = 12 > 5), stopped at
+    t* = T_ON + J w(T_ON) / (T - 5); then held: 5 N m < peak T."""
+    T = MU * CGEO * FN
+    t_stop = T_ON + (J1 * W1 + 5.0 * T_ON) / (T - 5.0)
+    t = np.linspace(0, 2.0, 81)
+    res = ac.simulate(Braking(), t_end=2.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    slide = np.clip(t - T_ON, 0, t_stop - T_ON)
+    w = W1 + 5.0 / J1 * np.minimum(t, T_ON) - (T - 5.0) / J1 * slide
+    w = np.where(t >= t_stop, 0.0, w)
+    assert np.max(np.abs(res["wheel.w"] - w)) < 1e-5 * W1
+    held = t > t_stop + 0.01
+    assert np.max(np.abs(res["brake.tau"][held] - 5.0)) < 1e-8 * 5.0
