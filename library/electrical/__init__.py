@@ -6,7 +6,8 @@ __all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Conductor", "C
            "VariableCapacitor", "VariableInductor", "Potentiometer", "Transformer",
            "Gyrator", "IdealTransformer", "VCV", "VCC", "CCV", "CCC", "IdealOpAmp",
            "IdealClosingSwitch", "IdealOpeningSwitch", "Diode", "IdealDiode",
-           "ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "PulseVoltage",
+           "ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "CosineVoltage",
+           "ExpSineVoltage", "PulseVoltage",
            "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "PulseCurrent", "SignalCurrent", "PotentialSensor", "VoltageSensor",
            "CurrentSensor", "PowerSensor"]
@@ -20,7 +21,8 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".interfaces": ("OnePort", "TwoPin", "TwoPort"),
     ".semiconductors": ("Diode", "IdealDiode"),
     ".sensors": ("CurrentSensor", "PotentialSensor", "PowerSensor", "VoltageSensor"),
-    ".sources": ("ConstantCurrent", "ConstantVoltage", "PulseCurrent", "PulseVoltage",
+    ".sources": ("ConstantCurrent", "ConstantVoltage", "CosineVoltage", "ExpSineVoltage",
+                 "PulseCurrent", "PulseVoltage",
                  "RampCurrent", "RampVoltage", "SignalCurrent", "SignalVoltage",
                  "SineCurrent", "SineVoltage", "StepCurrent", "StepVoltage"),
 })

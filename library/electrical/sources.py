@@ -11,7 +11,8 @@ from acausal.ports import RealInput
 from ..blocks import signals
 from .interfaces import OnePort
 
-__all__ = ["ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "PulseVoltage",
+__all__ = ["ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "CosineVoltage",
+           "ExpSineVoltage", "PulseVoltage",
            "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "PulseCurrent", "SignalCurrent"]
 
@@ -89,6 +90,40 @@ class SineVoltage(OnePort):
     def equations(self):
         wave = self.V * sp.sin(2 * sp.pi * self.f * ac.time + self.phase)
         return [*super().equations(), ac.Eq(self.v, self.offset + wave)]
+
+
+class CosineVoltage(OnePort):
+    """Cosine voltage (MSL CosineVoltage):  v = offset + V cos(2 pi f time + phase)."""
+
+    V = ac.Parameter(1.0, unit="V", description="amplitude")
+    f = ac.Parameter(1.0, unit="Hz", description="frequency")
+    phase = ac.Parameter(0.0, unit="rad", description="phase")
+    offset = ac.Parameter(0.0, unit="V", description="offset")
+
+    energy_role = "source"  # delivers -v i
+
+    def equations(self):
+        wave = self.V * sp.cos(2 * sp.pi * self.f * ac.time + self.phase)
+        return [*super().equations(), ac.Eq(self.v, self.offset + wave)]
+
+
+class ExpSineVoltage(_VoltageSource):
+    """Exponentially damped sine voltage (MSL ExpSineVoltage), after startTime:
+
+        v = offset + V exp(-damping (time - startTime)) sin(2 pi f (time - startTime) + phase)
+    """
+
+    V = ac.Parameter(1.0, unit="V", description="amplitude at startTime")
+    f = ac.Parameter(1.0, unit="Hz", description="frequency")
+    phase = ac.Parameter(0.0, unit="rad", description="phase at startTime")
+    damping = ac.Parameter(1.0, unit="1/s", description="damping coefficient")
+
+    def signal(self):
+        tau = ac.time - self.startTime
+        wave = (self.V * ac.exp(-self.damping * tau)
+                * sp.sin(2 * sp.pi * self.f * tau + self.phase))
+        # gated as a whole: exp(-damping tau) before startTime may overflow
+        return ac.if_else(tau >= 0, wave, 0)
 
 
 class PulseVoltage(_VoltageSource):

@@ -116,3 +116,30 @@ def test_gyrator_turns_a_capacitor_into_an_inductor():
     L = 1e-2 / 0.1**2
     i0 = 0.1 * 0.5                                    # i1 = G2 v2 at t = 0
     assert np.max(np.abs(res["gyrator.i1"] - i0 * np.exp(-2.0 * t / L))) < 1e-8 * i0
+
+
+class WaveSources(ac.Component):
+    """A cosine and a damped-sine voltage, each across a resistor."""
+
+    cosine = el.CosineVoltage(V=3.0, f=2.0, phase=0.4, offset=0.5)
+    exp_sine = el.ExpSineVoltage(V=2.0, f=3.0, phase=0.2, damping=2.5, offset=-0.1,
+                                 startTime=0.25)
+    R1 = el.Resistor(R=10.0)
+    R2 = el.Resistor(R=20.0)
+    ground = el.Ground()
+
+    def equations(self):
+        return [ac.connect(self.cosine.p, self.R1.p), ac.connect(self.exp_sine.p, self.R2.p),
+                ac.connect(self.cosine.n, self.exp_sine.n, self.R1.n, self.R2.n,
+                           self.ground.p)]
+
+
+def test_cosine_and_exp_sine_voltages():
+    t = np.linspace(0, 1, 41)
+    res = ac.simulate(WaveSources(), t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    cos = 0.5 + 3.0 * np.cos(2 * np.pi * 2.0 * t + 0.4)
+    tau = t - 0.25
+    exp_sine = -0.1 + np.where(tau >= 0, 2.0 * np.exp(-2.5 * tau)
+                               * np.sin(2 * np.pi * 3.0 * tau + 0.2), 0.0)
+    assert np.max(np.abs(res["R1.v"] - cos)) < 1e-10 * 3.5
+    assert np.max(np.abs(res["R2.v"] - exp_sine)) < 1e-10 * 2.1
