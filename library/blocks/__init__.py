@@ -2,8 +2,8 @@
 from ... import _lazy_exports
 
 __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "Sine",
-           "Cosine", "ExpSine", "Pulse", "Gain", "Add", "Add3", "Feedback", "Product",
-           "Division", "Abs", "Sqrt", "Min", "Max", "Integrator", "Derivative",
+           "Cosine", "ExpSine", "Pulse", "Trapezoid", "Gain", "Add", "Add3", "Feedback",
+           "Product", "Division", "Abs", "Sqrt", "Min", "Max", "Integrator", "Derivative",
            "FirstOrder", "SecondOrder", "TransferFunction", "PI", "PID", "Limiter",
            "Saturation", "DeadZone", "CombiTimeTable", "CombiTable1D", "CombiTable2D"]
 
@@ -14,6 +14,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".math": ("Abs", "Add", "Add3", "Division", "Feedback", "Gain", "Max", "Min", "Product",
               "Sqrt"),
     ".nonlinear": ("DeadZone", "Limiter", "Saturation"),
-    ".sources": ("Constant", "Cosine", "ExpSine", "Pulse", "Ramp", "Sine", "Step"),
+    ".sources": ("Constant", "Cosine", "ExpSine", "Pulse", "Ramp", "Sine", "Step",
+                 "Trapezoid"),
     ".tables": ("CombiTable1D", "CombiTable2D", "CombiTimeTable"),
 })

@@ -6,7 +6,7 @@ import acausal as ac
 from . import signals
 from .interfaces import SO, SignalSource
 
-__all__ = ["Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse"]
+__all__ = ["Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid"]
 
 
 class Constant(SO):
@@ -98,3 +98,25 @@ class Pulse(SignalSource):
     def equations(self):
         p = signals.pulse(self.amplitude, self.width, self.period, self.startTime)
         return [ac.Eq(self.y, self.offset + p)]
+
+
+class Trapezoid(SignalSource):
+    """Periodic trapezoid (MSL Blocks.Sources.Trapezoid, endless):  y = offset +
+    amplitude times a rise over ``rising``, ``width`` at the top and a fall over
+    ``falling`` in every ``period`` after startTime (see ``signals.trapezoid``)."""
+
+    amplitude = ac.Parameter(1.0, description="height of the trapezoid")
+    rising = ac.Parameter(0.1, unit="s", min=0, description="rise time (> 0)")
+    width = ac.Parameter(0.5, unit="s", min=0, description="time at the top")
+    falling = ac.Parameter(0.1, unit="s", min=0, description="fall time (> 0)")
+    period = ac.Parameter(1.0, unit="s", min=0, description="period")
+
+    def equations(self):
+        for name in ("rising", "falling", "period"):
+            if self.parameter_value(name) == 0:
+                # a zero would divide the edge's slope by a structural zero
+                raise ac.ModelError(f"{self._describe()}: {name} must be > 0 (a Pulse "
+                                    "has vertical edges)")
+        y = signals.trapezoid(self.amplitude, self.rising, self.width, self.falling,
+                              self.period, self.startTime)
+        return [ac.Eq(self.y, self.offset + y)]

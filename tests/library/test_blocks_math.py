@@ -1,10 +1,11 @@
-"""Math blocks and signal sources (Add3, Division, Abs, Sqrt, Min,
-Max, Cosine, ExpSine), evaluated against numpy on the same time grid."""
+"""Math blocks and signal sources (Add3, Division, Abs, Sqrt, Min, Max, Cosine, ExpSine,
+Trapezoid), evaluated against numpy on the same time grid."""
 import numpy as np
+import pytest
 
 import acausal as ac
 from acausal.library.blocks import (Abs, Add3, Cosine, Division, ExpSine, Max, Min, Ramp,
-                                    Sine, Sqrt)
+                                    Sine, Sqrt, Trapezoid)
 
 
 class Signals(ac.Component):
@@ -43,3 +44,20 @@ def test_math_blocks_and_sources_against_numpy():
     for name, value in expected.items():
         got = res[f"{name}.signal"]
         assert np.max(np.abs(got - value)) < 1e-10 * (1 + np.max(np.abs(value))), name
+
+
+class Trapezoids(ac.Component):
+    wave = Trapezoid(amplitude=2.0, rising=0.1, width=0.25, falling=0.2, period=0.7,
+                     offset=0.5, startTime=0.15)
+
+
+def test_trapezoid_against_numpy():
+    t = np.linspace(0, 3, 301)
+    res = ac.simulate(Trapezoids(), t_end=3.0, t_eval=t)
+    phase = np.mod(t - 0.15, 0.7)
+    shape = np.select([phase < 0.1, phase < 0.35, phase < 0.55],
+                      [2.0 * phase / 0.1, 2.0, 2.0 * (0.55 - phase) / 0.2], 0.0)
+    expected = 0.5 + np.where(t >= 0.15, shape, 0.0)
+    assert np.max(np.abs(res["wave.y.signal"] - expected)) < 1e-9 * 2.5
+    with pytest.raises(ac.ModelError, match="rising must be > 0"):
+        ac.compile(Trapezoids(wave={"rising": 0.0}))
