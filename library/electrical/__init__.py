@@ -7,7 +7,7 @@ __all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Conductor", "C
            "Gyrator", "IdealTransformer", "VCV", "VCC", "CCV", "CCC", "IdealOpAmp",
            "IdealClosingSwitch", "IdealOpeningSwitch", "Diode", "IdealDiode",
            "ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "CosineVoltage",
-           "ExpSineVoltage", "PulseVoltage",
+           "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
            "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "PulseCurrent", "SignalCurrent", "PotentialSensor", "VoltageSensor",
            "CurrentSensor", "PowerSensor"]
@@ -24,5 +24,6 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".sources": ("ConstantCurrent", "ConstantVoltage", "CosineVoltage", "ExpSineVoltage",
                  "PulseCurrent", "PulseVoltage",
                  "RampCurrent", "RampVoltage", "SignalCurrent", "SignalVoltage",
-                 "SineCurrent", "SineVoltage", "StepCurrent", "StepVoltage"),
+                 "SineCurrent", "SineVoltage", "StepCurrent", "StepVoltage",
+                 "TrapezoidVoltage"),
 })

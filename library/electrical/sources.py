@@ -12,7 +12,7 @@ from ..blocks import signals
 from .interfaces import OnePort
 
 __all__ = ["ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "CosineVoltage",
-           "ExpSineVoltage", "PulseVoltage",
+           "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
            "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "PulseCurrent", "SignalCurrent"]
 
@@ -135,6 +135,27 @@ class PulseVoltage(_VoltageSource):
 
     def signal(self):
         return signals.pulse(self.V, self.width, self.period, self.startTime)
+
+
+class TrapezoidVoltage(_VoltageSource):
+    """Periodic trapezoid voltage (MSL TrapezoidVoltage, endless):  v = offset + V times
+    a rise over ``rising``, ``width`` at the top and a fall over ``falling`` in every
+    ``period`` after startTime (``blocks.signals.trapezoid``)."""
+
+    V = ac.Parameter(1.0, unit="V", description="height of the trapezoid")
+    rising = ac.Parameter(0.1, unit="s", min=0, description="rise time (> 0)")
+    width = ac.Parameter(0.5, unit="s", min=0, description="time at the top")
+    falling = ac.Parameter(0.1, unit="s", min=0, description="fall time (> 0)")
+    period = ac.Parameter(1.0, unit="s", min=0, description="period")
+
+    def signal(self):
+        for name in ("rising", "falling", "period"):
+            if self.parameter_value(name) == 0:
+                # a zero would divide the edge's slope by a structural zero
+                raise ac.ModelError(f"{self._describe()}: {name} must be > 0 (a "
+                                    "PulseVoltage has vertical edges)")
+        return signals.trapezoid(self.V, self.rising, self.width, self.falling,
+                                 self.period, self.startTime)
 
 
 class SignalVoltage(OnePort):

@@ -124,17 +124,21 @@ class WaveSources(ac.Component):
     cosine = el.CosineVoltage(V=3.0, f=2.0, phase=0.4, offset=0.5)
     exp_sine = el.ExpSineVoltage(V=2.0, f=3.0, phase=0.2, damping=2.5, offset=-0.1,
                                  startTime=0.25)
+    trapezoid = el.TrapezoidVoltage(V=4.0, rising=0.05, width=0.1, falling=0.15,
+                                    period=0.4, startTime=0.1)
     R1 = el.Resistor(R=10.0)
     R2 = el.Resistor(R=20.0)
+    R3 = el.Resistor(R=30.0)
     ground = el.Ground()
 
     def equations(self):
         return [ac.connect(self.cosine.p, self.R1.p), ac.connect(self.exp_sine.p, self.R2.p),
-                ac.connect(self.cosine.n, self.exp_sine.n, self.R1.n, self.R2.n,
-                           self.ground.p)]
+                ac.connect(self.trapezoid.p, self.R3.p),
+                ac.connect(self.cosine.n, self.exp_sine.n, self.trapezoid.n, self.R1.n,
+                           self.R2.n, self.R3.n, self.ground.p)]
 
 
-def test_cosine_and_exp_sine_voltages():
+def test_cosine_exp_sine_and_trapezoid_voltages():
     t = np.linspace(0, 1, 41)
     res = ac.simulate(WaveSources(), t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=t)
     cos = 0.5 + 3.0 * np.cos(2 * np.pi * 2.0 * t + 0.4)
@@ -143,3 +147,7 @@ def test_cosine_and_exp_sine_voltages():
                                * np.sin(2 * np.pi * 3.0 * tau + 0.2), 0.0)
     assert np.max(np.abs(res["R1.v"] - cos)) < 1e-10 * 3.5
     assert np.max(np.abs(res["R2.v"] - exp_sine)) < 1e-10 * 2.1
+    phase = np.mod(t - 0.1, 0.4)
+    shape = np.select([phase < 0.05, phase < 0.15, phase < 0.3],
+                      [4.0 * phase / 0.05, 4.0, 4.0 * (0.3 - phase) / 0.15], 0.0)
+    assert np.max(np.abs(res["R3.v"] - np.where(t >= 0.1, shape, 0.0))) < 1e-10 * 4.0
