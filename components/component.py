@@ -277,6 +277,13 @@ class Component(metaclass=_ComponentType):
                 self._var_attrs[key] = base.modified(mod)
             except (TypeError, ValueError) as err:
                 raise InvalidValue(f"{self._describe()}: variable '{key}': {err}") from None
+        elif key in _constructor_arguments(type(self)):
+            # a structural argument (a port that exists or not, a number of cells) shapes
+            # the instance when it is created; a modification comes too late for that
+            kind = type(self).__name__
+            raise ModelError(f"{self._describe()}: '{key}' is an argument of the "
+                             f"constructor, not a parameter; give it where the component "
+                             f"is created: {kind}({key}={mod!r})")
         else:
             known = sorted(set(decls) | set(self._children))
             raise ModelError(f"{self._describe()} has no parameter, variable or "
@@ -484,6 +491,17 @@ def _class_children(cls) -> dict:
                     out[name] = value
         _CHILD_CACHE[cls] = out
     return _CHILD_CACHE[cls]
+
+
+def _constructor_arguments(cls) -> set:
+    """The named arguments of ``cls.__init__`` beyond the modifications."""
+    import inspect
+    try:
+        params = inspect.signature(cls.__init__).parameters.values()
+    except (TypeError, ValueError):
+        return set()
+    return {p.name for p in params if p.name != "self"
+            and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)}
 
 
 def _declarations(cls) -> dict:

@@ -2,7 +2,8 @@
 from ... import _lazy_exports
 
 __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "Sine",
-           "Pulse", "Gain", "Add", "Feedback", "Product", "Integrator", "Derivative",
+           "Cosine", "ExpSine", "Pulse", "Trapezoid", "Gain", "Add", "Add3", "Feedback",
+           "Product", "Division", "Abs", "Sqrt", "Min", "Max", "Integrator", "Derivative",
            "FirstOrder", "SecondOrder", "TransferFunction", "PI", "PID", "Limiter",
            "Saturation", "DeadZone", "CombiTimeTable", "CombiTable1D", "CombiTable2D",
            "PadeDelay", "FixedDelay"]
@@ -12,8 +13,10 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "TransferFunction"),
     ".delays": ("FixedDelay", "PadeDelay"),
     ".interfaces": ("SI2SO", "SISO", "SO", "SignalSource"),
-    ".math": ("Add", "Feedback", "Gain", "Product"),
+    ".math": ("Abs", "Add", "Add3", "Division", "Feedback", "Gain", "Max", "Min", "Product",
+              "Sqrt"),
     ".nonlinear": ("DeadZone", "Limiter", "Saturation"),
-    ".sources": ("Constant", "Pulse", "Ramp", "Sine", "Step"),
+    ".sources": ("Constant", "Cosine", "ExpSine", "Pulse", "Ramp", "Sine", "Step",
+                 "Trapezoid"),
     ".tables": ("CombiTable1D", "CombiTable2D", "CombiTimeTable"),
 })

@@ -11,7 +11,7 @@ import sympy as sp
 
 import acausal as ac
 
-__all__ = ["step", "ramp", "sine", "pulse"]
+__all__ = ["step", "ramp", "sine", "pulse", "trapezoid"]
 
 
 def step(height, start):
@@ -39,3 +39,21 @@ def pulse(amplitude, width, period, start):
     """
     phase = sp.Mod(ac.time - start, period)
     return ac.if_else(ac.time >= start, ac.if_else(phase < width * period, amplitude, 0), 0)
+
+
+def trapezoid(amplitude, rising, width, falling, period, start):
+    """Periodic trapezoid after ``start`` (the MSL's Trapezoid, endless): in every
+    ``period`` a rise over ``rising`` to ``amplitude``, ``width`` at it, a fall over
+    ``falling`` to 0, then 0 for the rest of the period::
+
+        phase = mod(time - start, period)
+
+    (rising + width + falling <= period; every corner is an exact time event.)
+    """
+    phase = sp.Mod(ac.time - start, period)
+    top, down = rising + width, rising + width + falling
+    shape = ac.if_else(phase < rising, amplitude * phase / rising,
+                       ac.if_else(phase < top, amplitude,
+                                  ac.if_else(phase < down,
+                                             amplitude * (down - phase) / falling, 0)))
+    return ac.if_else(ac.time >= start, shape, 0)

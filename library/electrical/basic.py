@@ -4,8 +4,11 @@ from acausal.ports import HeatPort, Pin, RealInput
 
 from .interfaces import OnePort, TwoPort
 
-__all__ = ["Ground", "Resistor", "Capacitor", "Inductor", "HeatingResistor",
-           "IdealTransformer", "IdealOpAmp", "IdealClosingSwitch", "IdealOpeningSwitch"]
+__all__ = ["Ground", "Resistor", "Conductor", "Capacitor", "Inductor", "HeatingResistor",
+           "VariableResistor", "VariableConductor", "VariableCapacitor", "VariableInductor",
+           "Potentiometer",
+           "Transformer", "Gyrator", "IdealTransformer", "IdealOpAmp", "IdealClosingSwitch",
+           "IdealOpeningSwitch"]
 
 
 class Ground(ac.Component):
@@ -30,6 +33,19 @@ class Resistor(OnePort):
 
     def equations(self):
         return [ac.Eq(self.v, self.R * self.i)]
+
+
+class Conductor(OnePort):
+    """Ideal linear conductor (MSL Analog.Basic.Conductor):  i = G v."""
+
+    G = ac.Parameter(1.0, unit="S", min=0, description="conductance")
+
+    def loss_power(self):
+        """P_loss = G v^2 (the audit checks it against v i)."""
+        return self.G * self.v**2
+
+    def equations(self):
+        return [ac.Eq(self.i, self.G * self.v)]
 
 
 class Capacitor(OnePort):
@@ -81,6 +97,173 @@ class HeatingResistor(OnePort):
         return [ac.Eq(self.R, self.R_ref * (1 + self.alpha * (self.heatPort.T - self.T_ref))),
                 ac.Eq(self.v, self.R * self.i),
                 ac.Eq(self.heatPort.Q_flow, -self.v * self.i)]
+
+
+class VariableResistor(OnePort):
+    """Resistor whose resistance is a signal (MSL Analog.Basic.VariableResistor):
+
+        v = R i          (R >= 0 for a passive resistor)
+    """
+
+    R = RealInput()
+
+    def loss_power(self):
+        """P_loss = R i^2 (negative if the signal R is)."""
+        return self.R * self.i**2
+
+    def equations(self):
+        return [ac.Eq(self.v, self.R * self.i)]
+
+
+class VariableConductor(OnePort):
+    """Conductor whose conductance is a signal (MSL Analog.Basic.VariableConductor):
+
+        i = G v          (G >= 0 for a passive conductor)
+    """
+
+    G = RealInput()
+
+    def loss_power(self):
+        """P_loss = G v^2."""
+        return self.G * self.v**2
+
+    def equations(self):
+        return [ac.Eq(self.i, self.G * self.v)]
+
+
+class VariableCapacitor(OnePort):
+    """Capacitor whose capacitance is a signal (MSL Analog.Basic.VariableCapacitor),
+    charge balance form:
+
+        Q = max(C, Cmin) v,   i = der(Q)
+
+    The charge Q is the state, so a change of C at constant charge changes the voltage
+    (a plate capacitor pulled apart).  Cmin keeps v = Q / C finite if C reaches 0.
+    """
+
+    C = RealInput()
+    Cmin = ac.Parameter(1e-15, unit="F", min=0, description="lower bound of C")
+    Q = ac.Variable(start=0.0, unit="C", description="charge on the p plate")
+
+    def stored_energy(self):
+        """W = Q v / 2 = Q^2 / (2 C)."""
+        return self.Q * self.v / 2
+
+    def created_power(self):
+        """-v^2 der(C) / 2: the work of whatever changes C (dW/dt = v i - v^2 C'/2 at
+        constant charge; the field pulls the plates together)."""
+        return -self.v**2 * ac.der(self.C.signal) / 2
+
+    def equations(self):
+        return [ac.Eq(self.Q, ac.max(self.C.signal, self.Cmin) * self.v),
+                ac.Eq(self.i, ac.der(self.Q))]
+
+
+class VariableInductor(OnePort):
+    """Inductor whose inductance is a signal (MSL Analog.Basic.VariableInductor),
+    flux form:
+
+        Psi = max(L, Lmin) i,   v = der(Psi)
+    """
+
+    L = RealInput()
+    Lmin = ac.Parameter(1e-15, unit="H", min=0, description="lower bound of L")
+    Psi = ac.Variable(start=0.0, unit="Wb", description="flux linkage")
+
+    def stored_energy(self):
+        """W = Psi i / 2 = Psi^2 / (2 L)."""
+        return self.Psi * self.i / 2
+
+    def created_power(self):
+        """-i^2 der(L) / 2: the work of whatever changes L at constant flux."""
+        return -self.i**2 * ac.der(self.L.signal) / 2
+
+    def equations(self):
+        return [ac.Eq(self.Psi, ac.max(self.L.signal, self.Lmin) * self.i),
+                ac.Eq(self.v, ac.der(self.Psi))]
+
+
+class Potentiometer(ac.Component):
+    """Adjustable resistor with a sliding contact (MSL Analog.Basic.Potentiometer), the
+    contact at r between pin_n (r = 0) and pin_p (r = 1):
+
+        Rp = R (1 - r_c),   Rn = R r_c,   r_c = min(1, max(0, r))
+        pin_p.v - contact.v = Rp pin_p.i,   pin_n.v - contact.v = Rn pin_n.i
+        pin_p.i + pin_n.i + contact.i = 0
+
+    r is the parameter rConstant, or with ``Potentiometer(useRinput=True)`` the signal
+    input ``r`` (a structural choice, as the MSL's useRinput).
+    """
+
+    R = ac.Parameter(1.0, unit="Ohm", min=0, description="total resistance")
+    rConstant = ac.Parameter(0.5, min=0, max=1,
+                             description="contact position without the input r")
+    pin_p = Pin()
+    pin_n = Pin()
+    contact = Pin()
+    Rp = ac.Variable(unit="Ohm", description="resistance between pin_p and contact")
+    Rn = ac.Variable(unit="Ohm", description="resistance between contact and pin_n")
+
+    def __init__(self, *, useRinput=False, **modifications):
+        super().__init__(**modifications)
+        if not isinstance(useRinput, bool):
+            raise ac.ModelError(f"Potentiometer: useRinput must be True or False, not "
+                                f"{useRinput!r}")
+        object.__setattr__(self, "useRinput", useRinput)
+        if useRinput:
+            self.r = RealInput()
+
+    def loss_power(self):
+        """Rp pin_p.i^2 + Rn pin_n.i^2."""
+        return self.Rp * self.pin_p.i**2 + self.Rn * self.pin_n.i**2
+
+    def equations(self):
+        # the parameter is checked against [0, 1]; only the signal needs the clipping
+        r_c = ac.min(1, ac.max(0, self.r.signal)) if self.useRinput else self.rConstant
+        return [ac.Eq(0, self.pin_p.i + self.pin_n.i + self.contact.i),
+                ac.Eq(self.Rp, self.R * (1 - r_c)),
+                ac.Eq(self.Rn, self.R * r_c),
+                ac.Eq(self.pin_p.v - self.contact.v, self.Rp * self.pin_p.i),
+                ac.Eq(self.pin_n.v - self.contact.v, self.Rn * self.pin_n.i)]
+
+
+class Transformer(TwoPort):
+    """Two coupled inductors (MSL Analog.Basic.Transformer):
+
+        v1 = L1 der(i1) + M der(i2),   v2 = M der(i1) + L2 der(i2)
+
+    (M^2 <= L1 L2 for a physical transformer; equality is the ideal coupling, which
+    makes the two currents dependent.)
+    """
+
+    L1 = ac.Parameter(1.0, unit="H", min=0, description="primary inductance")
+    L2 = ac.Parameter(1.0, unit="H", min=0, description="secondary inductance")
+    M = ac.Parameter(1.0, unit="H", description="coupling inductance")
+
+    def stored_energy(self):
+        """W = L1 i1^2 / 2 + M i1 i2 + L2 i2^2 / 2."""
+        return self.L1 * self.i1**2 / 2 + self.M * self.i1 * self.i2 + self.L2 * self.i2**2 / 2
+
+    def equations(self):
+        di1, di2 = ac.der(self.i1), ac.der(self.i2)
+        return [ac.Eq(self.v1, self.L1 * di1 + self.M * di2),
+                ac.Eq(self.v2, self.M * di1 + self.L2 * di2)]
+
+
+class Gyrator(TwoPort):
+    """Gyrator (MSL Analog.Basic.Gyrator):  i1 = G2 v2,   i2 = -G1 v1
+
+    (lossless for G1 = G2: v1 i1 + v2 i2 = (G2 - G1) v1 v2).
+    """
+
+    G1 = ac.Parameter(1.0, unit="S", description="gyration conductance, port 1")
+    G2 = ac.Parameter(1.0, unit="S", description="gyration conductance, port 2")
+
+    energy_role = "source"  # lossless only when G1 = G2; any difference comes from outside
+
+    def equations(self):
+        return [ac.Eq(self.i1, self.G2 * self.v2),
+                ac.Eq(self.i2, -self.G1 * self.v1)]
 
 
 class IdealTransformer(TwoPort):

@@ -11,7 +11,8 @@ from acausal.ports import RealInput
 from ..blocks import signals
 from .interfaces import OnePort
 
-__all__ = ["ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "PulseVoltage",
+__all__ = ["ConstantVoltage", "StepVoltage", "RampVoltage", "SineVoltage", "CosineVoltage",
+           "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
            "SignalVoltage", "ConstantCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "PulseCurrent", "SignalCurrent"]
 
@@ -91,6 +92,40 @@ class SineVoltage(OnePort):
         return [ac.Eq(self.v, self.offset + wave)]
 
 
+class CosineVoltage(OnePort):
+    """Cosine voltage (MSL CosineVoltage):  v = offset + V cos(2 pi f time + phase)."""
+
+    V = ac.Parameter(1.0, unit="V", description="amplitude")
+    f = ac.Parameter(1.0, unit="Hz", description="frequency")
+    phase = ac.Parameter(0.0, unit="rad", description="phase")
+    offset = ac.Parameter(0.0, unit="V", description="offset")
+
+    energy_role = "source"  # delivers -v i
+
+    def equations(self):
+        wave = self.V * sp.cos(2 * sp.pi * self.f * ac.time + self.phase)
+        return [ac.Eq(self.v, self.offset + wave)]
+
+
+class ExpSineVoltage(_VoltageSource):
+    """Exponentially damped sine voltage (MSL ExpSineVoltage), after startTime:
+
+        v = offset + V exp(-damping (time - startTime)) sin(2 pi f (time - startTime) + phase)
+    """
+
+    V = ac.Parameter(1.0, unit="V", description="amplitude at startTime")
+    f = ac.Parameter(1.0, unit="Hz", description="frequency")
+    phase = ac.Parameter(0.0, unit="rad", description="phase at startTime")
+    damping = ac.Parameter(1.0, unit="1/s", description="damping coefficient")
+
+    def signal(self):
+        tau = ac.time - self.startTime
+        wave = (self.V * ac.exp(-self.damping * tau)
+                * sp.sin(2 * sp.pi * self.f * tau + self.phase))
+        # gated as a whole: exp(-damping tau) before startTime may overflow
+        return ac.if_else(tau >= 0, wave, 0)
+
+
 class PulseVoltage(_VoltageSource):
     """Pulse train:  v = offset + V during the first fraction ``width`` of each period."""
 
@@ -100,6 +135,27 @@ class PulseVoltage(_VoltageSource):
 
     def signal(self):
         return signals.pulse(self.V, self.width, self.period, self.startTime)
+
+
+class TrapezoidVoltage(_VoltageSource):
+    """Periodic trapezoid voltage (MSL TrapezoidVoltage, endless):  v = offset + V times
+    a rise over ``rising``, ``width`` at the top and a fall over ``falling`` in every
+    ``period`` after startTime (``blocks.signals.trapezoid``)."""
+
+    V = ac.Parameter(1.0, unit="V", description="height of the trapezoid")
+    rising = ac.Parameter(0.1, unit="s", min=0, description="rise time (> 0)")
+    width = ac.Parameter(0.5, unit="s", min=0, description="time at the top")
+    falling = ac.Parameter(0.1, unit="s", min=0, description="fall time (> 0)")
+    period = ac.Parameter(1.0, unit="s", min=0, description="period")
+
+    def signal(self):
+        for name in ("rising", "falling", "period"):
+            if self.parameter_value(name) == 0:
+                # a zero would divide the edge's slope by a structural zero
+                raise ac.ModelError(f"{self._describe()}: {name} must be > 0 (a "
+                                    "PulseVoltage has vertical edges)")
+        return signals.trapezoid(self.V, self.rising, self.width, self.falling,
+                                 self.period, self.startTime)
 
 
 class SignalVoltage(OnePort):

@@ -4,39 +4,54 @@ from acausal.ports import NegativePin, PositivePin, RealInput, RotationalFlange
 
 from ..electrical import Ground, Inductor, OnePort, Resistor, SignalCurrent
 from ..rotational import Inertia
+from ..support import SupportMixin
 
 __all__ = ["EMF", "DCMotor", "CurrentControlledDCMotor"]
 
 
-class EMF(OnePort):
+class EMF(SupportMixin, OnePort):
     """Ideal electromechanical converter (Egeland & Gravdahl 3.3.2, (3.27)-(3.28)):
 
         v = k w,   tau = k i,   so  v i = tau w  (power in = power out),
-        w = der(flange.phi),  flange.tau = -tau
+        w = der(flange.phi - phi_support),  flange.tau = -tau
 
     The electrical side is a one-port: v is the back EMF, i the armature current.
+    ``EMF(useSupport=True)`` has a ``support`` flange (the stator) that takes the
+    reaction, support.tau = -flange.tau, and w is the speed relative to it (MSL EMF);
+    without it the stator is fixed.
     """
 
     k = ac.Parameter(1.0, unit="N.m/A", description="torque (= back-EMF) constant")
     flange = RotationalFlange()
-    w = ac.Variable(unit="rad/s", description="shaft speed")
+    w = ac.Variable(unit="rad/s", description="shaft speed relative to the stator")
     tau = ac.Variable(unit="N.m", description="motor torque")
 
     energy_role = "lossless"  # v i = tau w
 
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, *, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+
     def equations(self):
-        return [ac.Eq(self.w, ac.der(self.flange.phi)),
-                ac.Eq(self.v, self.k * self.w),
-                ac.Eq(self.tau, self.k * self.i),
-                ac.Eq(self.flange.tau, -self.tau)]
+        eqs = [ac.Eq(self.w, ac.der(self.flange.phi - self.support_position("support", "phi"))),
+               ac.Eq(self.v, self.k * self.w),
+               ac.Eq(self.tau, self.k * self.i),
+               ac.Eq(self.flange.tau, -self.tau)]
+        if self.supported("support"):
+            eqs.append(ac.Eq(self.support.tau, -self.flange.tau))
+        return eqs
 
 
-class DCMotor(ac.Component):
+class DCMotor(SupportMixin, ac.Component):
     """DC motor with constant field (Egeland & Gravdahl (3.29)-(3.31)):
 
         L_a di_a/dt = u_a - R_a i_a - k w,    J dw/dt = k i_a - T_L
 
     made of an armature resistor and inductor, an EMF and the rotor inertia.
+    ``DCMotor(useSupport=True)`` mounts the stator on a ``support`` flange that takes the
+    reaction torque (a motor on a moving or elastic housing; MSL machines' useSupport).
     """
 
     R = ac.Parameter(1.0, unit="Ohm", description="armature resistance R_a")
@@ -51,13 +66,24 @@ class DCMotor(ac.Component):
     emf = EMF(k=ac.ref("k"))
     rotor = Inertia(J=ac.ref("J"))
 
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, *, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+        if useSupport:          # the stator reaction goes through the EMF's support
+            self.emf = EMF(k=ac.ref("k"), useSupport=True)
+
     def equations(self):
-        return [ac.connect(self.p, self.Ra.p),
-                ac.connect(self.Ra.n, self.La.p),
-                ac.connect(self.La.n, self.emf.p),
-                ac.connect(self.emf.n, self.n),
-                ac.connect(self.emf.flange, self.rotor.flange_a),
-                ac.connect(self.rotor.flange_b, self.flange)]
+        eqs = [ac.connect(self.p, self.Ra.p),
+               ac.connect(self.Ra.n, self.La.p),
+               ac.connect(self.La.n, self.emf.p),
+               ac.connect(self.emf.n, self.n),
+               ac.connect(self.emf.flange, self.rotor.flange_a),
+               ac.connect(self.rotor.flange_b, self.flange)]
+        if self.supported("support"):
+            eqs.append(ac.connect(self.emf.support, self.support))
+        return eqs
 
 
 class CurrentControlledDCMotor(ac.Component):

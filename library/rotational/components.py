@@ -2,13 +2,16 @@
 import sympy as sp
 
 import acausal as ac
+from acausal.ports import RotationalFlange
 
-from .interfaces import (PartialCompliant, PartialElementaryOneFlange,
-                         PartialElementaryRotationalToTranslational, PartialTwoFlanges)
+from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
+                         PartialElementaryOneFlange,
+                         PartialElementaryRotationalToTranslational,
+                         PartialElementaryTwoFlangesAndSupport, PartialTwoFlanges)
 
-__all__ = ["Fixed", "Inertia", "Spring", "Damper", "SpringDamper", "IdealGear",
-           "IdealGearR2T", "IdealRollingWheel", "RackAndPinion", "ElasticGearWithDeadzone",
-           "GearWithBacklash"]
+__all__ = ["Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
+           "IdealPlanetary", "IdealGearR2T", "IdealRollingWheel", "RackAndPinion",
+           "ElastoBacklash", "ElasticGearWithDeadzone", "GearWithBacklash"]
 
 
 class Fixed(PartialElementaryOneFlange):
@@ -46,6 +49,22 @@ class Inertia(PartialTwoFlanges):
                 ac.Eq(self.J * self.a, self.flange_a.tau + self.flange_b.tau)]
 
 
+class Disc(PartialTwoFlanges):
+    """A massless disc that turns flange_b by a fixed angle against flange_a (MSL
+    Components.Disc):
+
+        flange_b.phi = flange_a.phi + deltaPhi,   0 = flange_a.tau + flange_b.tau
+    """
+
+    deltaPhi = ac.Parameter(0.0, unit="rad", description="angle of flange_b to flange_a")
+
+    energy_role = "lossless"  # rigid and massless
+
+    def equations(self):
+        return [ac.Eq(self.flange_b.phi, self.flange_a.phi + self.deltaPhi),
+                ac.Eq(0, self.flange_a.tau + self.flange_b.tau)]
+
+
 class Spring(PartialCompliant):
     """Linear torsional spring:  tau = c (phi_rel - phi_rel0)."""
 
@@ -60,46 +79,64 @@ class Spring(PartialCompliant):
         return [ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0))]
 
 
-class Damper(PartialCompliant):
-    """Linear torsional damper:  tau = d der(phi_rel)."""
+class Damper(PartialCompliantWithRelativeStates):
+    """Linear torsional damper (MSL Rotational.Components.Damper):
+
+        tau = d w_rel,   lossPower = d w_rel^2
+
+    ``Damper(stateSelect="prefer")`` makes phi_rel and w_rel preferred states.
+    """
 
     d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
+    lossPower = ac.Variable(unit="W", description="power dissipated, d w_rel^2 >= 0")
 
     def loss_power(self):
-        """d der(phi_rel)^2 (the audit checks it against tau der(phi_rel))."""
-        return self.d * ac.der(self.phi_rel)**2
+        """lossPower (the audit checks it against the port power tau w_rel)."""
+        return self.lossPower
 
     def equations(self):
-        return [ac.Eq(self.tau, self.d * ac.der(self.phi_rel))]
+        return [ac.Eq(self.tau, self.d * self.w_rel),
+                ac.Eq(self.lossPower, self.d * self.w_rel**2)]
 
 
-class SpringDamper(PartialCompliant):
-    """Spring and damper in parallel:  tau = c (phi_rel - phi_rel0) + d der(phi_rel)."""
+class SpringDamper(PartialCompliantWithRelativeStates):
+    """Spring and damper in parallel (MSL Rotational.Components.SpringDamper):
+
+        tau = c (phi_rel - phi_rel0) + d w_rel,   lossPower = d w_rel^2
+
+    With ``stateSelect="prefer"`` phi_rel and w_rel are preferred states: a stiff
+    shaft keeps its twist accurate however far its ends have turned.
+    """
 
     c = ac.Parameter(1.0e5, unit="N.m/rad", min=0, description="spring constant")
     d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
     phi_rel0 = ac.Parameter(0.0, unit="rad", description="unstretched spring angle")
+    lossPower = ac.Variable(unit="W", description="power dissipated, d w_rel^2 >= 0")
 
     def stored_energy(self):
         """c (phi_rel - phi_rel0)^2 / 2."""
         return self.c * (self.phi_rel - self.phi_rel0)**2 / 2
 
     def loss_power(self):
-        """d der(phi_rel)^2."""
-        return self.d * ac.der(self.phi_rel)**2
+        """lossPower (the audit checks it against the port power tau w_rel)."""
+        return self.lossPower
 
     def equations(self):
-        return [ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0)
-                      + self.d * ac.der(self.phi_rel))]
+        return [ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0) + self.d * self.w_rel),
+                ac.Eq(self.lossPower, self.d * self.w_rel**2)]
 
 
-class IdealGear(PartialTwoFlanges):
-    """Ideal gear without inertia (Egeland & Gravdahl 3.2.3, (3.1)-(3.4)):
+class IdealGear(PartialElementaryTwoFlangesAndSupport):
+    """Ideal gear without inertia (Egeland & Gravdahl 3.2.3, (3.1)-(3.4); MSL
+    Rotational.Components.IdealGear), with the angles taken from its housing:
 
-        flange_a.phi = n flange_b.phi,   0 = n flange_a.tau + flange_b.tau
+        flange_a.phi - phi_support = n (flange_b.phi - phi_support)
+        0 = n flange_a.tau + flange_b.tau,   support.tau = -flange_a.tau - flange_b.tau
 
-    With both flanges on inertias this is a position constraint between two states:
-    index 3, which index reduction handles.
+    ``IdealGear(useSupport=True)`` mounts it on a ``support`` flange (a gearbox on a
+    moving or elastic housing, which then takes the reaction torque); by default the
+    housing is fixed.  With both flanges on inertias this is a position constraint
+    between two states: index 3, which index reduction handles.
     """
 
     n = ac.Parameter(1.0, description="gear ratio flange_a.phi / flange_b.phi")
@@ -107,14 +144,41 @@ class IdealGear(PartialTwoFlanges):
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
-        return [ac.Eq(self.flange_a.phi, self.n * self.flange_b.phi),
+        phi_s = self.phi_support()
+        return [ac.Eq(self.flange_a.phi - phi_s, self.n * (self.flange_b.phi - phi_s)),
                 ac.Eq(0, self.n * self.flange_a.tau + self.flange_b.tau)]
 
 
-class IdealGearR2T(PartialElementaryRotationalToTranslational):
-    """Ideal gear from rotation to translation (Modelica IdealGearR2T):
+class IdealPlanetary(ac.Component):
+    """Ideal planetary gear without inertia (MSL Rotational.Components.IdealPlanetary):
+    sun, planet carrier and ring, with ratio = z_ring / z_sun:
 
-        flangeR.phi = ratio flangeT.s,   0 = ratio flangeR.tau + flangeT.f
+        (1 + ratio) carrier.phi = sun.phi + ratio ring.phi          (Willis' equation)
+        ring.tau = ratio sun.tau,   carrier.tau = -(1 + ratio) sun.tau
+
+    The three torques sum to zero (no housing) and so do the powers.
+    """
+
+    ratio = ac.Parameter(2.0, min=0, description="number of ring teeth / sun teeth")
+    sun = RotationalFlange()
+    carrier = RotationalFlange()
+    ring = RotationalFlange()
+
+    energy_role = "lossless"  # sun.tau (w_sun + ratio w_ring - (1 + ratio) w_carrier) = 0
+
+    def equations(self):
+        r = self.ratio
+        return [ac.Eq((1 + r) * self.carrier.phi, self.sun.phi + r * self.ring.phi),
+                ac.Eq(self.ring.tau, r * self.sun.tau),
+                ac.Eq(self.carrier.tau, -(1 + r) * self.sun.tau)]
+
+
+class IdealGearR2T(PartialElementaryRotationalToTranslational):
+    """Ideal gear from rotation to translation (MSL IdealGearR2T), each side measured
+    from its support:
+
+        flangeR.phi - phi_supportR = ratio (flangeT.s - s_supportT)
+        0 = ratio flangeR.tau + flangeT.f
     """
 
     ratio = ac.Parameter(1.0, unit="rad/m", description="flangeR.phi / flangeT.s")
@@ -122,14 +186,16 @@ class IdealGearR2T(PartialElementaryRotationalToTranslational):
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
-        return [ac.Eq(self.flangeR.phi, self.ratio * self.flangeT.s),
+        return [ac.Eq(self.flangeR.phi - self.phi_supportR(),
+                      self.ratio * (self.flangeT.s - self.s_supportT())),
                 ac.Eq(0, self.ratio * self.flangeR.tau + self.flangeT.f)]
 
 
 class IdealRollingWheel(PartialElementaryRotationalToTranslational):
-    """Wheel rolling without slip on the ground (Modelica IdealRollingWheel):
+    """Wheel rolling without slip (MSL IdealRollingWheel), on supports:
 
-        flangeT.s = radius flangeR.phi,   0 = radius flangeT.f + flangeR.tau
+        flangeT.s - s_supportT = radius (flangeR.phi - phi_supportR)
+        0 = radius flangeT.f + flangeR.tau
     """
 
     radius = ac.Parameter(0.3, unit="m", min=0, description="wheel radius")
@@ -137,15 +203,18 @@ class IdealRollingWheel(PartialElementaryRotationalToTranslational):
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
-        return [ac.Eq(self.flangeT.s, self.radius * self.flangeR.phi),
+        return [ac.Eq(self.flangeT.s - self.s_supportT(),
+                      self.radius * (self.flangeR.phi - self.phi_supportR())),
                 ac.Eq(0, self.radius * self.flangeT.f + self.flangeR.tau)]
 
 
 class RackAndPinion(PartialElementaryRotationalToTranslational):
     """Rack and pinion, the rotation-to-translation transformer of Egeland & Gravdahl
-    3.2.5, (3.14)-(3.15):  v = r w_m,  F = T_L / r.  At position level:
+    3.2.5, (3.14)-(3.15):  v = r w_m,  F = T_L / r.  At position level, each side
+    measured from its support:
 
-        flangeT.s = r flangeR.phi,   0 = r flangeT.f + flangeR.tau
+        flangeT.s - s_supportT = r (flangeR.phi - phi_supportR)
+        0 = r flangeT.f + flangeR.tau
 
     (flangeR.tau = T_L is the load torque on the motor, -flangeT.f = F the force on
     the rack.)
@@ -156,8 +225,61 @@ class RackAndPinion(PartialElementaryRotationalToTranslational):
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
-        return [ac.Eq(self.flangeT.s, self.r * self.flangeR.phi),
+        return [ac.Eq(self.flangeT.s - self.s_supportT(),
+                      self.r * (self.flangeR.phi - self.phi_supportR())),
                 ac.Eq(0, self.r * self.flangeT.f + self.flangeR.tau)]
+
+
+class ElastoBacklash(PartialCompliantWithRelativeStates):
+    """Backlash in series with a spring and damper in parallel (MSL
+    Rotational.Components.ElastoBacklash), with phi_diff = phi_rel - phi_rel0:
+
+        tau_c = c (phi_diff - b/2) above b/2,  c (phi_diff + b/2) below -b/2,  else 0
+        tau_d = d w_rel
+        tau = 0 in the backlash (|phi_diff| <= b/2); in contact above b/2
+        tau = 0 if tau_c + tau_d <= 0 (it would pull: the teeth separate),
+              else tau_c + min(tau_c, tau_d)          (mirrored below -b/2)
+        lossPower = (tau - tau_c) w_rel
+
+    The damping torque is limited by the spring torque, so the contact torque starts
+    from 0 and never pulls.  lossPower is what the stored energy c (|phi_diff| - b/2)^2/2
+    does not account for: the limited damping and, while the teeth separate with the
+    spring still deflected, the spring energy that is released (the MSL books 0 there).
+    Entering and leaving the backlash are events; the limiting inside the contact is
+    evaluated without events (as the MSL's noEvent).
+    b must be positive (the MSL replaces a backlash below 1e-10 rad by a plain
+    spring-damper).  The MSL's smoothed characteristic during initialization is not
+    reproduced: give start values that fix the initial contact state.
+    """
+
+    c = ac.Parameter(1.0e5, unit="N.m/rad", min=0, description="spring constant")
+    d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
+    b = ac.Parameter(0.01, unit="rad", min=0, description="total backlash")
+    phi_rel0 = ac.Parameter(0.0, unit="rad", description="unstretched spring angle")
+    tau_c = ac.Variable(unit="N.m", description="spring torque")
+    tau_d = ac.Variable(unit="N.m", description="damper torque d w_rel")
+    lossPower = ac.Variable(unit="W", description="power dissipated, >= 0")
+
+    def stored_energy(self):
+        """c (|phi_diff| - b/2)^2 / 2 in contact, 0 in the backlash."""
+        phi, half = self.phi_rel - self.phi_rel0, self.b / 2
+        return ac.if_else(phi > half, self.c * (phi - half)**2 / 2,
+                          ac.if_else(phi < -half, self.c * (phi + half)**2 / 2, 0))
+
+    def loss_power(self):
+        return self.lossPower
+
+    def equations(self):
+        phi, half = self.phi_rel - self.phi_rel0, self.b / 2
+        tau_c, tau_d = self.tau_c, self.tau_d
+        pushing = ac.no_event(ac.if_else(tau_c + tau_d <= 0, 0, tau_c + ac.min(tau_c, tau_d)))
+        pulling = ac.no_event(ac.if_else(tau_c + tau_d >= 0, 0, tau_c + ac.max(tau_c, tau_d)))
+        return [ac.Eq(tau_c, ac.if_else(phi > half, self.c * (phi - half),
+                                        ac.if_else(phi < -half, self.c * (phi + half), 0))),
+                ac.Eq(tau_d, self.d * self.w_rel),
+                ac.Eq(self.tau, ac.if_else(phi > half, pushing,
+                                           ac.if_else(phi < -half, pulling, 0))),
+                ac.Eq(self.lossPower, (self.tau - tau_c) * self.w_rel)]
 
 
 class ElasticGearWithDeadzone(PartialTwoFlanges):

@@ -6,8 +6,13 @@ component), so rigid couplings are position constraints.
 import acausal as ac
 from acausal.ports import RotationalFlange, TranslationalFlange
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
+from ..relative_states import RelativeStatesMixin
+from ..support import SupportMixin
+
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
+           "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
+           "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport",
            "PartialElementaryRotationalToTranslational"]
 
 
@@ -29,6 +34,39 @@ class PartialCompliant(PartialTwoFlanges):
 
     def equations(self):
         return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
+                ac.Eq(self.flange_b.tau, self.tau),
+                ac.Eq(self.flange_a.tau, -self.tau)]
+
+
+class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges):
+    """A compliant connection whose relative angle and speed may be chosen as states
+    (MSL PartialCompliantWithRelativeStates):
+
+        phi_rel = flange_b.phi - flange_a.phi,   w_rel = der(phi_rel),
+        flange_b.tau = tau,   flange_a.tau = -tau
+        acc.a_rel = der(w_rel)          (only with stateSelect "prefer" or "always")
+
+    ``stateSelect`` is the state priority of phi_rel and w_rel: "prefer" for a stiff
+    shaft (the MSL's default); by default ("default") the model keeps the states it
+    would have with ``PartialCompliant`` (see ``acausal.library.relative_states``).
+    """
+
+    phi_rel = ac.Variable(start=0.0, unit="rad", nominal=1e-4,
+                          description="relative rotation angle flange_b.phi - flange_a.phi")
+    w_rel = ac.Variable(start=0.0, unit="rad/s",
+                        description="relative angular velocity der(phi_rel)")
+    tau = ac.Variable(unit="N.m", description="torque between the flanges")
+
+    _relative_states = ("phi_rel", "w_rel")
+
+    def __init__(self, *, stateSelect="default", **modifications):
+        super().__init__(**modifications)
+        self._select(stateSelect)
+
+    def equations(self):
+        return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
+                ac.Eq(self.w_rel, ac.der(self.phi_rel)),
+                *self.acceleration_equations(),
                 ac.Eq(self.flange_b.tau, self.tau),
                 ac.Eq(self.flange_a.tau, -self.tau)]
 
@@ -60,9 +98,87 @@ class PartialRelativeSensor(PartialTwoFlanges):
         return [ac.Eq(0, self.flange_a.tau + self.flange_b.tau)]
 
 
-class PartialElementaryRotationalToTranslational(ac.Component):
+class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFlange):
+    """One flange acting against a support (MSL PartialElementaryOneFlangeAndSupport2):
+
+        support.tau = -flange.tau          (the reaction goes into the housing)
+
+    ``useSupport=True`` creates the flange ``support`` (it must then be connected);
+    without it the housing is fixed, phi_support = 0.  ``phi_support()`` is the
+    support's angle for the component's equations.
+    """
+
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, *, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+
+    def phi_support(self):
+        return self.support_position("support", "phi")
+
+    def equations(self):
+        if not self.supported("support"):
+            return []
+        return [ac.Eq(self.support.tau, -self.flange.tau)]
+
+
+class PartialElementaryTwoFlangesAndSupport(SupportMixin, PartialTwoFlanges):
+    """Two flanges acting against a support (MSL PartialElementaryTwoFlangesAndSupport2),
+    torque-free as a whole:
+
+        support.tau = -flange_a.tau - flange_b.tau
+
+    ``useSupport=True`` creates the flange ``support``; without it phi_support = 0.
+    """
+
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, *, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+
+    def phi_support(self):
+        return self.support_position("support", "phi")
+
+    def equations(self):
+        if not self.supported("support"):
+            return []
+        return [ac.Eq(self.support.tau, -self.flange_a.tau - self.flange_b.tau)]
+
+
+class PartialElementaryRotationalToTranslational(SupportMixin, ac.Component):
     """A rotational flange flangeR and a translational flange flangeT (an ideal,
-    massless converter between the two domains)."""
+    massless converter between the two domains), each acting against its own support
+    (MSL PartialElementaryRotationalToTranslational):
+
+        supportR.tau = -flangeR.tau,   supportT.f = -flangeT.f
+
+    ``useSupportR=True`` / ``useSupportT=True`` create the rotational support
+    ``supportR`` / the translational support ``supportT``; an unused support is fixed
+    at 0 (``phi_supportR()``, ``s_supportT()``).
+    """
 
     flangeR = RotationalFlange()
     flangeT = TranslationalFlange()
+
+    _supports = {"supportR": "useSupportR", "supportT": "useSupportT"}
+
+    def __init__(self, *, useSupportR=False, useSupportT=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"supportR": RotationalFlange, "supportT": TranslationalFlange},
+                    {"useSupportR": useSupportR, "useSupportT": useSupportT})
+
+    def phi_supportR(self):
+        return self.support_position("supportR", "phi")
+
+    def s_supportT(self):
+        return self.support_position("supportT", "s")
+
+    def equations(self):
+        eqs = []
+        if self.supported("supportR"):
+            eqs.append(ac.Eq(self.supportR.tau, -self.flangeR.tau))
+        if self.supported("supportT"):
+            eqs.append(ac.Eq(self.supportT.f, -self.flangeT.f))
+        return eqs

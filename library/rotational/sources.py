@@ -2,18 +2,23 @@
 
 A torque source drives its flange with ``flange.tau = -tau`` (the cut torque into the
 source is minus the torque it exerts).  Speed and angle sources impose the motion of
-their flange and take whatever torque that needs.
+their flange and take whatever torque that needs.  Every source acts against its
+housing: ``useSupport=True`` gives it a ``support`` flange that takes the reaction
+(support.tau = -flange.tau; a motor on a moving frame), and its speed and angle are
+then relative to the support.  Without it the housing is fixed.
 """
 import acausal as ac
 from acausal.ports import RealInput
 
 from ..blocks import signals
-from .interfaces import PartialElementaryOneFlange
+from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
-__all__ = ["ConstantTorque", "StepTorque", "Torque", "ConstantSpeed", "Speed", "Position"]
+__all__ = ["ConstantTorque", "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
+           "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate",
+           "Position"]
 
 
-class ConstantTorque(PartialElementaryOneFlange):
+class ConstantTorque(PartialElementaryOneFlangeAndSupport):
     """Constant torque driving the flange:  flange.tau = -tau_constant.
 
     (A positive torque accelerates the flange in the positive direction; the cut torque
@@ -28,7 +33,7 @@ class ConstantTorque(PartialElementaryOneFlange):
         return [ac.Eq(self.flange.tau, -self.tau_constant)]
 
 
-class StepTorque(PartialElementaryOneFlange):
+class StepTorque(PartialElementaryOneFlangeAndSupport):
     """Torque step:  flange.tau = -(offsetTorque + (stepTorque if time >= startTime))."""
 
     stepTorque = ac.Parameter(1.0, unit="N.m", description="height of the step")
@@ -42,7 +47,7 @@ class StepTorque(PartialElementaryOneFlange):
         return [ac.Eq(self.flange.tau, -tau)]
 
 
-class Torque(PartialElementaryOneFlange):
+class Torque(PartialElementaryOneFlangeAndSupport):
     """Torque set by a signal:  flange.tau = -tau."""
 
     tau = RealInput()
@@ -53,20 +58,89 @@ class Torque(PartialElementaryOneFlange):
         return [ac.Eq(self.flange.tau, -self.tau)]
 
 
-class _SpeedSource(PartialElementaryOneFlange):
-    """The flange's angle phi (a state) and speed w = der(phi)."""
+class Torque2(PartialTwoFlanges):
+    """A signal torque acting between two flanges (MSL Sources.Torque2), pushing
+    flange_b forward and flange_a back:
 
-    phi = ac.Variable(start=0.0, unit="rad", description="angle of the flange")
-    w = ac.Variable(unit="rad/s", description="speed of the flange")
+        flange_a.tau = tau,   flange_b.tau = -tau
+    """
+
+    tau = RealInput()
+
+    energy_role = "source"  # drives the flanges from outside the model
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.tau, self.tau), ac.Eq(self.flange_b.tau, -self.tau)]
+
+
+class _SpeedDependentTorque(PartialElementaryOneFlangeAndSupport):
+    """tau = -flange.tau, a function of the speed w = der(flange.phi - phi_support);
+    ``TorqueDirection=True`` (the MSL's default): the same direction of torque in both
+    directions of rotation, else the torque changes sign with w."""
+
+    tau_nominal = ac.Parameter(1.0, unit="N.m",
+                               description="torque at w_nominal (negative: a load)")
+    w_nominal = ac.Parameter(1.0, unit="rad/s", min=0, description="nominal speed")
+    w = ac.Variable(unit="rad/s", description="speed of the flange (to support)")
+    tau = ac.Variable(unit="N.m", description="accelerating torque at the flange")
+
+    energy_role = "source"  # drives (or brakes) the flange from outside the model
+
+    def __init__(self, *, TorqueDirection=True, **modifications):
+        super().__init__(**modifications)
+        if not isinstance(TorqueDirection, bool):
+            raise ac.ModelError(f"{type(self).__name__}: TorqueDirection must be True or "
+                                f"False, not {TorqueDirection!r}")
+        object.__setattr__(self, "TorqueDirection", TorqueDirection)
+
+    def law(self, x):
+        raise NotImplementedError
+
+    def equations(self):
+        return [ac.Eq(self.w, ac.der(self.flange.phi - self.phi_support())),
+                ac.Eq(self.tau, -self.flange.tau),
+                ac.Eq(self.tau, self.tau_nominal * self.law(self.w / self.w_nominal))]
+
+
+class LinearSpeedDependentTorque(_SpeedDependentTorque):
+    """Torque linear in speed (MSL Sources.LinearSpeedDependentTorque):
+
+        tau = tau_nominal |w / w_nominal|   (TorqueDirection=True)
+        tau = tau_nominal w / w_nominal     (TorqueDirection=False)
+    """
+
+    def law(self, x):
+        return ac.abs(x) if self.TorqueDirection else x
+
+
+class QuadraticSpeedDependentTorque(_SpeedDependentTorque):
+    """Torque quadratic in speed (MSL Sources.QuadraticSpeedDependentTorque), e.g. a fan
+    or a pump as a load (tau_nominal < 0, TorqueDirection=False):
+
+        tau = tau_nominal (w / w_nominal)^2             (TorqueDirection=True)
+        tau = tau_nominal (w / w_nominal) |w / w_nominal|   (TorqueDirection=False)
+    """
+
+    def law(self, x):
+        return x**2 if self.TorqueDirection else x * ac.abs(x)
+
+
+class _SpeedSource(PartialElementaryOneFlangeAndSupport):
+    """The flange's angle phi relative to the support (a state) and its speed
+    w = der(phi)."""
+
+    phi = ac.Variable(start=0.0, unit="rad", description="angle of the flange (to support)")
+    w = ac.Variable(unit="rad/s", description="speed of the flange (to support)")
 
     energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
-        return [ac.Eq(self.phi, self.flange.phi), ac.Eq(self.w, ac.der(self.phi))]
+        return [ac.Eq(self.phi, self.flange.phi - self.phi_support()),
+                ac.Eq(self.w, ac.der(self.phi))]
 
 
 class ConstantSpeed(_SpeedSource):
-    """Flange turning at constant speed:  der(flange.phi) = w_fixed."""
+    """Flange turning at constant speed:  der(flange.phi - phi_support) = w_fixed."""
 
     w_fixed = ac.Parameter(1.0, unit="rad/s", description="imposed speed")
 
@@ -75,7 +149,7 @@ class ConstantSpeed(_SpeedSource):
 
 
 class Speed(_SpeedSource):
-    """Flange speed set by a signal:  der(flange.phi) = w_ref."""
+    """Flange speed set by a signal:  der(flange.phi - phi_support) = w_ref."""
 
     w_ref = RealInput()
 
@@ -83,8 +157,23 @@ class Speed(_SpeedSource):
         return [ac.Eq(self.w, self.w_ref)]
 
 
-class Position(PartialElementaryOneFlange):
-    """Flange angle set by a signal:  flange.phi = phi_ref.
+class Accelerate(_SpeedSource):
+    """Flange acceleration set by a signal (MSL Sources.Accelerate), from the start
+    values of phi and w (relative to the support):
+
+        a = der(w) = a_ref
+    """
+
+    a_ref = RealInput()
+    a = ac.Variable(unit="rad/s2", description="acceleration of the flange (to support)")
+
+    def equations(self):
+        return [ac.Eq(self.a, ac.der(self.w)),
+                ac.Eq(self.a, self.a_ref)]
+
+
+class Position(PartialElementaryOneFlangeAndSupport):
+    """Flange angle set by a signal:  flange.phi - phi_support = phi_ref.
 
     Driving an inertia, this differentiates phi_ref twice (index reduction), so the
     signal must be twice differentiable in the model (a Sine, or a filtered reference);
@@ -96,4 +185,4 @@ class Position(PartialElementaryOneFlange):
     energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
-        return [ac.Eq(self.flange.phi, self.phi_ref)]
+        return [ac.Eq(self.flange.phi - self.phi_support(), self.phi_ref)]

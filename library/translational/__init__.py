@@ -1,19 +1,26 @@
 """1-D translational mechanics."""
 from ... import _lazy_exports
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
-           "PartialAbsoluteSensor", "PartialRelativeSensor", "Fixed", "Mass", "MassWithStop",
-           "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force",
-           "ConstantSpeed", "Speed", "Position", "PositionSensor", "SpeedSensor", "RelPositionSensor",
-           "ForceSensor", "PowerSensor"]
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
+           "PartialElementaryOneFlange",
+           "PartialAbsoluteSensor", "PartialRelativeSensor",
+           "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "Rod", "MassWithStop",
+           "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force", "Force2",
+           "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "ConstantSpeed",
+           "Speed", "Accelerate", "Position", "PositionSensor", "SpeedSensor", "AccSensor",
+           "RelPositionSensor", "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Spring", "SpringDamper"),
+    ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Rod", "Spring",
+                    "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
-                    "PartialElementaryOneFlange", "PartialRelativeSensor",
+                    "PartialCompliantWithRelativeStates",
+                    "PartialElementaryOneFlange", "PartialElementaryOneFlangeAndSupport",
+                    "PartialRelativeSensor",
                     "PartialTwoFlanges"),
-    ".sensors": ("ForceSensor", "PositionSensor", "PowerSensor", "RelPositionSensor",
-                 "SpeedSensor"),
-    ".sources": ("ConstantForce", "ConstantSpeed", "Force", "Position", "Speed",
-                 "StepForce"),
+    ".sensors": ("AccSensor", "ForceSensor", "PositionSensor", "PowerSensor", "RelAccSensor",
+                 "RelPositionSensor", "RelSpeedSensor", "SpeedSensor"),
+    ".sources": ("Accelerate", "ConstantForce", "ConstantSpeed", "Force", "Force2",
+                 "LinearSpeedDependentForce", "Position", "QuadraticSpeedDependentForce",
+                 "Speed", "StepForce"),
 })

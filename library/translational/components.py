@@ -4,9 +4,10 @@ import sympy as sp
 
 import acausal as ac
 
-from .interfaces import PartialCompliant, PartialElementaryOneFlange, PartialTwoFlanges
+from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
+                         PartialElementaryOneFlange, PartialTwoFlanges)
 
-__all__ = ["Fixed", "Mass", "Spring", "Damper", "SpringDamper", "MassWithStop"]
+__all__ = ["Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "MassWithStop"]
 
 
 class Fixed(PartialElementaryOneFlange):
@@ -43,6 +44,23 @@ class Mass(PartialTwoFlanges):
                 ac.Eq(self.m * self.a, self.flange_a.f + self.flange_b.f)]
 
 
+class Rod(PartialTwoFlanges):
+    """Massless rigid rod of length L (MSL Translational.Components.Rod), its centre at s:
+
+        flange_a.s = s - L/2,   flange_b.s = s + L/2,   0 = flange_a.f + flange_b.f
+    """
+
+    L = ac.Parameter(0.0, unit="m", min=0, description="length of the rod")
+    s = ac.Variable(start=0.0, unit="m", description="position of the centre")
+
+    energy_role = "lossless"  # rigid and massless
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.s, self.s - self.L / 2),
+                ac.Eq(self.flange_b.s, self.s + self.L / 2),
+                ac.Eq(0, self.flange_a.f + self.flange_b.f)]
+
+
 class Spring(PartialCompliant):
     """Linear spring:  f = c (s_rel - s_rel0)."""
 
@@ -57,37 +75,49 @@ class Spring(PartialCompliant):
         return [ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0))]
 
 
-class Damper(PartialCompliant):
-    """Linear damper:  f = d der(s_rel)."""
+class Damper(PartialCompliantWithRelativeStates):
+    """Linear damper (Egeland & Gravdahl (2.57); MSL Translational.Components.Damper):
+
+        f = d v_rel,   lossPower = d v_rel^2
+
+    ``Damper(stateSelect="prefer")`` makes s_rel and v_rel preferred states.
+    """
 
     d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
+    lossPower = ac.Variable(unit="W", description="power dissipated, d v_rel^2 >= 0")
 
     def loss_power(self):
-        """d der(s_rel)^2  (Egeland & Gravdahl (2.60); the audit checks it against
-        f der(s_rel))."""
-        return self.d * ac.der(self.s_rel)**2
+        """lossPower = d v_rel^2  (Egeland & Gravdahl (2.60); the audit checks it against
+        the port power f v_rel)."""
+        return self.lossPower
 
     def equations(self):
-        return [ac.Eq(self.f, self.d * ac.der(self.s_rel))]
+        return [ac.Eq(self.f, self.d * self.v_rel),
+                ac.Eq(self.lossPower, self.d * self.v_rel**2)]
 
 
-class SpringDamper(PartialCompliant):
-    """Spring and damper in parallel:  f = c (s_rel - s_rel0) + d der(s_rel)."""
+class SpringDamper(PartialCompliantWithRelativeStates):
+    """Spring and damper in parallel (MSL Translational.Components.SpringDamper):
+
+        f = c (s_rel - s_rel0) + d v_rel,   lossPower = d v_rel^2
+    """
 
     c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")
     d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
     s_rel0 = ac.Parameter(0.0, unit="m", description="unstretched length")
+    lossPower = ac.Variable(unit="W", description="power dissipated, d v_rel^2 >= 0")
 
     def stored_energy(self):
         """c (s_rel - s_rel0)^2 / 2."""
         return self.c * (self.s_rel - self.s_rel0)**2 / 2
 
     def loss_power(self):
-        """d der(s_rel)^2."""
-        return self.d * ac.der(self.s_rel)**2
+        """lossPower = d v_rel^2."""
+        return self.lossPower
 
     def equations(self):
-        return [ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0) + self.d * ac.der(self.s_rel))]
+        return [ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0) + self.d * self.v_rel),
+                ac.Eq(self.lossPower, self.d * self.v_rel**2)]
 
 
 class MassWithStop(PartialTwoFlanges):

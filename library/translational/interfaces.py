@@ -2,8 +2,13 @@
 import acausal as ac
 from acausal.ports import TranslationalFlange
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlange",
-           "PartialAbsoluteSensor", "PartialRelativeSensor"]
+from ..relative_states import LinearAcceleration, RelativeStatesMixin
+from ..support import SupportMixin
+
+__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
+           "PartialElementaryOneFlange",
+           "PartialAbsoluteSensor", "PartialRelativeSensor",
+           "PartialElementaryOneFlangeAndSupport"]
 
 
 class PartialTwoFlanges(ac.Component):
@@ -24,6 +29,39 @@ class PartialCompliant(PartialTwoFlanges):
 
     def equations(self):
         return [ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s),
+                ac.Eq(self.flange_b.f, self.f),
+                ac.Eq(self.flange_a.f, -self.f)]
+
+
+class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges):
+    """A compliant connection whose relative position and speed may be chosen as
+    states (MSL Translational PartialCompliantWithRelativeStates):
+
+        s_rel = flange_b.s - flange_a.s,   v_rel = der(s_rel),
+        flange_b.f = f,   flange_a.f = -f
+        acc.a_rel = der(v_rel)          (only with stateSelect "prefer" or "always")
+
+    ``stateSelect`` is the state priority of s_rel and v_rel: "prefer" for a stiff
+    coupling; by default ("default") the states of ``PartialCompliant`` (see
+    ``acausal.library.relative_states``).
+    """
+
+    s_rel = ac.Variable(start=0.0, unit="m", nominal=1e-4,
+                        description="relative distance flange_b.s - flange_a.s")
+    v_rel = ac.Variable(start=0.0, unit="m/s", description="relative velocity der(s_rel)")
+    f = ac.Variable(unit="N", description="force between the flanges")
+
+    _relative_states = ("s_rel", "v_rel")
+    _acceleration = LinearAcceleration
+
+    def __init__(self, *, stateSelect="default", **modifications):
+        super().__init__(**modifications)
+        self._select(stateSelect)
+
+    def equations(self):
+        return [ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s),
+                ac.Eq(self.v_rel, ac.der(self.s_rel)),
+                *self.acceleration_equations(),
                 ac.Eq(self.flange_b.f, self.f),
                 ac.Eq(self.flange_a.f, -self.f)]
 
@@ -50,3 +88,28 @@ class PartialRelativeSensor(PartialTwoFlanges):
 
     def equations(self):
         return [ac.Eq(0, self.flange_a.f + self.flange_b.f)]
+
+
+class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFlange):
+    """One flange acting against a support (MSL Translational
+    PartialElementaryOneFlangeAndSupport2):
+
+        support.f = -flange.f              (the reaction goes into the housing)
+
+    ``useSupport=True`` creates the flange ``support`` (it must then be connected);
+    without it the housing is fixed, s_support = 0.
+    """
+
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, *, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": TranslationalFlange}, {"useSupport": useSupport})
+
+    def s_support(self):
+        return self.support_position("support", "s")
+
+    def equations(self):
+        if not self.supported("support"):
+            return []
+        return [ac.Eq(self.support.f, -self.flange.f)]

@@ -4,8 +4,8 @@ from acausal.ports import RealOutput
 
 from .interfaces import PartialAbsoluteSensor, PartialRelativeSensor
 
-__all__ = ["PositionSensor", "SpeedSensor", "RelPositionSensor", "ForceSensor",
-           "PowerSensor"]
+__all__ = ["PositionSensor", "SpeedSensor", "AccSensor", "RelPositionSensor",
+           "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor"]
 
 
 class PositionSensor(PartialAbsoluteSensor):
@@ -26,6 +26,17 @@ class SpeedSensor(PartialAbsoluteSensor):
         return [ac.Eq(self.v, ac.der(self.flange.s))]
 
 
+class AccSensor(PartialAbsoluteSensor):
+    """v = der(flange.s),  a = der(v)."""
+
+    a = RealOutput()
+    v = ac.Variable(unit="m/s", description="speed of the flange")
+
+    def equations(self):
+        return [ac.Eq(self.v, ac.der(self.flange.s)),
+                ac.Eq(self.a, ac.der(self.v))]
+
+
 class RelPositionSensor(PartialRelativeSensor):
     """s_rel = flange_b.s - flange_a.s, with no force:  flange_a.f = 0."""
 
@@ -34,6 +45,29 @@ class RelPositionSensor(PartialRelativeSensor):
     def equations(self):
         return [ac.Eq(self.flange_a.f, 0),
                 ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s)]
+
+
+class RelSpeedSensor(PartialRelativeSensor):
+    """v_rel = der(flange_b.s - flange_a.s), with no force:  flange_a.f = 0."""
+
+    v_rel = RealOutput()
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.f, 0),
+                ac.Eq(self.v_rel, ac.der(self.flange_b.s - self.flange_a.s))]
+
+
+class RelAccSensor(PartialRelativeSensor):
+    """v_rel = der(flange_b.s - flange_a.s),  a_rel = der(v_rel), with no force:
+    flange_a.f = 0."""
+
+    a_rel = RealOutput()
+    v_rel = ac.Variable(unit="m/s", description="relative speed")
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.f, 0),
+                ac.Eq(self.v_rel, ac.der(self.flange_b.s - self.flange_a.s)),
+                ac.Eq(self.a_rel, ac.der(self.v_rel))]
 
 
 class ForceSensor(PartialRelativeSensor):

@@ -1,18 +1,22 @@
 """Force, speed and position sources (Modelica.Mechanics.Translational.Sources).
 
 A force source pushes its flange in +s with ``flange.f = -f``; speed and position
-sources impose the motion of their flange and take whatever force that needs.
+sources impose the motion of their flange and take whatever force that needs.  Every
+source acts against its housing: ``useSupport=True`` gives it a ``support`` flange that
+takes the reaction (support.f = -flange.f), and its position and speed are then
+relative to the support.  Without it the housing is fixed.
 """
 import acausal as ac
 from acausal.ports import RealInput
 
 from ..blocks import signals
-from .interfaces import PartialElementaryOneFlange
+from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
-__all__ = ["ConstantForce", "StepForce", "Force", "ConstantSpeed", "Speed", "Position"]
+__all__ = ["ConstantForce", "StepForce", "Force", "Force2", "LinearSpeedDependentForce",
+           "QuadraticSpeedDependentForce", "ConstantSpeed", "Speed", "Accelerate", "Position"]
 
 
-class ConstantForce(PartialElementaryOneFlange):
+class ConstantForce(PartialElementaryOneFlangeAndSupport):
     """Constant force pushing the flange in +s:  flange.f = -f_constant."""
 
     f_constant = ac.Parameter(1.0, unit="N", description="driving force")
@@ -23,7 +27,7 @@ class ConstantForce(PartialElementaryOneFlange):
         return [ac.Eq(self.flange.f, -self.f_constant)]
 
 
-class StepForce(PartialElementaryOneFlange):
+class StepForce(PartialElementaryOneFlangeAndSupport):
     """Force step:  flange.f = -(offsetForce + (stepForce if time >= startTime else 0))."""
 
     stepForce = ac.Parameter(1.0, unit="N", description="height of the step")
@@ -37,7 +41,7 @@ class StepForce(PartialElementaryOneFlange):
         return [ac.Eq(self.flange.f, -f)]
 
 
-class Force(PartialElementaryOneFlange):
+class Force(PartialElementaryOneFlangeAndSupport):
     """Force set by a signal:  flange.f = -f."""
 
     f = RealInput()
@@ -48,20 +52,88 @@ class Force(PartialElementaryOneFlange):
         return [ac.Eq(self.flange.f, -self.f)]
 
 
-class _SpeedSource(PartialElementaryOneFlange):
-    """The flange's position s (a state) and speed v = der(s)."""
+class Force2(PartialTwoFlanges):
+    """A signal force acting between two flanges (MSL Sources.Force2), pushing flange_b
+    forward and flange_a back:
 
-    s = ac.Variable(start=0.0, unit="m", description="position of the flange")
-    v = ac.Variable(unit="m/s", description="speed of the flange")
+        flange_a.f = f,   flange_b.f = -f
+    """
+
+    f = RealInput()
+
+    energy_role = "source"  # drives the flanges from outside the model
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.f, self.f), ac.Eq(self.flange_b.f, -self.f)]
+
+
+class _SpeedDependentForce(PartialElementaryOneFlangeAndSupport):
+    """f = -flange.f, a function of the speed v = der(flange.s - s_support);
+    ``ForceDirection=True`` (the MSL's default): the same direction of force in both
+    directions of motion, else the force changes sign with v."""
+
+    f_nominal = ac.Parameter(1.0, unit="N", description="force at v_nominal (negative: a load)")
+    v_nominal = ac.Parameter(1.0, unit="m/s", min=0, description="nominal speed")
+    v = ac.Variable(unit="m/s", description="speed of the flange (to support)")
+    f = ac.Variable(unit="N", description="accelerating force at the flange")
+
+    energy_role = "source"  # drives (or brakes) the flange from outside the model
+
+    def __init__(self, *, ForceDirection=True, **modifications):
+        super().__init__(**modifications)
+        if not isinstance(ForceDirection, bool):
+            raise ac.ModelError(f"{type(self).__name__}: ForceDirection must be True or "
+                                f"False, not {ForceDirection!r}")
+        object.__setattr__(self, "ForceDirection", ForceDirection)
+
+    def law(self, x):
+        raise NotImplementedError
+
+    def equations(self):
+        return [ac.Eq(self.v, ac.der(self.flange.s - self.s_support())),
+                ac.Eq(self.f, -self.flange.f),
+                ac.Eq(self.f, self.f_nominal * self.law(self.v / self.v_nominal))]
+
+
+class LinearSpeedDependentForce(_SpeedDependentForce):
+    """Force linear in speed (MSL Sources.LinearSpeedDependentForce):
+
+        f = f_nominal |v / v_nominal|   (ForceDirection=True)
+        f = f_nominal v / v_nominal     (ForceDirection=False)
+    """
+
+    def law(self, x):
+        return ac.abs(x) if self.ForceDirection else x
+
+
+class QuadraticSpeedDependentForce(_SpeedDependentForce):
+    """Force quadratic in speed (MSL Sources.QuadraticSpeedDependentForce), e.g. the
+    air drag of a vehicle (f_nominal < 0, ForceDirection=False):
+
+        f = f_nominal (v / v_nominal)^2               (ForceDirection=True)
+        f = f_nominal (v / v_nominal) |v / v_nominal|   (ForceDirection=False)
+    """
+
+    def law(self, x):
+        return x**2 if self.ForceDirection else x * ac.abs(x)
+
+
+class _SpeedSource(PartialElementaryOneFlangeAndSupport):
+    """The flange's position s relative to the support (a state) and its speed
+    v = der(s)."""
+
+    s = ac.Variable(start=0.0, unit="m", description="position of the flange (to support)")
+    v = ac.Variable(unit="m/s", description="speed of the flange (to support)")
 
     energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
-        return [ac.Eq(self.s, self.flange.s), ac.Eq(self.v, ac.der(self.s))]
+        return [ac.Eq(self.s, self.flange.s - self.s_support()),
+                ac.Eq(self.v, ac.der(self.s))]
 
 
 class ConstantSpeed(_SpeedSource):
-    """Flange moving at constant speed:  der(flange.s) = v_fixed."""
+    """Flange moving at constant speed:  der(flange.s - s_support) = v_fixed."""
 
     v_fixed = ac.Parameter(1.0, unit="m/s", description="imposed speed")
 
@@ -70,7 +142,7 @@ class ConstantSpeed(_SpeedSource):
 
 
 class Speed(_SpeedSource):
-    """Flange speed set by a signal:  der(flange.s) = v_ref."""
+    """Flange speed set by a signal:  der(flange.s - s_support) = v_ref."""
 
     v_ref = RealInput()
 
@@ -78,8 +150,23 @@ class Speed(_SpeedSource):
         return [ac.Eq(self.v, self.v_ref)]
 
 
-class Position(PartialElementaryOneFlange):
-    """Flange position set by a signal:  flange.s = s_ref.
+class Accelerate(_SpeedSource):
+    """Flange acceleration set by a signal (MSL Sources.Accelerate), from the start
+    values of s and v (relative to the support):
+
+        a = der(v) = a_ref
+    """
+
+    a_ref = RealInput()
+    a = ac.Variable(unit="m/s2", description="acceleration of the flange (to support)")
+
+    def equations(self):
+        return [ac.Eq(self.a, ac.der(self.v)),
+                ac.Eq(self.a, self.a_ref)]
+
+
+class Position(PartialElementaryOneFlangeAndSupport):
+    """Flange position set by a signal:  flange.s - s_support = s_ref.
 
     Driving a mass, this differentiates s_ref twice (index reduction): the signal must
     be twice differentiable in the model.
@@ -90,4 +177,4 @@ class Position(PartialElementaryOneFlange):
     energy_role = "source"  # drives the flange from outside the model
 
     def equations(self):
-        return [ac.Eq(self.flange.s, self.s_ref)]
+        return [ac.Eq(self.flange.s - self.s_support(), self.s_ref)]

@@ -44,8 +44,7 @@ class NonlinearResistor(OnePort):
     def equations(self):
         outer_low = self.Gb * (self.v + self.Ve) - self.Ga * self.Ve
         outer_high = self.Gb * (self.v - self.Ve) + self.Ga * self.Ve
-        return [*super().equations(),
-                ac.Eq(self.i, ac.if_else(self.v < -self.Ve, outer_low,
+        return [ac.Eq(self.i, ac.if_else(self.v < -self.Ve, outer_low,
                                          ac.if_else(self.v > self.Ve, outer_high,
                                                     self.Ga * self.v)))]
 
