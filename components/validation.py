@@ -18,7 +18,8 @@ from __future__ import annotations
 import difflib
 import math
 
-from .component import InvalidValue, NotInModel, _declarations, _structurals
+from .component import (InvalidValue, NotInModel, _constructor_arguments, _declarations,
+                        _structurals)
 from .declarations import (Parameter, Variable, bound_violation, check_parameter_value,
                            is_symbolic)
 
@@ -65,6 +66,13 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
             except (TypeError, ValueError) as err:
                 raise InvalidValue(f"{where}: variable '{key}': {err}") from None
             out[key] = mod
+        elif key in _constructor_arguments(type(comp)):
+            # a structural argument (a port that exists or not) shapes the instance when
+            # it is created; a modification comes too late for that
+            kind = type(comp).__name__
+            raise InvalidValue(f"{where}: '{key}' is an argument of the constructor, not a "
+                               f"parameter; give it where the component is created: "
+                               f"{kind}({key}={mod!r})")
         elif key in _structurals(type(comp)):
             raise InvalidValue(f"{where}: '{key}' is a structural parameter, fixed when the "
                                f"component is made: write {type(comp).__name__}({key}=...) "

@@ -79,8 +79,9 @@ class WheelsetDAE(ac.Component):
     beta = ac.Variable(start=0.0, fixed=True, unit="rad/s", description="spin perturbation")
     s = ac.Variable(shape=4, start=[0.0295, 0.05, -0.0295, -0.05],
                     description="profile parameters s11, s21, s12, s32")
+    # no unit: lam[0:4] are forces [N], lam[4:6] moments [N.m], and an array has one
     lam = ac.Variable(shape=6, start=[253.0, -5062.0, -253.0, -5062.0, 0.0, 0.0],
-                      unit="N", description="contact multipliers")
+                      description="contact multipliers (forces, then moments)")
     u = ac.Variable(shape=2, start=0.0, min=0.0,
                     description="creep force / (mu N) before saturation, left and right")
 
