@@ -148,8 +148,8 @@ COVERAGE = {
         _HL + "test_lumped_line_closed_at_both_ends_examples_67_68",
         _HL + "test_lumped_line_closed_at_one_end_example_69",
         _HL + "test_lumped_line_frequencies_approach_the_exact_k_pi_c_over_L",
-    ], checks="Ex 67/68: 2 sqrt(2) c/L, 3 c/L and sqrt(3) w_H; Ex 69: 1.5 c/L; and the "
-              "chain's frequencies converging to the exact k pi c/L"),
+    ], checks="Ex 67/68: 2 sqrt(2) c/L (n = 2), 3 c/L and 3 sqrt(3) c/L (n = 3); Ex 69: "
+              "1.5 c/L; the chain's frequencies converging as O(1/n^2) to k pi c/L"),
     "RT-04": dict(tests=[
         _EM + "test_resonance_of_elastic_transmission_3_87",
         _EM + "test_anti_resonance_of_elastic_transmission_3_88",
@@ -339,11 +339,13 @@ COVERAGE = {
     ], checks="with the printed constants and IC: B = 0.1 falls into rotating stall "
               "(closed-form equilibrium, J > 0), B = 1 into a surge limit cycle without "
               "stall, both against DOP853 at rtol 1e-10"),
-    "MB-16": dict(tests=[], reason="no wheelset model: the wheel-rail contact geometry and "
-                  "creep data of 000 §5 are needed for the index-3 contact constraints, and "
-                  "the stability statements are qualitative"),
-    "MB-17": dict(tests=[], reason="no bicycle model: the appendix formulas of 000 §6 are "
-                  "garbled, so only the qualitative weave/capsize speeds remain to check"),
+    "MB-16": dict(tests=[], reason="no wheelset model in the library (the profile-parameter "
+                  "contact constraints and creep forces of 000 §5 are not built, though their "
+                  "data are printed); the printed outcomes are qualitative, from lost figures "
+                  "and unstated initial disturbances"),
+    "MB-17": dict(tests=[], reason="no bicycle model: the matrix entries (6.8.2)-(6.8.5) of "
+                  "000 §6 are garbled, so the weave/capsize speeds (0.6, 4.3, ~6 m/s) cannot "
+                  "be recomputed from the seed alone"),
     "MB-21": dict(tests=[], reason="not reproducible: the aerodynamic data of the re-entry "
                   "vehicle are not given in 000 §8 (INVENTORY says so), so neither the "
                   "consistent alpha_0, beta_0 nor Table 8.1 can be recomputed"),
