@@ -1,9 +1,9 @@
 """The compiler pipeline: the passes by name, in order (as OpenModelica lists its modules).
 
-    flatten -> discrete (floor/mod frozen) -> sampled (discrete variables held,
-            when-assignments checked) -> delays (delay() read from a history) -> alias ->
-            balance -> conversion (Pryce's
-            success test, exact; LC conversion of singular constant blocks) ->
+    flatten -> units (dimensions checked) -> discrete (floor/mod frozen) -> sampled
+            (discrete variables held, when-assignments checked) -> delays (delay() read
+            from a history) -> alias -> balance -> conversion (Pryce's success test,
+            exact; LC conversion of singular constant blocks) ->
             index_reduction (Pantelides) -> state_selection (dummy derivatives, exact
             rank on constant blocks) -> assemble (BLT, tearing checked numerically)
             -> codegen
@@ -30,8 +30,8 @@ from .report import IndexReport
 
 __all__ = ["PASSES", "compile_model"]
 
-PASSES = ("flatten", "discrete", "sampled", "delays", "alias", "balance", "conversion",
-          "index_reduction", "state_selection", "assemble", "codegen")
+PASSES = ("flatten", "units", "discrete", "sampled", "delays", "alias", "balance",
+          "conversion", "index_reduction", "state_selection", "assemble", "codegen")
 
 
 def compile_model(model: Component, backend: str = "auto", cache=False,
