@@ -262,17 +262,7 @@ def _rebuild(flat, kept, subs, table, find, constants):
         if root == v.symbol and root not in constants:
             variables.append(v)
     merged = _merge_attributes(flat, variables, find)
-    derivatives = {}
-    for x, dx in flat.derivatives.items():
-        sign, root = find(x)
-        if root in constants:
-            subs[dx] = sp.Integer(0)
-        elif root != x:
-            rd = flat.derivatives.get(root) or sp.Symbol(f"der({root.name})", real=True)
-            subs[dx] = _signed(sign, rd)
-            derivatives[root] = rd
-        else:
-            derivatives[x] = dx
+    derivatives = _derivatives_after_aliases(flat, find, constants, subs)
     equations = []
     info = {v.symbol: v for v in flat.variables}
     for eq in kept:
@@ -292,6 +282,40 @@ def _rebuild(flat, kept, subs, table, find, constants):
     whens = [_when_after_aliases(w, subs, find, constants) for w in flat.whens]
     return replace(flat, variables=merged, equations=equations, initial_equations=initial,
                    derivatives=derivatives, whens=whens)
+
+
+def _derivatives_after_aliases(flat, find, constants, subs) -> dict:
+    """The derivative chains of the representatives; subs maps every derivative of an
+    eliminated variable onto its representative's (0 for a constant).
+
+    A chain is followed to its end: with s = flange.s and der(der(flange.s)) written,
+    der(der(flange.s)) becomes der(der(s)) (sign included), and the representative's
+    chain grows where an alias's is longer; a derivative left behind would be a symbol
+    that no equation defines."""
+    chains = []
+    for v in flat.variables:
+        chain, at = [], v.symbol
+        while at in flat.derivatives:
+            at = flat.derivatives[at]
+            chain.append(at)
+        if chain:
+            chains.append((find(v.symbol), v.symbol, chain))
+    derivatives = {}
+    # the representatives' own chains first: the symbols their equations already use
+    for (sign, root), x, chain in chains:
+        if root == x and root not in constants:
+            derivatives.update(zip([x, *chain[:-1]], chain))
+    for (sign, root), x, chain in chains:
+        if root in constants:
+            subs.update({dx: sp.Integer(0) for dx in chain})
+        elif root != x:
+            at = root
+            for dx in chain:
+                if at not in derivatives:
+                    derivatives[at] = sp.Symbol(f"der({at.name})", real=True)
+                subs[dx] = _signed(sign, derivatives[at])
+                at = derivatives[at]
+    return derivatives
 
 
 def _when_after_aliases(w, subs, find, constants):
