@@ -17,7 +17,7 @@ from dataclasses import dataclass, field, replace
 
 import sympy as sp
 
-from ..components.component import ModelError
+from ..components.component import InvalidEquation, ModelError
 from .derivative import partial
 from .flatten import FlatEquation, FlatModel
 from .graph import STATE_SELECT
@@ -269,6 +269,8 @@ def _rebuild(flat, kept, subs, table, find, constants):
         r = eq.residual
         if any(q in subs for q in symbols_of(r)):
             r = r.xreplace(subs)
+        if r.has(sp.zoo, sp.nan):
+            raise _divides_by_zero(eq, flat, find, constants)
         if r == 0:
             by_name = {v.name: v.hint for v in flat.variables if v.hint}
             hints = sorted({by_name[w] for w in re.findall(r"[\w.\[\]]+", eq.text)
@@ -278,10 +280,30 @@ def _rebuild(flat, kept, subs, table, find, constants):
                              + (": " + "; ".join(hints) if hints else ""))
         equations.append(replace(eq, residual=r))
     initial = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in flat.initial_equations]
+    for eq in initial:
+        if eq.residual.has(sp.zoo, sp.nan):
+            raise _divides_by_zero(eq, flat, find, constants)
     table.equations_after = len(equations)
     whens = [_when_after_aliases(w, subs, find, constants) for w in flat.whens]
     return replace(flat, variables=merged, equations=equations, initial_equations=initial,
                    derivatives=derivatives, whens=whens)
+
+
+def _divides_by_zero(eq, flat, find, constants) -> InvalidEquation:
+    """An equation that divides by an expression its variables' constant values make 0
+    (x = p and 1/(x - p)): a branch that cannot be taken is dropped by the substitution
+    itself, so this division is reached whenever its branch is."""
+    words = set(re.findall(r"[\w.\[\]]+", eq.text))
+    fixed = []
+    for v in flat.variables:
+        sign, root = find(v.symbol)
+        if v.name in words and root in constants:
+            fixed.append(f"{v.name} = {sp.sstr(_signed(sign, constants[root]))}")
+    why = (f" with {', '.join(fixed)} (their equations make them constants)" if fixed
+           else " with its variables' constant values")
+    return InvalidEquation(f"equation '{eq.text}' in {eq.where} divides by zero{why}; "
+                           "the denominator is zero whenever this is evaluated: guard it "
+                           "by a condition that is false there, or rewrite it")
 
 
 def _derivatives_after_aliases(flat, find, constants, subs) -> dict:
