@@ -142,3 +142,35 @@ def test_second_derivative_of_a_constant_is_zero():
                       backend="numpy")
     # m * 0 = flange_a.f + flange_b.f with flange_b free (flange_b.f = 0)
     assert np.max(np.abs(res["mass.flange_a.f"])) < 1e-9
+
+
+class PendulumSecondOrder(ac.Component):
+    """The index-3 planar pendulum (DAE notes' Cartesian pendulum) with the second
+    derivatives written directly: m x'' = -x lam, m y'' = -y lam - m g, x^2 + y^2 = L^2."""
+
+    m = ac.Parameter(1.0, unit="kg")
+    g = ac.Parameter(9.81, unit="m/s2")
+    L = ac.Parameter(1.0, unit="m")
+    x = ac.Variable(start=0.6, fixed=True, unit="m")
+    y = ac.Variable(start=-0.8, unit="m")
+    lam = ac.Variable(unit="N/m")
+
+    def equations(self):
+        return [ac.Eq(self.m * ac.der(ac.der(self.x)), -self.x * self.lam),
+                ac.Eq(self.m * ac.der(ac.der(self.y)), -self.y * self.lam - self.m * self.g),
+                ac.Eq(self.x**2 + self.y**2, self.L**2)]
+
+
+@pytest.mark.parametrize("backend", ["numpy", "c"])
+def test_index_three_pendulum_written_with_second_derivatives(backend):
+    from scipy.integrate import solve_ivp
+    # the same pendulum in its angle, theta'' = -(g/L) sin(theta), released at rest
+    # from theta0 = atan2(0.6, 0.8): x = L sin(theta), y = -L cos(theta)
+    th0 = np.arctan2(0.6, 0.8)
+    tt = np.linspace(0.0, 2.0, 41)
+    ref = solve_ivp(lambda t, u: [u[1], -9.81 * np.sin(u[0])], (0.0, 2.0), [th0, 0.0],
+                    method="DOP853", rtol=1e-11, atol=1e-12, t_eval=tt)
+    res = ac.simulate(PendulumSecondOrder(), 2.0, t_eval=tt, rtol=1e-9, backend=backend)
+    assert res.success
+    assert np.max(np.abs(res["x"] - np.sin(ref.y[0]))) < 1e-6
+    assert np.max(np.abs(res["y"] + np.cos(ref.y[0]))) < 1e-6
