@@ -6,8 +6,9 @@ division ``if R > 0 then v/R else 0`` with R = 0 compiles and runs.  Where the c
 depends on the solution, a denominator the constants make identically zero is an error
 naming the equation and the constants.  A zero that only one mode of a min/max gives
 (-x/max(p, 0) with a tunable p <= 0) is compiled as an undefined value in that mode:
-the run stops naming the equation if the mode is reached, and the same compiled model
-runs with p > 0.  On both backends, never a sympy traceback (the C printer used to
+the run stops naming the equation if the mode is reached (through the iteration matrix
+where the value multiplies a variable, through the residual where it stands alone), and
+the same compiled model runs with p > 0.  On both backends, never a sympy traceback (the C printer used to
 meet ``zoo``).  Results are checked against closed forms.
 """
 import re
@@ -132,3 +133,24 @@ def test_zero_mode_of_max_reached_stops_the_run(backend):
     t1 = np.log(2.0)
     expected = np.where(T < t1, np.exp(-T), 0.5 * np.exp(-(T - t1) / 2.0))
     assert np.max(np.abs(res["x"] - expected)) < 1e-6
+
+
+class ClippedSource(ac.Component):
+    """der(x) = 1/max(p, 0) while x < 0.5, else -x: the undefined value is the whole
+    right-hand side, not a coefficient of x (the iteration matrix stays finite)."""
+
+    p = ac.Parameter(-1.0)
+    x = ac.Variable(start=1.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), ac.if_else(self.x < 0.5, 1 / ac.max(self.p, 0), -self.x))]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_undefined_right_hand_side_is_named(backend):
+    with pytest.warns(RuntimeWarning, match="stopped early"):
+        res = ac.simulate(ClippedSource(), 2.0, t_eval=T, backend=backend)
+    assert not res.success
+    assert "residuals of equations ['der(x)" in res.message and "not finite" in res.message
+    stopped = float(re.search(r"at t=([0-9.eE+-]+)", res.message).group(1))
+    assert stopped == pytest.approx(np.log(2.0), rel=1e-6)
