@@ -8,8 +8,8 @@ naming the equation and the constants.  A zero that only one mode of a min/max g
 (-x/max(p, 0) with a tunable p <= 0) is compiled as an undefined value in that mode:
 the run stops naming the equation if the mode is reached (through the iteration matrix
 where the value multiplies a variable, through the residual where it stands alone), and
-the same compiled model runs with p > 0.  On both backends, never a sympy traceback (the C printer used to
-meet ``zoo``).  Results are checked against closed forms.
+the same compiled model runs with p > 0.  On both backends, never a sympy traceback
+(the C printer used to meet ``zoo``).  Results are checked against closed forms.
 """
 import re
 
