@@ -17,7 +17,7 @@ from dataclasses import dataclass, field, replace
 
 import sympy as sp
 
-from ..components.component import ModelError
+from ..components.component import InvalidEquation, ModelError
 from .derivative import partial
 from .flatten import FlatEquation, FlatModel
 from .graph import STATE_SELECT
@@ -262,23 +262,15 @@ def _rebuild(flat, kept, subs, table, find, constants):
         if root == v.symbol and root not in constants:
             variables.append(v)
     merged = _merge_attributes(flat, variables, find)
-    derivatives = {}
-    for x, dx in flat.derivatives.items():
-        sign, root = find(x)
-        if root in constants:
-            subs[dx] = sp.Integer(0)
-        elif root != x:
-            rd = flat.derivatives.get(root) or sp.Symbol(f"der({root.name})", real=True)
-            subs[dx] = _signed(sign, rd)
-            derivatives[root] = rd
-        else:
-            derivatives[x] = dx
+    derivatives = _derivatives_after_aliases(flat, find, constants, subs)
     equations = []
     info = {v.symbol: v for v in flat.variables}
     for eq in kept:
         r = eq.residual
         if any(q in subs for q in symbols_of(r)):
             r = r.xreplace(subs)
+        if r.has(sp.zoo, sp.nan):
+            raise _divides_by_zero(eq, flat, find, constants)
         if r == 0:
             by_name = {v.name: v.hint for v in flat.variables if v.hint}
             hints = sorted({by_name[w] for w in re.findall(r"[\w.\[\]]+", eq.text)
@@ -288,10 +280,64 @@ def _rebuild(flat, kept, subs, table, find, constants):
                              + (": " + "; ".join(hints) if hints else ""))
         equations.append(replace(eq, residual=r))
     initial = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in flat.initial_equations]
+    for eq in initial:
+        if eq.residual.has(sp.zoo, sp.nan):
+            raise _divides_by_zero(eq, flat, find, constants)
     table.equations_after = len(equations)
     whens = [_when_after_aliases(w, subs, find, constants) for w in flat.whens]
     return replace(flat, variables=merged, equations=equations, initial_equations=initial,
                    derivatives=derivatives, whens=whens)
+
+
+def _divides_by_zero(eq, flat, find, constants) -> InvalidEquation:
+    """An equation that divides by an expression its variables' constant values make 0
+    (x = p and 1/(x - p)): a branch that cannot be taken is dropped by the substitution
+    itself, so this division is reached whenever its branch is."""
+    words = set(re.findall(r"[\w.\[\]]+", eq.text))
+    fixed = []
+    for v in flat.variables:
+        sign, root = find(v.symbol)
+        if v.name in words and root in constants:
+            fixed.append(f"{v.name} = {sp.sstr(_signed(sign, constants[root]))}")
+    why = (f" with {', '.join(fixed)} (their equations make them constants)" if fixed
+           else " with its variables' constant values")
+    return InvalidEquation(f"equation '{eq.text}' in {eq.where} divides by zero{why}; "
+                           "the denominator is zero whenever this is evaluated: guard it "
+                           "by a condition that is false there, or rewrite it")
+
+
+def _derivatives_after_aliases(flat, find, constants, subs) -> dict:
+    """The derivative chains of the representatives; subs maps every derivative of an
+    eliminated variable onto its representative's (0 for a constant).
+
+    A chain is followed to its end: with s = flange.s and der(der(flange.s)) written,
+    der(der(flange.s)) becomes der(der(s)) (sign included), and the representative's
+    chain grows where an alias's is longer; a derivative left behind would be a symbol
+    that no equation defines."""
+    chains = []
+    for v in flat.variables:
+        chain, at = [], v.symbol
+        while at in flat.derivatives:
+            at = flat.derivatives[at]
+            chain.append(at)
+        if chain:
+            chains.append((find(v.symbol), v.symbol, chain))
+    derivatives = {}
+    # the representatives' own chains first: the symbols their equations already use
+    for (sign, root), x, chain in chains:
+        if root == x and root not in constants:
+            derivatives.update(zip([x, *chain[:-1]], chain))
+    for (sign, root), x, chain in chains:
+        if root in constants:
+            subs.update({dx: sp.Integer(0) for dx in chain})
+        elif root != x:
+            at = root
+            for dx in chain:
+                if at not in derivatives:
+                    derivatives[at] = sp.Symbol(f"der({at.name})", real=True)
+                subs[dx] = _signed(sign, derivatives[at])
+                at = derivatives[at]
+    return derivatives
 
 
 def _when_after_aliases(w, subs, find, constants):

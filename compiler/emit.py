@@ -122,6 +122,10 @@ class Emitter:
     def _node(self, e, done, names, shared) -> str:
         if e.is_Symbol:
             return self.ref(e)
+        if e is sp.zoo or e is sp.nan:
+            # an undefined value (1/0 in a branch of min/max, where its limit is 0):
+            # NaN, which the solver reports with the equation if the branch is taken
+            return "math.nan" if self.lang == "py" else "NAN"
         if e.is_Number or isinstance(e, sp.NumberSymbol):
             return self._number(e)
         if isinstance(e, (BooleanTrue, BooleanFalse)):
@@ -163,12 +167,14 @@ class Emitter:
 
     def _number(self, e) -> str:
         x = float(e)
+        if x != x:
+            return "math.nan" if self.lang == "py" else "NAN"
         if self.lang == "py":
             return repr(x) if not float(x).is_integer() or abs(x) >= 1e16 else repr(x)
         s = repr(x)
         if s in ("inf", "-inf"):
             return "HUGE_VAL" if x > 0 else "(-HUGE_VAL)"
-        return s if any(c in s for c in ".e") or s == "nan" else s + ".0"
+        return s if any(c in s for c in ".e") else s + ".0"
 
     def _add(self, terms: list) -> str:
         if len(terms) > CHUNK:

@@ -376,6 +376,13 @@ class _Run:
                        f"{variables}, equations {equations} (a higher-index or "
                        f"structurally singular model, or a singular configuration of it)")
             return self._error(msg, exc.t, variables)
+        undefined = self._non_finite_residuals()
+        if undefined:
+            msg = (f"the residuals of equations {undefined} are not finite at "
+                   f"t={self.solver.t:.10g} (an undefined value where the solution is: "
+                   f"a division by zero or a function outside its domain, possibly in "
+                   f"the branch of an if-expression or min/max that was just taken)")
+            return self._error(msg, exc.t, [])
         variables = self._dominant(exc.weighted)
         what = {"step_size": "step size too small",
                 "error_test": "repeated local error test failures",
@@ -385,6 +392,19 @@ class _Run:
                f"are in {variables}. The solution may blow up, be non-smooth, or the "
                f"model may switch without an event there")
         return self._error(msg, exc.t, variables)
+
+    def _non_finite_residuals(self) -> list:
+        """The equations whose residual is NaN or infinite at the last accepted point
+        (a failed step leaves the solver there): no step can succeed from there."""
+        s = getattr(self, "solver", None)
+        if s is None:
+            return []
+        try:
+            with np.errstate(all="ignore"):
+                r = np.asarray(self.problem.residual(s.t, s.y, s.yp), float)
+        except Exception:   # a residual that raises is reported by the step failure
+            return []
+        return [equation_label(self.problem, i) for i in np.flatnonzero(~np.isfinite(r))]
 
     def _dominant(self, weighted):
         if weighted is None:
