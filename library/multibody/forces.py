@@ -22,8 +22,8 @@ class Rod(PartialLineForce):
         return [ac.Eq(self.s, self.L)]
 
 
-class Spring(PartialLineForce):
-    """Linear spring:  f = c (s - s_unstretched)."""
+class _SpringLaw:
+    """f = c (s - s_unstretched) for a line-force element of either multibody library."""
 
     c = ac.Parameter(1.0e3, unit="N/m", min=0, description="spring constant")
     s_unstretched = ac.Parameter(0.0, unit="m", min=0, description="unstretched length")
@@ -36,8 +36,8 @@ class Spring(PartialLineForce):
         return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched))]
 
 
-class Damper(PartialLineForce):
-    """Linear damper:  f = d der(s)."""
+class _DamperLaw:
+    """f = d der(s) for a line-force element of either multibody library."""
 
     d = ac.Parameter(1.0, unit="N.s/m", min=0, description="damping constant")
 
@@ -49,8 +49,8 @@ class Damper(PartialLineForce):
         return [ac.Eq(self.f, self.d * ac.der(self.s))]
 
 
-class SpringDamper(PartialLineForce):
-    """Spring and damper in parallel:  f = c (s - s_unstretched) + d der(s)."""
+class _SpringDamperLaw:
+    """f = c (s - s_unstretched) + d der(s) for a line-force element of either library."""
 
     c = ac.Parameter(1.0e3, unit="N/m", min=0, description="spring constant")
     d = ac.Parameter(1.0, unit="N.s/m", min=0, description="damping constant")
@@ -66,3 +66,15 @@ class SpringDamper(PartialLineForce):
 
     def equations(self):
         return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched) + self.d * ac.der(self.s))]
+
+
+class Spring(_SpringLaw, PartialLineForce):
+    """Linear spring:  f = c (s - s_unstretched)."""
+
+
+class Damper(_DamperLaw, PartialLineForce):
+    """Linear damper:  f = d der(s)."""
+
+
+class SpringDamper(_SpringDamperLaw, PartialLineForce):
+    """Spring and damper in parallel:  f = c (s - s_unstretched) + d der(s)."""

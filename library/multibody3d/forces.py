@@ -8,6 +8,7 @@ import acausal as ac
 from acausal.ports import RealInput
 from acausal.ports.spatial import Frame
 
+from ..multibody.forces import _DamperLaw, _SpringDamperLaw, _SpringLaw
 from .frames import force, orientation, position, resolve2, torque, vector
 from .interfaces import PartialTwoFrames, equal
 
@@ -42,50 +43,16 @@ class PartialLineForce(PartialTwoFrames):
                 *equal(torque(a), zero), *equal(torque(b), zero)]
 
 
-class Spring(PartialLineForce):
+class Spring(_SpringLaw, PartialLineForce):
     """Linear spring along the line:  f = c (s - s_unstretched)."""
 
-    c = ac.Parameter(1.0e3, unit="N/m", min=0, description="spring constant")
-    s_unstretched = ac.Parameter(0.0, unit="m", min=0, description="unstretched length")
 
-    def stored_energy(self):
-        """c (s - s_unstretched)^2 / 2."""
-        return self.c * (self.s - self.s_unstretched)**2 / 2
-
-    def equations(self):
-        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched))]
-
-
-class Damper(PartialLineForce):
+class Damper(_DamperLaw, PartialLineForce):
     """Linear damper along the line:  f = d der(s)."""
 
-    d = ac.Parameter(1.0, unit="N.s/m", min=0, description="damping constant")
 
-    def loss_power(self):
-        """d der(s)^2."""
-        return self.d * ac.der(self.s)**2
-
-    def equations(self):
-        return [ac.Eq(self.f, self.d * ac.der(self.s))]
-
-
-class SpringDamper(PartialLineForce):
+class SpringDamper(_SpringDamperLaw, PartialLineForce):
     """Spring and damper in parallel:  f = c (s - s_unstretched) + d der(s)."""
-
-    c = ac.Parameter(1.0e3, unit="N/m", min=0, description="spring constant")
-    d = ac.Parameter(1.0, unit="N.s/m", min=0, description="damping constant")
-    s_unstretched = ac.Parameter(0.0, unit="m", min=0, description="unstretched length")
-
-    def stored_energy(self):
-        """c (s - s_unstretched)^2 / 2."""
-        return self.c * (self.s - self.s_unstretched)**2 / 2
-
-    def loss_power(self):
-        """d der(s)^2."""
-        return self.d * ac.der(self.s)**2
-
-    def equations(self):
-        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched) + self.d * ac.der(self.s))]
 
 
 class WorldForce(ac.Component):
