@@ -26,10 +26,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import scipy.sparse as sps
 
 from ..components.component import InvalidValue, NotInModel
 from ..solvers.base import DAEProblem
+from ..solvers.linalg import assemble
 from .delays import DelayLines, FilledCode
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from .dynamic import DynamicStateSelection
@@ -247,15 +247,17 @@ class CompiledModel(DAEProblem):
         n_sz, n_l = len(self.state_z), len(self.link_s)
         data = np.concatenate([vals, np.full(n_sz, cj), np.full(n_l, cj), -np.ones(n_l)])
         data = np.bincount(self._jac_slot, weights=data, minlength=len(self._jac_indices))
+        import scipy.sparse as sps     # here: a model run by the compiled loop may not need it
         return sps.csc_matrix((data, self._jac_indices, self._jac_indptr),
                               shape=(self.n, self.n))
 
-    def dG_dy(self, t, z):
+    def dG_dy(self, t, z, dense: bool = False):
+        """dG/dz, CSR (with ``dense`` an ndarray)."""
         c = self.code
         vals = self._jac_values(t, z)
         keep = self._res_entries
-        return sps.csr_matrix((vals[keep], (c.jac_rows[keep], c.jac_cols[keep])),
-                              shape=(self.n_res, self.n))
+        return assemble(vals[keep], c.jac_rows[keep], c.jac_cols[keep],
+                        (self.n_res, self.n), dense)
 
     def expand(self, t, z) -> np.ndarray:
         """All variables of the reduced system (states, assigned and torn) from z."""
