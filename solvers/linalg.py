@@ -73,6 +73,15 @@ def assemble(vals, rows, cols, shape, dense: bool = False):
     return sp.csr_matrix((vals, (rows, cols)), shape=shape)
 
 
+def iteration_matrix(problem, lin, t, y, yp, cj):
+    """``problem.jacobian(t, y, yp, cj)`` for the solver ``lin``: an ndarray when ``lin``
+    factors densely and the problem can build one (``offers_dense_jacobian``), so a small
+    system never builds a sparse matrix only to expand it."""
+    if getattr(problem, "offers_dense_jacobian", False) and lin.dense_decided():
+        return problem.jacobian(t, y, yp, cj, dense=True)
+    return problem.jacobian(t, y, yp, cj)
+
+
 def _inverse(scale: np.ndarray) -> np.ndarray:
     """1/scale; an empty row or column stays empty (and shows as a zero pivot)."""
     return 1.0 / np.maximum(scale, 1e-300)
@@ -196,6 +205,11 @@ class LinearSolver:
         self._piv = None
         self._r = self._c = None     # row and column equilibration of the factored matrix
         self._getrf = self._getrs = None
+
+    def dense_decided(self) -> bool:
+        """Whether the factorization is dense whatever form the matrix comes in."""
+        return self.sparse is False or (self.sparse is None and self.pattern is not None
+                                        and self.n <= SPARSE_THRESHOLD)
 
     def _decide(self, J) -> None:
         if self.sparse is None:
