@@ -91,7 +91,6 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
         if found is not None:
             if tree is not None:
                 store.store_index(tree, key)
-            # the same flat model, the same findings: reported again in this mode
             found[0].report.units = unit_check(flat, check_units, found[0].report.units)
             lookup = _time.perf_counter() - t1 + report.timings["flatten"] + t_tree
             return _from_cache(found, lookup, "its flat model")
