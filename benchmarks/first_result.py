@@ -4,19 +4,23 @@ Each measurement starts a new Python process (no module is imported yet, as for 
 who runs a script), so what is timed includes every import the call needs:
 
 * ``import acausal`` alone;
-* ``import acausal`` + the electrical library, ``ac.compile`` of an RC circuit (a step
-  source, a resistor, a capacitor and ground: 20 equations after flattening, 4 after
-  alias elimination, one state) and ``ac.simulate`` of it, timed as a whole and per
-  phase inside the child, whose result is checked against v_C = 1 - exp(-t/RC).
+* ``import acausal`` + the electrical library, ``ac.compile(..., cache="tree")`` of an
+  RC circuit (a step source, a resistor, a capacitor and ground: 20 equations after
+  flattening, 4 after alias elimination, one state) and ``ac.simulate`` of it, timed as
+  a whole and per phase inside the child, whose result is checked against
+  v_C = 1 - exp(-t/RC); for the numpy and the C backend, each with a **cold** compile
+  cache (empty: the model is compiled, and with C its library built) and a **warm** one
+  (the entry the cold run stored, found by the instance tree: no sympy).  The script is
+  a file, since the tree key needs the model class's source.
 
-The two are run interleaved, ``--repeat`` times (default 3), and the medians printed;
-wall times on a shared machine are noisy, so the CPU time (user + system) of the child
-is printed too.  The children keep their caches in a temporary directory: compiled
-bytecode, as an installed package has it (``--source`` compiles the modules in every
-run instead, as an environment with PYTHONDONTWRITEBYTECODE does), and the C backend's
-library of the model, built by the model's first run (printed on its own).  Then
-``python -X importtime`` is run once on each script and its ten most expensive modules
-(own time) printed, with the time spent in each top-level package.
+The runs are interleaved, ``--repeat`` times (default 3), and the medians printed, with
+the modules of sympy and scipy the warm run loaded; wall times on a shared machine are
+noisy, so the CPU time (user + system) of the child is printed too.  The children keep
+their compiled bytecode in a temporary directory, as an installed package has it
+(``--source`` compiles the modules in every run instead, as an environment with
+PYTHONDONTWRITEBYTECODE does).  Then ``python -X importtime`` is run once on each script
+(warm cache, C backend when it works) and its ten most expensive modules (own time)
+printed, with the time spent in each top-level package.
 
     python benchmarks/first_result.py [--repeat N] [--source]
 """
@@ -34,13 +38,16 @@ import time
 
 __all__ = ["RC_SCRIPT", "IMPORT_SCRIPT", "run_child", "environment", "import_times", "main"]
 
-# The child prints the times of its phases as JSON on its last line.
+# The child prints the times of its phases as JSON on its last line.  Its arguments: the
+# backend and the cache mode.  Nothing timed is a module constant (the tree key reads
+# those: a time would make every run's key new).
 RC_SCRIPT = """
-import json, time
-t0 = time.perf_counter()
+import json, sys, time
+_clock = [time.perf_counter()]
 import acausal as ac
 from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
-t1 = time.perf_counter()
+_clock.append(time.perf_counter())
+
 
 class RC(ac.Component):
     src = StepVoltage(V=1.0)
@@ -52,29 +59,40 @@ class RC(ac.Component):
         return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
                 ac.connect(self.C1.n, self.src.n, self.gnd.p)]
 
-compiled = ac.compile(RC())
-t2 = time.perf_counter()
-res = ac.simulate(compiled, t_end=5.0e-3, rtol=1e-6)
-t3 = time.perf_counter()
-# v_C = V (1 - exp(-t/RC)): a wrong run must not pass for a fast one
-import math
-err = abs(float(res["C1.v"][-1]) - (1.0 - math.exp(-5.0)))
-assert err < 1e-3, err
-counts = compiled.report.counts
-print(json.dumps({"import": t1 - t0, "compile": t2 - t1, "simulate": t3 - t2,
-                  "equations": [counts["flatten"]["equations"],
-                                counts["alias"]["equations"]],
-                  "backend": getattr(compiled, "backend", "numpy")}))
+
+def main(backend, cache):
+    compiled = ac.compile(RC(), backend=backend, cache={"tree": "tree", "flat": True}[cache])
+    _clock.append(time.perf_counter())
+    res = ac.simulate(compiled, t_end=5.0e-3, rtol=1e-6)
+    _clock.append(time.perf_counter())
+    # v_C = V (1 - exp(-t/RC)): a wrong run must not pass for a fast one
+    import math
+    err = abs(float(res["C1.v"][-1]) - (1.0 - math.exp(-5.0)))
+    assert err < 1e-3, err
+    counts = compiled.report.counts
+    heavy = ("sympy", "sympy.physics.units", "scipy.sparse", "scipy.linalg", "scipy.optimize")
+    t = _clock
+    print(json.dumps({"import": t[1] - t[0], "compile": t[2] - t[1], "simulate": t[3] - t[2],
+                      "equations": [counts["flatten"]["equations"],
+                                    counts["alias"]["equations"]],
+                      "backend": compiled.backend,
+                      "loaded": [m for m in heavy if m in sys.modules]}))
+
+
+main(*sys.argv[1:3])
 """
 
 IMPORT_SCRIPT = "import acausal"
 
 
-def run_child(code: str, *flags: str, env: dict | None = None) -> tuple:
-    """Run ``code`` in a new interpreter: (wall s, cpu s, stdout, stderr)."""
+def run_child(code: str, *flags: str, env: dict | None = None, file: bool = False,
+              args=()) -> tuple:
+    """Run ``code`` (with ``file``, the script of that path) in a new interpreter:
+    (wall s, cpu s, stdout, stderr)."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    proc = subprocess.run([sys.executable, *flags, "-c", code], capture_output=True,
+    source = [code] if file else ["-c", code]
+    proc = subprocess.run([sys.executable, *flags, *source, *args], capture_output=True,
                           text=True, env=env if env is not None else environment())
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -135,43 +153,54 @@ def main(argv=None) -> None:
     args = parser.parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="acausal-bench-") as cache:
         env = environment(cache, bytecode=not args.source)
-        _report(args.repeat, env, "compiled from source in every run" if args.source
-                else "bytecode cached, as for an installed package")
+        script = os.path.join(cache, "rc_first_result.py")
+        with open(script, "w") as f:
+            f.write(RC_SCRIPT)
+        _report(args.repeat, env, script, cache, "compiled from source in every run"
+                if args.source else "bytecode cached, as for an installed package")
 
 
-def _report(repeat: int, env: dict, mode: str) -> None:
+def _rc(script: str, backend: str, env: dict, *flags: str) -> tuple:
+    wall, cpu, out, err = run_child(script, *flags, env=env, file=True, args=(backend, "tree"))
+    return wall, cpu, json.loads(out.strip().splitlines()[-1]), err
+
+
+def _report(repeat: int, env: dict, script: str, cache: str, mode: str) -> None:
     if "PYTHONPYCACHEPREFIX" in env:       # compile every module once, sympy's included
-        run_child(RC_SCRIPT, env={**env, "ACAUSAL_CACHE": env["ACAUSAL_CACHE"] + "-warm-up"})
-    # the first run of the model builds its C library (with the C backend), then cached
-    wall, cpu, out, _ = run_child(RC_SCRIPT, env=env)
-    first = json.loads(out.strip().splitlines()[-1])
-    imports, rcs, phases = [], [], []
-    for _ in range(repeat):                # interleaved: load changes hit both alike
+        _rc(script, "numpy", {**env, "ACAUSAL_CACHE": os.path.join(cache, "warm-up")})
+    imports, runs = [], {}
+    for i in range(repeat):                # interleaved: load changes hit all alike
         w, c, _, _ = run_child(IMPORT_SCRIPT, env=env)
         imports.append((w, c))
-        w, c, out, _ = run_child(RC_SCRIPT, env=env)
-        rcs.append((w, c))
-        phases.append(json.loads(out.strip().splitlines()[-1]))
+        for backend in ("numpy", "c"):
+            fresh = {**env, "ACAUSAL_CACHE": os.path.join(cache, f"models-{backend}-{i}")}
+            for state in ("cold", "warm"):  # the cold run stores what the warm one finds
+                runs.setdefault((backend, state), []).append(_rc(script, backend, fresh)[:3])
     median = statistics.median
     empty = median(run_child("pass", env=env)[0] for _ in range(repeat))
     print(f"cold-process timings, medians of {repeat} (interleaved), {mode}; "
           f"an empty interpreter takes {empty:.3f} s wall")
     print(f"  import acausal                      wall {median(w for w, _ in imports):.3f} s"
           f"   cpu {median(c for _, c in imports):.3f} s")
-    print(f"  import + compile + simulate (RC)    wall {median(w for w, _ in rcs):.3f} s"
-          f"   cpu {median(c for _, c in rcs):.3f} s")
-    for key in ("import", "compile", "simulate"):
-        print(f"    {key:<10} (inside the child) {median(p[key] for p in phases):.3f} s")
-    flat, reduced = first["equations"]
-    print(f"    the RC circuit has {flat} equations after flattening, {reduced} after "
-          f"alias elimination; backend {first['backend']}")
-    print(f"  the model's first run (cache of C libraries empty): wall {wall:.3f} s, "
-          f"cpu {cpu:.3f} s, compile {first['compile']:.3f} s (one run, not a median)")
+    first = runs["numpy", "cold"][0][2]
+    print(f"  RC circuit ({first['equations'][0]} equations after flattening, "
+          f"{first['equations'][1]} after alias elimination), import + compile + simulate:")
+    for (backend, state), rows in runs.items():
+        phases = [r[2] for r in rows]
+        print(f"    {backend:<5} {state} cache   wall {median(r[0] for r in rows):.3f} s"
+              f"   cpu {median(r[1] for r in rows):.3f} s   (inside: " + ", ".join(
+                  f"{k} {median(p[k] for p in phases):.3f}" for k in
+                  ("import", "compile", "simulate")) + f"; backend {phases[-1]['backend']})")
+        if state == "warm":
+            loaded = ", ".join(phases[-1]["loaded"]) or "none of them"
+            print(f"      sympy, sympy.physics.units, scipy.sparse/linalg/optimize loaded: "
+                  f"{loaded}")
 
     _, _, _, err = run_child(IMPORT_SCRIPT, "-X", "importtime", env=env)
     _print_import_profile("python -X importtime -c 'import acausal'", import_times(err))
-    _, _, _, err = run_child(RC_SCRIPT, "-X", "importtime", env=env)
-    _print_import_profile("python -X importtime (RC: import, compile, simulate)",
+    warm = {**env, "ACAUSAL_CACHE": os.path.join(cache, "models-c-0")}
+    _, _, _, err = _rc(script, "c", warm, "-X", "importtime")
+    _print_import_profile("python -X importtime (RC, warm cache: import, compile, simulate)",
                           import_times(err))
 
 

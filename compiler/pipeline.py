@@ -82,7 +82,6 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
     flat = clock("flatten", flatten, model)
     report.modes = _mode_structures(model)
     from .unitcheck import check_units as unit_check
-    report.units = clock("units", unit_check, flat, check_units)
     report.derived_parameters = dict(flat.derived)
     key = None
     if use_cache:
@@ -92,10 +91,11 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
         if found is not None:
             if tree is not None:
                 store.store_index(tree, key)
+            found[0].report.units = unit_check(flat, check_units, found[0].report.units)
             lookup = _time.perf_counter() - t1 + report.timings["flatten"] + t_tree
-            found[0].report.units = report.units     # checked in this mode, just now
             return _from_cache(found, lookup, "its flat model")
         report.timings["cache_key"] = _time.perf_counter() - t1 + t_tree
+    report.units = clock("units", unit_check, flat, check_units)
     discretes = clock("discrete", freeze_integer_functions, flat)
     helds = clock("sampled", declare_discrete_variables, flat)
     delays = clock("delays", extract_delays, flat)

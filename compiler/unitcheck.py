@@ -64,8 +64,12 @@ class _Mismatch(Exception):
         return f"{self.what}: {first} but '{sp.sstr(self.b)}' is {dimension_text(self.db)}"
 
 
-def check_units(flat, mode: str = "warn") -> UnitCheck:
-    """Check every equation of ``flat`` (a FlatModel); see the module docstring."""
+def check_units(flat, mode: str = "warn", known: UnitCheck | None = None) -> UnitCheck:
+    """Check every equation of ``flat`` (a FlatModel); see the module docstring.
+
+    ``known``: the check of the same flat model found in the compile cache (the flat key
+    covers every unit and expression the check reads); its findings are reported in this
+    ``mode`` without checking again, so a cache hit does not load sympy's units."""
     import time
     if mode not in MODES:
         raise ValueError(f"check_units must be one of {MODES}, not {mode!r}")
@@ -73,6 +77,10 @@ def check_units(flat, mode: str = "warn") -> UnitCheck:
     result.unitless_variables = [v.name for v in flat.variables if not v.attrs.unit]
     result.unitless_parameters = [p.name for p in flat.parameters if not p.unit]
     if mode == "off":
+        return result
+    if known is not None and known.mode != "off":
+        result.checked, result.mismatches = known.checked, list(known.mismatches)
+        _complain(result, mode)
         return result
     t0 = time.perf_counter()
     dims = _symbol_dimensions(flat)
@@ -96,6 +104,12 @@ def check_units(flat, mode: str = "warn") -> UnitCheck:
         if isinstance(p.value, sp.Basic) and not p.value.is_number and p.unit:
             _check_binding(p, walker, dims, result)
     result.seconds = time.perf_counter() - t0
+    _complain(result, mode)
+    return result
+
+
+def _complain(result: UnitCheck, mode: str) -> None:
+    """Raise (``"error"``) or warn at the mismatches found."""
     if result.mismatches:
         more = len(result.mismatches) - 1
         text = result.mismatches[0] + (f" (and {more} more inconsistent equation(s): "
@@ -103,8 +117,7 @@ def check_units(flat, mode: str = "warn") -> UnitCheck:
         if mode == "error":
             raise UnitError(text + ". Fix the units, or compile with check_units='warn'")
         for msg in result.mismatches:
-            warnings.warn(msg, UnitWarning, stacklevel=4)
-    return result
+            warnings.warn(msg, UnitWarning, stacklevel=5)
 
 
 def _check_equation(eq, walker) -> None:

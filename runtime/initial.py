@@ -34,11 +34,10 @@ unknowns are solved again.
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sps
 
 from ..errors import InitializationFailed
 from ..solvers.initialization import solve_with_fallback
-from ..solvers.linalg import LinearSolver, SingularMatrixError
+from ..solvers.linalg import SPARSE_THRESHOLD, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 
 __all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives",
@@ -70,11 +69,11 @@ class InitialConditions:
     def residual(self, t, z, p, m):
         return self.code.residual(t, z, p, m, np.empty(self.code.n_rows))[self.rows]
 
-    def jacobian(self, t, z, p, m, n):
+    def jacobian(self, t, z, p, m, n, dense: bool = False):
         c = self.code
         vals = c.jacobian(t, z, p, m, np.empty(len(c.jac_rows)))[self._entries]
         rows = self._renumber[c.jac_rows[self._entries]]
-        return sps.csr_matrix((vals, (rows, c.jac_cols[self._entries])), shape=(self.n, n))
+        return assemble(vals, rows, c.jac_cols[self._entries], (self.n, n), dense)
 
 
 def initialize(model, t0: float):
@@ -133,13 +132,20 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
             extra = np.full(init.n, np.nan)
         return np.concatenate([model.G(t0, z), extra])
 
+    # a system Newton factors densely is built dense: the same entries, and no
+    # scipy.sparse (whose import costs more than a small model's whole run)
+    dense = model.n <= SPARSE_THRESHOLD
+
     def J(z):
         try:
-            extra = init.jacobian(t0, z, model.p, model.m, model.n)
+            extra = init.jacobian(t0, z, model.p, model.m, model.n, dense)
         except DOMAIN_ERRORS as exc:
             _note_evaluation(model, init, t0, exc)
-            extra = sps.csr_matrix(np.full((init.n, model.n), np.nan))
-        return sps.vstack([model.dG_dy(t0, z), extra]).tocsc()
+            extra = np.full((init.n, model.n), np.nan)
+        if dense:
+            return np.vstack([model.dG_dy(t0, z, dense=True), extra])
+        import scipy.sparse as sps
+        return sps.vstack([model.dG_dy(t0, z), sps.csr_matrix(extra)]).tocsc()
 
     weights = 1.0 / (_NEWTON_RTOL * np.abs(z_guess) + _NEWTON_RTOL * model.nominal)
     model.evaluation_errors.clear()

@@ -26,10 +26,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import scipy.sparse as sps
 
 from ..components.component import InvalidValue, NotInModel
 from ..solvers.base import DAEProblem
+from ..solvers.linalg import assemble
 from .delays import DelayLines, FilledCode
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from .dynamic import DynamicStateSelection
@@ -187,7 +187,8 @@ class CompiledModel(DAEProblem):
         key = cols.astype(np.int64) * max(self.n, 1) + rows
         unique, self._jac_slot = np.unique(key, return_inverse=True)
         self._jac_indices = (unique % max(self.n, 1)).astype(np.int32)
-        self._jac_indptr = np.searchsorted(unique // max(self.n, 1),
+        self._jac_colof = unique // max(self.n, 1)
+        self._jac_indptr = np.searchsorted(self._jac_colof,
                                            np.arange(self.n + 1)).astype(np.int32)
 
     @property
@@ -241,21 +242,32 @@ class CompiledModel(DAEProblem):
     def _jac_values(self, t, z):
         return self._call(self.code.jacobian, t, z, len(self.code.jac_rows))
 
-    def jacobian(self, t, z, zp, cj):
+    #: jacobian(..., dense=True) gives an ndarray (see solvers.linalg.iteration_matrix)
+    offers_dense_jacobian = True
+
+    def jacobian(self, t, z, zp, cj, dense: bool = False):
+        """The iteration matrix dF/dz + cj dF/dz', CSC (with ``dense`` an ndarray of the
+        same entries: what the dense LU of a small system factors)."""
         vals = self._jac_values(t, z)
         vals[self._der_entries] *= -1.0
         n_sz, n_l = len(self.state_z), len(self.link_s)
         data = np.concatenate([vals, np.full(n_sz, cj), np.full(n_l, cj), -np.ones(n_l)])
         data = np.bincount(self._jac_slot, weights=data, minlength=len(self._jac_indices))
+        if dense:
+            A = np.zeros((self.n, self.n))
+            A[self._jac_indices, self._jac_colof] = data      # one slot per position
+            return A
+        import scipy.sparse as sps     # here: a model run by the compiled loop may not need it
         return sps.csc_matrix((data, self._jac_indices, self._jac_indptr),
                               shape=(self.n, self.n))
 
-    def dG_dy(self, t, z):
+    def dG_dy(self, t, z, dense: bool = False):
+        """dG/dz, CSR (with ``dense`` an ndarray)."""
         c = self.code
         vals = self._jac_values(t, z)
         keep = self._res_entries
-        return sps.csr_matrix((vals[keep], (c.jac_rows[keep], c.jac_cols[keep])),
-                              shape=(self.n_res, self.n))
+        return assemble(vals[keep], c.jac_rows[keep], c.jac_cols[keep],
+                        (self.n_res, self.n), dense)
 
     def expand(self, t, z) -> np.ndarray:
         """All variables of the reduced system (states, assigned and torn) from z."""

@@ -47,6 +47,8 @@ import math
 
 import numpy as np
 
+from .linalg import iteration_matrix
+
 __all__ = ["NewtonFail", "EPCON", "SS_FLOOR", "setup", "solve_corrector"]
 
 EPCON = 0.33         # Newton tolerance relative to the error test (IDA's epcon)
@@ -74,7 +76,7 @@ def setup(bdf, t, y, yp) -> None:
     """Evaluate and factor the iteration matrix at the predicted point."""
     st = bdf.stats
     st.jacobian_evaluations += 1
-    J = bdf.problem.jacobian(t, y, yp, bdf.cj)
+    J = iteration_matrix(bdf.problem, bdf.lin, t, y, yp, bdf.cj)
     st.lu_factorizations += 1
     bdf.lin.factor(J)
     bdf.cjold = bdf.cj

@@ -11,6 +11,8 @@ import math
 
 import numpy as np
 
+from .linalg import iteration_matrix
+
 __all__ = ["initial_step", "probed_step"]
 
 
@@ -47,7 +49,7 @@ def probed_step(bdf, h0: float) -> float:
     try:
         st.jacobian_evaluations += 1
         st.lu_factorizations += 1
-        bdf.lin.factor(p.jacobian(t1, y1, bdf.yp, 1.0 / h0))
+        bdf.lin.factor(iteration_matrix(p, bdf.lin, t1, y1, bdf.yp, 1.0 / h0))
         st.residual_evaluations += 1
         d = -bdf.lin.solve(p.residual(t1, y1, bdf.yp))
     except Exception:   # only an estimate: the real first step will report it

@@ -22,10 +22,9 @@ the variables and equations that did not converge.
 from __future__ import annotations
 
 import numpy as np
-import scipy.sparse as sp
 
 from .base import DAEProblem, InitializationFailed, equation_label
-from .linalg import SingularMatrixError
+from .linalg import SingularMatrixError, issparse
 from .newton import damped_newton, homotopy
 
 __all__ = ["consistent_initial", "reinitialize", "initialize_with_equations",
@@ -36,17 +35,19 @@ _N_NAMED = 3         # how many culprits an error message names
 
 
 def _columns(J, idx):
-    return J.tocsc()[:, idx] if sp.issparse(J) else J[:, idx]
+    return J.tocsc()[:, idx] if issparse(J) else J[:, idx]
 
 
 def _hstack(blocks):
-    if any(sp.issparse(b) for b in blocks):
+    if any(issparse(b) for b in blocks):
+        import scipy.sparse as sp
         return sp.hstack(blocks, format="csc")
     return np.hstack(blocks)
 
 
 def _vstack(blocks):
-    if any(sp.issparse(b) for b in blocks):
+    if any(issparse(b) for b in blocks):
+        import scipy.sparse as sp
         return sp.vstack(blocks, format="csc")
     return np.vstack(blocks)
 

@@ -38,9 +38,9 @@ matrix).
 """
 from __future__ import annotations
 
+import sys
+
 import numpy as np
-import scipy.sparse as sp
-from scipy.linalg import get_lapack_funcs
 
 __all__ = ["SPARSE_THRESHOLD", "LinearSolver", "SingularMatrixError", "singular_block",
            "make_linear_solver", "equilibrate"]
@@ -54,6 +54,34 @@ SPARSE_THRESHOLD = 60
 _PIVOT_RTOL = 64 * np.finfo(float).eps
 
 
+def issparse(J) -> bool:
+    """Whether ``J`` is a scipy.sparse matrix.  None can exist before scipy.sparse is
+    imported, so a dense problem never imports it (0.2-0.4 s)."""
+    sparse = sys.modules.get("scipy.sparse")
+    return sparse is not None and sparse.issparse(J)
+
+
+def assemble(vals, rows, cols, shape, dense: bool = False):
+    """The matrix with entries ``vals`` at ``(rows, cols)``, repeated positions summed in
+    their order: CSR, or with ``dense`` an ndarray of the same values (what the dense LU
+    of a small system factors, without importing scipy.sparse)."""
+    if dense:
+        A = np.zeros(shape)
+        np.add.at(A, (rows, cols), vals)
+        return A
+    import scipy.sparse as sp
+    return sp.csr_matrix((vals, (rows, cols)), shape=shape)
+
+
+def iteration_matrix(problem, lin, t, y, yp, cj):
+    """``problem.jacobian(t, y, yp, cj)`` for the solver ``lin``: an ndarray when ``lin``
+    factors densely and the problem can build one (``offers_dense_jacobian``), so a small
+    system never builds a sparse matrix only to expand it."""
+    if getattr(problem, "offers_dense_jacobian", False) and lin.dense_decided():
+        return problem.jacobian(t, y, yp, cj, dense=True)
+    return problem.jacobian(t, y, yp, cj)
+
+
 def _inverse(scale: np.ndarray) -> np.ndarray:
     """1/scale; an empty row or column stays empty (and shows as a zero pivot)."""
     return 1.0 / np.maximum(scale, 1e-300)
@@ -64,7 +92,8 @@ def equilibrate(J):
     of ``diag(r) J`` and then the columns of ``diag(r) J diag(c)`` have largest
     magnitude 1 (xGEEQU; not rounded to powers of two as xGEEQUB does, which would
     cost more than the O(eps) relative change it avoids in each entry)."""
-    if sp.issparse(J):
+    if issparse(J):
+        import scipy.sparse as sp
         A = abs(sp.csr_matrix(J))
         r = _inverse(A.max(axis=1).toarray().ravel())
         c = _inverse((sp.diags(r) @ A).max(axis=0).toarray().ravel())
@@ -108,8 +137,10 @@ class SingularMatrixError(np.linalg.LinAlgError):
         return self._cols
 
 
-def _structural_defect(S: sp.csr_matrix):
-    """Rows and columns left unmatched by a maximum bipartite matching of ``S != 0``."""
+def _structural_defect(S):
+    """Rows and columns left unmatched by a maximum bipartite matching of ``S != 0``
+    (``S`` a scipy.sparse CSR matrix)."""
+    import scipy.sparse as sp
     pattern = sp.csr_matrix((np.ones(S.nnz), S.indices, S.indptr), shape=S.shape)
     pattern.eliminate_zeros()
     from scipy.sparse.csgraph import maximum_bipartite_matching   # diagnostics only
@@ -137,6 +168,7 @@ def singular_block(J, max_dense: int = 3000):
         not depend on the units of the equations and variables).  Empty when nothing
         can be said.
     """
+    import scipy.sparse as sp
     S = sp.csr_matrix(J)
     S.eliminate_zeros()
     rows, cols = _structural_defect(S)
@@ -174,11 +206,17 @@ class LinearSolver:
         self._r = self._c = None     # row and column equilibration of the factored matrix
         self._getrf = self._getrs = None
 
+    def dense_decided(self) -> bool:
+        """Whether the factorization is dense whatever form the matrix comes in."""
+        return self.sparse is False or (self.sparse is None and self.pattern is not None
+                                        and self.n <= SPARSE_THRESHOLD)
+
     def _decide(self, J) -> None:
         if self.sparse is None:
-            offered = sp.issparse(J) or self.pattern is not None
+            offered = issparse(J) or self.pattern is not None
             self.sparse = bool(offered and self.n > SPARSE_THRESHOLD)
         if not self.sparse:
+            from scipy.linalg import get_lapack_funcs    # only a dense factorization needs it
             self._getrf, self._getrs = get_lapack_funcs(("getrf", "getrs"),
                                                         (np.empty((1, 1)),))
 
@@ -192,7 +230,7 @@ class LinearSolver:
             self._factor_dense(J)
 
     def _factor_dense(self, J) -> None:
-        A = J.toarray() if sp.issparse(J) else np.asarray(J, dtype=float)
+        A = J.toarray() if issparse(J) else np.asarray(J, dtype=float)
         if not np.all(np.isfinite(A)):
             raise SingularMatrixError("iteration matrix has non-finite entries",
                                       *self._nonfinite(A))
@@ -210,6 +248,7 @@ class LinearSolver:
         self._lu, self._piv, self._r, self._c = lu, piv, r, c
 
     def _factor_sparse(self, J) -> None:
+        import scipy.sparse as sp
         A = sp.csc_matrix(J, dtype=float)
         if not np.all(np.isfinite(A.data)):
             raise SingularMatrixError("iteration matrix has non-finite entries",

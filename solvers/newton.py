@@ -17,9 +17,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.sparse as sp
 
-from .linalg import LinearSolver, SingularMatrixError
+from .linalg import SPARSE_THRESHOLD, LinearSolver, SingularMatrixError, issparse
 
 __all__ = ["NewtonResult", "damped_newton", "homotopy"]
 
@@ -55,16 +54,16 @@ def _solve(J, b: np.ndarray) -> np.ndarray:
     if n == 0:   # nothing unknown (a model without states at steady state)
         return np.zeros(0)
     if m == n:
-        lin = LinearSolver(n, sp.issparse(J) and n > 60)
+        lin = LinearSolver(n, issparse(J) and n > SPARSE_THRESHOLD)
         lin.factor(J)
         return lin.solve(b)
-    A = J.toarray() if sp.issparse(J) else np.asarray(J)
+    A = J.toarray() if issparse(J) else np.asarray(J)
     return np.linalg.lstsq(A, b, rcond=None)[0]
 
 
 def _row_scale(J) -> np.ndarray:
     a = abs(J).max(axis=1)
-    a = a.toarray().ravel() if sp.issparse(a) else np.asarray(a).ravel()
+    a = a.toarray().ravel() if issparse(a) else np.asarray(a).ravel()
     return 1.0 / np.where(a > 0, a, 1.0)
 
 

@@ -8,6 +8,7 @@ is asserted (see benchmarks/first_result.py for the times).
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 
@@ -111,3 +112,57 @@ def test_unknown_names_raise_attribute_error():
     with pytest.raises(AttributeError):
         ac.not_a_name         # noqa: B018
     assert not hasattr(ac, "benchmarks")   # a directory of the tree is not an attribute
+
+
+RC_MODEL = '''
+import json, math, sys
+import acausal as ac
+from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
+
+
+class RC(ac.Component):
+    src = StepVoltage(V=1.0)
+    R1 = Resistor(R=1.0e3)
+    C1 = Capacitor(C=1.0e-6)
+    gnd = Ground()
+
+    def equations(self):
+        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
+                ac.connect(self.C1.n, self.src.n, self.gnd.p)]
+
+
+compiled = ac.compile(RC(), cache={"tree": "tree", "flat": True}[sys.argv[1]],
+                      backend=sys.argv[2])
+res = ac.simulate(compiled, t_end=5.0e-3, rtol=1e-6)
+print(json.dumps({"error": abs(float(res["C1.v"][-1]) - (1.0 - math.exp(-5.0))),
+                  "backend": compiled.backend,
+                  "cached": any("compile cache" in n for n in compiled.report.notes),
+                  "loaded": sorted(m for m in HEAVY if m in sys.modules)}))
+'''
+
+
+@pytest.mark.parametrize("backend", ["numpy", "auto"])
+def test_a_cached_model_loads_neither_sympy_nor_what_its_run_does_not_use(tmp_path, backend):
+    """The RC circuit (v_C = 1 - exp(-t/RC)) compiled in one process and found in the
+    compile cache by the next ones: by its instance tree without sympy at all, by its
+    flat model with sympy (flattening) but not sympy's units (the unit check's findings
+    are in the entry); neither needs scipy.optimize, nor a run of a small system, by the
+    compiled step loop or the Python one, scipy.sparse: its Jacobians are built dense."""
+    heavy = ("sympy", "sympy.physics.units", "scipy.sparse", "scipy.optimize", "networkx")
+    script = tmp_path / "rc_model.py"        # the tree key needs the class's source file
+    script.write_text(f"HEAVY = {heavy!r}\n" + RC_MODEL)
+    env = dict(os.environ, ACAUSAL_CACHE=str(tmp_path / "cache"))
+
+    def run(mode):
+        out = subprocess.run([sys.executable, str(script), mode, backend],
+                             capture_output=True, text=True, check=True, env=env).stdout
+        found = json.loads(out.strip().splitlines()[-1])
+        assert found["error"] < 1e-4, found            # the run is still right
+        return found
+
+    assert not run("tree")["cached"]
+    flat, tree = run("flat"), run("tree")
+    assert flat["cached"] and tree["cached"]
+    assert "sympy" in flat["loaded"] and "sympy.physics.units" not in flat["loaded"]
+    assert "scipy.optimize" not in flat["loaded"]
+    assert tree["loaded"] == []

@@ -7,7 +7,7 @@ both edges of every pulse, however short the pulse and however long the run.  Th
 reads its phase through ``mod`` (a frozen floor value, Modelica semantics), which
 switches at the start of every period.
 """
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

@@ -1,5 +1,5 @@
 """Signal sources (Modelica.Blocks.Sources)."""
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

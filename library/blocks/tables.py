@@ -57,7 +57,7 @@ import os
 import re
 
 import numpy as np
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import RealInput, RealOutput

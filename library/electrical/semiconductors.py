@@ -1,5 +1,5 @@
 """Semiconductor devices (Modelica.Electrical.Analog.Semiconductors)."""
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

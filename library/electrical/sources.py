@@ -3,7 +3,7 @@
 A source's v (or i) follows the OnePort convention: v = p.v - n.v, and i flows from p
 to n *through the source*, so a source delivering power has v i < 0.
 """
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import RealInput

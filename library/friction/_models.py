@@ -1,7 +1,7 @@
 """The friction models of Egeland & Gravdahl ch. 5, written once over a relative
 velocity v and a friction force f; ``translational`` and ``rotational`` bind them to
 flanges and declare the parameters with their units."""
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

@@ -4,7 +4,7 @@ and the rotational components (force and torque alike).
 Every function returns a sympy expression; ``ac.sign`` and ``ac.if_else`` make the
 places where a law switches (v = 0, the edges of a band) events.
 """
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

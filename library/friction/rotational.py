@@ -5,7 +5,7 @@ Each element sits between flange_a and flange_b like a damper: with flange_a on 
 flange_b against the relative angular velocity w (f v >= 0 for the static laws), and -tau on
 flange_a.
 """
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

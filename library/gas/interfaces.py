@@ -9,7 +9,7 @@ a reference state (p_0, rho_0):
 with n = 1 for an isothermal gas (rho = p/(R T), p_0/rho_0 = R T) and n = kappa for an
 isentropic one (Egeland & Gravdahl (14.98): p = p_0 (rho/rho_0)^kappa).
 """
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import GasPort

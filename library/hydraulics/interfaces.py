@@ -3,7 +3,7 @@
 A ``FluidPort`` carries the pressure p [Pa] (across) and the volume flow q [m3/s]
 (through, positive into the component), so p q is the hydraulic power into it.
 """
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import FluidPort

@@ -4,8 +4,10 @@ resonators (``LumpedLine``) and the modal (rational) approximation (``ModalLine`
 Line data: length L, cross-section A, density rho, bulk modulus beta = rho c^2, and
 linear (laminar) friction F/rho = B q with B = 8 nu / r0^2, r0 = sqrt(A/pi)  (4.159)-(4.160).
 """
+from __future__ import annotations
+
 import numpy as np
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import FluidPort

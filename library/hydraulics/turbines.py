@@ -1,6 +1,6 @@
 """Hydropower: a penstock (rigid water column) and an impulse turbine with its nozzle
 (Egeland & Gravdahl 11.2.9, (11.101)-(11.114))."""
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import RealInput, RotationalFlange

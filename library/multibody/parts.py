@@ -4,7 +4,7 @@ Rotation of a frame by phi maps a vector r given in that frame to the world:
 
     R(phi) r = (cos(phi) r_x - sin(phi) r_y,  sin(phi) r_x + cos(phi) r_y)
 """
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

@@ -2,7 +2,7 @@
 line forces between two frames, and a force or torque given in the world acting on one
 frame.  They read the frames' positions and orientations and write only cut forces and
 torques."""
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import RealInput

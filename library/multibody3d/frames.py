@@ -28,7 +28,9 @@ the angular velocity the bodies compute from R is exactly w (G(Q) Q = 0 and
 G(Q) G(Q)^T = Q^T Q I).  Without the division a drift of 1e-6 in |Q| made R
 non-orthogonal by as much, and the stabilization then fought the bodies' dynamics.
 """
-import sympy as sp
+from __future__ import annotations
+
+from acausal._sympy import sympy as sp
 
 __all__ = ["orientation", "position", "gravity", "force", "torque", "vector", "skew",
            "planar_rotation", "from_Q", "quaternion_rates", "angular_velocity2",

@@ -5,7 +5,9 @@ part of the connector, ``acausal.ports.spatial``): the World, and every joint an
 part for its frame_b from its frame_a (``propagate``).  Bodies, force elements and
 sensors only read them.
 """
-import sympy as sp
+from __future__ import annotations
+
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports.spatial import Frame

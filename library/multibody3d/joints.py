@@ -19,8 +19,10 @@ needs to be detected and refused.  R(Q) is divided by Q^T Q (``frames.from_Q``),
 the joint's variable Q_2 = Q^T Q: index reduction differentiates R twice, and the
 quotient of the full polynomial made the generated code of a free body 3.5 times longer.
 """
+from __future__ import annotations
+
 import numpy as np
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import RotationalFlange, TranslationalFlange

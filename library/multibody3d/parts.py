@@ -4,7 +4,9 @@ Parts.Body, BodyShape, BodyBox, BodyCylinder, FixedTranslation, FixedRotation).
 Vectors are given as three scalar parameters with the MSL's index (``r_CM_1``, ``r_CM_2``,
 ``r_CM_3`` for r_CM), so that each can be modified and bound with ``ac.ref``.
 """
-import sympy as sp
+from __future__ import annotations
+
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports.spatial import Frame

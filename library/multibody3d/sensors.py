@@ -2,7 +2,7 @@
 Absolute sensors take no force or torque from their frame; the cut-force sensor is a
 rigid connection that reports what passes through it.  Outputs are resolved as stated
 in each class (the MSL's default resolveInFrame)."""
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import RealOutput

@@ -12,7 +12,7 @@ interfaces between radii r_i and r_o, uniform wear).  The modes, their events an
 way the stuck torque is found are those of
 :class:`acausal.library.rotational.friction_modes.PartialFriction`.
 """
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import RealInput

@@ -1,5 +1,5 @@
 """Rotational components (Modelica.Mechanics.Rotational.Components; Egeland & Gravdahl 3.2)."""
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import RotationalFlange

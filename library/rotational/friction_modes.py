@@ -57,7 +57,7 @@ force (``fn``) and its sliding law.
 from __future__ import annotations
 
 import numpy as np
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

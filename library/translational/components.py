@@ -1,6 +1,6 @@
 """Translational components (Egeland & Gravdahl 2.1.2: the mass-spring-damper; the MSL's
 hard stops)."""
-import sympy as sp
+from acausal._sympy import sympy as sp
 
 import acausal as ac
 

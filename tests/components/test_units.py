@@ -75,6 +75,25 @@ def test_a_wrong_model_is_rejected_naming_equation_component_and_dimensions():
     assert issubclass(UnitError, ac.ModelError) and ac.UnitError is UnitError
 
 
+def test_a_model_from_the_compile_cache_reports_its_findings_again(tmp_path, monkeypatch):
+    """A flat-key hit reuses the entry's unit check (the key covers every unit and
+    expression): the same mismatch is warned or raised in the mode of this compile."""
+    monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path))
+    monkeypatch.delenv("ACAUSAL_COMPILE_CACHE", raising=False)
+    with pytest.warns(UnitWarning, match=re.escape(WRONG)):
+        first = ac.compile(Oscillator(), check_units="warn", backend="numpy")
+    with pytest.warns(UnitWarning, match=re.escape(WRONG)):
+        again = ac.compile(Oscillator(), check_units="warn", backend="numpy")
+    assert any("compile cache" in n for n in again.report.notes)
+    assert again.report.units.mismatches == first.report.units.mismatches == [WRONG]
+    with pytest.raises(UnitError, match=re.escape(WRONG)):
+        ac.compile(Oscillator(), check_units="error", backend="numpy")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UnitWarning)
+        off = ac.compile(Oscillator(), check_units="off", backend="numpy")
+    assert off.report.units.mode == "off" and off.report.units.mismatches == []
+
+
 def test_warn_mode_warns_and_compiles_off_mode_is_silent():
     with pytest.warns(UnitWarning, match=re.escape(WRONG)):
         compiled = ac.compile(Oscillator(), check_units="warn", cache=False)
