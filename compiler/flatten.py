@@ -27,7 +27,8 @@ from ..components.component import (Component, Connection, InvalidConnection,
                                      Port, compiling, in_context)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
-from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
+from .flatder import check_der_arguments, expand_derivatives, has_der
+from .symbolic import signed_sum, signed_terms, symbols_of
 from .usercode import failed_reading
 
 __all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
@@ -150,7 +151,7 @@ def flatten(model: Component) -> FlatModel:
     # substitution first: a structural zero removes the derivative it multiplies
     # (L*der(i) with L = 0), and no der(i) may be created for it
     _substitute_parameter_expressions(flat)
-    _expand_derivatives(flat)
+    expand_derivatives(flat)
     _check_infinite_parameters(flat)
     return flat
 
@@ -332,8 +333,8 @@ def _check_symbols(flat: FlatModel) -> None:
         free = symbols_of(eq.residual)
         if not free <= allowed:
             _check_known(free - allowed, f"equation '{eq.text}' in {eq.where}")
-        if _has_der(eq.residual):
-            _check_der_arguments(eq, var_syms)
+        if has_der(eq.residual):
+            check_der_arguments(eq, var_syms)
         if free.isdisjoint(var_syms):
             raise InvalidEquation(f"equation '{eq.text}' in {eq.where} involves no "
                                   "variable of the model (only parameters, time and "
@@ -524,93 +525,3 @@ def _check_infinite_parameters(flat: FlatModel) -> None:
             raise InvalidValue(f"{which} makes the {where} infinite or undefined; an "
                                "infinite value is allowed only where the equations have a "
                                "finite limit (as 1/Tt for Tt = inf)")
-
-
-def _expand_derivatives(flat: FlatModel) -> None:
-    """Replace der(expr) by symbols der(x), expanding der of expressions by the chain rule."""
-    var_syms = {v.symbol for v in flat.variables}
-    der_syms = set(flat.derivatives.values())
-    for eq in flat.equations + flat.initial_equations:
-        if _has_der(eq.residual):
-            eq.residual = _replace_der(eq.residual, var_syms, flat.derivatives, der_syms)
-
-
-def _has_der(expr) -> bool:
-    """``expr.has(der)``; a product or sum of symbols and numbers (most equations) is
-    answered from its arguments without sympy's general pattern search."""
-    if expr.is_Atom:
-        return False
-    if expr.is_Add or expr.is_Mul:
-        return any(not a.is_Atom and _has_der(a) for a in expr.args)
-    return expr.has(der)
-
-
-def _outer_ders(expr) -> list:
-    """The der() nodes of expr that are not inside another der(), in the order of a
-    depth-first walk over the arguments (the order sympy's ``replace`` visits them)."""
-    out, stack = [], [expr]
-    while stack:
-        e = stack.pop()
-        if isinstance(e, der):
-            out.append(e)
-        elif not e.is_Atom:
-            stack.extend(reversed(e.args))
-    return out
-
-
-def _check_der_arguments(eq: FlatEquation, var_syms: set) -> None:
-    """der() of something that cannot vary (a number, a parameter) is always zero: the
-    argument was meant to be a variable."""
-    for d in sorted(eq.residual.atoms(der), key=sp.default_sort_key):
-        arg = d.args[0]
-        if not (arg.free_symbols & var_syms) and not arg.has(time):
-            what = ("a number" if arg.is_number else
-                    "a parameter" if isinstance(arg, sp.Symbol) else
-                    "an expression of parameters")
-            raise InvalidEquation(f"equation '{eq.text}' in {eq.where}: {d} is the "
-                                  f"derivative of {what}, which is constant, so it is 0; "
-                                  "der() applies to variables")
-
-
-def _replace_der(expr, var_syms, derivatives, der_syms):
-    """der_syms: the values of ``derivatives``, kept up to date here."""
-    def der_symbol(x):
-        d = derivative_symbol(x, derivatives)
-        der_syms.add(d)
-        return d
-
-    def total_derivative(arg):
-        arg = _replace_der(arg, var_syms, derivatives, der_syms) if arg.has(der) else arg
-        if arg in var_syms:
-            return der_symbol(arg)
-        out = sp.diff(arg, time) if arg.has(time) else sp.Integer(0)
-        for s in sorted((q for q in symbols_of(arg) if q in var_syms or q in der_syms),
-                        key=lambda s: s.name):
-            if s in var_syms:
-                var_syms_d = der_symbol(s)
-            else:  # s is already a derivative symbol: its derivative is the next one
-                var_syms.add(s)
-                var_syms_d = der_symbol(s)
-            out += sp.diff(arg, s) * var_syms_d
-        return out
-
-    coeffs = {}
-    if signed_terms(expr, 1, coeffs):      # +-x +- der(y) ...: no chain rule needed
-        out = {}
-        for q, c in coeffs.items():
-            if type(q) is der:
-                if q.args[0] not in var_syms:
-                    break
-                q = der_symbol(q.args[0])
-            if q in out:
-                break
-            out[q] = c
-        else:
-            return signed_sum(out)
-    # der() nodes replaced in walk order (the der(x) symbols are created as a bottom-up
-    # replacement would); total_derivative expands inner der() in an argument itself
-    values = {}
-    for d in _outer_ders(expr):
-        if d not in values:
-            values[d] = total_derivative(d.args[0])
-    return expr.xreplace(values)
