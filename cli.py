@@ -206,9 +206,9 @@ def parse_assignments(items) -> dict:
 
 
 # -- the commands ------------------------------------------------------------------------
-def _compile(model, backend: str):
+def _compile(model, backend: str, check_units: str = "warn"):
     from . import compile as compile_model
-    return compile_model(model, backend=backend)
+    return compile_model(model, backend=backend, check_units=check_units)
 
 
 def _cmd_run(args) -> int:
@@ -219,7 +219,7 @@ def _cmd_run(args) -> int:
     t_end = args.t_end if args.t_end is not None else getattr(model, "stop_time", None)
     if t_end is None:
         raise UsageError(f"--t-end is required: {type(model).__name__} has no stop_time")
-    compiled = _compile(model, args.backend)
+    compiled = _compile(model, args.backend, args.check_units)
     defaults = {n: float(compiled.p[compiled.param_names.index(n)])
                 for n in values if n in compiled.param_names}
     compiled.set_parameters(values)            # unknown names: NotInModel, from the model
@@ -293,7 +293,7 @@ def _check_names(compiled, names) -> None:
 def _cmd_report(args) -> int:
     _check_writable("--dot", args.dot)
     model, _ = load_model(args.script)
-    compiled = _compile(model, args.backend)
+    compiled = _compile(model, args.backend, args.check_units)
     report = compiled.report
     if args.dot:
         with open(args.dot, "w") as fh:
@@ -437,6 +437,8 @@ def build_parser() -> argparse.ArgumentParser:
                      help="plot variables (default: the printed ones) to an image file")
     run.add_argument("--print", nargs="+", metavar="VAR",
                      help="print the final values of these variables instead of the states")
+    run.add_argument("--check-units", choices=("warn", "error", "off"), default="warn",
+                     help="dimensional check of every equation: warn (default), error, off")
     run.set_defaults(handler=_cmd_run)
 
     rep = sub.add_parser("report", parents=[model_arg, common],
@@ -451,6 +453,8 @@ def build_parser() -> argparse.ArgumentParser:
                           "edge from each block to the blocks that use its variables)")
     rep.add_argument("--backend", choices=("auto", "c", "numpy"), default="auto",
                      help="generated code (the report is the same for both)")
+    rep.add_argument("--check-units", choices=("warn", "error", "off"), default="warn",
+                     help="dimensional check of every equation: warn (default), error, off")
     rep.set_defaults(handler=_cmd_report)
 
     fmu = sub.add_parser("fmu", parents=[model_arg, common],

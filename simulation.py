@@ -79,7 +79,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              max_step: float = np.inf, parameters: dict | None = None,
              max_order: int = 5, raise_on_failure: bool = False,
              backend: str = "auto", progress: bool | None = None,
-             step_loop: str = "auto") -> Result:
+             step_loop: str = "auto", check_units: str = "warn") -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -96,6 +96,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     None shows it only when stderr is a terminal and the run takes more than 2 s.
     ``step_loop``: where the BDF steps run: "auto" (the compiled loop when the model runs
     on the C backend and qualifies, see :mod:`acausal.solvers.cbdf`), "c" or "python".
+    ``check_units``: as in :func:`compile`, for a Component compiled here.
     """
     t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
     if not t_end > t_start:
@@ -107,7 +108,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
             or not 1 <= max_order <= 5:
         raise ValueError(f"simulate: max_order must be an integer from 1 to 5, got {max_order!r}")
     t_eval = _output_times(t_eval, n_points, t_start, t_end)
-    compiled = compile(model, backend)
+    compiled = compile(model, backend, check_units=check_units)
     if parameters and not isinstance(parameters, dict):
         raise ValueError("simulate: parameters must be a dict {name: value}")
     # the values hold for this run only (as in sweeps and estimation): a later run of the

@@ -403,3 +403,38 @@ def test_version(capsys):
         proc = subprocess.run([script, "--version"], capture_output=True, text=True,
                               timeout=60)
         assert proc.returncode == 0 and proc.stdout == out
+
+
+WRONG_UNITS_SCRIPT = '''
+import acausal as ac
+from acausal.library import rotational as rot
+
+
+class WrongSpring(rot.PartialCompliant):
+    c = ac.Parameter(10.0, unit="N.m/rad", min=0)
+
+    def equations(self):
+        return [ac.Eq(self.tau, self.c * ac.der(self.phi_rel))]
+
+
+class Oscillator(ac.Component):
+    stop_time = 0.1
+    housing = rot.Fixed()
+    spring = WrongSpring()
+    mass = rot.Inertia(J=0.1, phi={"start": 0.1, "fixed": True})
+
+    def equations(self):
+        return [ac.connect(self.housing.flange, self.spring.flange_a),
+                ac.connect(self.spring.flange_b, self.mass.flange_a)]
+'''
+
+
+def test_check_units_error_refuses_a_model_whose_units_differ(capsys, tmp_path):
+    path = tmp_path / "wrong_units.py"
+    path.write_text(WRONG_UNITS_SCRIPT)
+    code, out, err = run_cli(capsys, "run", f"{path}:Oscillator", "--check-units", "error",
+                             "--backend", "numpy")
+    assert code == 1 and "UnitError" in err and "spring.tau" in err
+    code, out, err = run_cli(capsys, "report", f"{path}:Oscillator", "--check-units", "off",
+                             "--backend", "numpy")
+    assert code == 0, err

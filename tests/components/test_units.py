@@ -242,3 +242,8 @@ def test_a_reinit_that_changes_the_dimension_is_rejected():
     with pytest.raises(UnitError, match=r"when h < 0 in \(model\) \(Ball\): reinit changes "
                                         r"the dimension: 'v' is m/s but '-e\*pre\(h\)' is m"):
         check_units(flatten(Ball()), "error")
+
+
+def test_simulate_takes_the_unit_check_mode_of_a_component_it_compiles():
+    with pytest.raises(UnitError, match=re.escape(WRONG)):
+        ac.simulate(Oscillator(), t_end=0.1, check_units="error")
