@@ -44,7 +44,8 @@ def _stall_closed_form():
 def test_stall_equilibrium_closed_form_and_root_finder_agree():
     closed = _stall_closed_form()
     sol = root(lambda x: _mg3(0.0, x, 0.1), [0.4, 0.3, 3.5], method="hybr", tol=1e-13)
-    assert sol.success and np.max(np.abs(_mg3(0.0, sol.x, 0.1))) < 1e-14
+    # a residual of the O(1) right-hand side: converged, with room for another BLAS
+    assert sol.success and np.max(np.abs(_mg3(0.0, sol.x, 0.1))) < 1e-11
     assert np.allclose(sol.x, closed, rtol=1e-12, atol=0)
     # INVENTORY TF-08 (scipy LSODA, t = 500): Psi 0.4133, Phi 0.3215, J 3.673
     assert np.allclose(closed, [0.4133, 0.3215, 3.673], atol=6e-4)
@@ -106,7 +107,7 @@ def test_design_point_is_unstable_the_way_b_says(model, B):
     the stall mode sigma (1 - m^2) grows for either B; the surge mode (Psi, Phi) is
     damped for B = 0.1 and grows for B = 1 -- rotating stall and surge."""
     x = _design_point()
-    assert max(abs(v) for v in _mg3(0.0, x, B)) < 1e-15
+    assert max(abs(v) for v in _mg3(0.0, x, B)) < 1e-12          # an equilibrium (O(1) terms)
     sys = ac.linearize(model(), at={"plenum.psi": x[0], "compressor.phi": x[1],
                                     "compressor.J": 0.0})
     hand = np.linalg.eigvals(_mg3_jacobian(x, B))
