@@ -185,8 +185,9 @@ def _c_function(name, statements, calls=(), n_out=0) -> str:
 
 
 # -- building and loading ---------------------------------------------------------------------
-def build(source: str) -> str:
-    """The path of the shared library for source, compiled now or found in the cache.
+def build(source: str, cached_only: bool = False) -> str | None:
+    """The path of the shared library for source, compiled now or found in the cache
+    (with ``cached_only``: None rather than compiling it).
 
     A large source is compiled without optimization (the straight-line code of a model
     gains little from it, and the compiler's time grows faster than the source) and in
@@ -200,6 +201,8 @@ def build(source: str) -> str:
     lib = os.path.join(root, f"model_{key.hexdigest()[:24]}.so")
     if os.path.exists(lib):
         return lib
+    if cached_only:
+        return None
     units = _units(source, os.cpu_count() or 1) if len(source) > LARGE else [source]
     with tempfile.TemporaryDirectory(dir=root) as tmp:
         objects, procs = [], []

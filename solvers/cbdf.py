@@ -69,9 +69,9 @@ _KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singu
 _lib = None
 
 
-def library():
+def library(cached_only: bool = False):
     """The compiled step loop (built once into the C backend's cache), or None when no
-    C compiler works."""
+    C compiler works (with ``cached_only``: also when it is not built yet)."""
     global _lib
     if _lib is None:
         from ..compiler.cbackend import build
@@ -81,7 +81,10 @@ def library():
             for name in ("cbdf_lu.c", "cbdf.c"):     # one translation unit
                 with open(os.path.join(here, name)) as f:
                     source += f.read() + "\n"
-            lib = ctypes.CDLL(build(source))
+            path = build(source, cached_only=cached_only)
+            if path is None:
+                return None
+            lib = ctypes.CDLL(path)
         except (BackendError, OSError):
             _lib = False
             return None

@@ -6,7 +6,11 @@ Petzold 1996, sec. 5.2; Hindmarsh et al. 2005).  Two back ends are
 chosen automatically from what the problem supplies:
 
 * dense LU (LAPACK ``getrf``/``getrs`` through :mod:`scipy.linalg`) for small systems,
-  called directly so that a solve costs a few microseconds of Python overhead;
+  called directly so that a solve costs a few microseconds of Python overhead; when
+  scipy.linalg is not loaded yet and the compiled step loop's library is already built
+  (:mod:`.cbdf`), its LU (``cbdf_lu.c``, partial pivoting, the same pivot test and
+  equilibration) instead, since importing scipy.linalg takes 0.2-0.4 s, longer than a
+  small model's whole run from a warm cache;
 * sparse LU (SuperLU through :func:`scipy.sparse.linalg.splu`) when the problem gives a
   ``jac_pattern`` or returns a scipy.sparse matrix and ``n`` exceeds
   :data:`SPARSE_THRESHOLD`.
@@ -38,6 +42,7 @@ matrix).
 """
 from __future__ import annotations
 
+import ctypes
 import sys
 
 import numpy as np
@@ -205,6 +210,8 @@ class LinearSolver:
         self._piv = None
         self._r = self._c = None     # row and column equilibration of the factored matrix
         self._getrf = self._getrs = None
+        self._clu = None             # the compiled step loop's library, for its dense LU
+        self._in_c = False           # whether the last factorization is the compiled one
 
     def dense_decided(self) -> bool:
         """Whether the factorization is dense whatever form the matrix comes in."""
@@ -216,13 +223,18 @@ class LinearSolver:
             offered = issparse(J) or self.pattern is not None
             self.sparse = bool(offered and self.n > SPARSE_THRESHOLD)
         if not self.sparse:
-            from scipy.linalg import get_lapack_funcs    # only a dense factorization needs it
-            self._getrf, self._getrs = get_lapack_funcs(("getrf", "getrs"),
-                                                        (np.empty((1, 1)),))
+            self._clu = _compiled_lu()
+            if self._clu is None:
+                self._lapack()
+
+    def _lapack(self) -> None:
+        from scipy.linalg import get_lapack_funcs    # only a dense factorization needs it
+        self._getrf, self._getrs = get_lapack_funcs(("getrf", "getrs"), (np.empty((1, 1)),))
 
     def factor(self, J) -> None:
         """LU-factor ``J``; raise :class:`SingularMatrixError` if it is singular."""
-        if self.sparse is None or (not self.sparse and self._getrf is None):
+        if self.sparse is None or (not self.sparse and self._getrf is None
+                                   and self._clu is None):
             self._decide(J)
         if self.sparse:
             self._factor_sparse(J)
@@ -234,6 +246,11 @@ class LinearSolver:
         if not np.all(np.isfinite(A)):
             raise SingularMatrixError("iteration matrix has non-finite entries",
                                       *self._nonfinite(A))
+        if self._clu is not None:
+            if self._factor_compiled(A):
+                return
+            self._lapack()        # singular: LAPACK's path, for its diagnostics
+        self._in_c = False
         lu, piv, info = self._getrf(np.array(A, order="F"), overwrite_a=True)
         if info == 0 and _pivots_ok(np.diagonal(lu)):
             self._lu, self._piv, self._r = lu, piv, None
@@ -246,6 +263,19 @@ class LinearSolver:
         if info > 0 or not _pivots_ok(np.diagonal(lu)):
             raise SingularMatrixError("iteration matrix is singular", matrix=J)
         self._lu, self._piv, self._r, self._c = lu, piv, r, c
+
+    def _factor_compiled(self, A: np.ndarray) -> bool:
+        n = self.n
+        A = np.ascontiguousarray(A, dtype=float)
+        lu, piv = np.empty((n, n)), np.empty(n, dtype=np.int64)
+        r, c, equil = np.empty(n), np.empty(n), ctypes.c_int(0)
+        code = self._clu.dense_factor(A.ctypes.data, lu.ctypes.data, piv.ctypes.data,
+                                      r.ctypes.data, c.ctypes.data, n, ctypes.byref(equil))
+        if code != 0:
+            return False
+        self._lu, self._piv, self._in_c = lu, piv, True
+        self._r, self._c = (r, c) if equil.value else (None, None)
+        return True
 
     def _factor_sparse(self, J) -> None:
         import scipy.sparse as sp
@@ -273,6 +303,13 @@ class LinearSolver:
         r = self._r
         if self.sparse:
             return self._lu.solve(b) if r is None else self._c * self._lu.solve(r * b)
+        if self._in_c:
+            x = np.array(b, dtype=float)
+            self._clu.dense_solve(self._lu.ctypes.data, self._piv.ctypes.data,
+                                  None if r is None else r.ctypes.data,
+                                  None if r is None else self._c.ctypes.data, self.n,
+                                  x.ctypes.data)
+            return x
         if r is None:
             return self._getrs(self._lu, self._piv, b)[0]
         x, _ = self._getrs(self._lu, self._piv, r * b, overwrite_b=True)
@@ -293,6 +330,23 @@ def _splu(A):
         return splu(A)
     except RuntimeError:     # exactly singular
         return None
+
+
+def _compiled_lu():
+    """The compiled step loop's library for a dense LU, when scipy.linalg is not loaded
+    yet and that library is built (never built for this), else None."""
+    if "scipy.linalg" in sys.modules:
+        return None
+    from . import cbdf
+    lib = cbdf.library(cached_only=True)
+    if lib is not None and not getattr(lib, "_lu_typed", False):
+        P = ctypes.c_void_p
+        lib.dense_factor.argtypes = [P, P, P, P, P, ctypes.c_long, P]
+        lib.dense_factor.restype = ctypes.c_int
+        lib.dense_solve.argtypes = [P, P, P, P, ctypes.c_long, P]
+        lib.dense_solve.restype = None
+        lib._lu_typed = True
+    return lib
 
 
 def make_linear_solver(problem) -> LinearSolver:
