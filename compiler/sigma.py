@@ -28,6 +28,11 @@ from .structure import StructurallySingular, base_variables
 __all__ = ["SigmaResult", "signature_matrix", "sigma_method"]
 
 _DENSE_LIMIT = 1000    # above this, the sparse assignment solver is used
+# Up to this size the assignment is solved here (Hungarian method) rather than by
+# scipy.optimize, whose import (0.3-0.4 s, with scipy.sparse and scipy.linalg) is longer
+# than the whole compile of a small model; the pure-numpy method costs O(n^2) vector
+# operations, under 20 ms at this size.
+_OWN_LIMIT = 40
 
 
 @dataclass
@@ -114,10 +119,11 @@ def _transversal(n: int, i, j, val) -> np.ndarray:
         big = (n + 1) * (top - val.min(initial=0.0) + 1)
         a = np.full((n, n), -big)
         a[i, j] = val
-        # scipy.optimize (with scipy.special, .spatial and .fft) is the largest import
-        # of a first compile; only this call needs it
-        from scipy.optimize import linear_sum_assignment
-        _, cols = linear_sum_assignment(a, maximize=True)
+        if n <= _OWN_LIMIT:
+            cols = _hungarian(-a)
+        else:
+            from scipy.optimize import linear_sum_assignment
+            _, cols = linear_sum_assignment(a, maximize=True)
         ok = finite[np.arange(n), cols].all()
     else:       # weights top+1-sigma are all >= 1: no entry is an implicit zero
         from scipy.sparse import csr_matrix
@@ -131,6 +137,45 @@ def _transversal(n: int, i, j, val) -> np.ndarray:
     if not ok:
         raise StructurallySingular("signature matrix has no finite transversal")
     return np.asarray(cols)
+
+
+def _hungarian(cost: np.ndarray) -> np.ndarray:
+    """Column of each row in a minimum-cost assignment of the square matrix ``cost``.
+
+    The Hungarian method in its shortest-augmenting-path form (Kuhn 1955; Munkres 1957;
+    O(n^3), with row potentials u and column potentials v, cost - u - v >= 0 throughout):
+    each row in turn is added by growing a tree of tight edges Dijkstra-like from it
+    until a free column is reached, then augmenting along the tree.  The costs here are
+    integers, so the arithmetic is exact."""
+    n = cost.shape[0]
+    u, v = np.zeros(n + 1), np.zeros(n + 1)
+    row_of = np.zeros(n + 1, dtype=np.int64)        # row_of[j]: row (1-based) of column j
+    way = np.zeros(n + 1, dtype=np.int64)
+    for i in range(1, n + 1):
+        row_of[0], j0 = i, 0
+        dist = np.full(n + 1, np.inf)
+        used = np.zeros(n + 1, dtype=bool)
+        while row_of[j0] != 0:
+            used[j0] = True
+            i0 = row_of[j0]
+            reduced = cost[i0 - 1] - u[i0] - v[1:]
+            better = ~used[1:] & (reduced < dist[1:])
+            dist[1:][better] = reduced[better]
+            way[1:][better] = j0
+            free = np.where(used[1:], np.inf, dist[1:])
+            j1 = int(np.argmin(free)) + 1
+            delta = free[j1 - 1]
+            u[row_of[used]] += delta
+            v[used] -= delta
+            dist[1:][~used[1:]] -= delta
+            j0 = j1
+        while j0:                                    # augment along the tree
+            j1 = way[j0]
+            row_of[j0] = row_of[j1]
+            j0 = j1
+    cols = np.empty(n, dtype=np.int64)
+    cols[row_of[1:] - 1] = np.arange(n)
+    return cols
 
 
 def _offsets(n: int, i, j, val, cols) -> tuple:

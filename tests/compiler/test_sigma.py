@@ -99,3 +99,20 @@ def test_random_models_pantelides_equals_sigma():
         assert len(sel.states) == res.dof          # dummy derivatives keep the dof
         index1_matching(p, sel)
     assert checked > 200
+
+
+def test_own_assignment_matches_scipy_on_random_signatures():
+    """The Hungarian method used for small systems (no scipy.optimize import) finds a
+    transversal of the same total value as scipy's assignment solver."""
+    from scipy.optimize import linear_sum_assignment
+    from acausal.compiler.sigma import _hungarian
+    import numpy as np
+    rng = np.random.default_rng(11)
+    for _ in range(300):
+        n = int(rng.integers(1, 25))
+        a = rng.integers(-2, 4, size=(n, n)).astype(float)
+        a[rng.random((n, n)) < 0.5] = -100.0 * n        # absent entries
+        cols = _hungarian(-a)
+        assert sorted(cols.tolist()) == list(range(n))
+        rows, ref = linear_sum_assignment(a, maximize=True)
+        assert a[np.arange(n), cols].sum() == a[rows, ref].sum()
