@@ -107,6 +107,28 @@ class DynamicStateSelection:
         self._reference = best
         return dummies
 
+    def watch(self, current: set):
+        """What :meth:`choose` tests before it searches, laid out for a compiled step loop
+        that tests it itself after every step (:mod:`acausal.solvers.cbdf_dyn`): per
+        level ``(entries, scales, keep, threshold)`` -- each row's index into the
+        Jacobian value array for every candidate column (-1: a structural zero), the
+        columns' scales, the positions of the current dummies among the candidates and
+        the least quality that keeps them.  None when :meth:`choose` would search at
+        once (no search yet, or ``current`` is not one dummy per row of every level)."""
+        if not current or len(self._reference) != len(self.levels):
+            return None
+        out, allowed = [], None
+        for rows, r0 in zip(self.levels, self._reference):
+            cols = self._columns(rows, allowed)
+            keep = [k for k, c in enumerate(cols) if c in current]
+            if len(keep) != len(rows):
+                return None
+            entries = [[self.entry.get((r, c), -1) for c in cols] for r in rows]
+            scales = [float(self.nominal[self.base[c]]) for c in cols]
+            out.append((entries, scales, keep, _DEGRADED * r0))
+            allowed = {self.diff_to_var[cols[k]] for k in keep}
+        return out
+
     def _columns(self, rows, allowed):
         return sorted({v for r in rows for v in self.row_vars[r]
                        if (v in allowed if allowed is not None else self.var_to_diff[v] < 0)})
