@@ -68,6 +68,7 @@ class DynamicStateSelection:
         self.switches = []                    # (time, new dummies)
         self.entry = {}
         self._reference = []
+        self._plan = None                     # (choice, its blocks' layout) for keeps()
 
     def _bases(self) -> list:
         out = []
@@ -88,9 +89,7 @@ class DynamicStateSelection:
         """The dummies for Jacobian values ``vals`` (at the point z): ``current`` unless
         clearly worse."""
         scale = self.nominal
-        ratios = [_quality(b, keep) for b, _, keep in self._blocks(vals, scale, current)]
-        if current and len(ratios) == len(self._reference) and all(
-                r >= _DEGRADED * r0 for r, r0 in zip(ratios, self._reference)):
+        if self.keeps(vals, current):
             return current
         dummies, allowed, best = set(), None, []
         for rows in self.levels:
@@ -105,7 +104,30 @@ class DynamicStateSelection:
             dummies.update(chosen)
             allowed = {self.diff_to_var[c] for c in chosen}
         self._reference = best
+        self._plan = None
         return dummies
+
+    def keeps(self, vals, current: set) -> bool:
+        """The test before a search: on every level the quality of ``current`` is at
+        least half the best quality of the last search (module docstring).  The blocks
+        of a choice are laid out once (:meth:`watch`), so the test costs a gather and a
+        small determinant per level after every step."""
+        key = frozenset(current)
+        if self._plan is None or self._plan[0] != key:
+            plan = self.watch(current)
+            self._plan = (key, None if plan is None else [
+                (np.asarray(e, dtype=np.int64), np.asarray(e) >= 0, np.asarray(sc), k, th)
+                for e, sc, k, th in plan])
+        plan = self._plan[1]
+        if plan is None:
+            return False
+        for entries, present, scales, keep, threshold in plan:
+            B = np.where(present, vals[entries] * scales, 0.0)
+            peak = np.abs(B).max(axis=1, keepdims=True)
+            B /= np.where(peak > 0, peak, 1.0)
+            if not _quality(B, keep) >= threshold:
+                return False
+        return True
 
     def watch(self, current: set):
         """What :meth:`choose` tests before it searches, laid out for a compiled step loop
@@ -164,23 +186,16 @@ class DynamicStateSelection:
             R -= np.outer(q, q @ R)
         return sorted(chosen)
 
-    def _blocks(self, vals, scale, dummies):
-        allowed = None
-        for rows in self.levels:
-            cols = self._columns(rows, allowed)
-            keep = [k for k, c in enumerate(cols) if c in dummies]
-            if len(keep) != len(rows):
-                yield np.zeros((len(rows), len(rows))), cols, list(range(len(rows)))
-                return
-            yield self._block(vals, scale, rows, cols), cols, keep
-            allowed = {self.diff_to_var[cols[k]] for k in keep}
-
 
 def _quality(B, keep) -> float:
     """|det| of the chosen columns over the product of the *whole* rows' norms (a
     Hadamard ratio that sees a row's chosen entries shrink next to its alternatives)."""
-    norms = np.prod(np.linalg.norm(B, axis=1))
-    return abs(np.linalg.det(B[:, keep])) / norms if norms > 0 else 0.0
+    norms = np.prod(np.sqrt((B * B).sum(axis=1)))
+    if not norms > 0:
+        return 0.0
+    # a 1 x 1 determinant is its entry (LAPACK's LU gives exactly that, more slowly)
+    det = B[0, keep[0]] if len(keep) == 1 else np.linalg.det(B[:, keep])
+    return abs(float(det)) / norms
 
 
 def _well_enough(block, keep, best, hysteresis):
