@@ -18,9 +18,13 @@ coefficients), which :meth:`CompiledBDF.run` copies back into the attributes the
 driver and :meth:`BDF.interpolate` read.  Output at requested times is the BDF
 interpolant, evaluated in C.
 
+With dynamic state selection the loop also tests, after every step, whether the current
+choice of states is still good enough (:mod:`.cbdf_dyn`), and returns to Python only for
+the search when it is not; a new choice comes back as other active linking rows, the
+history kept.
+
 When it is used (``step_loop="auto"``): the problem is a compiled model on the C backend
-(so its functions are C), without dynamic state selection (whose re-choice of states
-after every step is Python), with at most :data:`MAX_DENSE` unknowns (the C loop factors
+(so its functions are C), with at most :data:`MAX_DENSE` unknowns (the C loop factors
 dense: O(n^3) per factorization; larger systems keep the Python loop, whose sparse LU is
 SuperLU), and without stability limit detection.  ``step_loop="c"`` also runs any other
 problem of at most :data:`MAX_DENSE` unknowns, calling its Python residual, Jacobian and
