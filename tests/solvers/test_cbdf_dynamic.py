@@ -83,3 +83,63 @@ def test_every_switch_keeps_the_better_conditioned_coordinate(runs):
         assert state_x == ("der(y)" in new)     # exactly one of them is a state
         assert (x < y) if state_x else (y < x), (float(s), x, y, new)
         assert min(x, y) / max(x, y) > 1.0 / 3.0
+
+
+class PushedPendulum(ac.Component):
+    """The Cartesian pendulum with a horizontal push F = +-F0 along the horizontal
+    velocity (a relation on vx: zero crossings), m = L = 1."""
+
+    L = ac.Parameter(1.0, unit="m")
+    m = ac.Parameter(1.0, unit="kg")
+    F0 = ac.Parameter(0.3, unit="N")
+    g = ac.Parameter(G, unit="m/s2")
+    x = ac.Variable(start=0.95, fixed=True, unit="m")
+    y = ac.Variable(start=-np.sqrt(1.0 - 0.95**2), unit="m")
+    vx = ac.Variable(start=0.0, fixed=True, unit="m/s")
+    vy = ac.Variable(start=0.0, unit="m/s")
+    lam = ac.Variable(start=10.0, unit="N/m")
+
+    def equations(self):
+        x, y, vx, vy, lam = self.x, self.y, self.vx, self.vy, self.lam
+        push = ac.if_else(vx > 0, self.F0, -self.F0)
+        return [ac.Eq(ac.der(x), vx), ac.Eq(ac.der(y), vy),
+                ac.Eq(self.m * ac.der(vx), -lam * x + push),
+                ac.Eq(self.m * ac.der(vy), -lam * y - self.m * self.g),
+                ac.Eq(x**2 + y**2, self.L**2)]
+
+
+def _pushed_angle(t_out, theta0, F0, t_end):
+    """theta'' = -g sin(theta) + F0 sign(omega) cos(theta) (the push's tangential part;
+    within |theta| < 90 degrees vx > 0 exactly when omega > 0), DOP853 restarted at each
+    turning point omega = 0."""
+    t, s, side, pieces = 0.0, [theta0, 0.0], -1.0, []   # from rest at x > 0: falls back
+    while t < t_end:
+        def turn(_, s, *a):
+            return s[1]
+        turn.terminal, turn.direction = True, -side     # omega leaves the sign `side`
+        sol = solve_ivp(lambda _, s, d: [s[1], -G * np.sin(s[0]) + d * F0 * np.cos(s[0])],
+                        (t, t_end), s, args=(side,), events=turn, method="DOP853",
+                        rtol=1e-12, atol=1e-12, dense_output=True)
+        pieces.append((t, sol.t[-1], sol.sol))
+        t, s, side = sol.t[-1], sol.y[:, -1], -side
+    return np.array([next(sol for _, b, sol in pieces if tk <= b)(tk)[0] for tk in t_out])
+
+
+def test_state_switches_and_events_together_match_the_angle_ode():
+    """Zero crossings (the push reverses at every turning point) and state switches in
+    one run: both loops locate the same events and take the same choices, and both
+    match the angle ODE restarted at its turning points."""
+    compiled = ac.compile(PushedPendulum(), backend="c")
+    t_out = np.linspace(0.0, 6.0, 241)
+    out = {loop: ac.simulate(compiled, t_end=6.0, rtol=RTOL, t_eval=t_out, step_loop=loop)
+           for loop in ("c", "python")}
+    theta = _pushed_angle(t_out, np.arcsin(0.95), 0.3, 6.0)
+    c, py = out["c"], out["python"]
+    assert len(c.events) >= 4 and len(c.state_switches) >= 4
+    assert np.allclose(np.asarray(c.events, float), np.asarray(py.events, float),
+                       rtol=0, atol=1e-6)
+    assert [s.changes for s in c.state_switches] == [s.changes for s in py.state_switches]
+    for res in out.values():
+        assert res.success, res.message
+        err = np.hypot(res["x"] - np.sin(theta), res["y"] + np.cos(theta))
+        assert err.max() < 100 * RTOL      # as for the free swing, over 3 periods, not 5
