@@ -36,6 +36,8 @@ value at the bottom, instead of switching at ~64 degrees.)
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = ["DynamicStateSelection"]
@@ -43,6 +45,7 @@ __all__ = ["DynamicStateSelection"]
 TIE = 0.5              # columns within this factor of the best count as tied
 _DEGRADED = 0.5        # search again below half the best Hadamard ratio of the last search
 _ALWAYS = 4            # state_select index of "always" (never a dummy)
+_SMALL = 8             # levels up to this size: the keep-or-search test in plain floats
 
 
 class DynamicStateSelection:
@@ -114,18 +117,25 @@ class DynamicStateSelection:
         small determinant per level after every step."""
         key = frozenset(current)
         if self._plan is None or self._plan[0] != key:
-            plan = self.watch(current)
-            self._plan = (key, None if plan is None else [
-                (np.asarray(e, dtype=np.int64), np.asarray(e) >= 0, np.asarray(sc), k, th)
-                for e, sc, k, th in plan])
+            self._plan = (key, self.watch(current))
         plan = self._plan[1]
         if plan is None:
             return False
-        for entries, present, scales, keep, threshold in plan:
-            B = np.where(present, vals[entries] * scales, 0.0)
-            peak = np.abs(B).max(axis=1, keepdims=True)
-            B /= np.where(peak > 0, peak, 1.0)
-            if not _quality(B, keep) >= threshold:
+        v = vals.tolist()     # levels are small: float arithmetic beats numpy's calls
+        for entries, scales, keep, threshold in plan:
+            B, norms = [], 1.0
+            for r in entries:
+                row = [v[k] * sc if k >= 0 else 0.0 for k, sc in zip(r, scales)]
+                peak = max(map(abs, row))
+                if peak > 0:
+                    row = [x / peak for x in row]
+                norms *= math.sqrt(sum(x * x for x in row))
+                B.append(row)
+            if len(keep) <= _SMALL:
+                det = _absdet([[row[j] for j in keep] for row in B])
+            else:
+                det = abs(float(np.linalg.det(np.array(B)[:, keep])))
+            if not (det / norms if norms > 0 else 0.0) >= threshold:
                 return False
         return True
 
@@ -196,6 +206,24 @@ def _quality(B, keep) -> float:
     # a 1 x 1 determinant is its entry (LAPACK's LU gives exactly that, more slowly)
     det = B[0, keep[0]] if len(keep) == 1 else np.linalg.det(B[:, keep])
     return abs(float(det)) / norms
+
+
+def _absdet(A) -> float:
+    """|det| of a small square matrix (lists of floats, overwritten): Gaussian
+    elimination with partial pivoting, as ``cbdf_dyn.c`` does in the compiled loop."""
+    det, n = 1.0, len(A)
+    for j in range(n):
+        p = max(range(j, n), key=lambda i: abs(A[i][j]))
+        if A[p][j] == 0.0:
+            return 0.0
+        A[j], A[p] = A[p], A[j]
+        d = A[j][j]
+        det *= d
+        for i in range(j + 1, n):
+            f = A[i][j] / d
+            if f:
+                A[i] = [a - f * b for a, b in zip(A[i], A[j])]
+    return abs(det)
 
 
 def _well_enough(block, keep, best, hysteresis):
