@@ -23,8 +23,9 @@ int dense_factor(const double *J, double *A, long *piv, double *r, double *c, lo
                  int *equil);
 void dense_solve(const double *A, const long *piv, const double *r, const double *c,
                  long n, double *b);
-/* dyn_keeps: cbdf_dyn.c (dynamic state selection), also in front of this file */
-int dyn_keeps(const double *vals, long nv, const long *dl, double *dd);
+/* dyn_due: cbdf_dyn.c (dynamic state selection), also in front of this file */
+int dyn_due(long *dl, double *dd, void *jac, double t, const double *y, double *p,
+            double *m, double *vals, double *w, long nv);
 
 /* dv */
 enum { D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO, D_SS,
@@ -540,23 +541,6 @@ static int emit_step(ctx_t *c) {
   return 1;
 }
 
-/* ------------------------------------------------------------------ dynamic states */
-/* 1 when Python must re-examine the choice of states at the accepted point (cbdf_dyn.c);
-   the answer is also left in dl[1] */
-static int reselect_due(ctx_t *c) {
-  void **pv = c->pv; long *dl = (long *)pv[P_DYNL];
-  if (!dl) return 0;
-  int keep = 0;
-  if (!dl[2] && c->iv[I_MODE] == 0) {
-    double *v = (double *)pv[P_JVALS];
-    ((genfn)pv[P_JACFN])(c->dv[D_TN], c->phi, (double *)pv[P_PAR], (double *)pv[P_M], v,
-                         (double *)pv[P_MW]);
-    keep = dyn_keeps(v, c->iv[I_NJAC], dl, (double *)pv[P_DYND]);
-  }
-  dl[1] = !keep;
-  return !keep;
-}
-
 /* ------------------------------------------------------------------ the loop */
 int cbdf_run(double *dv, long *iv, void **pv) {
   ctx_t c;
@@ -597,7 +581,10 @@ int cbdf_run(double *dv, long *iv, void **pv) {
         for (long i = 0; i < nr; ++i)
           if (off[i] != 0.0 && g[i] - off[i] >= 0.0) off[i] = 0.0;
     }
-    int due = reselect_due(&c);
+    int due = pv[P_DYNL] && dyn_due((long *)pv[P_DYNL], (double *)pv[P_DYND],
+                                    iv[I_MODE] == 0 ? pv[P_JACFN] : 0, dv[D_TN], c.phi,
+                                    (double *)pv[P_PAR], (double *)pv[P_M],
+                                    (double *)pv[P_JVALS], (double *)pv[P_MW], iv[I_NJAC]);
     if (!emit_step(&c)) { iv[I_PENDING] = 1; return R_FULL; }
     if (due) return R_FULL;            /* Python re-chooses the states, then goes on */
   }

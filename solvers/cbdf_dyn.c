@@ -5,7 +5,8 @@
    level of the dynamic state sets, its quality -- |det| of the chosen columns of the
    scaled level block over the product of the block's row norms -- is at least a fraction
    of the best quality found at the last search.  This file evaluates exactly that test on
-   the generated Jacobian's values; only when it fails does the loop return, and Python
+   the generated Jacobian's values at each accepted point (dyn_due, called by cbdf_run
+   after every step); only when it fails does the loop return, and Python
    searches (and may still keep the choice, by hysteresis).  The choice is fixed during a
    run of the loop, so everything about it (which Jacobian entries form each block, the
    column scales, the chosen columns, the thresholds) is laid out once by Python
@@ -75,4 +76,20 @@ int dyn_keeps(const double *vals, long nv, const long *dl, double *dd) {
     dp += 1 + nc;
   }
   return 1;
+}
+
+/* 1 when Python must re-examine the choice of states at the accepted point (t, y),
+   also left in dl[1]; jac: the generated Jacobian (NULL when the problem's functions
+   are Python: then Python examines after every step) */
+typedef int (*dyn_genfn)(double, const double *, const double *, const double *, double *,
+                         double *);
+int dyn_due(long *dl, double *dd, void *jac, double t, const double *y, double *p,
+            double *m, double *vals, double *w, long nv) {
+  int keep = 0;
+  if (!dl[2] && jac) {
+    ((dyn_genfn)jac)(t, y, p, m, vals, w);
+    keep = dyn_keeps(vals, nv, dl, dd);
+  }
+  dl[1] = !keep;
+  return !keep;
 }
