@@ -143,3 +143,24 @@ def test_state_switches_and_events_together_match_the_angle_ode():
         assert res.success, res.message
         err = np.hypot(res["x"] - np.sin(theta), res["y"] + np.cos(theta))
         assert err.max() < 100 * RTOL      # as for the free swing, over 3 periods, not 5
+
+
+def test_a_full_output_buffer_loses_no_switch(monkeypatch):
+    """With room for one output point per return and several requested points in every
+    step, steps come back with a full buffer, their points still to be written by Python:
+    a degraded choice found at such a step must still be re-examined there (after its
+    points), as in the Python loop."""
+    from acausal.solvers import cbdf
+    x0, vx0, t_end = CASES["full turns"]
+    compiled = ac.compile(Pendulum(x={"start": x0}, y={"start": -1.0}, vx={"start": vx0}),
+                          backend="c")
+    t_out = np.linspace(0.0, t_end, 3001)            # ~8 points per step
+    py = ac.simulate(compiled, t_end=t_end, rtol=RTOL, t_eval=t_out, step_loop="python")
+    monkeypatch.setattr(cbdf, "CAPACITY", 1)
+    c = ac.simulate(compiled, t_end=t_end, rtol=RTOL, t_eval=t_out, step_loop="c")
+    assert c.stats["step_loop"] == "c" and len(c.state_switches) >= 4
+    assert [s.changes for s in c.state_switches] == [s.changes for s in py.state_switches]
+    theta = solve_ivp(lambda _, s: [s[1], -G * np.sin(s[0])], (0.0, t_end), [0.0, vx0],
+                      method="DOP853", rtol=1e-12, atol=1e-12, dense_output=True).sol(c.t)[0]
+    err = np.hypot(c["x"] - np.sin(theta), c["y"] + np.cos(theta))
+    assert err.max() < 250 * RTOL          # as test_both_loops_match_the_angle_ode
