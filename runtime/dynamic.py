@@ -36,6 +36,8 @@ value at the bottom, instead of switching at ~64 degrees.)
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = ["DynamicStateSelection"]
@@ -43,6 +45,7 @@ __all__ = ["DynamicStateSelection"]
 TIE = 0.5              # columns within this factor of the best count as tied
 _DEGRADED = 0.5        # search again below half the best Hadamard ratio of the last search
 _ALWAYS = 4            # state_select index of "always" (never a dummy)
+_SMALL = 8             # levels up to this size: the keep-or-search test in plain floats
 
 
 class DynamicStateSelection:
@@ -68,6 +71,7 @@ class DynamicStateSelection:
         self.switches = []                    # (time, new dummies)
         self.entry = {}
         self._reference = []
+        self._plan = None                     # (choice, its blocks' layout) for keeps()
 
     def _bases(self) -> list:
         out = []
@@ -88,9 +92,7 @@ class DynamicStateSelection:
         """The dummies for Jacobian values ``vals`` (at the point z): ``current`` unless
         clearly worse."""
         scale = self.nominal
-        ratios = [_quality(b, keep) for b, _, keep in self._blocks(vals, scale, current)]
-        if current and len(ratios) == len(self._reference) and all(
-                r >= _DEGRADED * r0 for r, r0 in zip(ratios, self._reference)):
+        if self.keeps(vals, current):
             return current
         dummies, allowed, best = set(), None, []
         for rows in self.levels:
@@ -105,7 +107,59 @@ class DynamicStateSelection:
             dummies.update(chosen)
             allowed = {self.diff_to_var[c] for c in chosen}
         self._reference = best
+        self._plan = None
         return dummies
+
+    def keeps(self, vals, current: set) -> bool:
+        """The test before a search: on every level the quality of ``current`` is at
+        least half the best quality of the last search (module docstring).  The blocks
+        of a choice are laid out once (:meth:`watch`), so the test costs a gather and a
+        small determinant per level after every step."""
+        key = frozenset(current)
+        if self._plan is None or self._plan[0] != key:
+            self._plan = (key, self.watch(current))
+        plan = self._plan[1]
+        if plan is None:
+            return False
+        v = vals.tolist()     # levels are small: float arithmetic beats numpy's calls
+        for entries, scales, keep, threshold in plan:
+            B, norms = [], 1.0
+            for r in entries:
+                row = [v[k] * sc if k >= 0 else 0.0 for k, sc in zip(r, scales)]
+                peak = max(map(abs, row))
+                if peak > 0:
+                    row = [x / peak for x in row]
+                norms *= math.sqrt(sum(x * x for x in row))
+                B.append(row)
+            if len(keep) <= _SMALL:
+                det = _absdet([[row[j] for j in keep] for row in B])
+            else:
+                det = abs(float(np.linalg.det(np.array(B)[:, keep])))
+            if not (det / norms if norms > 0 else 0.0) >= threshold:
+                return False
+        return True
+
+    def watch(self, current: set):
+        """What :meth:`choose` tests before it searches, laid out for a compiled step loop
+        that tests it itself after every step (:mod:`acausal.solvers.cbdf_dyn`): per
+        level ``(entries, scales, keep, threshold)`` -- each row's index into the
+        Jacobian value array for every candidate column (-1: a structural zero), the
+        columns' scales, the positions of the current dummies among the candidates and
+        the least quality that keeps them.  None when :meth:`choose` would search at
+        once (no search yet, or ``current`` is not one dummy per row of every level)."""
+        if not current or len(self._reference) != len(self.levels):
+            return None
+        out, allowed = [], None
+        for rows, r0 in zip(self.levels, self._reference):
+            cols = self._columns(rows, allowed)
+            keep = [k for k, c in enumerate(cols) if c in current]
+            if len(keep) != len(rows):
+                return None
+            entries = [[self.entry.get((r, c), -1) for c in cols] for r in rows]
+            scales = [float(self.nominal[self.base[c]]) for c in cols]
+            out.append((entries, scales, keep, _DEGRADED * r0))
+            allowed = {self.diff_to_var[cols[k]] for k in keep}
+        return out
 
     def _columns(self, rows, allowed):
         return sorted({v for r in rows for v in self.row_vars[r]
@@ -142,23 +196,34 @@ class DynamicStateSelection:
             R -= np.outer(q, q @ R)
         return sorted(chosen)
 
-    def _blocks(self, vals, scale, dummies):
-        allowed = None
-        for rows in self.levels:
-            cols = self._columns(rows, allowed)
-            keep = [k for k, c in enumerate(cols) if c in dummies]
-            if len(keep) != len(rows):
-                yield np.zeros((len(rows), len(rows))), cols, list(range(len(rows)))
-                return
-            yield self._block(vals, scale, rows, cols), cols, keep
-            allowed = {self.diff_to_var[cols[k]] for k in keep}
-
 
 def _quality(B, keep) -> float:
     """|det| of the chosen columns over the product of the *whole* rows' norms (a
     Hadamard ratio that sees a row's chosen entries shrink next to its alternatives)."""
-    norms = np.prod(np.linalg.norm(B, axis=1))
-    return abs(np.linalg.det(B[:, keep])) / norms if norms > 0 else 0.0
+    norms = np.prod(np.sqrt((B * B).sum(axis=1)))
+    if not norms > 0:
+        return 0.0
+    # a 1 x 1 determinant is its entry (LAPACK's LU gives exactly that, more slowly)
+    det = B[0, keep[0]] if len(keep) == 1 else np.linalg.det(B[:, keep])
+    return abs(float(det)) / norms
+
+
+def _absdet(A) -> float:
+    """|det| of a small square matrix (lists of floats, overwritten): Gaussian
+    elimination with partial pivoting, as ``cbdf_dyn.c`` does in the compiled loop."""
+    det, n = 1.0, len(A)
+    for j in range(n):
+        p = max(range(j, n), key=lambda i: abs(A[i][j]))
+        if A[p][j] == 0.0:
+            return 0.0
+        A[j], A[p] = A[p], A[j]
+        d = A[j][j]
+        det *= d
+        for i in range(j + 1, n):
+            f = A[i][j] / d
+            if f:
+                A[i] = [a - f * b for a, b in zip(A[i], A[j])]
+    return abs(det)
 
 
 def _well_enough(block, keep, best, hysteresis):

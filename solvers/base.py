@@ -56,7 +56,11 @@ What a problem provides (numbered, so integrators can cite it)
 11. ``after_step(t, y, yp) -> bool`` (optional): called after every accepted step
    without an event; returning True means the problem changed its formulation (e.g.
    another choice of states); y means the same after the change, so the driver keeps
-   the BDF's history, order and step and only forms a new iteration matrix.
+   the BDF's history, order and step and only forms a new iteration matrix.  (For a
+   compiled model the compiled step loop does the hook's work in C -- it releases
+   armed offsets, and tests the choice of states, :mod:`acausal.solvers.cbdf_dyn` --
+   and the hook runs only after steps that return to Python: a stop time, a sign
+   change, or a choice of states found degraded.)
 12. ``reinitialize(t, y, yp, rtol=, atol=) -> (y, yp)`` (optional): the problem's own
    consistent re-initialization after an event (it replaces ``YA_YDP_INIT``).
 13. Oriented roots and the discrete state (optional).  A problem with

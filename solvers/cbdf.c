@@ -12,7 +12,9 @@
    All state lives in three arrays owned by Python: dv (doubles), iv (longs) and pv
    (pointers); the indices below are repeated in cbdf.py.  cbdf_run takes steps until
    something needs Python: a zero-crossing function changed sign, a step landed on the
-   stop time, the output buffer is full, the step budget is used up, or a step failed. */
+   stop time, the output buffer is full, the step budget is used up, a step failed, or
+   the current choice of states (dynamic state selection, cbdf_dyn.c) must be looked at
+   again. */
 #include <math.h>
 #include <string.h>
 #include <float.h>
@@ -21,6 +23,9 @@ int dense_factor(const double *J, double *A, long *piv, double *r, double *c, lo
                  int *equil);
 void dense_solve(const double *A, const long *piv, const double *r, const double *c,
                  long n, double *b);
+/* dyn_due: cbdf_dyn.c (dynamic state selection), also in front of this file */
+int dyn_due(long *dl, double *dd, void *jac, double t, const double *y, double *p,
+            double *m, double *vals, double *w, long nv);
 
 /* dv */
 enum { D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO, D_SS,
@@ -38,7 +43,7 @@ enum { P_PHI, P_ATOL, P_SSMASK, P_ERRMASK, P_ALG, P_SCRATCH, P_LU, P_PIV, P_TEVA
        P_YP, P_FAILY, P_FAILYP,
        P_RESFN = 24, P_JACFN, P_ROOTSFN, P_SCALESFN, P_PAR, P_M, P_MW, P_MOUT, P_JROWS,
        P_JCOLS, P_JSIGN, P_STATEZ, P_LINKS, P_LINKD, P_JVALS, P_RSIGN, P_RSIDE, P_RNOM,
-       P_TIMED, P_OFFSET, P_RV, P_RSCALE, P_SIZE = 48 };
+       P_TIMED, P_OFFSET, P_RV, P_RSCALE, P_DYNL, P_DYND, P_SIZE = 48 };
 
 enum { R_BUDGET = 0, R_FULL = 1, R_SPECIAL = 2, R_FAIL = 3 };
 enum { F_NONE, F_ERRTEST, F_NEWTON, F_STEPSIZE, F_SINGULAR, F_NONFINITE };
@@ -576,6 +581,11 @@ int cbdf_run(double *dv, long *iv, void **pv) {
         for (long i = 0; i < nr; ++i)
           if (off[i] != 0.0 && g[i] - off[i] >= 0.0) off[i] = 0.0;
     }
+    int due = pv[P_DYNL] && dyn_due((long *)pv[P_DYNL], (double *)pv[P_DYND],
+                                    iv[I_MODE] == 0 ? pv[P_JACFN] : 0, dv[D_TN], c.phi,
+                                    (double *)pv[P_PAR], (double *)pv[P_M],
+                                    (double *)pv[P_JVALS], (double *)pv[P_MW], iv[I_NJAC]);
     if (!emit_step(&c)) { iv[I_PENDING] = 1; return R_FULL; }
+    if (due) return R_FULL;            /* Python re-chooses the states, then goes on */
   }
 }

@@ -18,9 +18,13 @@ coefficients), which :meth:`CompiledBDF.run` copies back into the attributes the
 driver and :meth:`BDF.interpolate` read.  Output at requested times is the BDF
 interpolant, evaluated in C.
 
+With dynamic state selection the loop also tests, after every step, whether the current
+choice of states is still good enough (:mod:`.cbdf_dyn`), and returns to Python only for
+the search when it is not; a new choice comes back as other active linking rows, the
+history kept.
+
 When it is used (``step_loop="auto"``): the problem is a compiled model on the C backend
-(so its functions are C), without dynamic state selection (whose re-choice of states
-after every step is Python), with at most :data:`MAX_DENSE` unknowns (the C loop factors
+(so its functions are C), with at most :data:`MAX_DENSE` unknowns (the C loop factors
 dense: O(n^3) per factorization; larger systems keep the Python loop, whose sparse LU is
 SuperLU), and without stability limit detection.  ``step_loop="c"`` also runs any other
 problem of at most :data:`MAX_DENSE` unknowns, calling its Python residual, Jacobian and
@@ -61,7 +65,7 @@ P_PHI, P_ATOL, P_SSMASK, P_ERRMASK, P_ALG, P_SCRATCH, P_LU, P_PIV, P_TEVAL, P_OU
     P_FAILYP = range(20)
 P_RESFN, P_JACFN, P_ROOTSFN, P_SCALESFN, P_PAR, P_M, P_MW, P_MOUT, P_JROWS, P_JCOLS, \
     P_JSIGN, P_STATEZ, P_LINKS, P_LINKD, P_JVALS, P_RSIGN, P_RSIDE, P_RNOM, P_TIMED, \
-    P_OFFSET, P_RV, P_RSCALE = range(24, 46)
+    P_OFFSET, P_RV, P_RSCALE, P_DYNL, P_DYND = range(24, 48)
 P_SIZE = 48
 R_BUDGET, R_FULL, R_SPECIAL, R_FAIL = range(4)
 _KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singular"}
@@ -78,7 +82,7 @@ def library(cached_only: bool = False):
         here = os.path.dirname(__file__)
         try:
             source = ""
-            for name in ("cbdf_lu.c", "cbdf.c"):     # one translation unit
+            for name in ("cbdf_lu.c", "cbdf_dyn.c", "cbdf.c"):     # one translation unit
                 with open(os.path.join(here, name)) as f:
                     source += f.read() + "\n"
             path = build(source, cached_only=cached_only)
@@ -99,7 +103,7 @@ def _compiled_model(problem) -> bool:
     from ..compiler.cbackend import _CFunction
     code = getattr(problem, "code", None)
     if code is None or getattr(problem, "backend", None) != "c" or \
-            not hasattr(problem, "discrete") or getattr(problem, "dynamic", 1) is not None:
+            not hasattr(problem, "discrete") or not hasattr(problem, "dynamic"):
         return False
     need = [code.residual, code.jacobian] + ([code.roots, code.scales]
                                               if problem.n_roots else [])
@@ -120,8 +124,6 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         why = f"it has {problem.n} unknowns, more than {MAX_DENSE} (dense LU)"
     elif stald:
         why = "stability limit detection runs in the Python loop"
-    elif getattr(problem, "dynamic", None) is not None:
-        why = "dynamic state selection re-chooses the states in Python after every step"
     elif getattr(problem, "delays", None) is not None:
         why = "delay() keeps the history of every accepted step in Python"
     elif not model and getattr(problem, "after_step", None) is not None:
@@ -309,6 +311,22 @@ class CompiledBDF(BDF):
         self.iv[I_ANYSS] = bool(self.self_scaled.any())
         self.iv[I_HASLAST] = 0
 
+    def reformulate(self) -> None:
+        """Another choice of states (dynamic state selection): the masks the C loop
+        reads follow :meth:`BDF.reformulate`'s (the linking rows are bound by
+        :meth:`run`)."""
+        super().reformulate()
+        self._set("ssmask", np.where(self.self_scaled, 0.0, 1.0), P_SSMASK)
+        self.iv[I_ANYALG] = bool(self.alg.any())
+        self.iv[I_ANYSS] = bool(self.self_scaled.any())
+
+    @property
+    def reselect(self) -> bool:
+        """The last :meth:`run` returned because the choice of states must be looked at
+        again (``cbdf_dyn.c``)."""
+        dl = self._keep.get("dynl")
+        return dl is not None and bool(dl[1])
+
     def step(self) -> None:
         """One step through the compiled loop, without looking at zero crossings (the
         driver uses :meth:`run`)."""
@@ -345,6 +363,9 @@ class CompiledBDF(BDF):
         if self.mode == 0:
             self._keep["par"], self._keep["m"] = p.p, p.discrete.m
             pv[P_PAR], pv[P_M] = _ptr(p.p), _ptr(p.discrete.m)
+        if getattr(p, "dynamic", None) is not None:
+            from .cbdf_dyn import bind
+            bind(self)
         code = self.lib.cbdf_run(_ptr(self.dv), _ptr(iv), ctypes.addressof(pv))
         iv[I_NROOTS] = self._n_roots
         self._pull()

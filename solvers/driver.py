@@ -102,8 +102,7 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     step_loop : {"auto", "c", "python"}
         Where the BDF steps run: "auto" is the compiled loop
         (:mod:`acausal.solvers.cbdf`) when the problem qualifies (a compiled model on
-        the C backend, at most 200 unknowns, no dynamic state selection, no delay, no
-        ``stald``)
+        the C backend, at most 200 unknowns, no delay, no ``stald``)
         and a C compiler works, else the Python loop; "c" and "python" force one.
 
     Returns
@@ -257,6 +256,8 @@ class _Run:
             self._emit_step(s.t_prev, s.t, s.y, s.yp)
         if code == R_SPECIAL:
             return self._accepted(s)
+        if s.reselect:        # the loop found the choice of states degraded
+            self._after_step(s)
         return None
 
     def _accepted(self, s):

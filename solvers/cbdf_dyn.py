@@ -1,0 +1,53 @@
+"""Dynamic state selection in the compiled step loop (the layout ``cbdf_dyn.c`` reads).
+
+With dynamic state selection the solver vector holds every variable and the choice of
+states only switches which linking rows ``y'[s] - y[der(s)] = 0`` are active
+(:mod:`acausal.runtime.model`).  After every accepted step,
+:meth:`~acausal.runtime.dynamic.DynamicStateSelection.choose` first tests whether the
+current choice is still good enough (its quality on every level at least half the best
+quality of the last search) and searches only when it is not.  The compiled loop makes
+that test itself, on the generated Jacobian at the accepted point, and returns to
+Python only when it fails: Python then calls the problem's ``after_step`` (the same
+search, the same hysteresis), and a new choice goes back to C as the new list of active
+linking rows, the history kept (:meth:`BDF.reformulate`).  So the decisions are those
+of the Python loop, up to the rounding of one determinant.
+
+:func:`layout` builds the two arrays of ``cbdf_dyn.c`` (its header says what they
+hold) for the current choice; it runs before every return into C, since a search may
+have changed the choice or the reference quality.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["bind", "layout"]
+
+
+def layout(problem) -> tuple[np.ndarray, np.ndarray]:
+    """``(dl, dd)`` for ``cbdf_dyn.c``: the test of the problem's current choice of
+    states, or (when :meth:`watch` gives None) a request to return after every step."""
+    plan = problem.dynamic.watch(problem.dummies)
+    if plan is None:
+        return np.array([0, 0, 1, 0], dtype=np.int64), np.zeros(1)
+    longs, doubles, work = [len(plan), 0, 0, 0], [], 0
+    for entries, scales, keep, threshold in plan:
+        nr, nc = len(keep), len(scales)
+        longs += [nr, nc, *keep, *(k for row in entries for k in row)]
+        doubles += [threshold, *scales]
+        work = max(work, nr * nc + nr * nr)
+    longs[3] = len(doubles)
+    return np.array(longs, dtype=np.int64), np.array(doubles + [0.0] * max(work, 1))
+
+
+def bind(solver) -> None:
+    """Before a run of the compiled loop: the current linking rows (mode 0: the C
+    residual and Jacobian read them) and the test of the current choice."""
+    from .cbdf import I_NLINK, P_DYND, P_DYNL, P_LINKD, P_LINKS
+    p = solver.problem
+    if solver.mode == 0:
+        solver._set("links", p.link_s, P_LINKS, np.int64)
+        solver._set("linkd", p.link_d, P_LINKD, np.int64)
+        solver.iv[I_NLINK] = len(p.link_s)
+    dl, dd = layout(p)
+    solver._set("dynl", dl, P_DYNL, np.int64)
+    solver._set("dynd", dd, P_DYND)
