@@ -20,14 +20,15 @@ interpolant, evaluated in C.
 
 When it is used (``step_loop="auto"``): the problem is a compiled model on the C backend
 (so its functions are C), without dynamic state selection (whose re-choice of states
-after every step is Python), with at most :data:`MAX_DENSE` unknowns (the C loop factors
-dense: O(n^3) per factorization; larger systems keep the Python loop, whose sparse LU is
-SuperLU), and without stability limit detection.  ``step_loop="c"`` also runs any other
-problem of at most :data:`MAX_DENSE` unknowns, calling its Python residual, Jacobian and
-zero-crossing functions back (for tests against the Python loop; no faster).  Without a C
-compiler ``"auto"`` is the Python loop.  Results agree with the Python loop to the
-integration tolerance, not bitwise: the LU is not LAPACK's, so the iteration matrix's
-solutions differ in rounding.  The dense LU is ``cbdf_lu.c``.
+after every step is Python), and without stability limit detection.  Up to
+:data:`MAX_DENSE` unknowns the C loop factors dense (``cbdf_lu.c``); above, sparse, on the
+model's fixed Jacobian pattern with the column order and pivot rows of one SuperLU
+analysis (``cbdf_sparse.c``, :mod:`~acausal.solvers.cbdf_sparse`).  ``step_loop="c"``
+also runs any other problem of at most :data:`MAX_DENSE` unknowns, calling its Python
+residual, Jacobian and zero-crossing functions back (for tests against the Python loop;
+no faster).  Without a C compiler ``"auto"`` is the Python loop.  Results agree with the
+Python loop to the integration tolerance, not bitwise: the LU is not LAPACK's or
+SuperLU's, so the iteration matrix's solutions differ in rounding.
 """
 from __future__ import annotations
 
@@ -38,11 +39,12 @@ import numpy as np
 
 from ..errors import BackendError
 from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
+from . import cbdf_sparse as sparse_lu
 from .linalg import LinearSolver, singular_block
 
 __all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library"]
 
-MAX_DENSE = 200          # largest system the compiled loop factors (dense LU)
+MAX_DENSE = 200          # largest system the compiled loop factors dense (above: sparse LU)
 STEP_LOOPS = ("auto", "c", "python")
 CAPACITY = 512           # output points per return to Python
 
@@ -53,12 +55,12 @@ D_PSI, D_ALPHA, D_BETA, D_SIGMA, D_GAMMA, D_ALPHAS, D_SIZE = 16, 24, 32, 40, 48,
 I_N, I_KK, I_KUSED, I_PHASE, I_NS, I_NST, I_FORCE, I_KMAX, I_MAXORD, I_NROOTS, \
     I_MODE, I_BUDGET, I_CAP, I_COUNT, I_NEVAL, I_IEVAL, I_ALLSTEPS, I_FAILKIND, \
     I_HASFAIL, I_HASLAST, I_PENDING, I_ANYALG, I_ANYSS, I_EQUIL, I_NRE, I_NJE, I_NLU, \
-    I_NNI, I_NETF, I_NCF, I_NSTEPS = range(31)
+    I_NNI, I_NETF, I_NCF, I_NSTEPS, I_SPARSE = range(32)
 I_ORD, I_NRES, I_NSZ, I_NLINK, I_NJAC, I_NREL, I_NDISC, I_NROWS, I_SIZE = \
     32, 40, 41, 42, 43, 44, 45, 46, 48
 P_PHI, P_ATOL, P_SSMASK, P_ERRMASK, P_ALG, P_SCRATCH, P_LU, P_PIV, P_TEVAL, P_OUT_T, \
     P_OUT_Y, P_OUT_YP, P_WEIGHTED, P_LASTERR, P_GPREV, P_SIGNREF, P_G, P_YP, P_FAILY, \
-    P_FAILYP = range(20)
+    P_FAILYP, P_SPLU = range(21)
 P_RESFN, P_JACFN, P_ROOTSFN, P_SCALESFN, P_PAR, P_M, P_MW, P_MOUT, P_JROWS, P_JCOLS, \
     P_JSIGN, P_STATEZ, P_LINKS, P_LINKD, P_JVALS, P_RSIGN, P_RSIDE, P_RNOM, P_TIMED, \
     P_OFFSET, P_RV, P_RSCALE = range(24, 46)
@@ -78,7 +80,7 @@ def library():
         here = os.path.dirname(__file__)
         try:
             source = ""
-            for name in ("cbdf_lu.c", "cbdf.c"):     # one translation unit
+            for name in ("cbdf_lu.c", "cbdf_sparse.c", "cbdf.c"):   # one translation unit
                 with open(os.path.join(here, name)) as f:
                     source += f.read() + "\n"
             lib = ctypes.CDLL(build(source))
@@ -87,6 +89,7 @@ def library():
             return None
         lib.cbdf_run.argtypes = [ctypes.c_void_p] * 3
         lib.cbdf_run.restype = ctypes.c_int
+        sparse_lu.bind(lib)
         _lib = lib
     return _lib or None
 
@@ -113,8 +116,9 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         return None
     model = _compiled_model(problem)
     why = None
-    if problem.n > MAX_DENSE:
-        why = f"it has {problem.n} unknowns, more than {MAX_DENSE} (dense LU)"
+    if problem.n > MAX_DENSE and not model:
+        why = (f"it has {problem.n} unknowns, more than {MAX_DENSE} (dense LU; the "
+               "sparse LU needs a compiled model on the C backend)")
     elif stald:
         why = "stability limit detection runs in the Python loop"
     elif getattr(problem, "dynamic", None) is not None:
@@ -153,8 +157,12 @@ class CompiledBDF(BDF):
         self.iv = np.zeros(I_SIZE, dtype=np.int64)
         self.pv = (ctypes.c_void_p * P_SIZE)()
         self._keep = {}
-        self._buf("scratch", n * n + 13 * n, P_SCRATCH)
-        self._buf("lu", n * n, P_LU)
+        # above MAX_DENSE unknowns (a compiled model) the LU is sparse: cbdf_sparse.c
+        self.sparse = mode == 0 and n > MAX_DENSE
+        self.iv[I_SPARSE] = self.sparse
+        dense = 0 if self.sparse else n * n
+        self._buf("scratch", dense + 13 * n, P_SCRATCH)
+        self._buf("lu", max(dense, 1), P_LU)
         self._buf("piv", n, P_PIV, np.int64)
         for name, slot in (("weighted", P_WEIGHTED), ("lasterr", P_LASTERR), ("yp", P_YP),
                            ("faily", P_FAILY), ("failyp", P_FAILYP)):
@@ -174,6 +182,12 @@ class CompiledBDF(BDF):
             self._bind_callbacks(problem)
         super().__init__(problem, t0, y0, yp0, **options)
         self.pv[P_PHI] = _ptr(self.phi)
+        if self.sparse:
+            p = problem
+            self._splu = sparse_lu.SparseLU(
+                self.lib, n, p._jac_indptr, p._jac_indices, p._jac_slot,
+                p.jacobian(self.tn, self.y, self.yp, self.cj))
+            self.pv[P_SPLU] = self._splu.handle
         self.pending = False
 
     def _buf(self, name, shape, slot, dtype=float):
@@ -363,7 +377,8 @@ class CompiledBDF(BDF):
         if kind == "singular":
             J = self.problem.jacobian(float(dv[D_FAIL_TJ]), self._keep["faily"].copy(),
                                       self._keep["failyp"].copy(), float(dv[D_FAIL_CJ]))
-            J = J.toarray() if hasattr(J, "toarray") else np.asarray(J, float)
+            if not self.sparse or iv[I_FAILKIND] == 5:
+                J = J.toarray() if hasattr(J, "toarray") else np.asarray(J, float)
             if iv[I_FAILKIND] == 5:
                 rows, cols = LinearSolver._nonfinite(J)
                 msg = "iteration matrix has non-finite entries"
