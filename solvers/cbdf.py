@@ -46,7 +46,7 @@ __all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "librar
 
 MAX_DENSE = 200          # largest system the compiled loop factors dense (above: sparse LU)
 STEP_LOOPS = ("auto", "c", "python")
-CAPACITY = 512           # output points per return to Python
+CAPACITY = 512           # output points per return to Python (fewer above MAX_DENSE)
 
 # indices into dv, iv and pv: as in cbdf.c
 D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO, D_SS, \
@@ -167,15 +167,18 @@ class CompiledBDF(BDF):
         for name, slot in (("weighted", P_WEIGHTED), ("lasterr", P_LASTERR), ("yp", P_YP),
                            ("faily", P_FAILY), ("failyp", P_FAILYP)):
             self._buf(name, n, slot)
-        self.out_t = self._buf("out_t", CAPACITY, P_OUT_T)
-        self.out_y = self._buf("out_y", (CAPACITY, n), P_OUT_Y)
-        self.out_yp = self._buf("out_yp", (CAPACITY, n), P_OUT_YP)
+        # a large system's buffer is shorter: allocating (and zeroing) 2 x 512 x n
+        # doubles costs milliseconds, a return to Python per 64 points microseconds
+        cap = CAPACITY if n <= MAX_DENSE else max(64, min(CAPACITY, 2**17 // max(n, 1)))
+        self.out_t = self._buf("out_t", cap, P_OUT_T)
+        self.out_y = self._buf("out_y", (cap, n), P_OUT_Y)
+        self.out_yp = self._buf("out_yp", (cap, n), P_OUT_YP)
         nr = int(getattr(problem, "n_roots", 0) or 0)
         for name, slot in (("g", P_G), ("gprev", P_GPREV), ("signref", P_SIGNREF)):
             self._buf(name, max(nr, 1), slot)
         self.iv[I_N], self.iv[I_NROOTS], self.iv[I_MODE] = n, nr, mode
         self._n_roots = nr
-        self.iv[I_CAP] = CAPACITY
+        self.iv[I_CAP] = cap
         if mode == 0:
             self._bind_model(problem)
         else:
