@@ -19,8 +19,6 @@ import numpy as np
 
 __all__ = ["SparseLU", "analysis", "bind"]
 
-_LONGS = ctypes.POINTER(ctypes.c_long)
-
 
 def bind(lib) -> None:
     """Declare the sparse LU's entry points of the step loop's library ``lib``."""
@@ -40,24 +38,28 @@ def bind(lib) -> None:
     lib.sparse_nnz.restype = ctypes.c_long
 
 
-def analysis(A):
-    """(column order q, preferred pivot row of every step, nnz(L + U)) of the CSC matrix
-    ``A`` from SuperLU: step k factors column ``q[k]`` and prefers row ``pref[k]``.  A
-    matrix SuperLU cannot factor gives the natural order and no preference (the C
-    factorization then pivots on its own)."""
+def analysis(A, perms=None):
+    """(column order q, preferred pivot row of every step, a guess of nnz(L + U)) of the
+    CSC matrix ``A`` from SuperLU (``perms``: the ``(perm_c, perm_r)`` of its
+    factorization, if made already): step k factors column ``q[k]`` and prefers row
+    ``pref[k]``.  A matrix SuperLU cannot factor gives the natural order and no
+    preference (the C factorization then pivots on its own)."""
     from scipy.sparse.linalg import splu
     n = A.shape[0]
-    try:
-        if not np.all(np.isfinite(A.data)):
-            raise RuntimeError("not finite")
-        lu = splu(A, permc_spec="COLAMD")
-    except RuntimeError:
-        return np.arange(n), np.full(n, -1), 2 * A.nnz
+    if perms is None:
+        try:
+            if not np.all(np.isfinite(A.data)):
+                raise RuntimeError("not finite")
+            lu = splu(A, permc_spec="COLAMD")
+        except RuntimeError:
+            return np.arange(n), np.full(n, -1), 2 * A.nnz
+        perms = (lu.perm_c, lu.perm_r)
+    perm_c, perm_r = perms
     q = np.empty(n, dtype=np.int64)
-    q[lu.perm_c] = np.arange(n)
+    q[perm_c] = np.arange(n)
     pref = np.empty(n, dtype=np.int64)
-    pref[lu.perm_r] = np.arange(n)
-    return q, pref, lu.L.nnz + lu.U.nnz
+    pref[perm_r] = np.arange(n)
+    return q, pref, 2 * A.nnz
 
 
 def _ptr(a: np.ndarray) -> int:
@@ -68,10 +70,11 @@ class SparseLU:
     """A factorization object of ``cbdf_sparse.c`` on the CSC pattern ``(indptr,
     indices)`` of an n x n matrix; ``slot[e]`` is the position of the e-th entry of the
     problem's ``jac_pattern`` (entries at one position add up); ``A``: a matrix of that
-    pattern to analyse (:func:`analysis`).  ``handle`` is what the step loop gets."""
+    pattern to analyse, ``perms`` SuperLU's permutations of it if known
+    (:func:`analysis`).  ``handle`` is what the step loop gets."""
 
-    def __init__(self, lib, n, indptr, indices, slot, A):
-        q, pref, cap = analysis(A)
+    def __init__(self, lib, n, indptr, indices, slot, A, perms=None):
+        q, pref, cap = analysis(A, perms)
         arrays = [np.ascontiguousarray(a, dtype=np.int64) for a in
                   (indptr, indices, slot, q, pref)]
         if ctypes.sizeof(ctypes.c_long) != 8:
@@ -83,19 +86,23 @@ class SparseLU:
         self.lib, self.n, self.handle = lib, int(n), h
         self.nnz = int(arrays[0][-1])
         self._finalizer = weakref.finalize(self, lib.sparse_free, h)
+        # views and pointers made once: a solve is a few microseconds of C
+        self._values = np.ctypeslib.as_array(lib.sparse_values(h), (max(self.nnz, 1),))
+        self._values = self._values[:self.nnz]
+        self._x = np.zeros(self.n)
+        self._xp = _ptr(self._x)
 
     def factor(self, data) -> int:
         """Factor the matrix with CSC values ``data``: 0, or 4 (singular) / 5 (not
         finite) as the step loop's failure kinds."""
-        np.ctypeslib.as_array(self.lib.sparse_values(self.handle),
-                              (max(self.nnz, 1),))[:self.nnz] = data
+        self._values[:] = data
         return int(self.lib.sparse_factor(self.handle))
 
     def solve(self, b) -> np.ndarray:
         """``A^{-1} b`` with the last factorization."""
-        x = np.array(b, dtype=float)
-        self.lib.sparse_solve(self.handle, _ptr(x))
-        return x
+        self._x[:] = b
+        self.lib.sparse_solve(self.handle, self._xp)
+        return self._x.copy()
 
     def fill(self) -> int:
         """nnz(L) + nnz(U) of the last factorization, diagonals included."""

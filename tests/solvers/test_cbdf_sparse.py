@@ -17,6 +17,7 @@ import acausal as ac
 from acausal.library import electrical as el
 from acausal.solvers.cbdf import MAX_DENSE, library
 from acausal.solvers.cbdf_sparse import SparseLU
+from acausal.solvers.linalg import LinearSolver, SingularMatrixError
 
 pytestmark = pytest.mark.skipif(library() is None, reason="no C compiler on this machine")
 
@@ -88,6 +89,27 @@ def test_badly_scaled_rows_are_solved_equilibrated_and_singular_or_nan_is_report
     bad = A.copy()
     bad.data[7] = np.nan
     assert _factor(bad, A)[1] == 5                   # not finite
+
+
+def test_the_python_loop_refactors_a_kept_pattern_with_superlus_analysis():
+    """The Python loop's LinearSolver factors a pattern's first matrix with SuperLU and
+    the following ones (values changed, as with cj) with the compiled LU on SuperLU's
+    order; a matrix singular on that pattern is still reported as singular."""
+    rng = np.random.default_rng(7)
+    A1 = _iteration_like(300, seed=7)
+    lin = LinearSolver(300, sparse=True)
+    lin.factor(A1)
+    assert not isinstance(lin._lu, SparseLU)
+    A2 = A1.copy()
+    A2.data *= 1.0 + 0.3 * rng.standard_normal(A2.nnz)
+    lin.factor(A2)
+    assert isinstance(lin._lu, SparseLU)
+    b = rng.standard_normal(300)
+    assert _backward_error(A2, lin.solve(b), b) < 100 * _EPS
+    S = A1.copy()
+    S.data[S.indptr[20]:S.indptr[21]] = 0.0            # a zero column, same pattern
+    with pytest.raises(SingularMatrixError):
+        lin.factor(S)
 
 
 # ---------------------------------------------------------------- compiled models
