@@ -38,8 +38,8 @@ import os
 import numpy as np
 
 from ..errors import BackendError
-from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
 from . import cbdf_sparse as sparse_lu
+from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
 from .linalg import LinearSolver, singular_block
 
 __all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library"]
