@@ -185,13 +185,22 @@ class CompiledBDF(BDF):
             self._bind_callbacks(problem)
         super().__init__(problem, t0, y0, yp0, **options)
         self.pv[P_PHI] = _ptr(self.phi)
-        if self.sparse:
-            p = problem
-            self._splu = sparse_lu.SparseLU(
-                self.lib, n, p._jac_indptr, p._jac_indices, p._jac_slot,
-                p.jacobian(self.tn, self.y, self.yp, self.cj))
-            self.pv[P_SPLU] = self._splu.handle
+        self._splu = None
         self.pending = False
+
+    def _bind_sparse(self) -> None:
+        """The sparse LU on the problem's Jacobian pattern, analysed at the current
+        point; again whenever the pattern is another (a new choice of linked states
+        makes a new one)."""
+        p = self.problem
+        if self._splu is not None and self._splu_pattern is p._jac_indptr:
+            return
+        self._splu = sparse_lu.SparseLU(self.lib, self.n, p._jac_indptr, p._jac_indices,
+                                        p._jac_slot, p.jacobian(self.tn, self.y, self.yp,
+                                                                self.cj))
+        self._splu_pattern = p._jac_indptr
+        self.pv[P_SPLU] = self._splu.handle
+        self.force_setup = True
 
     def _buf(self, name, shape, slot, dtype=float):
         a = np.zeros(shape, dtype=dtype)
@@ -338,6 +347,8 @@ class CompiledBDF(BDF):
         place).  Returns R_BUDGET, R_FULL, R_SPECIAL or R_FAIL; the points output are in
         :attr:`points`."""
         iv, pv, p = self.iv, self.pv, self.problem
+        if self.sparse:
+            self._bind_sparse()
         self._push()
         iv[I_BUDGET], iv[I_COUNT], iv[I_PENDING] = budget, 0, 0
         iv[I_ALLSTEPS] = t_eval is None
