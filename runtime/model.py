@@ -24,6 +24,7 @@ and current choice of dummy derivatives.
 from __future__ import annotations
 
 import math
+import types
 
 import numpy as np
 
@@ -40,6 +41,7 @@ from .modes import DiscreteState
 __all__ = ["CompiledModel"]
 
 _MODE_ROUNDS = 10               # relations read through other relations' values, settled in turn
+_LISTED_PARAMS = 256            # from this many parameters on, the Python code gets p listed
 
 
 class CompiledModel(DAEProblem):
@@ -104,6 +106,9 @@ class CompiledModel(DAEProblem):
         self.evaluation_errors = []        # what failed in the generated code, in words
         self.resolution = 0.0             # how precisely the driver locates crossings
         self._z_ref = self.start.copy()    # a point for time-event predictions
+        self._list_params = isinstance(code.residual, types.FunctionType) and \
+            self.delays is None and len(self.p) >= _LISTED_PARAMS
+        self._p_listed = None
         self._next_own = None              # the model's own next time event
         self._update_links()
 
@@ -205,9 +210,22 @@ class CompiledModel(DAEProblem):
         return names
 
     # -- evaluation of the generated code ------------------------------------------------
+    def _params(self):
+        """p as the generated code is best given it: the generated Python converts p to
+        a list on every call, and for a large p (thousands of component parameters)
+        making and freeing those floats costs more than copying a list made once; the
+        list is made again whenever p has changed (it is written in place by analyses
+        and sweeps).  Arrays for the C backend, and where delays write into p."""
+        p = self.p
+        if not self._list_params:
+            return p
+        if self._p_listed is None or not np.array_equal(p, self._p_listed[0]):
+            self._p_listed = (p.copy(), p.tolist())
+        return self._p_listed[1]
+
     def _call(self, fn, t, z, size):
         try:
-            return fn(t, z, self.p, self.m, np.empty(size))
+            return fn(t, z, self._params(), self.m, np.empty(size))
         except DOMAIN_ERRORS as exc:
             # outside a function's domain (sqrt of a negative, ...): the point is unusable,
             # which Newton treats as a failed iterate; the words are kept for the message
@@ -277,7 +295,7 @@ class CompiledModel(DAEProblem):
 
     # -- events (solver contract item 8) --------------------------------------------------
     def roots(self, t, z, zp):
-        return self.discrete.oriented(t, z, self.p)
+        return self.discrete.oriented(t, z, self._params())
 
     def arm(self, t, z, zp, resolution: float = 0.0) -> None:
         """The driver (re)arms the zero-crossing functions; ``resolution`` is how

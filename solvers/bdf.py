@@ -434,13 +434,13 @@ class BDF:
             self._select_order_step(ee, err_k, err_km1, knew, kdiff)
         if self.kused < self.max_order:
             self.phi[self.kused + 1] = ee
-        # phi update: phi[ku] += e; phi[j] += phi[j+1], j = ku-1..0, i.e.
-        # phi[j] becomes the sum of phi[j..ku]: one reversed cumulative sum
+        # phi update: phi[ku] += e; phi[j] += phi[j+1], j = ku-1..0 (in place: a
+        # cumulative sum over the reversed rows is several times slower for large n)
         ku = self.kused
         phi = self.phi
         phi[ku] += ee
-        if ku:
-            phi[ku::-1] = np.cumsum(phi[ku::-1], axis=0)
+        for j in range(ku - 1, -1, -1):
+            phi[j] += phi[j + 1]
         if self.stald is not None:
             self.stald.record(ku, phi, ee, self.ewt_err)
             # only where order k-1 is as accurate at this step: a mode resolved on

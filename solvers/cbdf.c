@@ -5,7 +5,8 @@
    differences phi, the corrector of acausal.solvers.corrector (simplified Newton, the
    2/(1+cj/cj_old) scaling, one unscaled correction for algebraic rows, the Newton test
    with and without the self-scaled components), the error test and order/step control
-   of bdf.py.  Dense LU with partial pivoting; a matrix whose pivots look singular is
+   of bdf.py.  Dense LU with partial pivoting (above cbdf.py's MAX_DENSE unknowns the
+   sparse LU of cbdf_sparse.c, I_SPARSE); a matrix whose pivots look singular is
    judged again equilibrated (rows, then columns, to a largest entry of one), as
    acausal.solvers.linalg does with LAPACK.
 
@@ -26,6 +27,11 @@ void dense_solve(const double *A, const long *piv, const double *r, const double
 /* dyn_due: cbdf_dyn.c (dynamic state selection), also in front of this file */
 int dyn_due(long *dl, double *dd, void *jac, double t, const double *y, double *p,
             double *m, double *vals, double *w, long nv);
+/* the sparse LU of systems above cbdf.py's MAX_DENSE: cbdf_sparse.c, likewise */
+void sparse_jacobian(void *h, const double *v, const double *js, long njac, long nsz,
+                     long nl, double cj);
+int sparse_factor(void *h);
+void sparse_solve(void *h, double *b);
 
 /* dv */
 enum { D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO, D_SS,
@@ -35,12 +41,12 @@ enum { D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO
 enum { I_N, I_KK, I_KUSED, I_PHASE, I_NS, I_NST, I_FORCE, I_KMAX, I_MAXORD, I_NROOTS,
        I_MODE, I_BUDGET, I_CAP, I_COUNT, I_NEVAL, I_IEVAL, I_ALLSTEPS, I_FAILKIND,
        I_HASFAIL, I_HASLAST, I_PENDING, I_ANYALG, I_ANYSS, I_EQUIL,
-       I_NRE, I_NJE, I_NLU, I_NNI, I_NETF, I_NCF, I_NSTEPS, I_ORD = 32,
+       I_NRE, I_NJE, I_NLU, I_NNI, I_NETF, I_NCF, I_NSTEPS, I_SPARSE, I_ORD = 32,
        I_NRES = 40, I_NSZ, I_NLINK, I_NJAC, I_NREL, I_NDISC, I_NROWS, I_SIZE = 48 };
 /* pv */
 enum { P_PHI, P_ATOL, P_SSMASK, P_ERRMASK, P_ALG, P_SCRATCH, P_LU, P_PIV, P_TEVAL,
        P_OUT_T, P_OUT_Y, P_OUT_YP, P_WEIGHTED, P_LASTERR, P_GPREV, P_SIGNREF, P_G,
-       P_YP, P_FAILY, P_FAILYP,
+       P_YP, P_FAILY, P_FAILYP, P_SPLU,
        P_RESFN = 24, P_JACFN, P_ROOTSFN, P_SCALESFN, P_PAR, P_M, P_MW, P_MOUT, P_JROWS,
        P_JCOLS, P_JSIGN, P_STATEZ, P_LINKS, P_LINKD, P_JVALS, P_RSIGN, P_RSIDE, P_RNOM,
        P_TIMED, P_OFFSET, P_RV, P_RSCALE, P_DYNL, P_DYND, P_SIZE = 48 };
@@ -99,12 +105,16 @@ static void jacobian(ctx_t *c, double t, const double *y, const double *yp, doub
   void **pv = c->pv; long *iv = c->iv; long n = c->n;
   c->iv[I_NJE]++;
   if (iv[I_MODE] == 1) { ((cb_jac)pv[P_JACFN])(t, y, yp, cj, J); return; }
-  memset(J, 0, sizeof(double) * n * n);
   double *v = (double *)pv[P_JVALS];
   ((genfn)pv[P_JACFN])(t, y, (double *)pv[P_PAR], (double *)pv[P_M], v,
                        (double *)pv[P_MW]);
   const long *jr = (long *)pv[P_JROWS], *jc = (long *)pv[P_JCOLS];
   const double *js = (double *)pv[P_JSIGN];
+  if (iv[I_SPARSE]) {     /* into the sparse LU's values, J unused */
+    sparse_jacobian(pv[P_SPLU], v, js, iv[I_NJAC], iv[I_NSZ], iv[I_NLINK], cj);
+    return;
+  }
+  memset(J, 0, sizeof(double) * n * n);
   for (long e = 0; e < iv[I_NJAC]; ++e) J[jr[e] * n + jc[e]] += js[e] * v[e];
   long nres = iv[I_NRES], nsz = iv[I_NSZ], nl = iv[I_NLINK];
   const long *sz = (long *)pv[P_STATEZ], *ls = (long *)pv[P_LINKS],
@@ -144,6 +154,7 @@ static void roots(ctx_t *c, double t, const double *y, const double *yp, double 
 
 /* ------------------------------------------------------------------ linear algebra */
 static int factor(ctx_t *c, double *J) {
+  if (c->iv[I_SPARSE]) return sparse_factor(c->pv[P_SPLU]);
   int equil = 0;
   int k = dense_factor(J, c->lu, c->piv, c->req, c->ceq, c->n, &equil);
   c->iv[I_EQUIL] = equil;
@@ -151,6 +162,7 @@ static int factor(ctx_t *c, double *J) {
 }
 
 static void solve(ctx_t *c, double *b) {
+  if (c->iv[I_SPARSE]) { sparse_solve(c->pv[P_SPLU], b); return; }
   dense_solve(c->lu, c->piv, c->iv[I_EQUIL] ? c->req : 0, c->ceq, c->n, b);
 }
 
@@ -547,7 +559,8 @@ int cbdf_run(double *dv, long *iv, void **pv) {
   long n = iv[I_N];
   c.dv = dv; c.iv = iv; c.pv = pv; c.n = n;
   c.phi = (double *)pv[P_PHI];
-  double *s = (double *)pv[P_SCRATCH] + n * n;   /* after the matrix */
+  /* after the dense matrix (none with the sparse LU) */
+  double *s = (double *)pv[P_SCRATCH] + (iv[I_SPARSE] ? 0 : n * n);
   c.ewt_n = s; c.ewt = s + n; c.ewt_err = s + 2 * n; c.ee = s + 3 * n; c.delta = s + 4 * n;
   c.ypred = s + 5 * n; c.yppred = s + 6 * n; c.ytmp = s + 7 * n; c.yptmp = s + 8 * n;
   c.fallback = s + 9 * n; c.rhs = s + 10 * n; c.req = s + 11 * n; c.ceq = s + 12 * n;

@@ -24,14 +24,16 @@ the search when it is not; a new choice comes back as other active linking rows,
 history kept.
 
 When it is used (``step_loop="auto"``): the problem is a compiled model on the C backend
-(so its functions are C), with at most :data:`MAX_DENSE` unknowns (the C loop factors
-dense: O(n^3) per factorization; larger systems keep the Python loop, whose sparse LU is
-SuperLU), and without stability limit detection.  ``step_loop="c"`` also runs any other
-problem of at most :data:`MAX_DENSE` unknowns, calling its Python residual, Jacobian and
-zero-crossing functions back (for tests against the Python loop; no faster).  Without a C
-compiler ``"auto"`` is the Python loop.  Results agree with the Python loop to the
-integration tolerance, not bitwise: the LU is not LAPACK's, so the iteration matrix's
-solutions differ in rounding.  The dense LU is ``cbdf_lu.c``.
+(so its functions are C), without stability limit detection, and, with dynamic state
+selection, at most :data:`MAX_DENSE` unknowns.  Up to
+:data:`MAX_DENSE` unknowns the C loop factors dense (``cbdf_lu.c``); above, sparse, on the
+model's fixed Jacobian pattern with the column order and pivot rows of one SuperLU
+analysis (``cbdf_sparse.c``, :mod:`~acausal.solvers.cbdf_sparse`).  ``step_loop="c"``
+also runs any other problem of at most :data:`MAX_DENSE` unknowns, calling its Python
+residual, Jacobian and zero-crossing functions back (for tests against the Python loop;
+no faster).  Without a C compiler ``"auto"`` is the Python loop.  Results agree with the
+Python loop to the integration tolerance, not bitwise: the LU is not LAPACK's or
+SuperLU's, so the iteration matrix's solutions differ in rounding.
 """
 from __future__ import annotations
 
@@ -41,14 +43,15 @@ import os
 import numpy as np
 
 from ..errors import BackendError
+from . import cbdf_sparse as sparse_lu
 from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
 from .linalg import LinearSolver, singular_block
 
 __all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library"]
 
-MAX_DENSE = 200          # largest system the compiled loop factors (dense LU)
+MAX_DENSE = 200          # largest system the compiled loop factors dense (above: sparse LU)
 STEP_LOOPS = ("auto", "c", "python")
-CAPACITY = 512           # output points per return to Python
+CAPACITY = 512           # output points per return to Python (fewer above MAX_DENSE)
 
 # indices into dv, iv and pv: as in cbdf.c
 D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO, D_SS, \
@@ -57,12 +60,12 @@ D_PSI, D_ALPHA, D_BETA, D_SIGMA, D_GAMMA, D_ALPHAS, D_SIZE = 16, 24, 32, 40, 48,
 I_N, I_KK, I_KUSED, I_PHASE, I_NS, I_NST, I_FORCE, I_KMAX, I_MAXORD, I_NROOTS, \
     I_MODE, I_BUDGET, I_CAP, I_COUNT, I_NEVAL, I_IEVAL, I_ALLSTEPS, I_FAILKIND, \
     I_HASFAIL, I_HASLAST, I_PENDING, I_ANYALG, I_ANYSS, I_EQUIL, I_NRE, I_NJE, I_NLU, \
-    I_NNI, I_NETF, I_NCF, I_NSTEPS = range(31)
+    I_NNI, I_NETF, I_NCF, I_NSTEPS, I_SPARSE = range(32)
 I_ORD, I_NRES, I_NSZ, I_NLINK, I_NJAC, I_NREL, I_NDISC, I_NROWS, I_SIZE = \
     32, 40, 41, 42, 43, 44, 45, 46, 48
 P_PHI, P_ATOL, P_SSMASK, P_ERRMASK, P_ALG, P_SCRATCH, P_LU, P_PIV, P_TEVAL, P_OUT_T, \
     P_OUT_Y, P_OUT_YP, P_WEIGHTED, P_LASTERR, P_GPREV, P_SIGNREF, P_G, P_YP, P_FAILY, \
-    P_FAILYP = range(20)
+    P_FAILYP, P_SPLU = range(21)
 P_RESFN, P_JACFN, P_ROOTSFN, P_SCALESFN, P_PAR, P_M, P_MW, P_MOUT, P_JROWS, P_JCOLS, \
     P_JSIGN, P_STATEZ, P_LINKS, P_LINKD, P_JVALS, P_RSIGN, P_RSIDE, P_RNOM, P_TIMED, \
     P_OFFSET, P_RV, P_RSCALE, P_DYNL, P_DYND = range(24, 48)
@@ -82,7 +85,7 @@ def library(cached_only: bool = False):
         here = os.path.dirname(__file__)
         try:
             source = ""
-            for name in ("cbdf_lu.c", "cbdf_dyn.c", "cbdf.c"):     # one translation unit
+            for name in ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c"):
                 with open(os.path.join(here, name)) as f:
                     source += f.read() + "\n"
             path = build(source, cached_only=cached_only)
@@ -94,6 +97,7 @@ def library(cached_only: bool = False):
             return None
         lib.cbdf_run.argtypes = [ctypes.c_void_p] * 3
         lib.cbdf_run.restype = ctypes.c_int
+        sparse_lu.bind(lib)
         _lib = lib
     return _lib or None
 
@@ -120,8 +124,12 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         return None
     model = _compiled_model(problem)
     why = None
-    if problem.n > MAX_DENSE:
-        why = f"it has {problem.n} unknowns, more than {MAX_DENSE} (dense LU)"
+    if problem.n > MAX_DENSE and not model:
+        why = (f"it has {problem.n} unknowns, more than {MAX_DENSE} (dense LU; the "
+               "sparse LU needs a compiled model on the C backend)")
+    elif problem.n > MAX_DENSE and getattr(problem, "dynamic", None) is not None:
+        why = (f"it has {problem.n} unknowns, more than {MAX_DENSE}, and dynamic state "
+               "selection (the sparse LU keeps one pattern)")
     elif stald:
         why = "stability limit detection runs in the Python loop"
     elif getattr(problem, "delays", None) is not None:
@@ -158,28 +166,50 @@ class CompiledBDF(BDF):
         self.iv = np.zeros(I_SIZE, dtype=np.int64)
         self.pv = (ctypes.c_void_p * P_SIZE)()
         self._keep = {}
-        self._buf("scratch", n * n + 13 * n, P_SCRATCH)
-        self._buf("lu", n * n, P_LU)
+        # above MAX_DENSE unknowns (a compiled model) the LU is sparse: cbdf_sparse.c
+        self.sparse = mode == 0 and n > MAX_DENSE
+        self.iv[I_SPARSE] = self.sparse
+        dense = 0 if self.sparse else n * n
+        self._buf("scratch", dense + 13 * n, P_SCRATCH)
+        self._buf("lu", max(dense, 1), P_LU)
         self._buf("piv", n, P_PIV, np.int64)
         for name, slot in (("weighted", P_WEIGHTED), ("lasterr", P_LASTERR), ("yp", P_YP),
                            ("faily", P_FAILY), ("failyp", P_FAILYP)):
             self._buf(name, n, slot)
-        self.out_t = self._buf("out_t", CAPACITY, P_OUT_T)
-        self.out_y = self._buf("out_y", (CAPACITY, n), P_OUT_Y)
-        self.out_yp = self._buf("out_yp", (CAPACITY, n), P_OUT_YP)
+        # a large system's buffer is shorter: allocating (and zeroing) 2 x 512 x n
+        # doubles costs milliseconds, a return to Python per 64 points microseconds
+        cap = CAPACITY if n <= MAX_DENSE else max(64, min(CAPACITY, 2**17 // max(n, 1)))
+        self.out_t = self._buf("out_t", cap, P_OUT_T)
+        self.out_y = self._buf("out_y", (cap, n), P_OUT_Y)
+        self.out_yp = self._buf("out_yp", (cap, n), P_OUT_YP)
         nr = int(getattr(problem, "n_roots", 0) or 0)
         for name, slot in (("g", P_G), ("gprev", P_GPREV), ("signref", P_SIGNREF)):
             self._buf(name, max(nr, 1), slot)
         self.iv[I_N], self.iv[I_NROOTS], self.iv[I_MODE] = n, nr, mode
         self._n_roots = nr
-        self.iv[I_CAP] = CAPACITY
+        self.iv[I_CAP] = cap
         if mode == 0:
             self._bind_model(problem)
         else:
             self._bind_callbacks(problem)
         super().__init__(problem, t0, y0, yp0, **options)
         self.pv[P_PHI] = _ptr(self.phi)
+        self._splu = None
         self.pending = False
+
+    def _bind_sparse(self) -> None:
+        """The sparse LU on the problem's Jacobian pattern, analysed at the current
+        point; again whenever the pattern is another (a new choice of linked states
+        makes a new one)."""
+        p = self.problem
+        if self._splu is not None and self._splu_pattern is p._jac_indptr:
+            return
+        self._splu = sparse_lu.SparseLU(self.lib, self.n, p._jac_indptr, p._jac_indices,
+                                        p._jac_slot, p.jacobian(self.tn, self.y, self.yp,
+                                                                self.cj))
+        self._splu_pattern = p._jac_indptr
+        self.pv[P_SPLU] = self._splu.handle
+        self.force_setup = True
 
     def _buf(self, name, shape, slot, dtype=float):
         a = np.zeros(shape, dtype=dtype)
@@ -342,6 +372,8 @@ class CompiledBDF(BDF):
         place).  Returns R_BUDGET, R_FULL, R_SPECIAL or R_FAIL; the points output are in
         :attr:`points`."""
         iv, pv, p = self.iv, self.pv, self.problem
+        if self.sparse:
+            self._bind_sparse()
         self._push()
         iv[I_BUDGET], iv[I_COUNT], iv[I_PENDING] = budget, 0, 0
         iv[I_ALLSTEPS] = t_eval is None
@@ -387,7 +419,8 @@ class CompiledBDF(BDF):
         if kind == "singular":
             J = self.problem.jacobian(float(dv[D_FAIL_TJ]), self._keep["faily"].copy(),
                                       self._keep["failyp"].copy(), float(dv[D_FAIL_CJ]))
-            J = J.toarray() if hasattr(J, "toarray") else np.asarray(J, float)
+            if not self.sparse or iv[I_FAILKIND] == 5:
+                J = J.toarray() if hasattr(J, "toarray") else np.asarray(J, float)
             if iv[I_FAILKIND] == 5:
                 rows, cols = LinearSolver._nonfinite(J)
                 msg = "iteration matrix has non-finite entries"

@@ -343,7 +343,7 @@ class _Run:
         n = self.problem.n
         lin = getattr(getattr(self, "solver", None), "lin", None)
         if self.stats.step_loop == "c":
-            self.stats.linear_solver = "dense"
+            self.stats.linear_solver = "sparse" if self.solver.sparse else "dense"
         elif lin is not None and lin.sparse is not None:
             self.stats.linear_solver = "sparse" if lin.sparse else "dense"
         y = np.vstack(self.ys) if self.ys else np.empty((0, n))

@@ -13,7 +13,11 @@ chosen automatically from what the problem supplies:
   small model's whole run from a warm cache;
 * sparse LU (SuperLU through :func:`scipy.sparse.linalg.splu`) when the problem gives a
   ``jac_pattern`` or returns a scipy.sparse matrix and ``n`` exceeds
-  :data:`SPARSE_THRESHOLD`.
+  :data:`SPARSE_THRESHOLD`.  The iteration matrix keeps its pattern from one
+  factorization to the next, so SuperLU's column order and pivot rows of the first are
+  kept, and the next ones of that pattern are numeric refactorizations by the compiled
+  step loop's sparse LU (:mod:`~acausal.solvers.cbdf_sparse`; when a C compiler is
+  there), which pivots afresh where a kept pivot has become small.
 
 A factorization whose pivots look singular is judged again on the *equilibrated*
 matrix ``B = D_r J D_c`` (``D_r``, ``D_c`` diagonal): first every row, then every
@@ -210,7 +214,9 @@ class LinearSolver:
         self._piv = None
         self._r = self._c = None     # row and column equilibration of the factored matrix
         self._getrf = self._getrs = None
-        self._clu = None             # the compiled step loop's library, for its dense LU
+        self._kept = None            # (indptr, indices, SuperLU's permutations), or False
+        self._clu = None             # the compiled refactorization on that analysis
+        self._dlu = None             # the compiled step loop's library, for a dense LU
         self._in_c = False           # whether the last factorization is the compiled one
 
     def dense_decided(self) -> bool:
@@ -223,8 +229,8 @@ class LinearSolver:
             offered = issparse(J) or self.pattern is not None
             self.sparse = bool(offered and self.n > SPARSE_THRESHOLD)
         if not self.sparse:
-            self._clu = _compiled_lu()
-            if self._clu is None:
+            self._dlu = _compiled_lu()
+            if self._dlu is None:
                 self._lapack()
 
     def _lapack(self) -> None:
@@ -234,7 +240,7 @@ class LinearSolver:
     def factor(self, J) -> None:
         """LU-factor ``J``; raise :class:`SingularMatrixError` if it is singular."""
         if self.sparse is None or (not self.sparse and self._getrf is None
-                                   and self._clu is None):
+                                   and self._dlu is None):
             self._decide(J)
         if self.sparse:
             self._factor_sparse(J)
@@ -246,7 +252,7 @@ class LinearSolver:
         if not np.all(np.isfinite(A)):
             raise SingularMatrixError("iteration matrix has non-finite entries",
                                       *self._nonfinite(A))
-        if self._clu is not None:
+        if self._dlu is not None:
             if self._factor_compiled(A):
                 return
             self._lapack()        # singular: LAPACK's path, for its diagnostics
@@ -269,7 +275,7 @@ class LinearSolver:
         A = np.ascontiguousarray(A, dtype=float)
         lu, piv = np.empty((n, n)), np.empty(n, dtype=np.int64)
         r, c, equil = np.empty(n), np.empty(n), ctypes.c_int(0)
-        code = self._clu.dense_factor(A.ctypes.data, lu.ctypes.data, piv.ctypes.data,
+        code = self._dlu.dense_factor(A.ctypes.data, lu.ctypes.data, piv.ctypes.data,
                                       r.ctypes.data, c.ctypes.data, n, ctypes.byref(equil))
         if code != 0:
             return False
@@ -283,15 +289,53 @@ class LinearSolver:
         if not np.all(np.isfinite(A.data)):
             raise SingularMatrixError("iteration matrix has non-finite entries",
                                       *self._nonfinite(A.toarray()))
+        if self._refactored(A):
+            return
         lu = _splu(A)
         if lu is not None and _pivots_ok(lu.U.diagonal()):
             self._lu, self._r = lu, None
+            self._keep_analysis(A, lu)
             return
         r, c = equilibrate(A)
         lu = _splu(sp.csc_matrix(sp.diags(r) @ A @ sp.diags(c)))
         if lu is None or not _pivots_ok(lu.U.diagonal()):
             raise SingularMatrixError("iteration matrix is singular", matrix=A)
         self._lu, self._r, self._c = lu, r, c
+
+    def _refactored(self, A) -> bool:
+        """Factor ``A`` numerically with the column order and pivot rows of an earlier
+        SuperLU factorization of the same pattern, by the compiled sparse LU of the
+        step loop (:mod:`~acausal.solvers.cbdf_sparse`: no ordering and no SuperLU
+        set-up per factorization, the idea of KLU's refactorization).  False where
+        there is none (the first factorization of a pattern, no C compiler), or where
+        its pivots look singular even equilibrated: SuperLU then factors afresh and
+        decides."""
+        kept = self._kept
+        if kept is None or kept is False or not _same_pattern(A, kept[0], kept[1]):
+            return False
+        if self._clu is None:
+            from .cbdf import library        # not at import: cbdf imports this module
+            lib = library()
+            if lib is None:
+                self._kept = False
+                return False
+            from .cbdf_sparse import SparseLU
+            self._clu = SparseLU(lib, self.n, kept[0], kept[1], np.arange(A.nnz), A,
+                                 kept[2])
+        if self._clu.factor(A.data) != 0:
+            return False
+        self._lu, self._r = self._clu, None
+        return True
+
+    def _keep_analysis(self, A, lu) -> None:
+        """SuperLU's column order and pivot rows of ``A``, kept for the next
+        factorizations of its pattern (a solver factoring only once never builds the
+        compiled one)."""
+        kept = self._kept
+        if kept is False or (kept is not None and _same_pattern(A, kept[0], kept[1])):
+            return
+        self._kept = (A.indptr.copy(), A.indices.copy(), (lu.perm_c, lu.perm_r))
+        self._clu = None
 
     @staticmethod
     def _nonfinite(A: np.ndarray):
@@ -305,7 +349,7 @@ class LinearSolver:
             return self._lu.solve(b) if r is None else self._c * self._lu.solve(r * b)
         if self._in_c:
             x = np.array(b, dtype=float)
-            self._clu.dense_solve(self._lu.ctypes.data, self._piv.ctypes.data,
+            self._dlu.dense_solve(self._lu.ctypes.data, self._piv.ctypes.data,
                                   None if r is None else r.ctypes.data,
                                   None if r is None else self._c.ctypes.data, self.n,
                                   x.ctypes.data)
@@ -315,6 +359,11 @@ class LinearSolver:
         x, _ = self._getrs(self._lu, self._piv, r * b, overwrite_b=True)
         x *= self._c
         return x
+
+
+def _same_pattern(A, indptr, indices) -> bool:
+    return A.indptr.shape == indptr.shape and A.indices.shape == indices.shape and \
+        np.array_equal(A.indptr, indptr) and np.array_equal(A.indices, indices)
 
 
 def _pivots_ok(diag) -> bool:
