@@ -19,19 +19,9 @@
 #include <math.h>
 #include <string.h>
 #include <float.h>
-/* dense_factor and dense_solve: cbdf_lu.c, put in front of this file by cbdf.py */
-int dense_factor(const double *J, double *A, long *piv, double *r, double *c, long n,
-                 int *equil);
-void dense_solve(const double *A, const long *piv, const double *r, const double *c,
-                 long n, double *b);
-/* dyn_due: cbdf_dyn.c (dynamic state selection), also in front of this file */
-int dyn_due(long *dl, double *dd, void *jac, double t, const double *y, double *p,
-            double *m, double *vals, double *w, long nv);
-/* the sparse LU of systems above cbdf.py's MAX_DENSE: cbdf_sparse.c, likewise */
-void sparse_jacobian(void *h, const double *v, const double *js, long njac, long nsz,
-                     long nl, double cj);
-int sparse_factor(void *h);
-void sparse_solve(void *h, double *b);
+/* dense_factor, dense_solve (cbdf_lu.c), dyn_due (cbdf_dyn.c) and sparse_jacobian,
+   sparse_factor, sparse_solve (cbdf_sparse.c) are defined before this file: cbdf.py
+   builds the four files as one translation unit, in that order. */
 
 /* dv */
 enum { D_TN, D_TPREV, D_TSTOP, D_HH, D_HUSED, D_CJ, D_CJOLD, D_CJLAST, D_CJRATIO, D_SS,
