@@ -48,6 +48,9 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
         return model
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r} ({type(model).__name__})")
+    if backend in ("auto", "c"):
+        from .solvers.cbdf import build_in_background
+        build_in_background()
     mc = compile_model(model, backend, cache=cache, check_units=check_units)
     _declare_units(mc, model)
     return CompiledModel(mc)

@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import ctypes
 import os
+import threading
 
 import numpy as np
 
@@ -74,32 +75,60 @@ R_BUDGET, R_FULL, R_SPECIAL, R_FAIL = range(4)
 _KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singular"}
 
 _lib = None
+_lock = threading.Lock()
+_builder = None          # the thread of build_in_background
 
 
 def library(cached_only: bool = False):
     """The compiled step loop (built once into the C backend's cache), or None when no
-    C compiler works (with ``cached_only``: also when it is not built yet)."""
-    global _lib
+    C compiler works (with ``cached_only``: also when it is not built yet, or being
+    built by :func:`build_in_background`)."""
     if _lib is None:
-        from ..compiler.cbackend import build
-        here = os.path.dirname(__file__)
-        try:
-            source = ""
-            for name in ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c"):
-                with open(os.path.join(here, name)) as f:
-                    source += f.read() + "\n"
-            path = build(source, cached_only=cached_only)
-            if path is None:
-                return None
-            lib = ctypes.CDLL(path)
-        except (BackendError, OSError):
-            _lib = False
+        if not _lock.acquire(blocking=not cached_only):
             return None
-        lib.cbdf_run.argtypes = [ctypes.c_void_p] * 3
-        lib.cbdf_run.restype = ctypes.c_int
-        sparse_lu.bind(lib)
-        _lib = lib
+        try:
+            if _lib is None:
+                _load(cached_only)
+        finally:
+            _lock.release()
     return _lib or None
+
+
+def _load(cached_only: bool) -> None:
+    global _lib
+    from ..compiler.cbackend import build
+    here = os.path.dirname(__file__)
+    try:
+        source = ""
+        for name in ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c"):
+            with open(os.path.join(here, name)) as f:
+                source += f.read() + "\n"
+        path = build(source, cached_only=cached_only)
+        if path is None:
+            return
+        lib = ctypes.CDLL(path)
+    except (BackendError, OSError):
+        _lib = False
+        return
+    lib.cbdf_run.argtypes = [ctypes.c_void_p] * 3
+    lib.cbdf_run.restype = ctypes.c_int
+    sparse_lu.bind(lib)
+    _lib = lib
+
+
+def build_in_background() -> None:
+    """Start building the step loop's library in a thread, unless it is built or no C
+    compiler works.  Why: on a machine where it was never built, compiling it (about a
+    second of gcc) would otherwise come after the model's own C, at the first
+    simulate; in a thread it overlaps the model's compile (the compiler runs in its own
+    process, so the thread holds no lock that the compile needs)."""
+    global _builder
+    if _lib is not None or _builder is not None or library(cached_only=True) is not None:
+        return
+    from ..compiler.cbackend import compiler_available
+    if _lib is None and compiler_available() is not None:
+        _builder = threading.Thread(target=library, name="acausal-cbdf-build")
+        _builder.start()
 
 
 def _compiled_model(problem) -> bool:
