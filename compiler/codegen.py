@@ -87,18 +87,49 @@ def extract_relations(exprs: list) -> tuple[list, list, dict, list]:
     ``origin[k]`` is the index of the first expression that relation k occurs in.
     """
     from ..components.symbols import no_event
-    exprs = [event_form(sp.sympify(e)) for e in exprs]
+    exprs = [sp.sympify(e) for e in exprs]
+    # Why the screening walk: most expressions of a large model hold no if-expression,
+    # relation or anything that becomes one; one walk over the nodes of all of them (a
+    # subtree shared by several is walked once) sets those aside, returned unchanged
+    eventful = _eventful(exprs, (sp.Abs, sp.Min, sp.Max, sp.sign, no_event, sp.Piecewise,
+                                 sp.core.relational.Relational))
+    for i in eventful:
+        exprs[i] = event_form(exprs[i])
     relations = {}
-    for i, e in enumerate(exprs):
-        for pw in _event_piecewise(e, no_event):
+    for i in eventful:
+        for pw in _event_piecewise(exprs[i], no_event):
             for _, cond in pw.args:
                 for rel in _relations_in(cond):
                     relations.setdefault(rel, i)
     ordered = sorted(relations, key=sp.srepr)
     modes = {rel: sp.Symbol(f"_m{k}") for k, rel in enumerate(ordered)}
-    new = [_freeze(e, modes, no_event) for e in exprs]
+    new = list(exprs)
+    for i in eventful:
+        new[i] = _freeze(exprs[i], modes, no_event)
     crossings = [rel.lhs - rel.rhs for rel in ordered]
     return new, crossings, {modes[r]: r for r in ordered}, [relations[r] for r in ordered]
+
+
+def _eventful(exprs, kinds) -> list:
+    """Indices of the expressions with a node of one of the classes ``kinds``; a node
+    found free of them is not walked again."""
+    clean, out = set(), []
+    for i, e in enumerate(exprs):
+        seen, stack, found = [], [e], False
+        while stack:
+            node = stack.pop()
+            if node in clean:
+                continue
+            if isinstance(node, kinds):
+                found = True
+                break
+            seen.append(node)
+            stack.extend(node.args)
+        if found:
+            out.append(i)
+        else:
+            clean.update(seen)
+    return out
 
 
 def _event_piecewise(e, no_event):
