@@ -141,10 +141,14 @@ class LoadedCode:
             return code
         out = cls.__new__(cls)
         out.__dict__.update({k: v for k, v in vars(code).items()
-                             if k not in ("program", "_program", "_program_file")})
+                             if k not in ("program", "_program", "_program_file",
+                                          "code_object")})
         out.program = None
         out.load_note = None
-        out.bytecode = None
+        # the bytecode of the code object the source was compiled to: compiling a large
+        # source again to store it would cost as much as the first time
+        obj = getattr(code, "code_object", None)
+        out.bytecode = _MAGIC + marshal.dumps(obj) if obj is not None else None
         return out
 
     def __reduce__(self):

@@ -51,6 +51,7 @@ class GeneratedCode:
     expand: object = None
     program: object = None
     backend: str = "numpy"
+    code_object: object = None    # the compiled source: a cache entry keeps its bytecode
 
 
 def event_form(expr: sp.Expr) -> sp.Expr:
@@ -331,13 +332,15 @@ def python_code(prog: Program) -> GeneratedCode:
             lines += _py_function(name, prologue(prog.needed(exprs)), _py_rows(em, exprs))
     source = "\n".join(lines) + "\n"
     namespace = {"math": math, "_list": _list}
-    exec(compile(source, "<acausal generated>", "exec"), namespace)
+    code_object = compile(source, "<acausal generated>", "exec")
+    exec(code_object, namespace)
     return GeneratedCode(source, namespace["residual"], namespace["jacobian"],
                          namespace["roots"], np.array(prog.jac_rows, dtype=np.int64),
                          np.array(prog.jac_cols, dtype=np.int64),
                          len(res), len(prog.functions["roots"]),
                          hashlib.sha1(source.encode()).hexdigest()[:16],
-                         namespace["scales"], namespace.get("expand"), prog)
+                         namespace["scales"], namespace.get("expand"), prog,
+                         code_object=code_object)
 
 
 def _list(a):
