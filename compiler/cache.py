@@ -54,6 +54,7 @@ from dataclasses import fields, is_dataclass, replace
 import numpy as np
 
 from .cachekeys import fingerprint, flat_key, tree_key
+from .lazycode import GeneratedModule
 
 __all__ = ["LoadedCode", "ParameterFunction", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
@@ -111,11 +112,13 @@ class LoadedCode:
 
     def __init__(self, source, jac_rows, jac_cols, n_rows, n_roots, digest, c=None,
                  bytecode=None):
-        ns = _run(source, "<acausal generated>", bytecode)
         self.bytecode = bytecode if bytecode and bytecode[:len(_MAGIC)] == _MAGIC else None
         self.source = source
-        self.residual, self.jacobian, self.roots = ns["residual"], ns["jacobian"], ns["roots"]
-        self.scales, self.expand = ns.get("scales"), ns.get("expand")
+        # executed when a function is first called: behind a C library, rarely
+        self.module = module = GeneratedModule(source, self.bytecode)
+        fn = module.function
+        self.residual, self.jacobian, self.roots = fn("residual"), fn("jacobian"), fn("roots")
+        self.scales, self.expand = fn("scales"), fn("expand")
         self.jac_rows = np.asarray(jac_rows, dtype=np.int64)
         self.jac_cols = np.asarray(jac_cols, dtype=np.int64)
         self.n_rows, self.n_roots, self.digest = int(n_rows), int(n_roots), digest
@@ -141,14 +144,10 @@ class LoadedCode:
             return code
         out = cls.__new__(cls)
         out.__dict__.update({k: v for k, v in vars(code).items()
-                             if k not in ("program", "_program", "_program_file",
-                                          "code_object")})
+                             if k not in ("program", "_program", "_program_file")})
         out.program = None
         out.load_note = None
-        # the bytecode of the code object the source was compiled to: compiling a large
-        # source again to store it would cost as much as the first time
-        obj = getattr(code, "code_object", None)
-        out.bytecode = _MAGIC + marshal.dumps(obj) if obj is not None else None
+        out.bytecode = None
         return out
 
     def __reduce__(self):
@@ -158,10 +157,14 @@ class LoadedCode:
         return (LoadedCode, (self.source, self.jac_rows, self.jac_cols, self.n_rows,
                              self.n_roots, self.digest, c, self._bytes()))
 
-    def _bytes(self) -> bytes:
+    def _bytes(self) -> bytes | None:
+        """The bytecode an entry keeps: that of the compile which ran the functions
+        (compiled now for the numpy backend, whose functions will run); a source behind
+        a C library that was never called is stored without, and compiled where needed."""
         if getattr(self, "bytecode", None) is None:      # compiled once, then kept
-            self.bytecode = _MAGIC + marshal.dumps(compile(self.source,
-                                                           "<acausal generated>", "exec"))
+            module = getattr(self, "module", None) or GeneratedModule(self.source)
+            if module.compiled or self.backend != "c":
+                self.bytecode = module.bytecode()
         return self.bytecode
 
 

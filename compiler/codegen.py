@@ -24,7 +24,6 @@ Frozen floor values (:mod:`acausal.compiler.discrete`) follow the relations in `
 from __future__ import annotations
 
 import hashlib
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -32,6 +31,7 @@ import sympy as sp
 
 from .derivative import partial as _partial
 from .emit import Emitter, _plain
+from .lazycode import GeneratedModule
 
 __all__ = ["GeneratedCode", "Program", "generate", "plan", "python_code", "extract_relations"]
 
@@ -51,7 +51,7 @@ class GeneratedCode:
     expand: object = None
     program: object = None
     backend: str = "numpy"
-    code_object: object = None    # the compiled source: a cache entry keeps its bytecode
+    module: object = None         # the GeneratedModule the functions are compiled in
 
 
 def event_form(expr: sp.Expr) -> sp.Expr:
@@ -331,16 +331,16 @@ def python_code(prog: Program) -> GeneratedCode:
             exprs = prog.functions[name]
             lines += _py_function(name, prologue(prog.needed(exprs)), _py_rows(em, exprs))
     source = "\n".join(lines) + "\n"
-    namespace = {"math": math, "_list": _list}
-    code_object = compile(source, "<acausal generated>", "exec")
-    exec(code_object, namespace)
-    return GeneratedCode(source, namespace["residual"], namespace["jacobian"],
-                         namespace["roots"], np.array(prog.jac_rows, dtype=np.int64),
+    # compiled by the first call of one of its functions (acausal.compiler.lazycode):
+    # with the C backend most runs never call them
+    module = GeneratedModule(source)
+    fn = module.function
+    return GeneratedCode(source, fn("residual"), fn("jacobian"), fn("roots"),
+                         np.array(prog.jac_rows, dtype=np.int64),
                          np.array(prog.jac_cols, dtype=np.int64),
                          len(res), len(prog.functions["roots"]),
                          hashlib.sha1(source.encode()).hexdigest()[:16],
-                         namespace["scales"], namespace.get("expand"), prog,
-                         code_object=code_object)
+                         fn("scales"), fn("expand"), prog, module=module)
 
 
 def _list(a):
