@@ -32,6 +32,7 @@ import sympy as sp
 from .derivative import partial as _partial
 from .emit import Emitter, _plain
 from .lazycode import GeneratedModule
+from .symbolic import symbols_of
 
 __all__ = ["GeneratedCode", "Program", "generate", "plan", "python_code", "extract_relations"]
 
@@ -208,7 +209,7 @@ class Program:
 
     def _direct(self, e):
         refs = self.refs
-        return [refs[q][1] for q in e.free_symbols if refs.get(q, ("",))[0] == "a"]
+        return [refs[q][1] for q in symbols_of(e) if refs.get(q, ("",))[0] == "a"]
 
 
 def plan(residuals, y_syms, params, n_modes=0, crossings=None, assignments=(), outputs=None,
@@ -263,14 +264,14 @@ def _partials(e, refs) -> dict:
     """The non-zero partial derivatives of e with respect to the z and assigned symbols
     it reads, in one pass over a sum's terms (a node balance of n terms costs n, not
     n squared)."""
-    wanted = sorted((q for q in e.free_symbols if refs.get(q, ("",))[0] in "ya"),
+    wanted = sorted((q for q in symbols_of(e) if refs.get(q, ("",))[0] in "ya"),
                     key=lambda q: refs[q])
     if not wanted:
         return {}
     if e.is_Add and len(e.args) > 8:
         by_symbol = {q: [] for q in wanted}
         for term in e.args:
-            for q in term.free_symbols:
+            for q in symbols_of(term):
                 if q in by_symbol:
                     by_symbol[q].append(term)
         out = {}

@@ -12,27 +12,27 @@ from functools import lru_cache
 
 import sympy as sp
 
-__all__ = ["partial", "solve_linear"]
+__all__ = ["partial", "plain_coefficient", "solve_linear"]
 
 
 @lru_cache(maxsize=200_000)
 def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
     """d expr / d x."""
-    if not expr.has(x):
+    if x not in _symbols(expr):
         return sp.Integer(0)
     if expr == x:
         return sp.Integer(1)
     if expr.is_Add:
-        return sp.Add(*[partial(a, x) for a in expr.args if a.has(x)])
+        return sp.Add(*[partial(a, x) for a in expr.args if x in _symbols(a)])
     if expr.is_Mul:
         # product rule over the factors that contain x
         args = expr.args
         terms = []
         for i, a in enumerate(args):
-            if a.has(x):
+            if x in _symbols(a):
                 terms.append(sp.Mul(*args[:i], partial(a, x), *args[i + 1:]))
         return sp.Add(*terms)
-    if expr.is_Pow and not expr.exp.has(x):
+    if expr.is_Pow and x not in _symbols(expr.exp):
         # r u^(r-1) u' directly: sympy writes r u^r/u, which is 0/0 where u = 0
         base, r = expr.args
         return r * base ** (r - 1) * partial(base, x)
@@ -48,16 +48,37 @@ def solve_linear(residual, x):
     coefficient is read from the term itself: neither the derivative nor r(x=0) is
     built, and the result is the same expression."""
     if residual.is_Add:
-        inner = [a for a in residual.args if a.has(x)]
+        from .symbolic import _terms_with     # symbolic imports this module
+        inner = _terms_with(residual).get(x, ())
         if len(inner) == 1:
-            c = _plain_coefficient(inner[0], x)
+            c = plain_coefficient(inner[0], x)
             if c is not None:
-                rest = [a for a in residual.args if a is not inner[0]]
+                # the cached index may hold an equal term of an equal sum: compare by
+                # value (a sum has no two equal terms), the hash first
+                t, h = inner[0], hash(inner[0])
+                rest = [a for a in residual.args if hash(a) != h or a != t]
                 return _solved(rest, c)
     return _solve_general(residual, x)
 
 
-def _plain_coefficient(term, x):
+@lru_cache(maxsize=200_000)
+def _symbols(e) -> frozenset:
+    """Every Symbol node of e, bound ones included: ``x in _symbols(e)`` is
+    ``e.has(x)`` for a symbol x (sympy walks the tree twice for each such question;
+    the partials of a model ask it of the same subexpressions many times)."""
+    if e.is_Symbol:
+        return frozenset((e,))
+    out, stack = set(), list(e.args)
+    while stack:            # iterative: a deeply nested expression must not recurse
+        node = stack.pop()
+        if node.is_Symbol:
+            out.add(node)
+        else:
+            stack.extend(node.args)
+    return frozenset(out)
+
+
+def plain_coefficient(term, x):
     """k (a number or a symbol) when term is x or k*x, else None."""
     if term == x:
         return sp.S.One
