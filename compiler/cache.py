@@ -88,11 +88,12 @@ def _run(source: str, what: str, bytecode: bytes | None = None) -> dict:
 
 class LoadedCode:
     """A generated code without its Program: the functions executed from ``source``
-    (and the C library behind them when ``c`` is given).  Reads like a
+    when first called (:mod:`acausal.compiler.lazycode`), and the C library behind them
+    when ``c`` is given.  Reads like a
     :class:`~acausal.compiler.codegen.GeneratedCode` (``program`` is None) and pickles
     as its sources (with the bytecode of the Python source, used when the receiving
-    Python has the same bytecode version), so it is rebuilt, not unpickled, in the
-    receiving process.  A code loaded from the compile cache finds its Program in the
+    Python has the same bytecode version; a source behind a C library that never ran
+    goes without), so it is rebuilt, not unpickled, in the receiving process.  A code loaded from the compile cache finds its Program in the
     entry's side file when something asks for it (an FMU export prints its C from it):
     only then are the Program and sympy loaded."""
 
