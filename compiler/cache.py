@@ -54,6 +54,7 @@ from dataclasses import fields, is_dataclass, replace
 import numpy as np
 
 from .cachekeys import fingerprint, flat_key, tree_key
+from .lazycode import GeneratedModule
 
 __all__ = ["LoadedCode", "ParameterFunction", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
@@ -87,11 +88,12 @@ def _run(source: str, what: str, bytecode: bytes | None = None) -> dict:
 
 class LoadedCode:
     """A generated code without its Program: the functions executed from ``source``
-    (and the C library behind them when ``c`` is given).  Reads like a
+    when first called (:mod:`acausal.compiler.lazycode`), and the C library behind them
+    when ``c`` is given.  Reads like a
     :class:`~acausal.compiler.codegen.GeneratedCode` (``program`` is None) and pickles
     as its sources (with the bytecode of the Python source, used when the receiving
-    Python has the same bytecode version), so it is rebuilt, not unpickled, in the
-    receiving process.  A code loaded from the compile cache finds its Program in the
+    Python has the same bytecode version; a source behind a C library that never ran
+    goes without), so it is rebuilt, not unpickled, in the receiving process.  A code loaded from the compile cache finds its Program in the
     entry's side file when something asks for it (an FMU export prints its C from it):
     only then are the Program and sympy loaded."""
 
@@ -111,11 +113,13 @@ class LoadedCode:
 
     def __init__(self, source, jac_rows, jac_cols, n_rows, n_roots, digest, c=None,
                  bytecode=None):
-        ns = _run(source, "<acausal generated>", bytecode)
         self.bytecode = bytecode if bytecode and bytecode[:len(_MAGIC)] == _MAGIC else None
         self.source = source
-        self.residual, self.jacobian, self.roots = ns["residual"], ns["jacobian"], ns["roots"]
-        self.scales, self.expand = ns.get("scales"), ns.get("expand")
+        # executed when a function is first called: behind a C library, rarely
+        self.module = module = GeneratedModule(source, self.bytecode)
+        fn = module.function
+        self.residual, self.jacobian, self.roots = fn("residual"), fn("jacobian"), fn("roots")
+        self.scales, self.expand = fn("scales"), fn("expand")
         self.jac_rows = np.asarray(jac_rows, dtype=np.int64)
         self.jac_cols = np.asarray(jac_cols, dtype=np.int64)
         self.n_rows, self.n_roots, self.digest = int(n_rows), int(n_roots), digest
@@ -154,10 +158,14 @@ class LoadedCode:
         return (LoadedCode, (self.source, self.jac_rows, self.jac_cols, self.n_rows,
                              self.n_roots, self.digest, c, self._bytes()))
 
-    def _bytes(self) -> bytes:
+    def _bytes(self) -> bytes | None:
+        """The bytecode an entry keeps: that of the compile which ran the functions
+        (compiled now for the numpy backend, whose functions will run); a source behind
+        a C library that was never called is stored without, and compiled where needed."""
         if getattr(self, "bytecode", None) is None:      # compiled once, then kept
-            self.bytecode = _MAGIC + marshal.dumps(compile(self.source,
-                                                           "<acausal generated>", "exec"))
+            module = getattr(self, "module", None) or GeneratedModule(self.source)
+            if module.compiled or self.backend != "c":
+                self.bytecode = module.bytecode()
         return self.bytecode
 
 

@@ -24,7 +24,6 @@ Frozen floor values (:mod:`acausal.compiler.discrete`) follow the relations in `
 from __future__ import annotations
 
 import hashlib
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -32,6 +31,8 @@ import sympy as sp
 
 from .derivative import partial as _partial
 from .emit import Emitter, _plain
+from .lazycode import GeneratedModule
+from .symbolic import symbols_of
 
 __all__ = ["GeneratedCode", "Program", "generate", "plan", "python_code", "extract_relations"]
 
@@ -51,6 +52,7 @@ class GeneratedCode:
     expand: object = None
     program: object = None
     backend: str = "numpy"
+    module: object = None         # the GeneratedModule the functions are compiled in
 
 
 def event_form(expr: sp.Expr) -> sp.Expr:
@@ -87,18 +89,49 @@ def extract_relations(exprs: list) -> tuple[list, list, dict, list]:
     ``origin[k]`` is the index of the first expression that relation k occurs in.
     """
     from ..components.symbols import no_event
-    exprs = [event_form(sp.sympify(e)) for e in exprs]
+    exprs = [sp.sympify(e) for e in exprs]
+    # Why the screening walk: most expressions of a large model hold no if-expression,
+    # relation or anything that becomes one; one walk over the nodes of all of them (a
+    # subtree shared by several is walked once) sets those aside, returned unchanged
+    eventful = _eventful(exprs, (sp.Abs, sp.Min, sp.Max, sp.sign, no_event, sp.Piecewise,
+                                 sp.core.relational.Relational))
+    for i in eventful:
+        exprs[i] = event_form(exprs[i])
     relations = {}
-    for i, e in enumerate(exprs):
-        for pw in _event_piecewise(e, no_event):
+    for i in eventful:
+        for pw in _event_piecewise(exprs[i], no_event):
             for _, cond in pw.args:
                 for rel in _relations_in(cond):
                     relations.setdefault(rel, i)
     ordered = sorted(relations, key=sp.srepr)
     modes = {rel: sp.Symbol(f"_m{k}") for k, rel in enumerate(ordered)}
-    new = [_freeze(e, modes, no_event) for e in exprs]
+    new = list(exprs)
+    for i in eventful:
+        new[i] = _freeze(exprs[i], modes, no_event)
     crossings = [rel.lhs - rel.rhs for rel in ordered]
     return new, crossings, {modes[r]: r for r in ordered}, [relations[r] for r in ordered]
+
+
+def _eventful(exprs, kinds) -> list:
+    """Indices of the expressions with a node of one of the classes ``kinds``; a node
+    found free of them is not walked again."""
+    clean, out = set(), []
+    for i, e in enumerate(exprs):
+        seen, stack, found = [], [e], False
+        while stack:
+            node = stack.pop()
+            if node in clean:
+                continue
+            if isinstance(node, kinds):
+                found = True
+                break
+            seen.append(node)
+            stack.extend(node.args)
+        if found:
+            out.append(i)
+        else:
+            clean.update(seen)
+    return out
 
 
 def _event_piecewise(e, no_event):
@@ -176,7 +209,7 @@ class Program:
 
     def _direct(self, e):
         refs = self.refs
-        return [refs[q][1] for q in e.free_symbols if refs.get(q, ("",))[0] == "a"]
+        return [refs[q][1] for q in symbols_of(e) if refs.get(q, ("",))[0] == "a"]
 
 
 def plan(residuals, y_syms, params, n_modes=0, crossings=None, assignments=(), outputs=None,
@@ -231,14 +264,14 @@ def _partials(e, refs) -> dict:
     """The non-zero partial derivatives of e with respect to the z and assigned symbols
     it reads, in one pass over a sum's terms (a node balance of n terms costs n, not
     n squared)."""
-    wanted = sorted((q for q in e.free_symbols if refs.get(q, ("",))[0] in "ya"),
+    wanted = sorted((q for q in symbols_of(e) if refs.get(q, ("",))[0] in "ya"),
                     key=lambda q: refs[q])
     if not wanted:
         return {}
     if e.is_Add and len(e.args) > 8:
         by_symbol = {q: [] for q in wanted}
         for term in e.args:
-            for q in term.free_symbols:
+            for q in symbols_of(term):
                 if q in by_symbol:
                     by_symbol[q].append(term)
         out = {}
@@ -299,14 +332,16 @@ def python_code(prog: Program) -> GeneratedCode:
             exprs = prog.functions[name]
             lines += _py_function(name, prologue(prog.needed(exprs)), _py_rows(em, exprs))
     source = "\n".join(lines) + "\n"
-    namespace = {"math": math, "_list": _list}
-    exec(compile(source, "<acausal generated>", "exec"), namespace)
-    return GeneratedCode(source, namespace["residual"], namespace["jacobian"],
-                         namespace["roots"], np.array(prog.jac_rows, dtype=np.int64),
+    # compiled by the first call of one of its functions (acausal.compiler.lazycode):
+    # with the C backend most runs never call them
+    module = GeneratedModule(source)
+    fn = module.function
+    return GeneratedCode(source, fn("residual"), fn("jacobian"), fn("roots"),
+                         np.array(prog.jac_rows, dtype=np.int64),
                          np.array(prog.jac_cols, dtype=np.int64),
                          len(res), len(prog.functions["roots"]),
                          hashlib.sha1(source.encode()).hexdigest()[:16],
-                         namespace["scales"], namespace.get("expand"), prog)
+                         fn("scales"), fn("expand"), prog, module=module)
 
 
 def _list(a):

@@ -12,28 +12,111 @@ from functools import lru_cache
 
 import sympy as sp
 
-__all__ = ["partial"]
+__all__ = ["partial", "plain_coefficient", "solve_linear"]
 
 
 @lru_cache(maxsize=200_000)
 def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
     """d expr / d x."""
-    if not expr.has(x):
+    if x not in _symbols(expr):
         return sp.Integer(0)
     if expr == x:
         return sp.Integer(1)
     if expr.is_Add:
-        return sp.Add(*[partial(a, x) for a in expr.args if a.has(x)])
+        return sp.Add(*[partial(a, x) for a in expr.args if x in _symbols(a)])
     if expr.is_Mul:
         # product rule over the factors that contain x
         args = expr.args
         terms = []
         for i, a in enumerate(args):
-            if a.has(x):
+            if x in _symbols(a):
                 terms.append(sp.Mul(*args[:i], partial(a, x), *args[i + 1:]))
         return sp.Add(*terms)
-    if expr.is_Pow and not expr.exp.has(x):
+    if expr.is_Pow and x not in _symbols(expr.exp):
         # r u^(r-1) u' directly: sympy writes r u^r/u, which is 0/0 where u = 0
         base, r = expr.args
         return r * base ** (r - 1) * partial(base, x)
     return sp.diff(expr, x)
+
+
+def solve_linear(residual, x):
+    """x from residual(x) = 0 when x enters linearly:  x = -r(x=0) / (dr/dx).
+
+    A sum is split into the terms with and without x (the canonical terms of a sum stay
+    canonical, so no rebuilding of the whole sum is needed: a node balance of n terms
+    costs n).  When the term with x is x, k*x or p*x (a number k, a symbol p), its
+    coefficient is read from the term itself: neither the derivative nor r(x=0) is
+    built, and the result is the same expression."""
+    if residual.is_Add:
+        from .symbolic import _terms_with     # symbolic imports this module
+        inner = _terms_with(residual).get(x, ())
+        if len(inner) == 1:
+            c = plain_coefficient(inner[0], x)
+            if c is not None:
+                # the cached index may hold an equal term of an equal sum: compare by
+                # value (a sum has no two equal terms), the hash first
+                t, h = inner[0], hash(inner[0])
+                rest = [a for a in residual.args if hash(a) != h or a != t]
+                return _solved(rest, c)
+    return _solve_general(residual, x)
+
+
+@lru_cache(maxsize=200_000)
+def _symbols(e) -> frozenset:
+    """Every Symbol node of e, bound ones included: ``x in _symbols(e)`` is
+    ``e.has(x)`` for a symbol x (sympy walks the tree twice for each such question;
+    the partials of a model ask it of the same subexpressions many times)."""
+    if e.is_Symbol:
+        return frozenset((e,))
+    out, stack = set(), list(e.args)
+    while stack:            # iterative: a deeply nested expression must not recurse
+        node = stack.pop()
+        if node.is_Symbol:
+            out.add(node)
+        else:
+            stack.extend(node.args)
+    return frozenset(out)
+
+
+def plain_coefficient(term, x):
+    """k (a number or a symbol) when term is x or k*x, else None."""
+    if term == x:
+        return sp.S.One
+    if term.is_Mul and len(term.args) == 2:
+        a, b = term.args
+        k = a if b == x else b if a == x else None
+        if k is not None and (k.is_Number or k.is_Symbol) and k != x:
+            return k
+    return None
+
+
+def _solved(rest, c):
+    """-(sum of rest) / c, built as :func:`_solve_general` builds it."""
+    if len(rest) > 1:
+        r0 = sp.Add._from_args(rest)
+        if c.is_Number:
+            # x = (-1/c) * r0, kept as a product: distributing the number over the
+            # sum would rebuild every term
+            return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
+        return -r0 / c
+    # one other term: r(x=0) is that term
+    if c is sp.S.One:
+        return -rest[0]
+    if c is sp.S.NegativeOne:
+        return rest[0]
+    return -rest[0] / c
+
+
+def _solve_general(residual, x):
+    c = partial(residual, x)
+    if residual.is_Add:
+        rest = [a for a in residual.args if not a.has(x)]
+        inner = [a for a in residual.args if a.has(x)]
+        # the term with x must be x times its coefficient: a term such as k (x - a)
+        # also contributes -k a to r(x=0)
+        if len(inner) == 1 and inner[0] == c * x and len(residual.args) > 2:
+            r0 = sp.Add._from_args(rest) if len(rest) > 1 else rest[0]
+            if c.is_Number and r0.is_Add:
+                return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
+            return -r0 / c
+    return -residual.xreplace({x: 0}) / c

@@ -15,6 +15,7 @@ import sympy as sp
 
 from ..components.symbols import time
 from .derivative import partial
+from .symbolic import symbols_of
 
 __all__ = ["CoefficientValues"]
 
@@ -24,16 +25,15 @@ class CoefficientValues:
     None where it is not a finite number there)."""
 
     def __init__(self, system, parameters, discretes=()):
+        # Why the point is not built here: a large model has tens of thousands of
+        # symbols and the checks ask for a few coefficients; each coefficient takes the
+        # values of its own symbols (discrete values and time 0, variables their start
+        # value, parameters their value, in that order of precedence)
         self.system = system
-        subs = {p.symbol: sp.Float(float(p.value)) for p in parameters if _is_number(p.value)}
-        for sym in system.symbols:
-            info = system.var_info.get(sym)
-            start = info.attrs.start if info is not None else None
-            subs[sym] = sp.Float(float(start) if start is not None else 0.0)
-        subs[time] = sp.Float(0.0)
-        for d in discretes:
-            subs[d.symbol] = sp.Float(0.0)
-        self._subs = subs
+        self._parameters = {p.symbol: float(p.value) for p in parameters
+                            if _is_number(p.value)}
+        self._discretes = {d.symbol for d in discretes}
+        self._subs = {}
         self._cache = {}
 
     def value(self, e: int, v: int):
@@ -45,12 +45,30 @@ class CoefficientValues:
     def _evaluate(self, e, v):
         c = partial(self.system.equations[e].residual, self.system.symbols[v])
         if not c.is_number:
-            c = c.xreplace(self._subs)
+            c = c.xreplace({q: x for q in symbols_of(c)
+                            if (x := self._point(q)) is not None})
         try:
             x = float(c)
         except (TypeError, ValueError):
             return None
         return x if math.isfinite(x) else None
+
+    def _point(self, q):
+        """The value of symbol q at the compile-time point (a Float), or None."""
+        if q in self._subs:
+            return self._subs[q]
+        if q in self._discretes or q == time:
+            x = 0.0
+        elif q in self.system.index:
+            info = self.system.var_info.get(q)
+            start = info.attrs.start if info is not None else None
+            x = float(start) if start is not None else 0.0
+        elif q in self._parameters:
+            x = self._parameters[q]
+        else:
+            x = None
+        out = self._subs[q] = sp.Float(x) if x is not None else None
+        return out
 
 
 def _is_number(value) -> bool:

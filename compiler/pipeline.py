@@ -15,6 +15,7 @@ counts of every pass go into the index report.  The result is a
 """
 from __future__ import annotations
 
+import gc as _gc
 import time as _time
 from dataclasses import replace
 
@@ -54,6 +55,20 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
     at a dimensionally inconsistent equation, ``"warn"`` warns, ``"off"`` skips the
     check; it runs on the flat model, so a model found by its instance tree
     (``cache="tree"``) is not checked again."""
+    # Why the collector is paused: the passes allocate millions of sympy nodes that
+    # live until the compile ends and form no garbage cycles worth finding; the
+    # collector's full passes over that growing heap cost a quarter of a large build
+    # (it is switched back on, as it was, however the compile ends).
+    collecting = _gc.isenabled()
+    _gc.disable()
+    try:
+        return _compile(model, backend, cache, check_units)
+    finally:
+        if collecting:
+            _gc.enable()
+
+
+def _compile(model, backend, cache, check_units) -> ModelCode:
     if cache not in (True, False, "tree"):
         raise ValueError(f"cache must be True, False or 'tree', got {cache!r}")
     from ..components.units import MODES
@@ -355,14 +370,16 @@ def _time_linear(items, assigned, frozen) -> list:
     next zero is known before the integrator gets there (exact time events)."""
     import sympy as sp
     from ..components.symbols import time
+    from .symbolic import symbols_of
     explicit = {}
-    allowed = set(frozen) | {time}
+    known = set(frozen) | {time}              # grows with explicit: one set, not one a row
     for a, e in assigned:                     # assignments that depend on time alone
-        if e.free_symbols <= allowed | set(explicit):
+        if symbols_of(e) <= known:
             explicit[a] = e.xreplace(explicit)
+            known.add(a)
     out = []
     for k, g in enumerate(items):
-        if not g.free_symbols <= allowed | set(explicit):
+        if not symbols_of(g) <= known:
             continue
         g = g.xreplace(explicit)
         if not g.has(time) or g.has(sp.Piecewise):
@@ -436,27 +453,9 @@ def _adjacency(rows, cols, n_rows) -> list:
 
 
 def solve_linear(residual, x):
-    """x from residual(x) = 0 when x enters linearly:  x = -r(x=0) / (dr/dx).
-
-    A sum is split into the terms with and without x (the canonical terms of a sum stay
-    canonical, so no rebuilding of the whole sum is needed: a node balance of n terms
-    costs n)."""
-    import sympy as sp
-    from .derivative import partial
-    c = partial(residual, x)
-    if residual.is_Add:
-        rest = [a for a in residual.args if not a.has(x)]
-        inner = [a for a in residual.args if a.has(x)]
-        # the term with x must be x times its coefficient: a term such as k (x - a)
-        # also contributes -k a to r(x=0)
-        if len(inner) == 1 and inner[0] == c * x and len(residual.args) > 2:
-            r0 = sp.Add._from_args(rest) if len(rest) > 1 else rest[0]
-            if c.is_Number and r0.is_Add:
-                # x = (-1/c) * r0, kept as a product: distributing the number over the
-                # sum would rebuild every term
-                return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
-            return -r0 / c
-    return -residual.xreplace({x: 0}) / c
+    """x from residual(x) = 0 when x enters linearly (:func:`acausal.compiler.derivative.solve_linear`)."""
+    from .derivative import solve_linear as solve
+    return solve(residual, x)
 
 
 def _dynamic(reduction) -> DynamicSets:

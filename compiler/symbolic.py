@@ -215,6 +215,16 @@ class SymbolicSystem:
 
 def coefficient_kind(r: sp.Expr, s: sp.Symbol, index: dict, parameters: set) -> int:
     """How symbol s enters residual r (graph.LINEAR_CONST ... NONLINEAR)."""
+    # most variables enter one term of a sum as s, k*s or p*s: the coefficient is read
+    # from that term (what sum_partial returns, without building it)
+    terms = _terms_with(r).get(s, ()) if r.is_Add else (r,)
+    if len(terms) == 1:
+        from .derivative import plain_coefficient
+        k = plain_coefficient(terms[0], s)
+        if k is not None:
+            if k.is_Number:
+                return LINEAR_CONST if k != 0 else NONLINEAR
+            return LINEAR_PARAM if k in parameters else LINEAR_VAR
     c = sum_partial(r, s)
     if s in _symbol_nodes(c):           # c.has(s)
         return NONLINEAR

@@ -1,0 +1,60 @@
+"""The shortcuts of the back end give what the general paths give.
+
+* solve_linear reads a plain coefficient (x, k*x, p*x) from the term: the result is the
+  expression the general path (derivative and r(x=0)) builds, and it solves r = 0;
+* coefficient_kind classifies such a coefficient as the derivative would;
+* the generated Python is compiled by the first call of one of its functions, once, and
+  a traceback still points at the line of the whole source.
+"""
+import numpy as np
+import pytest
+import sympy as sp
+
+from acausal.compiler.codegen import generate
+from acausal.compiler.derivative import _solve_general, solve_linear
+from acausal.compiler.graph import LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR
+from acausal.compiler.symbolic import coefficient_kind, sum_partial
+
+x, y, z, p, q = sp.symbols("x y z p q", real=True)
+
+RESIDUALS = [x + y, -x + y, 2 * x - y, x - y + z, -x + y - z, sp.Rational(1, 3) * x + y + z,
+             sp.Float(0.5) * x - y, p * x - y, p * x - y + z, x * y - z, x ** 2 - y,
+             p * (x - y) + z, sp.sin(y) + p * x, x + y * z + q]
+LINEAR = [r for r in RESIDUALS if sp.degree(r, x) == 1]
+
+
+@pytest.mark.parametrize("r", LINEAR, ids=str)
+def test_solve_linear_is_the_general_solution(r):
+    fast = solve_linear(r, x)
+    assert sp.srepr(fast) == sp.srepr(_solve_general(r, x))
+    assert sp.simplify(r.subs(x, fast)) == 0
+
+
+@pytest.mark.parametrize("r", RESIDUALS, ids=str)
+def test_coefficient_kind_agrees_with_the_derivative(r):
+    c = sum_partial(r, x)
+    if c.has(x):
+        expected = NONLINEAR
+    elif c.is_number:
+        expected = LINEAR_CONST
+    elif c.free_symbols <= {p, q}:
+        expected = LINEAR_PARAM
+    else:
+        expected = LINEAR_VAR
+    assert coefficient_kind(r, x, {}, {p, q}) == expected
+
+
+def test_generated_functions_compile_on_first_call_and_keep_line_numbers():
+    u, v = sp.symbols("u v")
+    code = generate([u - 1, sp.sqrt(v)], [u, v], [])
+    assert not code.module.compiled
+    out = code.residual(0.0, np.array([3.0, 4.0]), np.array([]), [], np.empty(2))
+    np.testing.assert_allclose(out, [2.0, 2.0], rtol=1e-15)
+    assert code.module.compiled
+    namespace = code.module.namespace()
+    assert code.module.namespace() is namespace          # compiled once
+    with pytest.raises(ValueError) as err:               # sqrt of a negative
+        code.residual(0.0, np.array([3.0, -4.0]), np.array([]), [], np.empty(2))
+    line = [f.lineno for f in __import__("traceback").extract_tb(err.value.__traceback__)
+            if f.filename == "<acausal generated>"][-1]
+    assert code.source.splitlines()[line - 1].strip().startswith("out[1] = ")
