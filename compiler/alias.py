@@ -20,6 +20,7 @@ import sympy as sp
 from ..components.component import InvalidEquation, ModelError
 from .derivative import partial
 from .flatten import FlatEquation, FlatModel
+from .gcpause import gc_paused
 from .graph import STATE_SELECT
 from .symbolic import symbols_of
 
@@ -41,6 +42,7 @@ class AliasTable:
         return self.aliases.get(name, (1, name))
 
 
+@gc_paused
 def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     """Return a new FlatModel without trivial equations, and the alias table."""
     order = {v.symbol: k for k, v in enumerate(flat.variables)}

@@ -15,6 +15,7 @@ import types
 import numpy as np
 
 from ..components.component import Component
+from .gcpause import gc_paused
 
 __all__ = ["fingerprint", "flat_key", "tree_key"]
 
@@ -83,6 +84,7 @@ def _backend_id(backend: str) -> tuple:
     return (backend, compiler_available())
 
 
+@gc_paused
 def flat_key(flat, backend: str) -> str | None:
     """The SHA-256 of everything of the flat model the compiler reads (see the module
     docstring), the backend and the compiler's :func:`fingerprint`; None when a value

@@ -28,6 +28,7 @@ from ..components.component import (Component, Connection, InvalidConnection,
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
 from .flatder import check_der_arguments, expand_derivatives, has_der
+from .gcpause import gc_paused
 from .symbolic import signed_sum, signed_terms, symbols_of
 from .usercode import failed_reading
 
@@ -116,6 +117,7 @@ class FlatModel:
         raise KeyError(name)
 
 
+@gc_paused
 def flatten(model: Component) -> FlatModel:
     """Bind the instance tree, collect its declarations and equations, resolve connections."""
     if not isinstance(model, Component):
