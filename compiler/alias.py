@@ -19,6 +19,7 @@ import sympy as sp
 
 from ..components.component import InvalidEquation, ModelError
 from .derivative import partial
+from .fastsubs import fast_xreplace
 from .flatten import FlatEquation, FlatModel
 from .gcpause import gc_paused
 from .graph import STATE_SELECT
@@ -103,7 +104,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
             r = eqs[j].residual
             local = _substitutions_for(symbols_of(r), info, find, constants)
             if local:
-                eqs[j] = replace(eqs[j], residual=r.xreplace(local))
+                eqs[j] = replace(eqs[j], residual=fast_xreplace(r, local))
                 for q in symbols_of(eqs[j].residual):
                     by_symbol.setdefault(q, set()).add(j)
                 queue.add(j)
@@ -270,7 +271,7 @@ def _rebuild(flat, kept, subs, table, find, constants):
     for eq in kept:
         r = eq.residual
         if any(q in subs for q in symbols_of(r)):
-            r = r.xreplace(subs)
+            r = fast_xreplace(r, subs)
         if r.has(sp.zoo, sp.nan):
             raise _divides_by_zero(eq, flat, find, constants)
         if r == 0:

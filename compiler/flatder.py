@@ -11,6 +11,7 @@ import sympy as sp
 
 from ..components.component import InvalidEquation
 from ..components.symbols import der, time
+from .fastsubs import fast_xreplace
 from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
 
 __all__ = ["expand_derivatives", "has_der", "check_der_arguments"]
@@ -103,4 +104,4 @@ def _replace_der(expr, var_syms, derivatives, der_syms):
     for d in _outer_ders(expr):
         if d not in values:
             values[d] = total_derivative(d.args[0])
-    return expr.xreplace(values)
+    return fast_xreplace(expr, values)

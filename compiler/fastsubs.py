@@ -1,0 +1,202 @@
+"""``expr.xreplace(mapping)`` for the substitutions of the front passes, without sympy's
+general re-evaluation where the result is known to be canonical already.
+
+Alias elimination replaces variables by +-their representative (or 0), and derivative
+expansion replaces ``der(x)`` by the symbol ``der(x)``; the expressions are mostly sums
+and products of symbols.  sympy's ``xreplace`` rebuilds every node it changes through
+``Add``/``Mul`` (flatten, sort, the cache), most of these passes' time.  Here a sum or
+product whose new arguments are symbols, +-symbols and the numbers it had is assembled
+directly in sympy's canonical form -- terms with equal non-numeric parts combined,
+factors and terms in sympy's own order (``_args_sortkey``), the numeric coefficient
+first -- which is the expression sympy would build.  Anything else (a mapped symbol
+inside a power or a function, a product that would combine powers, float coefficients
+that change, a sum nested in a sum) falls back to ``xreplace`` for the whole
+expression, so the result is always ``expr.xreplace(mapping)``.
+
+Setting ``ACAUSAL_CHECK_FASTSUBS=1`` compares every result with ``xreplace`` (a test aid).
+"""
+from __future__ import annotations
+
+import os
+
+import sympy as sp
+from sympy.core.basic import _args_sortkey
+
+__all__ = ["fast_xreplace"]
+
+_ONE, _ZERO, _MINUS = sp.S.One, sp.S.Zero, sp.S.NegativeOne
+_Symbol, _Add, _Mul = sp.Symbol, sp.Add, sp.Mul
+_Rational = sp.Rational
+_CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
+
+
+class _Fallback(Exception):
+    """The fast path does not know sympy's canonical form of this result."""
+
+
+def fast_xreplace(expr, mapping: dict):
+    """``expr.xreplace(mapping)`` (the same expression), faster on sums and products."""
+    if not mapping:
+        return expr
+    try:
+        out = _sub(expr, mapping)
+    except _Fallback:
+        return expr.xreplace(mapping)
+    if _CHECK:
+        ref = expr.xreplace(mapping)
+        if out != ref or type(out) is not type(ref):
+            raise AssertionError(f"fast_xreplace({expr}) gave {out}, xreplace {ref}")
+    return out
+
+
+def _contains_key(e, mapping) -> bool:
+    stack = [e]
+    while stack:
+        node = stack.pop()
+        if node in mapping:
+            return True
+        stack.extend(node.args)
+    return False
+
+
+def _sub(e, mapping):
+    v = mapping.get(e)
+    if v is not None:
+        return v
+    if e.is_Atom:
+        return e
+    t = type(e)
+    if t is _Add:
+        return _sum(e, mapping)
+    if t is _Mul:
+        return _product(e, mapping)
+    if _contains_key(e, mapping):
+        raise _Fallback
+    return e
+
+
+def _signed_symbol(v):
+    """(sign, symbol) of a value that is a commutative symbol or its negative; else None."""
+    if type(v) is _Symbol:
+        return (1, v) if v.is_commutative else None
+    if type(v) is _Mul and len(v.args) == 2 and v.args[0] is _MINUS \
+            and type(v.args[1]) is _Symbol and v.args[1].is_commutative:
+        return -1, v.args[1]
+    return None
+
+
+def _product(e, mapping):
+    """A product whose changed factors are +-symbols: the sign into the coefficient,
+    the factors re-sorted; a new factor whose base another factor shares (x*x) falls
+    back, as does a coefficient with a sum left to distribute over."""
+    args = e.args
+    sign, coeff, factors, new, changed = 1, None, [], [], False
+    for f in args:
+        if f.is_Number:
+            coeff = f
+            continue
+        v = mapping.get(f)
+        if v is not None:
+            s = _signed_symbol(v)
+            if s is None:
+                raise _Fallback
+            sign *= s[0]
+            factors.append(s[1])
+            new.append(s[1])
+            changed = True
+            continue
+        if f.is_Atom:
+            factors.append(f)
+            continue
+        g = _sub(f, mapping)
+        if g is not f:
+            if g.is_Number or type(g) is _Mul or not g.is_commutative:
+                raise _Fallback
+            changed = True
+            new.append(g)
+        factors.append(g)
+    if not changed:
+        return e
+    if new:
+        bases = [f.base if f.is_Pow else f for f in factors]
+        if len(set(bases)) < len(bases):
+            raise _Fallback
+    if sign == -1:
+        if coeff is None:
+            coeff = _MINUS
+        elif isinstance(coeff, _Rational):
+            coeff = -coeff
+            if coeff is _ONE:
+                coeff = None
+        else:
+            raise _Fallback
+    if coeff is not None and any(f.is_Add for f in factors):
+        raise _Fallback
+    factors.sort(key=_args_sortkey)
+    if coeff is not None:
+        factors.insert(0, coeff)
+    if len(factors) == 1:
+        return factors[0]
+    return _Mul._from_args(factors, True)
+
+
+def _sum(e, mapping):
+    """A sum: each term substituted, terms with equal non-numeric parts combined (rational
+    coefficients only), zeros dropped, sympy's order, the number first."""
+    args = e.args
+    new_args, changed = [], False
+    for a in args:
+        b = _sub(a, mapping)
+        if b is not a:
+            changed = True
+        new_args.append(b)
+    if not changed:
+        return e
+    numbers = [a for a in new_args if a.is_Number]
+    coeff = _ZERO
+    if len(numbers) == 1 and isinstance(numbers[0], (_Rational, sp.Float)):
+        coeff = numbers[0]
+    elif numbers:
+        if not all(isinstance(a, _Rational) for a in numbers):
+            raise _Fallback
+        for a in numbers:
+            coeff = coeff + a
+    terms = {}           # non-numeric factors -> [coefficient, term as it stands]
+    for a in new_args:
+        if a.is_Number:
+            continue
+        if type(a) is _Add or not a.is_commutative:
+            raise _Fallback
+        if type(a) is _Mul and a.args[0].is_Number:
+            c, key = a.args[0], a.args[1:]
+        else:
+            c, key = _ONE, (a.args if type(a) is _Mul else (a,))
+        known = terms.get(key)
+        if known is None:
+            terms[key] = [c, a]
+            continue
+        if not (isinstance(c, _Rational) and isinstance(known[0], _Rational)):
+            raise _Fallback
+        known[0] = known[0] + c
+        known[1] = None              # rebuilt below from the combined coefficient
+    seq = []
+    for key, (c, term) in terms.items():
+        if term is not None:
+            seq.append(term)
+            continue
+        if c is _ZERO:
+            continue
+        if any(f.is_Add or f.is_Number for f in key):
+            raise _Fallback
+        if c is _ONE:
+            seq.append(key[0] if len(key) == 1 else _Mul._from_args(key, True))
+        else:
+            seq.append(_Mul._from_args((c,) + key, True))
+    seq.sort(key=_args_sortkey)
+    if coeff is not _ZERO:
+        seq.insert(0, coeff)
+    if not seq:
+        return _ZERO
+    if len(seq) == 1:
+        return seq[0]
+    return _Add._from_args(seq, True)
