@@ -22,7 +22,7 @@ import os
 import sympy as sp
 from sympy.core.basic import _args_sortkey
 
-__all__ = ["fast_xreplace"]
+__all__ = ["fast_xreplace", "fast_difference"]
 
 _ONE, _ZERO, _MINUS = sp.S.One, sp.S.Zero, sp.S.NegativeOne
 _Symbol, _Add, _Mul = sp.Symbol, sp.Add, sp.Mul
@@ -152,20 +152,59 @@ def _sum(e, mapping):
         new_args.append(b)
     if not changed:
         return e
-    numbers = [a for a in new_args if a.is_Number]
+    return _assemble_sum(new_args)
+
+
+def fast_difference(lhs, rhs):
+    """``lhs - rhs`` (sympy's ``Add(lhs, -rhs)``, the residual of an equation), with the
+    terms assembled directly where the result's canonical form is known."""
+    if rhs is _ZERO or lhs is _ZERO:
+        return lhs - rhs
+    terms = list(lhs.args) if type(lhs) is _Add else [lhs]
+    # -(a + b) distributes as -a - b (Mul's two-argument rule), each by sympy's __neg__
+    terms += [-t for t in rhs.args] if type(rhs) is _Add else [-rhs]
+    try:
+        out = _assemble_sum(terms)
+    except _Fallback:
+        return lhs - rhs
+    if _CHECK:
+        ref = lhs - rhs
+        if out != ref or type(out) is not type(ref):
+            raise AssertionError(f"fast_difference({lhs}, {rhs}) gave {out}, sympy {ref}")
+    return out
+
+
+def _unusual(t) -> bool:
+    """Terms Add.flatten treats specially: orders, intervals, tensors, zoo, matrices,
+    unevaluated powers of numbers."""
+    from sympy.calculus.accumulationbounds import AccumBounds
+    from sympy.tensor.tensor import TensExpr
+    return (not isinstance(t, sp.Expr) or t.is_Order or t is sp.S.ComplexInfinity
+            or isinstance(t, (AccumBounds, TensExpr))
+            or (t.is_Pow and t.base.is_Number))
+
+
+_USUAL = {sp.Symbol, sp.Mul}     # term classes known not to be _unusual (Mul: its factors
+                                 # are checked where they are combined)
+
+
+def _assemble_sum(new_args):
+    """Add(*new_args) for terms that are not sums themselves, in sympy's canonical form:
+    numbers summed, terms with equal non-numeric
+    parts combined (rational coefficients), zeros dropped, sympy's order of terms, the
+    number first; _Fallback where sympy's flatten would do something else."""
     coeff = _ZERO
-    if len(numbers) == 1 and isinstance(numbers[0], (_Rational, sp.Float)):
-        coeff = numbers[0]
-    elif numbers:
-        if not all(isinstance(a, _Rational) for a in numbers):
-            raise _Fallback
-        for a in numbers:
+    for a in new_args:       # in flatten's order, by sympy's arithmetic (0.0 -> 0)
+        if a.is_Number:
+            if not isinstance(a, (_Rational, sp.Float)):
+                raise _Fallback
             coeff = coeff + a
     terms = {}           # non-numeric factors -> [coefficient, term as it stands]
     for a in new_args:
         if a.is_Number:
             continue
-        if type(a) is _Add or not a.is_commutative:
+        if type(a) is _Add or not a.is_commutative \
+                or (type(a) not in _USUAL and _unusual(a)):
             raise _Fallback
         if type(a) is _Mul and a.args[0].is_Number:
             c, key = a.args[0], a.args[1:]
@@ -186,7 +225,7 @@ def _sum(e, mapping):
             continue
         if c is _ZERO:
             continue
-        if any(f.is_Add or f.is_Number for f in key):
+        if any(f.is_Add or f.is_Number or _unusual(f) for f in key):
             raise _Fallback
         if c is _ONE:
             seq.append(key[0] if len(key) == 1 else _Mul._from_args(key, True))

@@ -27,6 +27,7 @@ from ..components.component import (Component, Connection, InvalidConnection,
                                      Port, compiling, in_context)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
+from .fastsubs import fast_difference
 from .flatder import check_der_arguments, expand_derivatives, has_der
 from .gcpause import gc_paused
 from .symbolic import signed_sum, signed_terms, symbols_of
@@ -219,7 +220,7 @@ def _flat_equation(eq: Equation, comp: Component, kind: str) -> FlatEquation:
     if signed_terms(eq.lhs, 1, coeffs) and signed_terms(eq.rhs, -1, coeffs) and coeffs:
         residual = signed_sum(coeffs)
     else:
-        residual = eq.residual
+        residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
     return FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
 
 

@@ -63,3 +63,15 @@ def test_derivatives_replaced_by_symbols():
     _same(P[1] * der(x) - y, {der(x): dx})
     _same(der(x) ** 2 + y, {der(x): dx})
     _same(sp.sin(der(x)) * y, {der(x): dx})
+
+
+def test_differences_match_sympy_subtraction():
+    from acausal.compiler.fastsubs import fast_difference
+    rng = random.Random(11)
+    a, b = X[:2]
+    cases = [(a, sp.Float(0.0)), (sp.Float(0.0), a), (a + 1.5, sp.Float(1.5)),
+             (a + b, a), (2 * a, a + b), (P[0] * der(a), b), (sp.S.Zero, a + b)]
+    cases += [(_random_expr(rng), _random_expr(rng)) for _ in range(400)]
+    for lhs, rhs in cases:
+        out, ref = fast_difference(lhs, rhs), lhs - rhs
+        assert out == ref and sp.srepr(out) == sp.srepr(ref), (lhs, rhs, out, ref)
