@@ -29,10 +29,9 @@ class _Hasher:
         self(*head)
 
     def __call__(self, *items) -> None:
-        for x in items:
-            self.h.update(str(x).encode("utf-8", "surrogatepass"))
-            self.h.update(b"\x1f")
-        self.h.update(b"\x1e")
+        # each item followed by \x1f, the record by \x1e: one update per record
+        text = "\x1f".join(map(str, items)) + "\x1f\x1e" if items else "\x1e"
+        self.h.update(text.encode("utf-8", "surrogatepass"))
 
     def hexdigest(self) -> str:
         return self.h.hexdigest()[:40]
@@ -97,8 +96,7 @@ def flat_key(flat, backend: str) -> str | None:
 
 def _flat_key(flat, backend: str) -> str:
     from ..components.symbols import Equation
-    from .symbolic import ExactText
-    ex = ExactText(_plain)
+    ex = _key_text()
 
     def source(e):
         src = e.source
@@ -128,6 +126,28 @@ def _flat_key(flat, backend: str) -> str:
     h("ports", *map(repr, flat.ports))
     h("components", *map(repr, flat.components.items()))
     return h.hexdigest()
+
+
+def _key_text():
+    """``ExactText(_plain)`` with the text of a symbol's assumptions made once per set of
+    assumptions (all variables share one), not sorted and printed per symbol."""
+    import sympy as sp
+
+    from .symbolic import ExactText
+
+    class KeyText(ExactText):
+        facts: dict = {}
+
+        def _atom(self, node) -> str:
+            if type(node) is not sp.Symbol:
+                return super()._atom(node)
+            a0 = node.assumptions0
+            key = tuple(a0.items())
+            facts = self.facts.get(key)
+            if facts is None:
+                facts = self.facts[key] = ",".join(f"{k}={v}" for k, v in sorted(a0.items()))
+            return f"{self._name(node)}[{node.name};{facts}]"
+    return KeyText(_plain)
 
 
 class _Unstable(Exception):

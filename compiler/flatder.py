@@ -49,9 +49,24 @@ def _outer_ders(expr) -> list:
     return out
 
 
+def _all_ders(expr) -> list:
+    """Every der() node of expr, nested ones included (``expr.atoms(der)``, unsorted)."""
+    out, stack = [], [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, der):
+            out.append(e)
+        if not e.is_Atom:
+            stack.extend(e.args)
+    return out
+
+
 def check_der_arguments(eq, var_syms: set) -> None:
     """der() of something that cannot vary (a number, a parameter) is always zero: the
     argument was meant to be a variable."""
+    if all(type(d.args[0]) is sp.Symbol and d.args[0] in var_syms
+           for d in _all_ders(eq.residual)):
+        return      # der(x) of variables only (sorting the der() atoms is for the error)
     for d in sorted(eq.residual.atoms(der), key=sp.default_sort_key):
         arg = d.args[0]
         if not (arg.free_symbols & var_syms) and not arg.has(time):
