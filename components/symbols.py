@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 from sympy import S
+from sympy.core.parameters import global_parameters
 from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
@@ -25,6 +26,7 @@ __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "dela
            "assign", "Assign"]
 
 time = sp.Symbol("time", real=True)
+_ONE_ARGUMENT = sp.FiniteSet(1)     # der's nargs, as Function makes it uniform
 
 
 class der(sp.Function):
@@ -33,6 +35,14 @@ class der(sp.Function):
     nargs = 1
 
     def __new__(cls, *args, **options):
+        if len(args) == 1 and type(args[0]) is sp.Symbol and cls is der and not options \
+                and global_parameters.evaluate:
+            # der(x) of a symbol, most of a model's der() calls: the object Function's
+            # constructor builds (der has no eval, a symbol nothing to evalf), without
+            # its argument checks and cache look-up, ~70 us each
+            obj = sp.Basic.__new__(cls, args[0])
+            obj.nargs = _ONE_ARGUMENT
+            return obj
         if len(args) == 1 and isinstance(args[0], np.ndarray) and args[0].ndim:
             from .arrays import elementwise
             return elementwise(cls, args[0])
