@@ -19,7 +19,7 @@ import sympy as sp
 
 from ..components.component import InvalidEquation, ModelError
 from .derivative import partial
-from .fastsubs import fast_xreplace
+from .fastsubs import fast_xreplace, has_undefined
 from .flatten import FlatEquation, FlatModel
 from .gcpause import gc_paused
 from .graph import STATE_SELECT
@@ -288,7 +288,7 @@ def _rebuild(flat, kept, subs, table, find, constants):
         r = eq.residual
         if any(q in subs for q in symbols_of(r)):
             r = fast_xreplace(r, subs)
-        if _has_undefined(r):
+        if has_undefined(r):
             raise _divides_by_zero(eq, flat, find, constants)
         if r.is_Number and r == 0:
             by_name = {v.name: v.hint for v in flat.variables if v.hint}
@@ -306,22 +306,6 @@ def _rebuild(flat, kept, subs, table, find, constants):
     whens = [_when_after_aliases(w, subs, find, constants) for w in flat.whens]
     return replace(flat, variables=merged, equations=equations, initial_equations=initial,
                    derivatives=derivatives, whens=whens)
-
-
-_UNDEFINED = frozenset((sp.zoo, sp.nan))
-
-
-def _has_undefined(expr) -> bool:
-    """``expr.has(sp.zoo, sp.nan)`` by one walk over the arguments."""
-    stack = [expr]
-    while stack:
-        e = stack.pop()
-        if e.is_Atom:
-            if e in _UNDEFINED:
-                return True
-        else:
-            stack.extend(e.args)
-    return False
 
 
 def _divides_by_zero(eq, flat, find, constants) -> InvalidEquation:

@@ -22,7 +22,7 @@ import os
 import sympy as sp
 from sympy.core.basic import _args_sortkey
 
-__all__ = ["fast_xreplace", "fast_difference"]
+__all__ = ["fast_xreplace", "fast_difference", "has_undefined"]
 
 _ONE, _ZERO, _MINUS = sp.S.One, sp.S.Zero, sp.S.NegativeOne
 _Symbol, _Add, _Mul = sp.Symbol, sp.Add, sp.Mul
@@ -47,6 +47,23 @@ def fast_xreplace(expr, mapping: dict):
         if out != ref or type(out) is not type(ref):
             raise AssertionError(f"fast_xreplace({expr}) gave {out}, xreplace {ref}")
     return out
+
+
+_UNDEFINED = frozenset((sp.zoo, sp.nan))
+
+
+def has_undefined(expr) -> bool:
+    """``expr.has(sp.zoo, sp.nan)`` by one walk over the arguments (sympy's ``has``
+    builds a matcher and an iterator per node)."""
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if e.is_Atom:
+            if e in _UNDEFINED:
+                return True
+        else:
+            stack.extend(e.args)
+    return False
 
 
 def _contains_key(e, mapping) -> bool:
