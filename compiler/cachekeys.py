@@ -129,14 +129,42 @@ def _flat_key(flat, backend: str) -> str:
 
 
 def _key_text():
-    """``ExactText(_plain)`` with the text of a symbol's assumptions made once per set of
-    assumptions (all variables share one), not sorted and printed per symbol."""
+    """``ExactText(_plain)``: the same texts, with the text of a symbol's assumptions made
+    once per set of assumptions (all variables share one), not sorted and printed per
+    symbol, and the expressions walked by recursion up to a depth of 100."""
     import sympy as sp
 
     from .symbolic import ExactText
 
     class KeyText(ExactText):
         facts: dict = {}
+
+        def __call__(self, e) -> str:
+            if not isinstance(e, sp.Basic):
+                return self.plain(e)
+            out = self.memo.get(e)
+            if out is not None:
+                return out
+            try:
+                return self._text(e, 0)
+            except RecursionError:      # a very deep expression: the iterative walk
+                return super().__call__(e)
+
+        def _text(self, e, depth: int) -> str:
+            """The same text as ExactText's walk, by recursion (models' expressions are
+            shallow, and a call per node is cheaper than the walk's stack entries)."""
+            out = self.memo.get(e)
+            if out is None:
+                args = e.args
+                if not args:
+                    out = self._atom(e)
+                else:
+                    if depth > 100:
+                        raise RecursionError
+                    out = self._name(e) + "(" + ",".join(
+                        [self._text(a, depth + 1) for a in args]) + ")"
+                self.memo[e] = out
+            return out
 
         def _atom(self, node) -> str:
             if type(node) is not sp.Symbol:
