@@ -103,16 +103,20 @@ def _signed_symbol(v):
 
 
 def _product(e, mapping):
-    """A product whose changed factors are +-symbols: the sign into the coefficient,
-    the factors re-sorted; a new factor whose base another factor shares (x*x) falls
-    back, as does a coefficient with a sum left to distribute over."""
+    """A product whose changed factors are +-symbols or 0: the sign into the coefficient,
+    the factors re-sorted, 0 if a factor became 0; a new factor whose base another
+    factor shares (x*x) falls back, as does a coefficient with a sum left to distribute
+    over."""
     args = e.args
-    sign, coeff, factors, new, changed = 1, None, [], [], False
+    sign, coeff, factors, new, changed, zero = 1, None, [], [], False, False
     for f in args:
         if f.is_Number:
             coeff = f
             continue
         v = mapping.get(f)
+        if v is _ZERO:
+            zero = changed = True
+            continue
         if v is not None:
             s = _signed_symbol(v)
             if s is None:
@@ -126,6 +130,9 @@ def _product(e, mapping):
             factors.append(f)
             continue
         g = _sub(f, mapping)
+        if g is _ZERO:
+            zero = changed = True
+            continue
         if g is not f:
             if g.is_Number or type(g) is _Mul or not g.is_commutative:
                 raise _Fallback
@@ -134,6 +141,12 @@ def _product(e, mapping):
         factors.append(g)
     if not changed:
         return e
+    if zero:
+        # 0 times finite factors is 0 (Mul.flatten); an infinite factor makes nan
+        if (coeff is not None and not isinstance(coeff, _Rational)) \
+                or any(f.is_finite is False for f in factors):
+            raise _Fallback
+        return _ZERO
     if new:
         bases = [f.base if f.is_Pow else f for f in factors]
         if len(set(bases)) < len(bases):

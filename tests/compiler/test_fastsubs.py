@@ -75,3 +75,12 @@ def test_differences_match_sympy_subtraction():
     for lhs, rhs in cases:
         out, ref = fast_difference(lhs, rhs), lhs - rhs
         assert out == ref and sp.srepr(out) == sp.srepr(ref), (lhs, rhs, out, ref)
+
+
+def test_a_factor_that_becomes_zero():
+    a, b, c = X[:3]
+    _same(P[0] * (a - b) + c, {b: sp.S.Zero})        # c*(s_rel - s_rel0), s_rel0 = 0
+    _same(P[0] * (a - b) + c, {b: a})                # the sum itself becomes 0
+    _same(-P[0] * a * b + c, {a: sp.S.Zero})
+    _same(sp.oo * a + b, {a: sp.S.Zero})             # oo*0: nan, left to sympy
+    _same(sp.Float(2.5) * a * b + c, {a: sp.S.Zero})
