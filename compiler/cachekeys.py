@@ -107,8 +107,12 @@ def _flat_key(flat, backend: str) -> str:
         return ex(src)
 
     h = _Hasher("flat", fingerprint(), *_backend_id(backend), flat.name)
+    attrs = {}     # id -> repr: instances of a class share their declared attributes
     for v in flat.variables:
-        h("v", v.name, ex(v.symbol), repr(v.attrs), v.component, v.component_class,
+        text = attrs.get(id(v.attrs))
+        if text is None:
+            text = attrs[id(v.attrs)] = repr(v.attrs)
+        h("v", v.name, ex(v.symbol), text, v.component, v.component_class,
           v.kind, v.hint)
     for p in flat.parameters:
         h("p", p.name, ex(p.symbol), ex(p.value), p.unit, p.description, p.component,
@@ -169,11 +173,13 @@ def _key_text():
         def _atom(self, node) -> str:
             if type(node) is not sp.Symbol:
                 return super()._atom(node)
-            a0 = node.assumptions0
-            key = tuple(a0.items())
+            key = getattr(node, "_assumptions0", None)    # sympy's sorted tuple of them
+            if not isinstance(key, tuple):
+                key = tuple(sorted(node.assumptions0.items()))
             facts = self.facts.get(key)
             if facts is None:
-                facts = self.facts[key] = ",".join(f"{k}={v}" for k, v in sorted(a0.items()))
+                facts = ",".join(f"{k}={v}" for k, v in sorted(dict(key).items()))
+                self.facts[key] = facts
             return f"{self._name(node)}[{node.name};{facts}]"
     return KeyText(_plain)
 
