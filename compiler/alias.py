@@ -20,7 +20,7 @@ import sympy as sp
 from ..components.component import InvalidEquation, ModelError
 from .derivative import partial
 from .fastsubs import fast_xreplace, has_undefined
-from .flatten import FlatEquation, FlatModel
+from .flatten import FlatModel
 from .gcpause import gc_paused
 from .graph import STATE_SELECT
 from .symbolic import symbols_of
@@ -283,7 +283,6 @@ def _rebuild(flat, kept, subs, table, find, constants):
     merged = _merge_attributes(flat, variables, find)
     derivatives = _derivatives_after_aliases(flat, find, constants, subs)
     equations = []
-    info = {v.symbol: v for v in flat.variables}
     for eq in kept:
         r = eq.residual
         if any(q in subs for q in symbols_of(r)):
