@@ -47,7 +47,7 @@ def _front_only() -> None:
     from types import SimpleNamespace
     from acausal.compiler import pipeline
 
-    def assemble(system, reduction, reduced, flat, aliases, report, discretes):
+    def assemble(system, reduction, reduced, flat, aliases, report, discretes, *rest):
         global _last_report
         _last_report = report
         return SimpleNamespace(names=[], state_z=[], pairs=[], dummies=[],

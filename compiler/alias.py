@@ -19,7 +19,9 @@ import sympy as sp
 
 from ..components.component import InvalidEquation, ModelError
 from .derivative import partial
-from .flatten import FlatEquation, FlatModel
+from .fastsubs import fast_xreplace, has_undefined
+from .flatten import FlatModel
+from .gcpause import gc_paused
 from .graph import STATE_SELECT
 from .symbolic import symbols_of
 
@@ -41,6 +43,7 @@ class AliasTable:
         return self.aliases.get(name, (1, name))
 
 
+@gc_paused
 def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     """Return a new FlatModel without trivial equations, and the alias table."""
     order = {v.symbol: k for k, v in enumerate(flat.variables)}
@@ -59,6 +62,11 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         k = order.get(s)
         if k is None:
             return 1, s
+        sign, k = find_k(k)
+        return sign, syms[k]
+
+    def find_k(k):
+        """(sign, root number) of variable number k."""
         path, sign = [], 1
         while up[k] != k:
             path.append(k)
@@ -69,7 +77,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         for q in path:
             acc, sign_of[q] = acc * sign_of[q], acc
             up[q] = k
-        return sign, syms[k]
+        return sign, k
 
     def rank(s):
         a = info[s].attrs
@@ -99,9 +107,9 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
             if not alive[j]:
                 continue
             r = eqs[j].residual
-            local = _substitutions_for(symbols_of(r), info, find, constants)
+            local = _substitutions_for(symbols_of(r), order, syms, find_k, constants)
             if local:
-                eqs[j] = replace(eqs[j], residual=r.xreplace(local))
+                eqs[j] = _with_residual(eqs[j], fast_xreplace(r, local))
                 for q in symbols_of(eqs[j].residual):
                     by_symbol.setdefault(q, set()).add(j)
                 queue.add(j)
@@ -114,7 +122,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         sign, root = find(v.symbol)
         if root in constants:
             table.constants[v.name] = _signed(sign, constants[root])
-        elif root != v.symbol:
+        elif root is not v.symbol:
             table.aliases[v.name] = (sp.Integer(sign), root.name)
     return _rebuild(flat, kept, subs, table, find, constants), table
 
@@ -156,16 +164,27 @@ def _signed(sign, expr):
     return sign * expr
 
 
-def _substitutions_for(symbols, info, find, constants) -> dict:
+def _substitutions_for(symbols, order, syms, find_k, constants) -> dict:
     out = {}
     for q in symbols:
-        if q not in info:
+        k = order.get(q)
+        if k is None:
             continue
-        sign, root = find(q)
+        sign, r = find_k(k)
+        root = syms[r]
         if root in constants:
             out[q] = _signed(sign, constants[root])
-        elif root != q:
+        elif r != k:
             out[q] = _signed(sign, root)
+    return out
+
+
+def _with_residual(eq, residual):
+    """``dataclasses.replace(eq, residual=residual)`` for a FlatEquation (whose fields
+    have no __post_init__), without replace's field-by-field re-initialization."""
+    out = object.__new__(type(eq))
+    out.__dict__.update(eq.__dict__)
+    out.residual = residual
     return out
 
 
@@ -175,7 +194,7 @@ def _substitutions(flat, find, constants) -> dict:
         sign, root = find(v.symbol)
         if root in constants:
             subs[v.symbol] = _signed(sign, constants[root])
-        elif root != v.symbol:
+        elif root is not v.symbol:
             subs[v.symbol] = _signed(sign, root)
     return subs
 
@@ -194,7 +213,7 @@ def _classify(eq, info, find, rank, parent, constants, params=frozenset()) -> bo
         return True
     k = int(k)
     (sa, ra), (sb, rb) = find(a), find(b)
-    if ra == rb or (ra in constants and rb in constants):
+    if ra is rb or (ra in constants and rb in constants):
         return False              # a redundant or contradictory loop: left for diagnosis
     # a = k*b  =>  sa*ra = k*sb*rb  (all signs are +-1, so each is its own inverse)
     if rank(ra) <= rank(rb):
@@ -245,40 +264,39 @@ def _plain_alias(residual: sp.Expr, info: dict):
     signs = {}
     for t in residual.args:
         if t in info:
-            signs[t] = sp.S.One
+            signs[t] = 1
         elif (t.is_Mul and len(t.args) == 2 and t.args[0] is sp.S.NegativeOne
               and t.args[1] in info):
-            signs[t.args[1]] = sp.S.NegativeOne
+            signs[t.args[1]] = -1
         else:
             return None
     a, b = sorted(signs, key=lambda s: s.name)
-    return "alias", a, b, -signs[b] / signs[a]
+    return "alias", a, b, -signs[b] * signs[a]      # -sb/sa, the signs being +-1
 
 
 def _rebuild(flat, kept, subs, table, find, constants):
     variables = []
     for v in flat.variables:
         sign, root = find(v.symbol)
-        if root == v.symbol and root not in constants:
+        if root is v.symbol and root not in constants:
             variables.append(v)
     merged = _merge_attributes(flat, variables, find)
     derivatives = _derivatives_after_aliases(flat, find, constants, subs)
     equations = []
-    info = {v.symbol: v for v in flat.variables}
     for eq in kept:
         r = eq.residual
         if any(q in subs for q in symbols_of(r)):
-            r = r.xreplace(subs)
-        if r.has(sp.zoo, sp.nan):
+            r = fast_xreplace(r, subs)
+        if has_undefined(r):
             raise _divides_by_zero(eq, flat, find, constants)
-        if r == 0:
+        if r.is_Number and r == 0:
             by_name = {v.name: v.hint for v in flat.variables if v.hint}
             hints = sorted({by_name[w] for w in re.findall(r"[\w.\[\]]+", eq.text)
                             if w in by_name})
             raise ModelError(f"equation '{eq.text}' in {eq.where} is redundant: after "
                              "resolving aliases it reads 0 = 0 (over-determined model)"
                              + (": " + "; ".join(hints) if hints else ""))
-        equations.append(replace(eq, residual=r))
+        equations.append(_with_residual(eq, r))
     initial = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in flat.initial_equations]
     for eq in initial:
         if eq.residual.has(sp.zoo, sp.nan):
@@ -325,12 +343,12 @@ def _derivatives_after_aliases(flat, find, constants, subs) -> dict:
     derivatives = {}
     # the representatives' own chains first: the symbols their equations already use
     for (sign, root), x, chain in chains:
-        if root == x and root not in constants:
+        if root is x and root not in constants:
             derivatives.update(zip([x, *chain[:-1]], chain))
     for (sign, root), x, chain in chains:
         if root in constants:
             subs.update({dx: sp.Integer(0) for dx in chain})
-        elif root != x:
+        elif root is not x:
             at = root
             for dx in chain:
                 if at not in derivatives:
@@ -364,7 +382,7 @@ def _merge_attributes(flat, variables, find):
     out = {v.symbol: v.attrs for v in variables}
     for v in flat.variables:
         sign, root = find(v.symbol)
-        if root not in by_root or root == v.symbol:
+        if root not in by_root or root is v.symbol:
             continue
         a, r = v.attrs, out[root]
         if a.start is not None:

@@ -15,6 +15,7 @@ import types
 import numpy as np
 
 from ..components.component import Component
+from .gcpause import gc_paused
 
 __all__ = ["fingerprint", "flat_key", "tree_key"]
 
@@ -28,10 +29,9 @@ class _Hasher:
         self(*head)
 
     def __call__(self, *items) -> None:
-        for x in items:
-            self.h.update(str(x).encode("utf-8", "surrogatepass"))
-            self.h.update(b"\x1f")
-        self.h.update(b"\x1e")
+        # each item followed by \x1f, the record by \x1e: one update per record
+        text = "\x1f".join(map(str, items)) + "\x1f\x1e" if items else "\x1e"
+        self.h.update(text.encode("utf-8", "surrogatepass"))
 
     def hexdigest(self) -> str:
         return self.h.hexdigest()[:40]
@@ -83,6 +83,7 @@ def _backend_id(backend: str) -> tuple:
     return (backend, compiler_available())
 
 
+@gc_paused
 def flat_key(flat, backend: str) -> str | None:
     """The SHA-256 of everything of the flat model the compiler reads (see the module
     docstring), the backend and the compiler's :func:`fingerprint`; None when a value
@@ -95,8 +96,7 @@ def flat_key(flat, backend: str) -> str | None:
 
 def _flat_key(flat, backend: str) -> str:
     from ..components.symbols import Equation
-    from .symbolic import ExactText
-    ex = ExactText(_plain)
+    ex = _key_text()
 
     def source(e):
         src = e.source
@@ -107,8 +107,12 @@ def _flat_key(flat, backend: str) -> str:
         return ex(src)
 
     h = _Hasher("flat", fingerprint(), *_backend_id(backend), flat.name)
+    attrs = {}     # id -> repr: instances of a class share their declared attributes
     for v in flat.variables:
-        h("v", v.name, ex(v.symbol), repr(v.attrs), v.component, v.component_class,
+        text = attrs.get(id(v.attrs))
+        if text is None:
+            text = attrs[id(v.attrs)] = repr(v.attrs)
+        h("v", v.name, ex(v.symbol), text, v.component, v.component_class,
           v.kind, v.hint)
     for p in flat.parameters:
         h("p", p.name, ex(p.symbol), ex(p.value), p.unit, p.description, p.component,
@@ -126,6 +130,58 @@ def _flat_key(flat, backend: str) -> str:
     h("ports", *map(repr, flat.ports))
     h("components", *map(repr, flat.components.items()))
     return h.hexdigest()
+
+
+def _key_text():
+    """``ExactText(_plain)``: the same texts, with the text of a symbol's assumptions made
+    once per set of assumptions (all variables share one), not sorted and printed per
+    symbol, and the expressions walked by recursion up to a depth of 100."""
+    import sympy as sp
+
+    from .symbolic import ExactText
+
+    class KeyText(ExactText):
+        facts: dict = {}
+
+        def __call__(self, e) -> str:
+            if not isinstance(e, sp.Basic):
+                return self.plain(e)
+            out = self.memo.get(e)
+            if out is not None:
+                return out
+            try:
+                return self._text(e, 0)
+            except RecursionError:      # a very deep expression: the iterative walk
+                return super().__call__(e)
+
+        def _text(self, e, depth: int) -> str:
+            """The same text as ExactText's walk, by recursion (models' expressions are
+            shallow, and a call per node is cheaper than the walk's stack entries)."""
+            out = self.memo.get(e)
+            if out is None:
+                args = e.args
+                if not args:
+                    out = self._atom(e)
+                else:
+                    if depth > 100:
+                        raise RecursionError
+                    out = self._name(e) + "(" + ",".join(
+                        [self._text(a, depth + 1) for a in args]) + ")"
+                self.memo[e] = out
+            return out
+
+        def _atom(self, node) -> str:
+            if type(node) is not sp.Symbol:
+                return super()._atom(node)
+            key = getattr(node, "_assumptions0", None)    # sympy's sorted tuple of them
+            if not isinstance(key, tuple):
+                key = tuple(sorted(node.assumptions0.items()))
+            facts = self.facts.get(key)
+            if facts is None:
+                facts = ",".join(f"{k}={v}" for k, v in sorted(dict(key).items()))
+                self.facts[key] = facts
+            return f"{self._name(node)}[{node.name};{facts}]"
+    return KeyText(_plain)
 
 
 class _Unstable(Exception):

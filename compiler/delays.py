@@ -20,6 +20,7 @@ import sympy as sp
 
 from ..components.component import ModelError
 from ..components.symbols import delay
+from .gcpause import gc_paused
 
 __all__ = ["DelayValue", "extract_delays"]
 
@@ -43,6 +44,7 @@ def _innermost(e: sp.Basic) -> list:
                    and not d.args[1].has(delay)), key=sp.srepr)
 
 
+@gc_paused
 def extract_delays(flat) -> list:
     """Replace every delay() in the equations, initial equations and when-clauses of
     ``flat`` by a symbol (in place); return the :class:`DelayValue` list.  A delay time
@@ -62,7 +64,7 @@ def extract_delays(flat) -> list:
         return e
 
     for eq in flat.equations + flat.initial_equations:
-        if eq.residual.has(delay):
+        if _has_delay(eq.residual):
             eq.residual = replace(eq.residual, _where(eq))
     for w in flat.whens:
         where = f"{w.origin or '(model)'} ({w.origin_class})"
@@ -70,6 +72,19 @@ def extract_delays(flat) -> list:
         for act in w.actions:
             act.value = replace(act.value, where)
     return list(found.values())
+
+
+def _has_delay(e) -> bool:
+    """``e.has(delay)`` by one walk over the arguments (sympy's ``has`` builds an
+    iterator and a type test per node; most equations hold no delay)."""
+    stack = [e]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, delay):
+            return True
+        if not node.is_Atom:
+            stack.extend(node.args)
+    return False
 
 
 def _where(eq) -> str:

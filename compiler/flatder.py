@@ -11,6 +11,7 @@ import sympy as sp
 
 from ..components.component import InvalidEquation
 from ..components.symbols import der, time
+from .fastsubs import fast_xreplace
 from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
 
 __all__ = ["expand_derivatives", "has_der", "check_der_arguments"]
@@ -48,9 +49,24 @@ def _outer_ders(expr) -> list:
     return out
 
 
+def _all_ders(expr) -> list:
+    """Every der() node of expr, nested ones included (``expr.atoms(der)``, unsorted)."""
+    out, stack = [], [expr]
+    while stack:
+        e = stack.pop()
+        if isinstance(e, der):
+            out.append(e)
+        if not e.is_Atom:
+            stack.extend(e.args)
+    return out
+
+
 def check_der_arguments(eq, var_syms: set) -> None:
     """der() of something that cannot vary (a number, a parameter) is always zero: the
     argument was meant to be a variable."""
+    if all(type(d.args[0]) is sp.Symbol and d.args[0] in var_syms
+           for d in _all_ders(eq.residual)):
+        return      # der(x) of variables only (sorting the der() atoms is for the error)
     for d in sorted(eq.residual.atoms(der), key=sp.default_sort_key):
         arg = d.args[0]
         if not (arg.free_symbols & var_syms) and not arg.has(time):
@@ -103,4 +119,4 @@ def _replace_der(expr, var_syms, derivatives, der_syms):
     for d in _outer_ders(expr):
         if d not in values:
             values[d] = total_derivative(d.args[0])
-    return expr.xreplace(values)
+    return fast_xreplace(expr, values)

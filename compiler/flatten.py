@@ -27,7 +27,9 @@ from ..components.component import (Component, Connection, InvalidConnection,
                                      Port, compiling, in_context)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
+from .fastsubs import fast_difference, fast_xreplace, has_undefined
 from .flatder import check_der_arguments, expand_derivatives, has_der
+from .gcpause import gc_paused
 from .symbolic import signed_sum, signed_terms, symbols_of
 from .usercode import failed_reading
 
@@ -116,6 +118,7 @@ class FlatModel:
         raise KeyError(name)
 
 
+@gc_paused
 def flatten(model: Component) -> FlatModel:
     """Bind the instance tree, collect its declarations and equations, resolve connections."""
     if not isinstance(model, Component):
@@ -217,7 +220,7 @@ def _flat_equation(eq: Equation, comp: Component, kind: str) -> FlatEquation:
     if signed_terms(eq.lhs, 1, coeffs) and signed_terms(eq.rhs, -1, coeffs) and coeffs:
         residual = signed_sum(coeffs)
     else:
-        residual = eq.residual
+        residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
     return FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
 
 
@@ -396,8 +399,8 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     for eq in flat.equations + flat.initial_equations:
         used = symbols_of(eq.residual) & bound.keys()
         if used:
-            eq.residual = eq.residual.xreplace(bound)
-            if eq.residual.has(sp.zoo, sp.nan):
+            eq.residual = fast_xreplace(eq.residual, bound)
+            if has_undefined(eq.residual):
                 _divided_by_zero(flat, used, zeros, eq)
     for w in flat.whens:
         w.condition = w.condition.xreplace(bound)

@@ -41,6 +41,7 @@ import sympy as sp
 from ..components.component import InvalidEquation
 from ..components.symbols import Assign, Reinit, no_event, pre
 from .flatten import FlatEquation
+from .gcpause import gc_paused
 
 __all__ = ["DiscreteVariableError", "HeldValue", "declare_discrete_variables",
            "pre_after_aliases", "when_rows", "explain_overdetermined"]
@@ -75,6 +76,7 @@ def _local(v) -> str:
     return v.name[len(v.component) + 1:] if v.component else v.name
 
 
+@gc_paused
 def declare_discrete_variables(flat) -> list:
     """Check the discrete variables and their assignments, add ``y = held(y)`` for each,
     replace ``pre(y)`` by its symbol everywhere (in place); return the

@@ -31,6 +31,7 @@ import sympy as sp
 from ..components.symbols import Equation, der, no_event, pre
 from ..components.units import (DIMENSIONLESS, MODES, UnitCheck, UnitError, UnitWarning,
                                  dimension_text, parse_unit)
+from .gcpause import gc_paused
 
 __all__ = ["check_units", "UnitCheck", "MODES"]
 
@@ -64,6 +65,7 @@ class _Mismatch(Exception):
         return f"{self.what}: {first} but '{sp.sstr(self.b)}' is {dimension_text(self.db)}"
 
 
+@gc_paused
 def check_units(flat, mode: str = "warn", known: UnitCheck | None = None) -> UnitCheck:
     """Check every equation of ``flat`` (a FlatModel); see the module docstring.
 

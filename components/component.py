@@ -305,7 +305,10 @@ class Component(metaclass=_ComponentType):
                     "variables are named when the model is compiled (acausal.compile)")
             full = f"{self._path}.{name}" if self._path else name
             import sympy    # the first symbol of a model loads sympy, not the class
-            sym = sympy.Symbol(full, real=True)
+            # the object Symbol(full, real=True) makes, without sympy's symbol cache:
+            # each variable of a model has a name of its own, so the cache look-up (40% of
+            # the constructor) would find nothing; an equal Symbol made elsewhere is equal
+            sym = sympy.Symbol.__xnew__(sympy.Symbol, full, real=True)
             self._symbols[name] = sym
         return sym
 

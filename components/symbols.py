@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 from sympy import S
+from sympy.core.parameters import global_parameters
 from sympy.printing.precedence import precedence
 from sympy.printing.str import StrPrinter
 
@@ -25,6 +26,7 @@ __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "dela
            "assign", "Assign"]
 
 time = sp.Symbol("time", real=True)
+_ONE_ARGUMENT = sp.FiniteSet(1)     # der's nargs, as Function makes it uniform
 
 
 class der(sp.Function):
@@ -33,6 +35,14 @@ class der(sp.Function):
     nargs = 1
 
     def __new__(cls, *args, **options):
+        if len(args) == 1 and type(args[0]) is sp.Symbol and cls is der and not options \
+                and global_parameters.evaluate:
+            # der(x) of a symbol, most of a model's der() calls: the object Function's
+            # constructor builds (der has no eval, a symbol nothing to evalf), without
+            # its argument checks and cache look-up, ~70 us each
+            obj = sp.Basic.__new__(cls, args[0])
+            obj.nargs = _ONE_ARGUMENT
+            return obj
         if len(args) == 1 and isinstance(args[0], np.ndarray) and args[0].ndim:
             from .arrays import elementwise
             return elementwise(cls, args[0])
@@ -237,6 +247,8 @@ def Eq(lhs, rhs=0, label: str | None = None) -> Equation:
 
 def sympify_value(value):
     """Turn numbers, Symbols and objects with ``_sympy_`` (signal ports) into sympy."""
+    if isinstance(value, sp.Basic):       # most values: sympify would return them as-is
+        return value
     if isinstance(value, np.ndarray):
         if value.ndim == 0:
             return sympify_value(value.item())
@@ -258,6 +270,40 @@ def sympify_value(value):
 
 
 _NON_FINITE = (sp.nan, sp.zoo, sp.oo, -sp.oo)
+_NON_FINITE_SET = frozenset(_NON_FINITE)
+_PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
+
+
+def _has_non_finite(expr) -> bool:
+    """``expr.has(*_NON_FINITE)``: one walk over the arguments, the atoms looked up in a
+    set (sympy's ``has`` builds a matcher and an iterator per node)."""
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if e.is_Atom:
+            if e in _NON_FINITE_SET:
+                return True
+        else:
+            stack.extend(e.args)
+    return False
+
+
+def _may_vary(expr) -> bool:
+    """``expr.free_symbols or expr.has(der)``, stopping at the first symbol found (sums,
+    products and powers walked here; any other node answers for itself, as it may bind
+    symbols)."""
+    stack = [expr]
+    while stack:
+        e = stack.pop()
+        if e.is_Symbol or isinstance(e, der):
+            return True
+        if e.is_Atom:
+            continue
+        if type(e) in _PLAIN_NODES:
+            stack.extend(e.args)
+        elif e.free_symbols or e.has(der):
+            return True
+    return False
 
 
 def _invalid(message: str):
@@ -276,7 +322,7 @@ def _side(value, lhs, rhs) -> sp.Expr:
         raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}): {_text(expr)} is a relation or "
                        "a logical value, not a value (ac.if_else(condition, a, b) chooses "
                        "between values)")
-    if expr.has(*_NON_FINITE):
+    if _has_non_finite(expr):
         raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}) contains a value that is not a "
                        f"finite number ({_text(expr)})")
     return expr
@@ -285,7 +331,7 @@ def _side(value, lhs, rhs) -> sp.Expr:
 def _check_not_trivial(lhs: sp.Expr, rhs: sp.Expr) -> None:
     """Eq(1, 1) and Eq(x, x) determine nothing; Eq(1, 2) never holds.  (Cheap tests only:
     flattening rejects any equation whose residual involves no variable.)"""
-    constant = not (lhs.free_symbols or rhs.free_symbols or lhs.has(der) or rhs.has(der))
+    constant = not (_may_vary(lhs) or _may_vary(rhs))
     if lhs == rhs or (constant and lhs - rhs == 0):
         raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}) holds whatever the variables "
                        "are (both sides are the same): it determines nothing")

@@ -139,6 +139,65 @@ def _translate(text: str):
     return expr, offset
 
 
+# The units the library declares, as parse_unit reads them with sympy.physics.units:
+# text -> (dims, scale).  A model whose units are all here is checked without importing
+# sympy.physics.units (~0.15 s per process, most of the unit check of a small model);
+# tests/components/test_units.py compares every entry with the sympy reading.
+_KNOWN = {
+    '1': ((0, 0, 0, 0, 0, 0, 0), 1.0),
+    '1/K': ((0, 0, 0, 0, -1, 0, 0), 1.0),
+    '1/s': ((0, 0, -1, 0, 0, 0, 0), 1.0),
+    'A': ((0, 0, 0, 1, 0, 0, 0), 1.0),
+    'A/V3': ((-3, -6, 9, 4, 0, 0, 0), 1e-09),
+    'C': ((0, 0, 1, 1, 0, 0, 0), 1.0),
+    'F': ((-1, -2, 4, 2, 0, 0, 0), 0.001),
+    'H': ((1, 2, -2, -2, 0, 0, 0), 1000.0),
+    'Hz': ((0, 0, -1, 0, 0, 0, 0), 1.0),
+    'J': ((1, 2, -2, 0, 0, 0, 0), 1000.0),
+    'J/(kg.K)': ((0, 2, -2, 0, -1, 0, 0), 1.0),
+    'J/K': ((1, 2, -2, 0, -1, 0, 0), 1000.0),
+    'K': ((0, 0, 0, 0, 1, 0, 0), 1.0),
+    'K/W': ((-1, -2, 3, 0, 1, 0, 0), 0.001),
+    'N': ((1, 1, -2, 0, 0, 0, 0), 1000.0),
+    'N.m': ((1, 2, -2, 0, 0, 0, 0), 1000.0),
+    'N.m.s': ((1, 2, -1, 0, 0, 0, 0), 1000.0),
+    'N.m.s/rad': ((1, 2, -1, 0, 0, 0, 0), 1000.0),
+    'N.m/A': ((1, 2, -2, -1, 0, 0, 0), 1000.0),
+    'N.m/rad': ((1, 2, -2, 0, 0, 0, 0), 1000.0),
+    'N.s/m': ((1, 0, -1, 0, 0, 0, 0), 1000.0),
+    'N/m': ((1, 0, -2, 0, 0, 0, 0), 1000.0),
+    'N/m2': ((1, -1, -2, 0, 0, 0, 0), 1000.0),
+    'Ohm': ((1, 2, -3, -2, 0, 0, 0), 1000.0),
+    'Pa': ((1, -1, -2, 0, 0, 0, 0), 1000.0),
+    'Pa.s': ((1, -1, -1, 0, 0, 0, 0), 1000.0),
+    'S': ((-1, -2, 3, 2, 0, 0, 0), 0.001),
+    'V': ((1, 2, -3, -1, 0, 0, 0), 1000.0),
+    'W': ((1, 2, -3, 0, 0, 0, 0), 1000.0),
+    'W/K': ((1, 2, -3, 0, -1, 0, 0), 1000.0),
+    'Wb': ((1, 2, -2, -1, 0, 0, 0), 1000.0),
+    'kg': ((1, 0, 0, 0, 0, 0, 0), 1000.0),
+    'kg.m': ((1, 1, 0, 0, 0, 0, 0), 1000.0),
+    'kg.m2': ((1, 2, 0, 0, 0, 0, 0), 1000.0),
+    'kg/(s.Pa)': ((0, 1, 1, 0, 0, 0, 0), 1.0),
+    'kg/m3': ((1, -3, 0, 0, 0, 0, 0), 1000.0),
+    'kg/s': ((1, 0, -1, 0, 0, 0, 0), 1000.0),
+    'm': ((0, 1, 0, 0, 0, 0, 0), 1.0),
+    'm/s': ((0, 1, -1, 0, 0, 0, 0), 1.0),
+    'm/s2': ((0, 1, -2, 0, 0, 0, 0), 1.0),
+    'm2': ((0, 2, 0, 0, 0, 0, 0), 1.0),
+    'm2/s': ((0, 2, -1, 0, 0, 0, 0), 1.0),
+    'm3': ((0, 3, 0, 0, 0, 0, 0), 1.0),
+    'm3/(s.Pa)': ((-1, 4, 1, 0, 0, 0, 0), 0.001),
+    'm3/rad': ((0, 3, 0, 0, 0, 0, 0), 1.0),
+    'm3/s': ((0, 3, -1, 0, 0, 0, 0), 1.0),
+    'rad': ((0, 0, 0, 0, 0, 0, 0), 1.0),
+    'rad/m': ((0, -1, 0, 0, 0, 0, 0), 1.0),
+    'rad/s': ((0, 0, -1, 0, 0, 0, 0), 1.0),
+    'rad/s2': ((0, 0, -2, 0, 0, 0, 0), 1.0),
+    's': ((0, 0, 1, 0, 0, 0, 0), 1.0),
+}
+
+
 @lru_cache(maxsize=None)
 def parse_unit(text: str) -> Unit | None:
     """The parsed unit, or None for "" (no unit declared: unknown).  Raises UnitError
@@ -147,6 +206,13 @@ def parse_unit(text: str) -> Unit | None:
         raise UnitError(f"a unit is a string such as 'N.m/rad', not {text!r}")
     if not text.strip():
         return None
+    known = _KNOWN.get(text)
+    if known is not None:
+        return Unit(text, known[0], known[1], 0.0)
+    return _parse_with_sympy(text)
+
+
+def _parse_with_sympy(text: str) -> Unit:
     try:
         expr, offset = _translate(text.strip())
     except ValueError as err:

@@ -247,3 +247,10 @@ def test_a_reinit_that_changes_the_dimension_is_rejected():
 def test_simulate_takes_the_unit_check_mode_of_a_component_it_compiles():
     with pytest.raises(UnitError, match=re.escape(WRONG)):
         ac.simulate(Oscillator(), t_end=0.1, check_units="error")
+
+
+def test_known_units_are_read_as_sympy_reads_them():
+    from acausal.components.units import _KNOWN, _parse_with_sympy
+    for text, (dims, scale) in _KNOWN.items():
+        ref = _parse_with_sympy(text)
+        assert (ref.dims, ref.scale, ref.offset) == (dims, scale, 0.0), text
