@@ -56,6 +56,7 @@ from .tearing import tear
 CANCELLATION_LIMIT = 1e6    # a torn chain may cancel at most this factor of accuracy
 SPREAD_LIMIT = 1e8          # ... and spread an iteration variable's error at most this much
 TEAR_LIMIT = 400            # larger algebraic blocks are solved whole (sparse LU)
+FILL_LIMIT = 16             # gradient entries of an assigned variable beyond its own equation
 
 __all__ = ["Causalization", "causalize", "full_form"]
 
@@ -68,6 +69,7 @@ class Causalization:
     residual_eqs: list         # equations that stay rows of F
     blocks: list = field(default_factory=list)   # for the index report
     causal: bool = True
+    kept_for_fill: list = field(default_factory=list)   # assigned, but kept in z (fill)
 
 
 def causalize(reduction, values=None) -> Causalization:
@@ -100,7 +102,51 @@ def causalize(reduction, values=None) -> Causalization:
         assignments += [(v, e) for e, v in t.inner]
         report.append({**entry, "torn": len(block.eqs) > 1,
                        "iteration_variables": t.iteration_vars})
-    return Causalization(z, len(states), assignments, residuals, report)
+    return _bound_fill(s, Causalization(z, len(states), assignments, residuals, report))
+
+
+def _bound_fill(s, caus, limit: int | None = None) -> Causalization:
+    """Keep in z every assigned variable whose gradient would exceed the fill bound.
+
+    An assigned variable's gradient with respect to z is the union of those of the
+    variables its equation reads (the forward-mode chain rule of
+    :func:`acausal.compiler.codegen.plan`, here on the structure).  Along a long chain of
+    node balances these unions grow with the chain, and every variable assigned from the
+    chain inherits them: in a random R/L/C network of 3000 parts 178,000 gradient
+    entries, rows of up to 1,700, where each variable's own equation reads a handful.
+    Such a variable is kept as an unknown instead, its equation a row of F (like a
+    tearing variable): the row then has the entries its gradient would have had, and
+    every variable downstream reads it through one entry.  Kept are the variables whose
+    gradient has more than ``limit`` entries and more than its own equation reads (a
+    gradient no larger than its equation's incidence is no fill: the row would be as
+    large, and e.g. the ground balance of a ladder reads every section), in BLT order, so
+    each gradient and each row read is bounded by ``limit`` times the incidence of its
+    equation and the Jacobian grows linearly with the model.
+    """
+    limit = FILL_LIMIT if limit is None else limit
+    grad = {v: (v,) for v in caus.z}
+    assignments, kept = [], []
+    for v, e in caus.assignments:
+        g = set()
+        for u in s.graph[e]:
+            if u != v:
+                g.update(grad.get(u, ()))
+        if len(g) > max(limit, len(s.graph[e]) - 1):
+            kept.append((v, e))
+            grad[v] = (v,)
+        else:
+            assignments.append((v, e))
+            grad[v] = g
+    if not kept:
+        return caus
+    caus.assignments = assignments
+    caus.z = caus.z + [v for v, _ in kept]
+    caus.residual_eqs = caus.residual_eqs + [e for _, e in kept]
+    caus.kept_for_fill = [v for v, _ in kept]
+    owner = {v: b for b in caus.blocks for v in b["variables"]}
+    for v, _ in kept:
+        owner[v].setdefault("kept_for_fill", []).append(v)
+    return caus
 
 
 def _untearable(s, block, t, values) -> str:

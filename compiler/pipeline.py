@@ -252,6 +252,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
             report.notes.append(f"algebraic block of {b['size']} equations not torn "
                                 f"({b['not_torn']}), e.g. {syms[b['variables'][0]].name}")
     report.blocks = caus.blocks
+    report.kept_for_fill = [syms[v].name for v in caus.kept_for_fill]
     z_syms = [syms[v] for v in caus.z]
     assigned = [(syms[v], solve_linear(system.equations[e].residual, syms[v]))
                 for v, e in caus.assignments]
