@@ -8,8 +8,10 @@ algebraic loop, or a nonlinear scalar equation) is torn (:func:`acausal.compiler
 tear`): its iteration variables join the solver vector and its residual equations become
 rows of F; the rest of the block is assigned in causal order.
 
-The solver vector is then z = [states, iteration variables], and everything else is
-computed from z by the assignments.  With dynamic state selection the roles of states
+The solver vector is then z = [states, iteration variables, variables kept for fill]
+(:func:`_bound_fill`: an assigned variable whose gradient would have more than
+``FILL_LIMIT`` entries stays an unknown), and everything else is computed from z by the
+assignments.  With dynamic state selection the roles of states
 and dummies change at run time, so no causalization is done (the full form: every
 variable in z).
 
@@ -120,8 +122,18 @@ def _bound_fill(s, caus, limit: int | None = None) -> Causalization:
     gradient has more than ``limit`` entries and more than its own equation reads (a
     gradient no larger than its equation's incidence is no fill: the row would be as
     large, and e.g. the ground balance of a ladder reads every section), in BLT order, so
-    each gradient and each row read is bounded by ``limit`` times the incidence of its
-    equation and the Jacobian grows linearly with the model.
+    each gradient has at most max(``limit``, incidence of its equation) entries, each row
+    at most that many per variable it reads, and the Jacobian grows linearly with the
+    model.
+
+    Why 16 (network of 3000 parts; bound: Jacobian entries, gradient entries, unknowns
+    added, simulation of 5 ms with the C backend): none: 95,800, 176,600, 0, 70 s;
+    64: 56,200, 78,000, 118; 32: 52,100, 48,000, 403; 16: 35,100, 21,400, 540, 50 s;
+    8: 25,200, 10,600, 689, 47 s; 4: 20,900, 6,300, 899, 71 s (one run each on a shared
+    machine).  At 4 the extra unknowns cost more than the entries save; at 16 the
+    networks of 1000 parts (largest gradient 8) and the ladders and spring chains of
+    ``benchmarks/families.py`` (gradients of 3, and the ground balance, which reads
+    every section) keep their code byte for byte.
     """
     limit = FILL_LIMIT if limit is None else limit
     grad = {v: (v,) for v in caus.z}
