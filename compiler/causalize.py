@@ -51,7 +51,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .blt import blt
-from .graph import LINEAR_PARAM, Structure
+from .graph import LINEAR_PARAM, UNASSIGNED, Structure
 from .states import index1_matching
 from .tearing import tear
 
@@ -118,7 +118,11 @@ def _bound_fill(s, caus, limit: int | None = None) -> Causalization:
     entries, rows of up to 1,700, where each variable's own equation reads a handful.
     Such a variable is kept as an unknown instead, its equation a row of F (like a
     tearing variable): the row then has the entries its gradient would have had, and
-    every variable downstream reads it through one entry.  Kept are the variables whose
+    every variable downstream reads it through one entry.  The integrator leaves it out
+    of the error test (``self_scaled``, solvers/base.py item 6), as when it was assigned:
+    a force k (x1 - x2) held to rtol of its own would be stricter than the positions it
+    is computed from.  A derivative variable stays assigned (the linking rows and the
+    sensitivity equations read it so).  Kept are the variables whose
     gradient has more than ``limit`` entries and more than its own equation reads (a
     gradient no larger than its equation's incidence is no fill: the row would be as
     large, and e.g. the ground balance of a ladder reads every section), in BLT order, so
@@ -143,7 +147,7 @@ def _bound_fill(s, caus, limit: int | None = None) -> Causalization:
         for u in s.graph[e]:
             if u != v:
                 g.update(grad.get(u, ()))
-        if len(g) > max(limit, len(s.graph[e]) - 1):
+        if len(g) > max(limit, len(s.graph[e]) - 1) and s.diff_to_var[v] is UNASSIGNED:
             kept.append((v, e))
             grad[v] = (v,)
         else:
