@@ -136,10 +136,10 @@ def _bound_fill(s, caus, limit: int | None = None) -> Causalization:
     simulation of 5 ms with the C backend took 46-50 s at 16, 47-56 s at 8, 71 s at 4
     and 51-70 s without the bound (single runs on a shared machine: no measurable gain
     below 16, where more unknowns are kept).  The compile gains: 13-24 s -> 7.6-11 s in
-    all, of which the C compiler 8-18 s -> 2.7-5.5 s (``benchmarks/bench_scale.py``).  At 16 the networks of 1000 parts (largest
-    gradient 8) and the ladders and spring chains of ``benchmarks/families.py``
-    (gradients of 3, and the ground balance, which reads every section) keep their code
-    byte for byte.
+    all, of which the C compiler 8-18 s -> 2.7-5.5 s (``benchmarks/bench_scale.py``).
+    At 16 the networks of 1000 parts (largest gradient 8) and the ladders and spring
+    chains of ``benchmarks/families.py`` (gradients of 3, and the ground balance, which
+    reads every section) keep their code byte for byte.
     """
     limit = FILL_LIMIT if limit is None else limit
     grad = {v: (v,) for v in caus.z}
