@@ -8,8 +8,10 @@ algebraic loop, or a nonlinear scalar equation) is torn (:func:`acausal.compiler
 tear`): its iteration variables join the solver vector and its residual equations become
 rows of F; the rest of the block is assigned in causal order.
 
-The solver vector is then z = [states, iteration variables], and everything else is
-computed from z by the assignments.  With dynamic state selection the roles of states
+The solver vector is then z = [states, iteration variables, variables kept for fill]
+(:func:`_bound_fill`: an assigned variable whose gradient would have more than
+``FILL_LIMIT`` entries stays an unknown), and everything else is computed from z by the
+assignments.  With dynamic state selection the roles of states
 and dummies change at run time, so no causalization is done (the full form: every
 variable in z).
 
@@ -49,13 +51,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .blt import blt
-from .graph import LINEAR_PARAM, Structure
+from .graph import LINEAR_PARAM, UNASSIGNED, Structure
 from .states import index1_matching
 from .tearing import tear
 
 CANCELLATION_LIMIT = 1e6    # a torn chain may cancel at most this factor of accuracy
 SPREAD_LIMIT = 1e8          # ... and spread an iteration variable's error at most this much
 TEAR_LIMIT = 400            # larger algebraic blocks are solved whole (sparse LU)
+FILL_LIMIT = 16             # gradient entries of an assigned variable beyond its own equation
 
 __all__ = ["Causalization", "causalize", "full_form"]
 
@@ -68,6 +71,7 @@ class Causalization:
     residual_eqs: list         # equations that stay rows of F
     blocks: list = field(default_factory=list)   # for the index report
     causal: bool = True
+    kept_for_fill: list = field(default_factory=list)   # assigned, but kept in z (fill)
 
 
 def causalize(reduction, values=None) -> Causalization:
@@ -100,7 +104,67 @@ def causalize(reduction, values=None) -> Causalization:
         assignments += [(v, e) for e, v in t.inner]
         report.append({**entry, "torn": len(block.eqs) > 1,
                        "iteration_variables": t.iteration_vars})
-    return Causalization(z, len(states), assignments, residuals, report)
+    return _bound_fill(s, Causalization(z, len(states), assignments, residuals, report))
+
+
+def _bound_fill(s, caus, limit: int | None = None) -> Causalization:
+    """Keep in z every assigned variable whose gradient would exceed the fill bound.
+
+    An assigned variable's gradient with respect to z is the union of those of the
+    variables its equation reads (the forward-mode chain rule of
+    :func:`acausal.compiler.codegen.plan`, here on the structure).  Along a long chain of
+    node balances these unions grow with the chain, and every variable assigned from the
+    chain inherits them: in a random R/L/C network of 3000 parts 178,000 gradient
+    entries, rows of up to 1,700, where each variable's own equation reads a handful.
+    Such a variable is kept as an unknown instead, its equation a row of F (like a
+    tearing variable): the row then has the entries its gradient would have had, and
+    every variable downstream reads it through one entry.  The integrator leaves it out
+    of the error test (``self_scaled``, solvers/base.py item 6), as when it was assigned:
+    a force k (x1 - x2) held to rtol of its own would be stricter than the positions it
+    is computed from.  A derivative variable stays assigned (the linking rows and the
+    sensitivity equations read it so).  Kept are the variables whose
+    gradient has more than ``limit`` entries and more than its own equation reads (a
+    gradient no larger than its equation's incidence is no fill: the row would be as
+    large, and e.g. the ground balance of a ladder reads every section), in BLT order, so
+    each gradient has at most max(``limit``, incidence of its equation) entries, each row
+    at most that many per variable it reads, and the Jacobian grows linearly with the
+    model.
+
+    Why 16 (network of 3000 parts; bound: Jacobian entries, gradient entries, unknowns
+    added): none: 95,800, 176,600, 0; 64: 56,200, 78,000, 118; 32: 52,100, 48,000, 403;
+    16: 35,100, 21,400, 540; 8: 25,200, 10,600, 684; 4: 20,900, 6,300, 899.  The
+    simulation of 5 ms with the C backend took 46-50 s at 16, 47-56 s at 8, 71 s at 4
+    and 51-70 s without the bound (single runs on a shared machine: no measurable gain
+    below 16, where more unknowns are kept).  The compile gains: 13-24 s -> 7.6-11 s in
+    all, of which the C compiler 8-18 s -> 2.7-5.5 s (``benchmarks/bench_scale.py``).
+    At 16 the networks of 1000 parts (largest gradient 8) and the ladders and spring
+    chains of ``benchmarks/families.py`` (gradients of 3, and the ground balance, which
+    reads every section) keep their code byte for byte.
+    """
+    limit = FILL_LIMIT if limit is None else limit
+    grad = {v: (v,) for v in caus.z}
+    assignments, kept = [], []
+    for v, e in caus.assignments:
+        g = set()
+        for u in s.graph[e]:
+            if u != v:
+                g.update(grad.get(u, ()))
+        if len(g) > max(limit, len(s.graph[e]) - 1) and s.diff_to_var[v] is UNASSIGNED:
+            kept.append((v, e))
+            grad[v] = (v,)
+        else:
+            assignments.append((v, e))
+            grad[v] = g
+    if not kept:
+        return caus
+    caus.assignments = assignments
+    caus.z = caus.z + [v for v, _ in kept]
+    caus.residual_eqs = caus.residual_eqs + [e for _, e in kept]
+    caus.kept_for_fill = [v for v, _ in kept]
+    owner = {v: b for b in caus.blocks for v in b["variables"]}
+    for v, _ in kept:
+        owner[v].setdefault("kept_for_fill", []).append(v)
+    return caus
 
 
 def _untearable(s, block, t, values) -> str:

@@ -252,6 +252,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
             report.notes.append(f"algebraic block of {b['size']} equations not torn "
                                 f"({b['not_torn']}), e.g. {syms[b['variables'][0]].name}")
     report.blocks = caus.blocks
+    report.kept_for_fill = [syms[v].name for v in caus.kept_for_fill]
     z_syms = [syms[v] for v in caus.z]
     assigned = [(syms[v], solve_linear(system.equations[e].residual, syms[v]))
                 for v, e in caus.assignments]
@@ -309,7 +310,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
               "assigned_names": [a.name for a, _ in assigned],
               "equation_names": [system.equations[e].name(system) for e in caus.residual_eqs],
               "structural_zeros": sorted(zeros),
-              "self_scaled": _self_scaled(system, z_syms),
+              "self_scaled": _self_scaled(system, z_syms, {syms[v] for v in caus.kept_for_fill}),
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms),
@@ -486,12 +487,12 @@ def _nominal(system, k) -> float:
     return 1.0
 
 
-def _self_scaled(system, z_syms) -> list:
-    """Which solver unknowns are derivatives without a declared nominal: the integrator
-    judges them on their own motion (solvers/base.py, item 6)."""
+def _self_scaled(system, z_syms, kept) -> list:
+    """Which solver unknowns the integrator judges through the others (solvers/base.py,
+    item 6): derivatives without a declared nominal, and the variables kept for fill."""
     ders = set(system.derivatives.values())
-    return [q in ders and not (q in system.var_info and system.var_info[q].attrs.nominal)
-            for q in z_syms]
+    return [q in kept or q in ders and not (q in system.var_info and system.var_info[q]
+                                            .attrs.nominal) for q in z_syms]
 
 
 def _start(system, k) -> float:

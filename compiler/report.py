@@ -53,6 +53,7 @@ class IndexReport:
     dummy_derivatives: list = field(default_factory=list)
     state_sets: list = field(default_factory=list)
     blocks: list = field(default_factory=list)
+    kept_for_fill: list = field(default_factory=list)   # names (causalize._bound_fill)
     sigma: dict = field(default_factory=dict)
     conversion: object = None       # compiler.conversion.ConversionResult
     notes: list = field(default_factory=list)
@@ -147,6 +148,7 @@ class IndexReport:
             "dummy_derivatives": self.dummy_derivatives,
             "state_sets": self.state_sets,
             "blocks": self.blocks,
+            "kept_for_fill": getattr(self, "kept_for_fill", []),
             "sigma": self.sigma,
             "modes": getattr(self, "modes", []),
             "conversion": _conversion_dict(self.conversion),
@@ -238,6 +240,12 @@ class IndexReport:
             sizes = [b["size"] for b in self.blocks]
             torn = sum(1 for b in self.blocks if b.get("torn"))
             lines.append(f"  BLT: {len(sizes)} blocks, largest {max(sizes)}, {torn} torn")
+        kept = getattr(self, "kept_for_fill", [])
+        if kept:
+            from .causalize import FILL_LIMIT
+            lines.append(f"  fill: {len(kept)} assigned variable(s) kept as unknowns (gradient "
+                         f"over {FILL_LIMIT} entries and its equation's), e.g. "
+                         + ", ".join(kept[:3]))
         if self.sigma.get("error"):
             lines.append(f"  cross-check of the model as written failed: {self.sigma['error']}")
         elif self.sigma.get("hidden"):
