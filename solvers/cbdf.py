@@ -24,8 +24,11 @@ the search when it is not; a new choice comes back as other active linking rows,
 history kept.
 
 When it is used (``step_loop="auto"``): the problem is a compiled model on the C backend
-(so its functions are C), without stability limit detection, and, with dynamic state
-selection, at most :data:`MAX_DENSE` unknowns.  Up to
+(so its functions are C), without ``delay()`` (whose history is kept in Python after
+every step) or stability limit detection, and, with dynamic state selection, at most
+:data:`MAX_DENSE` unknowns (the sparse LU keeps one pattern, which a new choice of
+states changes).  The loop's library is built once per machine into the C backend's
+cache (:func:`build_in_background` starts it during the first compile).  Up to
 :data:`MAX_DENSE` unknowns the C loop factors dense (``cbdf_lu.c``); above, sparse, on the
 model's fixed Jacobian pattern with the column order and pivot rows of one SuperLU
 analysis (``cbdf_sparse.c``, :mod:`~acausal.solvers.cbdf_sparse`).  ``step_loop="c"``

@@ -213,6 +213,20 @@ def test_without_a_c_compiler_the_python_loop_runs(monkeypatch):
         ac.simulate(c, t_end=0.01, step_loop="c")
 
 
+def test_dynamic_state_selection_above_max_dense_keeps_the_python_loop(monkeypatch):
+    """The sparse LU keeps one Jacobian pattern and a new choice of states changes it:
+    such a model stays in the Python loop, and "c" says why."""
+    from types import SimpleNamespace
+    monkeypatch.setattr(cbdf, "_compiled_model", lambda problem: True)
+    big = SimpleNamespace(n=cbdf.MAX_DENSE + 1, dynamic=object(), delays=None)
+    assert cbdf.choose_step_loop(big, "auto", stald=False) is None
+    with pytest.raises(ValueError, match="dynamic state selection"):
+        cbdf.choose_step_loop(big, "c", stald=False)
+    small = SimpleNamespace(n=cbdf.MAX_DENSE, dynamic=object(), delays=None)
+    if cbdf.library() is not None:
+        assert cbdf.choose_step_loop(small, "auto", stald=False) == 0
+
+
 def test_a_model_with_a_delay_keeps_the_python_loop():
     """delay() records its history after every accepted step, in Python: "auto" keeps
     the Python loop there and "c" says why it cannot run."""

@@ -6,6 +6,8 @@ import pytest
 from acausal.solvers import cbdf, linalg
 from acausal.solvers.linalg import LinearSolver, SingularMatrixError
 
+_EPS = np.finfo(float).eps
+
 
 @pytest.fixture
 def compiled(monkeypatch):
@@ -34,8 +36,11 @@ def test_compiled_and_lapack_lu_agree(compiled):
         x = lin.solve(b)
         x_ref = np.linalg.solve(A, b)
         assert np.abs(x - x_ref).max() < 1e-12 * np.abs(x_ref).max()
+        # backward error of LU with partial pivoting: |b - A x| <= gamma_3n |L||U||x|
+        # (Higham 2002, thm. 9.4), gamma_3n ~ 3n eps, and |L||U| stays within a small
+        # factor of |A| for these diagonally dominant matrices (growth factor <= 2)
         scale = (np.abs(A) @ np.abs(x) + np.abs(b)).max()
-        assert np.abs(A @ x - b).max() < 1e-13 * scale      # backward error
+        assert np.abs(A @ x - b).max() < 20 * n * _EPS * scale
 
 
 def test_compiled_lu_equilibrates_a_badly_scaled_matrix(compiled):
