@@ -54,7 +54,7 @@ from dataclasses import fields, is_dataclass, replace
 import numpy as np
 
 from .cachekeys import fingerprint, flat_key, tree_key
-from .lazycode import GeneratedModule
+from .lazycode import GeneratedModule, install_array_code
 
 __all__ = ["LoadedCode", "ParameterFunction", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
@@ -112,7 +112,7 @@ class LoadedCode:
         self._program = value
 
     def __init__(self, source, jac_rows, jac_cols, n_rows, n_roots, digest, c=None,
-                 bytecode=None):
+                 bytecode=None, array_source=None):
         self.bytecode = bytecode if bytecode and bytecode[:len(_MAGIC)] == _MAGIC else None
         self.source = source
         # executed when a function is first called: behind a C library, rarely
@@ -126,6 +126,8 @@ class LoadedCode:
         self.program = None
         self.backend = "numpy"
         self.load_note = None
+        if array_source is not None:
+            install_array_code(self, array_source)
         if c is not None:
             from ..errors import BackendError
             from .cbackend import reattach
@@ -156,7 +158,8 @@ class LoadedCode:
         if self.backend == "c":
             c = {"library": self.library, "source": self.c_source, "layout": self.c_layout}
         return (LoadedCode, (self.source, self.jac_rows, self.jac_cols, self.n_rows,
-                             self.n_roots, self.digest, c, self._bytes()))
+                             self.n_roots, self.digest, c, self._bytes(),
+                             getattr(self, "array_source", None)))
 
     def _bytes(self) -> bytes | None:
         """The bytecode an entry keeps: that of the compile which ran the functions
@@ -164,7 +167,9 @@ class LoadedCode:
         a C library that was never called is stored without, and compiled where needed."""
         if getattr(self, "bytecode", None) is None:      # compiled once, then kept
             module = getattr(self, "module", None) or GeneratedModule(self.source)
-            if module.compiled or self.backend != "c":
+            # behind a C library or array code the scalar functions are the fallback
+            fallback_only = self.backend == "c" or getattr(self, "array_source", None)
+            if module.compiled or not fallback_only:
                 self.bytecode = module.bytecode()
         return self.bytecode
 

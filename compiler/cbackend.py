@@ -333,6 +333,16 @@ def reattach(code, lib_path: str, source: str, layout: dict) -> str:
 BACKENDS = ("auto", "c", "numpy")
 
 
+def _numpy(mc, report) -> None:
+    """The numpy backend: a large model's functions in array form when that is faster
+    (:mod:`acausal.compiler.arraycode`)."""
+    from .arraycode import use_array_code
+    made = use_array_code(mc.code)
+    if made is not None:
+        report.notes.append(f"the numpy backend evaluates the residual's {made[0]} "
+                            f"statements as {made[1]} array operations")
+
+
 def bind(mc, backend: str, report) -> None:
     """Put the compiled functions behind the ModelCode ``mc`` (model, initial and when
     code share one library), or keep the Python ones: ``backend`` is ``"c"`` (raise
@@ -343,7 +353,7 @@ def bind(mc, backend: str, report) -> None:
                          f"got {backend!r}")
     mc.meta["backend"] = "numpy"
     if backend == "numpy":
-        return
+        return _numpy(mc, report)
     codes = {"f_": mc.code, "i_": mc.initial.code}
     if mc.whens is not None:
         codes["w_"] = mc.whens.code
@@ -360,5 +370,5 @@ def bind(mc, backend: str, report) -> None:
             raise BackendError(str(exc)) from exc
         report.notes.append(f"the C backend is not available ({str(exc).splitlines()[0]}); "
                             "the numpy backend runs the model")
-        return
+        return _numpy(mc, report)
     mc.meta["backend"] = "c"

@@ -14,9 +14,13 @@ import marshal
 import math
 from importlib.util import MAGIC_NUMBER as _MAGIC
 
-__all__ = ["GeneratedModule", "GeneratedFunction", "FILENAME"]
+import numpy as np
+
+__all__ = ["GeneratedModule", "GeneratedFunction", "FILENAME", "ArrayFunction",
+           "install_array_code"]
 
 FILENAME = "<acausal generated>"
+ARRAY_FILENAME = "<acausal arrays>"
 
 
 def _list(a):
@@ -27,8 +31,9 @@ class GeneratedModule:
     """``source`` (and, when given, the bytecode it was compiled to by a Python of this
     bytecode version), executed on first use."""
 
-    def __init__(self, source: str, bytecode: bytes | None = None):
+    def __init__(self, source: str, bytecode: bytes | None = None, filename: str = FILENAME):
         self.source = source
+        self.filename = filename
         self.code_object = None
         self._bytecode = bytecode
         self._namespace = None
@@ -47,7 +52,7 @@ class GeneratedModule:
                 except (ValueError, EOFError, TypeError):
                     code = None
             if code is None:
-                code = compile(self.source, FILENAME, "exec")
+                code = compile(self.source, self.filename, "exec")
             # the names the generated functions read (acausal.compiler.codegen.python_code)
             namespace = {"math": math, "_list": _list}
             exec(code, namespace)
@@ -82,3 +87,40 @@ class GeneratedFunction:
 
     def __repr__(self) -> str:
         return f"<generated function {self.name}>"
+
+
+class ArrayFunction:
+    """A function of an array module (:mod:`acausal.compiler.arraycode`) with the
+    contract f(t, y, p, m, out) -> out; an output that is not finite is computed again
+    by the scalar function ``fallback``, which raises what the runtime reports with the
+    failing equation."""
+
+    __slots__ = ("module", "name", "fallback", "fn")
+
+    def __init__(self, module: GeneratedModule, name: str, fallback):
+        self.module, self.name, self.fallback, self.fn = module, name, fallback, None
+
+    def __call__(self, t, y, p, m, out):
+        fn = self.fn
+        if fn is None:
+            fn = self.fn = self.module.namespace()[self.name]
+        fn(t, y, p, m, out)
+        if not np.isfinite(out).all():
+            return self.fallback(t, y, p, m, out)
+        return out
+
+    def __repr__(self) -> str:
+        return f"<array function {self.name}>"
+
+
+def install_array_code(code, source: str) -> None:
+    """Put the functions of the array module ``source`` in front of the scalar functions
+    of ``code`` (a GeneratedCode or a model loaded from the cache); compiled on first
+    call, like the scalar module."""
+    module = GeneratedModule(source, filename=ARRAY_FILENAME)
+    for name in ("residual", "jacobian", "roots", "scales", "expand"):
+        scalar = getattr(code, name, None)
+        if scalar is not None and f"\ndef {name}(" in source:
+            setattr(code, name, ArrayFunction(module, name, scalar))
+    code.array_source = source
+

@@ -1,0 +1,350 @@
+"""Array code: the numpy backend's functions for large models, one numpy operation per
+group of statements of the same shape.
+
+The scalar module (:func:`acausal.compiler.codegen.python_code`) runs one Python
+statement per assigned variable, gradient entry and row: some 70 ns each, so a model of
+thousands of statements spends most of a step in the interpreter.  Large models are made
+of many copies of few components, so their statements come in few *shapes*: the same
+expression tree with other variables at its leaves (``_a7 = -(y[3] - _a2)`` and
+``_a9 = -(y[4] - _a4)``).  Here each function is evaluated on one work vector ``V``
+holding the inputs (z, p, m, t) and every computed value:
+
+* each statement's *shape* is its tree with the leaves numbered in order of first
+  occurrence (numbers stay in the shape, so ``x**2`` and ``x**3`` differ); its *level*
+  is one more than the highest level of the values it reads (inputs have level 0);
+* the statements of one level and one shape form a group, evaluated at once: its
+  leaves are gathered from ``V`` (a slice when the indices are evenly spaced, one value
+  when all members read the same), the shape is printed once by the scalar printer
+  (:class:`acausal.compiler.emit.Emitter`) with numpy operations, and the results are
+  written to the group's contiguous block of ``V``; a statement that copies one value
+  is not computed at all, its readers read the original;
+* if-expressions become ``np.where`` (both branches are evaluated, under
+  ``np.errstate(all="ignore")``; the one not taken is discarded).
+
+The same operations are applied to the same values as in the scalar code, except that
+the operands of a sum or product may be in another order (the shape is printed from one
+member): results agree to round-off, not bitwise.  When an output is not finite the
+scalar function is called instead, which raises the error the runtime reports with the
+failing equation (as the C backend does).  Small models and models whose statements
+do not group keep the scalar functions: numpy's fixed cost per operation (about 1 µs)
+is more than a few scalar statements cost.
+"""
+from __future__ import annotations
+
+import os
+
+import sympy as sp
+from sympy.core.relational import Relational
+from sympy.logic.boolalg import ITE, And, BooleanFalse, BooleanTrue, Not, Or
+
+from .emit import _FUNCS, Emitter, _plain
+from .lazycode import install_array_code
+
+__all__ = ["array_source", "use_array_code", "MIN_STATEMENTS", "MIN_GROUP"]
+
+#: below this many statements in the residual the scalar code is at least as fast
+MIN_STATEMENTS = 400
+#: statements per group the residual must average for the array code to be used
+MIN_GROUP = 8
+
+_ATOMS = (sp.Symbol, sp.Number, sp.NumberSymbol, BooleanTrue, BooleanFalse)
+_NODES = (sp.Add, sp.Mul, sp.Pow, sp.Piecewise, sp.functions.elementary.piecewise.ExprCondPair,
+          Relational, And, Or, Not, ITE, sp.Abs, sp.Min, sp.Max, sp.sign) + tuple(_FUNCS)
+
+
+_NUMBERS: dict = {}      # id of a number -> its shape text, during array_source()
+
+
+class _Unsupported(Exception):
+    """A node the array printer has no numpy form for: the scalar code is kept."""
+
+
+class _Statement:
+    __slots__ = ("target", "key", "leaves", "expr", "terms")
+
+    def __init__(self, target, key, leaves, expr=None, terms=None):
+        self.target, self.key, self.leaves = target, key, leaves
+        self.expr, self.terms = expr, terms
+
+
+def _shape(e, refs, leafidx, leaves) -> str:
+    """The shape text of e; its leaves (value ids) appended to ``leaves`` in order of
+    first occurrence, ``leafidx`` maps a leaf to its number."""
+    if e.is_Symbol:
+        where = refs.get(e)
+        if where is None:
+            raise _Unsupported(f"unknown symbol {e}")
+        n = leafidx.get(e)
+        if n is None:
+            n = leafidx[e] = len(leaves)
+            leaves.append(where)
+        return f"${n}"
+    if isinstance(e, _ATOMS) or e is sp.zoo or e is sp.nan:
+        # by identity: sympy's float() of a Rational goes through mpmath and its == of
+        # numbers is slow too (tens of µs each); the program keeps every number alive
+        text = _NUMBERS.get(id(e))
+        if text is None:
+            text = f"#{e!r}" if isinstance(e, (BooleanTrue, BooleanFalse)) else f"#{float(e)!r}"
+            _NUMBERS[id(e)] = text
+        return text
+    if not isinstance(e, _NODES):
+        raise _Unsupported(type(e).__name__)
+    return type(e).__name__ + "(" + ",".join(_shape(a, refs, leafidx, leaves)
+                                             for a in e.args) + ")"
+
+
+def _expr_statement(target, e, refs) -> _Statement:
+    leafidx, leaves = {}, []
+    key = _shape(e, refs, leafidx, leaves)
+    return _Statement(target, key, leaves, expr=(e, leafidx))
+
+
+def _combo_statement(target, terms, refs, j) -> _Statement:
+    """``target = sum of partial * gradient``: one gradient or Jacobian entry."""
+    leafidx, leaves, parts, printed = {}, [], [], []
+    for d, src in terms:
+        text = _shape(d, refs, leafidx, leaves)
+        if src is not None:
+            g = ("g", src, j)
+            n = leafidx.get(g)
+            if n is None:
+                n = leafidx[g] = len(leaves)
+                leaves.append(g)
+            text += f"*${n}"
+        parts.append(text)
+        printed.append((d, None if src is None else ("g", src, j)))
+    return _Statement(target, "C[" + ";".join(parts) + "]", leaves,
+                      terms=(printed, leafidx))
+
+
+def _statements(prog, name) -> list:
+    """The statements of one generated function, in an order that computes every value
+    before it is read; the outputs are ``("o", i)``."""
+    ids = prog.refs
+    exprs = prog.functions["residual" if name == "jacobian" else name]
+    out = [_expr_statement(("a", k), prog.assigned[k], ids) for k in prog.needed(exprs)]
+    if name != "jacobian":
+        return out + [_expr_statement(("o", i), e, ids) for i, e in enumerate(exprs)]
+    for k, g in prog.grads.items():
+        out += [_combo_statement(("g", k, j), terms, ids, j) for j, terms in g.items()]
+    for i, (terms, j) in enumerate(zip(prog.jac, prog.jac_cols)):
+        out.append(_combo_statement(("o", i), terms, ids, j))
+    return out
+
+
+def _copy_of(st):
+    """The value a statement only copies, or None."""
+    if st.key == "$0":
+        return st.leaves[0]
+    if st.key == "C[#1.0*$0]" or st.key == "C[$0]":
+        return st.leaves[0]
+    return None
+
+
+class _Schedule:
+    """Levels, groups and the layout of ``V`` for one function."""
+
+    def __init__(self, statements, n_inputs, input_slot):
+        self.alias = {}
+        level = {}
+        groups = {}
+        for st in statements:
+            src = _copy_of(st)
+            if src is not None:
+                self.alias[st.target] = self._resolve(src)
+                continue
+            lv = 1 + max((level.get(self._resolve(v), 0) for v in st.leaves), default=0)
+            level[st.target] = lv
+            groups.setdefault((lv, st.key), []).append(st)
+        self.groups = sorted(groups.values(), key=lambda g: level[g[0].target])
+        slot = dict(input_slot)
+        n = n_inputs
+        for g in self.groups:
+            for st in g:
+                slot[st.target] = n
+                n += 1
+        self.slot, self.size = slot, n
+
+    def _resolve(self, v):
+        while v in self.alias:
+            v = self.alias[v]
+        return v
+
+    def where(self, v) -> int:
+        return self.slot[self._resolve(v)]
+
+
+class _ArrayEmitter(Emitter):
+    """The scalar printer with numpy operations: it prints one member of a group, whose
+    leaves are arrays (or one value shared by all members)."""
+
+    def __init__(self, ref):
+        super().__init__("py", ref)
+        self._math = "np."
+
+    def _node(self, e, done, names, shared) -> str:
+        if e.func in (sp.floor, sp.ceiling):
+            return f"np.{_FUNCS[e.func]}({self._arg(e.args[0], done, names)})"
+        if isinstance(e, (And, Or)):
+            op = " & " if isinstance(e, And) else " | "
+            return "(" + op.join(self._cond(a, done, names) for a in e.args) + ")"
+        if isinstance(e, Not):
+            return f"(~{self._cond(e.args[0], done, names)})"
+        if isinstance(e, ITE):
+            c, a, b = (self._cond(x, done, names) for x in e.args)
+            return f"np.where({c}, {a}, {b})"
+        return super()._node(e, done, names, shared)
+
+    def _cond(self, c, done, names) -> str:
+        text = self._arg(c, done, names) if c in done or c in names else self._inline(c)
+        return f"({text} != 0.0)" if c.is_Symbol else text
+
+    def _ternary(self, cond, a, b) -> str:
+        return f"np.where({cond}, {a}, {b})"
+
+    def _piecewise(self, e) -> str:
+        out = None
+        for value, cond in reversed(e.args):
+            v = self._inline(value)
+            if out is None and (cond is sp.true or isinstance(cond, BooleanTrue)):
+                out = v
+                continue
+            if out is None:
+                out = "np.nan"
+            c = self._inline(cond)
+            if cond.is_Symbol:
+                c = f"({c} != 0.0)"
+            out = self._ternary(c, v, out)
+        return out
+
+    def _minmax(self, e, done, names) -> str:
+        f = "np.minimum" if isinstance(e, sp.Min) else "np.maximum"
+        args = [self._arg(a, done, names) for a in e.args]
+        out = args[0]
+        for a in args[1:]:
+            out = f"{f}({out}, {a})"
+        return out
+
+    def _pow(self, e, done, names) -> str:
+        return super()._pow(e, done, names).replace("math.pow(", "np.power(")
+
+    def _power(self, b, r) -> str:
+        return super()._power(b, r).replace("math.pow(", "np.power(")
+
+
+def _negate(text):
+    return text[1:] if text.startswith("-") and _plain(text) else f"(-{text})"
+
+
+def _print_group(st) -> tuple[list, str]:
+    """(temporary lines, value text) of one member, its leaf k read as ``x{k}``."""
+    if st.expr is not None:
+        e, leafidx = st.expr
+        em = _ArrayEmitter(lambda q: f"x{leafidx[q]}")
+        lines = []
+        return lines, em.expression(e, lines)
+    printed, leafidx = st.terms
+    em = _ArrayEmitter(lambda q: f"x{leafidx[q]}")
+    lines, parts = [], []
+    for d, g in printed:
+        c = em.expression(d, lines)
+        if g is None:
+            parts.append(c)
+            continue
+        x = f"x{leafidx[g]}"
+        parts.append(x if c == "1.0" else _negate(x) if c == "-1.0" else f"{c}*{x}")
+    return lines, em.join_sum(parts)
+
+
+class _Writer:
+    def __init__(self):
+        self.consts = []
+
+    def gather(self, slots) -> str:
+        """The text reading V at ``slots``: one value, a slice, or a kept index array."""
+        first = slots[0]
+        if all(s == first for s in slots):
+            return f"V[{first}]"
+        if len(slots) > 1:
+            step = slots[1] - slots[0]
+            if step > 0 and all(b - a == step for a, b in zip(slots, slots[1:])):
+                stop = slots[-1] + 1
+                return f"V[{first}:{stop}]" if step == 1 else f"V[{first}:{stop}:{step}]"
+        self.consts.append(slots)
+        return f"V[_I{len(self.consts) - 1}]"
+
+    def function(self, name, sched, outputs, input_lines) -> list:
+        lines = [f"def {name}(t, y, p, m, out):", f"    V = np.empty({sched.size})"]
+        lines += ["    " + ln for ln in input_lines]
+        lines.append("    with _quiet():")
+        for g in sched.groups:
+            lo = sched.slot[g[0].target]
+            hi = lo + len(g)
+            body, text = _print_group(g[0])
+            for k in range(len(g[0].leaves)):
+                src = self.gather([sched.where(st.leaves[k]) for st in g])
+                lines.append(f"        x{k} = {src}")
+            lines += ["        " + ln for ln in body]
+            lines.append(f"        V[{lo}:{hi}] = {text}")
+        if not sched.groups:
+            lines.append("        pass")
+        if outputs:
+            lines.append(f"    out[:] = {self.gather([sched.where(o) for o in outputs])}")
+        return lines + ["    return out", "", ""]
+
+
+def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
+    """The array module of a program (functions ``residual``, ``jacobian``, ``roots``,
+    ``scales``, ``expand`` as in the scalar module), with the numbers of statements and
+    of array operations (groups) in the residual, or None when it would not be faster:
+    the residual has fewer than :data:`MIN_STATEMENTS` statements or fewer than
+    :data:`MIN_GROUP` per group (unless ``small``), or a statement has an operator with
+    no numpy form."""
+    n_y = sum(1 for w in prog.refs.values() if w[0] == "y")
+    n_p = sum(1 for w in prog.refs.values() if w[0] == "p")
+    n_m = 1 + max((w[1] for w in prog.refs.values() if w[0] == "m"), default=-1)
+    inputs = {("y", k): k for k in range(n_y)}
+    inputs.update({("p", k): n_y + k for k in range(n_p)})
+    inputs.update({("m", k): n_y + n_p + k for k in range(n_m)})
+    inputs[("t",)] = n_in = n_y + n_p + n_m
+    n_in += 1
+    input_lines = [f"V[0:{n_y}] = y", f"V[{n_y}:{n_y + n_p}] = p",
+                   f"V[{n_y + n_p}:{n_y + n_p + n_m}] = m[:{n_m}]", f"V[{n_in - 1}] = t"]
+    writer, lines = _Writer(), []
+    _NUMBERS.clear()
+    try:
+        for name in ("residual", "jacobian", "roots", "scales", "expand"):
+            if name not in prog.functions and name != "jacobian":
+                continue
+            statements = _statements(prog, name)
+            sched = _Schedule(statements, n_in, inputs)
+            if name == "residual":
+                n_st, n_groups = len(statements), len(sched.groups)
+                if not small and (n_st < MIN_STATEMENTS or n_st < MIN_GROUP * n_groups):
+                    return None
+            outputs = [st.target for st in statements if st.target[0] == "o"]
+            lines += writer.function(name, sched, outputs, input_lines)
+    except (_Unsupported, RecursionError):
+        return None
+    finally:
+        _NUMBERS.clear()
+    head = ["import numpy as np", "", "_quiet = lambda: np.errstate(all='ignore')"]
+    for k, slots in enumerate(writer.consts):
+        head.append(f"_I{k} = np.array({slots!r}, dtype=np.intp)")
+    return "\n".join(head + ["", ""] + lines) + "\n", n_st, n_groups
+
+
+def use_array_code(code) -> tuple[int, int] | None:
+    """Put the array functions printed from ``code.program`` in front of the scalar
+    functions of a GeneratedCode (``ACAUSAL_ARRAY_CODE``: ``never``, or ``always``
+    whatever the size); the residual's numbers of statements and of array operations,
+    or None when the scalar functions stay."""
+    mode = os.environ.get("ACAUSAL_ARRAY_CODE", "auto")
+    prog = getattr(code, "program", None)
+    if mode == "never" or prog is None:
+        return None
+    made = array_source(prog, small=mode == "always")
+    if made is None:
+        return None
+    install_array_code(code, made[0])
+    return made[1:]
