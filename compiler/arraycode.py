@@ -236,8 +236,61 @@ def _negate(text):
     return text[1:] if text.startswith("-") and _plain(text) else f"(-{text})"
 
 
-def _print_group(st) -> tuple[list, str]:
-    """(temporary lines, value text) of one member, its leaf k read as ``x{k}``."""
+#: a sum with more linear terms than this has them evaluated as one dot product
+LONG_SUM = 32
+
+
+def _linear_part(st):
+    """([(coefficient, leaf number)], remaining terms or None) of a long sum: its terms
+    c*x with a number c and a leaf x (a node balance) are one dot product, not one
+    operation each; ``([], None)`` when the statement is not such a sum."""
+    if st.expr is not None:
+        e, leafidx = st.expr
+        if not e.is_Add or len(e.args) <= LONG_SUM:
+            return [], None
+        terms = [(a, None) for a in e.args]
+    else:
+        terms, leafidx = st.terms
+        if len(terms) <= LONG_SUM:
+            return [], None
+    linear, rest = [], []
+    for d, g in terms:
+        c, x = (d, g) if g is not None else _coefficient_leaf(d)
+        if x is not None and c is not None and c.is_Number:
+            linear.append((float(c), leafidx[x]))
+        else:
+            rest.append((d, g))
+    if len(linear) <= LONG_SUM:
+        return [], None
+    return linear, rest
+
+
+def _coefficient_leaf(d):
+    if d.is_Symbol:
+        return sp.S.One, d
+    if d.is_Mul and len(d.args) == 2 and d.args[0].is_Number and d.args[1].is_Symbol:
+        return d.args[0], d.args[1]
+    return None, None
+
+
+def _leaves_read(st, rest) -> list:
+    leafidx = st.expr[1] if st.expr is not None else st.terms[1]
+    read = set()
+    for d, g in rest:
+        read.update(leafidx[q] for q in d.free_symbols if q in leafidx)
+        if g is not None:
+            read.add(leafidx[g])
+    return sorted(read)
+
+
+def _print_group(st, rest=None) -> tuple[list, str | None]:
+    """(temporary lines, value text) of one member, its leaf k read as ``x{k}``; with
+    ``rest``, of those terms of a long sum only (None when there are none)."""
+    if rest is not None:
+        if not rest:
+            return [], None
+        leafidx = st.expr[1] if st.expr is not None else st.terms[1]
+        st = _Statement(st.target, st.key, st.leaves, terms=(rest, leafidx))
     if st.expr is not None:
         e, leafidx = st.expr
         em = _ArrayEmitter(lambda q: f"x{leafidx[q]}")
@@ -258,7 +311,7 @@ def _print_group(st) -> tuple[list, str]:
 
 class _Writer:
     def __init__(self):
-        self.consts = []
+        self.consts, self.coefs = [], []
 
     def gather(self, slots) -> str:
         """The text reading V at ``slots``: one value, a slice, or a kept index array."""
@@ -273,6 +326,19 @@ class _Writer:
         self.consts.append(slots)
         return f"V[_I{len(self.consts) - 1}]"
 
+    def dot(self, linear, group, sched) -> str:
+        """sum_i c_i x_i over the linear terms of a long sum, as one product of the
+        coefficients with the (terms x members) matrix of their leaves."""
+        coefs = [c for c, _ in linear]
+        slots = [sched.where(st.leaves[k]) for _, k in linear for st in group]
+        self.coefs.append(coefs)
+        shape = f".reshape({len(linear)}, {len(group)})" if len(group) > 1 else ""
+        return f"np.dot(_C{len(self.coefs) - 1}, V[{self._index(slots)}]{shape})"
+
+    def _index(self, slots) -> str:
+        self.consts.append(slots)
+        return f"_I{len(self.consts) - 1}"
+
     def function(self, name, sched, outputs, input_lines) -> list:
         lines = [f"def {name}(t, y, p, m, out):", f"    V = np.empty({sched.size})"]
         lines += ["    " + ln for ln in input_lines]
@@ -280,10 +346,14 @@ class _Writer:
         for g in sched.groups:
             lo = sched.slot[g[0].target]
             hi = lo + len(g)
-            body, text = _print_group(g[0])
-            for k in range(len(g[0].leaves)):
+            linear, rest = _linear_part(g[0])
+            body, text = _print_group(g[0], rest)
+            used = range(len(g[0].leaves)) if rest is None else _leaves_read(g[0], rest)
+            for k in used:
                 src = self.gather([sched.where(st.leaves[k]) for st in g])
                 lines.append(f"        x{k} = {src}")
+            if linear:
+                text = self.dot(linear, g, sched) + ("" if text is None else f" + {text}")
             lines += ["        " + ln for ln in body]
             lines.append(f"        V[{lo}:{hi}] = {text}")
         if not sched.groups:
@@ -331,6 +401,8 @@ def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
     head = ["import numpy as np", "", "_quiet = lambda: np.errstate(all='ignore')"]
     for k, slots in enumerate(writer.consts):
         head.append(f"_I{k} = np.array({slots!r}, dtype=np.intp)")
+    for k, coefs in enumerate(writer.coefs):
+        head.append(f"_C{k} = np.array({coefs!r})")
     return "\n".join(head + ["", ""] + lines) + "\n", n_st, n_groups
 
 
