@@ -117,12 +117,18 @@ def _combo_statement(target, terms, refs, j) -> _Statement:
                       terms=(printed, leafidx))
 
 
-def _statements(prog, name) -> list:
+def _statements(prog, name, assigned: dict) -> list:
     """The statements of one generated function, in an order that computes every value
-    before it is read; the outputs are ``("o", i)``."""
+    before it is read; the outputs are ``("o", i)``.  ``assigned`` keeps the statements
+    of the assigned variables, which several functions compute."""
     ids = prog.refs
     exprs = prog.functions["residual" if name == "jacobian" else name]
-    out = [_expr_statement(("a", k), prog.assigned[k], ids) for k in prog.needed(exprs)]
+    out = []
+    for k in prog.needed(exprs):
+        st = assigned.get(k)
+        if st is None:
+            st = assigned[k] = _expr_statement(("a", k), prog.assigned[k], ids)
+        out.append(st)
     if name != "jacobian":
         return out + [_expr_statement(("o", i), e, ids) for i, e in enumerate(exprs)]
     for k, g in prog.grads.items():
@@ -380,13 +386,13 @@ def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
     n_in += 1
     input_lines = [f"V[0:{n_y}] = y", f"V[{n_y}:{n_y + n_p}] = p",
                    f"V[{n_y + n_p}:{n_y + n_p + n_m}] = m[:{n_m}]", f"V[{n_in - 1}] = t"]
-    writer, lines = _Writer(), []
+    writer, lines, assigned = _Writer(), [], {}
     _NUMBERS.clear()
     try:
         for name in ("residual", "jacobian", "roots", "scales", "expand"):
             if name not in prog.functions and name != "jacobian":
                 continue
-            statements = _statements(prog, name)
+            statements = _statements(prog, name, assigned)
             sched = _Schedule(statements, n_in, inputs)
             if name == "residual":
                 n_st, n_groups = len(statements), len(sched.groups)
