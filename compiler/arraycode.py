@@ -84,7 +84,12 @@ def _shape(e, refs, leafidx, leaves) -> str:
         # numbers is slow too (tens of µs each); the program keeps every number alive
         text = _NUMBERS.get(id(e))
         if text is None:
-            text = f"#{e!r}" if isinstance(e, (BooleanTrue, BooleanFalse)) else f"#{float(e)!r}"
+            if isinstance(e, (BooleanTrue, BooleanFalse)):
+                text = f"#{e!r}"
+            elif e is sp.zoo or e is sp.nan:
+                text = "#nan"        # an undefined value in one branch (printed as NaN)
+            else:
+                text = f"#{float(e)!r}"
             _NUMBERS[id(e)] = text
         return text
     if not isinstance(e, _NODES):

@@ -142,3 +142,30 @@ def test_a_value_outside_the_domain_is_reported_by_the_scalar_code():
     assert f(0.0, np.array([4.0, 9.0]), [], [], np.empty(2)).tolist() == [2.0, 3.0]
     with pytest.raises(ValueError, match="math domain"):
         f(0.0, np.array([4.0, -1.0]), [], [], np.empty(2))
+
+
+class ClippedRate(ac.Component):
+    """der(x) = -x/max(p, 0) while x < 0.5, else -x: with p <= 0 the first branch is
+    undefined (compiled as NaN in that mode), x = exp(-t) until t = ln 2."""
+
+    p = ac.Parameter(-1.0)
+    x = ac.Variable(start=1.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x),
+                      ac.if_else(self.x < 0.5, -self.x / ac.max(self.p, 0), -self.x))]
+
+
+def test_an_undefined_branch_in_array_code(monkeypatch):
+    monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
+    compiled = ac.compile(ClippedRate(), backend="numpy", cache=False)
+    assert isinstance(compiled.code.residual, ArrayFunction)
+    t = np.linspace(0.0, 2.0, 9)
+    with pytest.warns(RuntimeWarning, match="stopped early"):
+        res = ac.simulate(compiled, 2.0, t_eval=t)
+    assert not res.success and "der(x)" in res.message and "not finite" in res.message
+    res = ac.simulate(compiled, 2.0, t_eval=t, rtol=1e-9, parameters={"p": 2.0})
+    assert res.success
+    t1 = np.log(2.0)
+    expected = np.where(t < t1, np.exp(-t), 0.5 * np.exp(-(t - t1) / 2.0))
+    assert np.max(np.abs(res["x"] - expected)) < 1e-6
