@@ -185,6 +185,13 @@ class _Schedule:
         return self.slot[self._resolve(v)]
 
 
+# numpy's names where they differ from C's (numpy < 2 has no asin, ...), and floor and
+# ceil without the scalar code's float()
+_NUMPY_NAMES = {sp.asin: "arcsin", sp.acos: "arccos", sp.atan: "arctan", sp.atan2: "arctan2",
+                sp.asinh: "arcsinh", sp.acosh: "arccosh", sp.atanh: "arctanh",
+                sp.floor: "floor", sp.ceiling: "ceil"}
+
+
 class _ArrayEmitter(Emitter):
     """The scalar printer with numpy operations: it prints one member of a group, whose
     leaves are arrays (or one value shared by all members)."""
@@ -194,8 +201,9 @@ class _ArrayEmitter(Emitter):
         self._math = "np."
 
     def _node(self, e, done, names, shared) -> str:
-        if e.func in (sp.floor, sp.ceiling):
-            return f"np.{_FUNCS[e.func]}({self._arg(e.args[0], done, names)})"
+        f = _NUMPY_NAMES.get(e.func)
+        if f is not None:
+            return f"np.{f}({', '.join(self._arg(a, done, names) for a in e.args)})"
         if isinstance(e, (And, Or)):
             op = " & " if isinstance(e, And) else " | "
             return "(" + op.join(self._cond(a, done, names) for a in e.args) + ")"

@@ -169,3 +169,24 @@ def test_an_undefined_branch_in_array_code(monkeypatch):
     t1 = np.log(2.0)
     expected = np.where(t < t1, np.exp(-t), 0.5 * np.exp(-(t - t1) / 2.0))
     assert np.max(np.abs(res["x"] - expected)) < 1e-6
+
+
+def test_every_function_of_the_printer_has_its_numpy_form():
+    """Each function the scalar printer knows, printed for arrays, against math."""
+    import math
+
+    import sympy as sp
+
+    from acausal.compiler.arraycode import _ArrayEmitter
+    from acausal.compiler.emit import _FUNCS
+    x, y = sp.symbols("x y")
+    em = _ArrayEmitter(lambda q: {x: "x0", y: "x1"}[q])
+    xs, ys = np.array([0.3, 0.6]), np.array([1.2, 1.5])
+    for f, name in _FUNCS.items():
+        args = (x, y) if f is sp.atan2 else (y,) if f is sp.acosh else (x,)
+        text = em.expression(f(*args), [])
+        got = eval(text, {"np": np, "math": math, "x0": xs, "x1": ys})
+        ref = getattr(math, name)
+        want = [ref(a, b) if f is sp.atan2 else ref(b if f is sp.acosh else a)
+                for a, b in zip(xs, ys)]
+        assert np.allclose(got, want, rtol=1e-12, atol=0.0), name
