@@ -108,27 +108,35 @@ def compile_library(cc: str, units: list, flags: list, out_dir: str) -> str:
             with lock:
                 if errors:
                     return
-                proc = subprocess.Popen([cc, *flags, "-c", "-o", objects[k], src],
-                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                        text=True)
+                try:
+                    proc = subprocess.Popen([cc, *flags, "-c", "-o", objects[k], src],
+                                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                            text=True)
+                except OSError as exc:
+                    errors.append(f"the C compiler {cc} could not be started: {exc}")
+                    _stop(running)
+                    return
                 running[k] = proc
             _, err = proc.communicate()
             with lock:
                 del running[k]
                 if proc.returncode != 0 and not errors:
                     errors.append(_failure(cc, err, k, len(units)))
-                    for other in running.values():   # the rest would be thrown away
-                        other.terminate()
+                    _stop(running)        # what they compile would be thrown away
 
-    if n_jobs == 1:
-        worker()
-    else:
-        threads = [threading.Thread(target=worker, name=f"acausal-cc-{k}")
-                   for k in range(n_jobs)]
+    threads = [threading.Thread(target=worker, name=f"acausal-cc-{k}", daemon=True)
+               for k in range(n_jobs)]
+    try:
         for th in threads:
             th.start()
         for th in threads:
             th.join()
+    except BaseException:
+        # interrupted: no compiler outlives the build directory
+        with lock:
+            errors.append("interrupted")
+            _stop(running)
+        raise
     if errors:
         raise BackendError(errors[0])
     t1 = time.perf_counter()
@@ -142,6 +150,11 @@ def compile_library(cc: str, units: list, flags: list, out_dir: str) -> str:
                       characters=sum(map(len, units)), compile_s=t1 - t0,
                       link_s=time.perf_counter() - t1)
     return lib
+
+
+def _stop(running: dict) -> None:
+    for proc in running.values():
+        proc.terminate()
 
 
 def _failure(cc, err, k, n) -> str:
