@@ -7,12 +7,14 @@ shared library named by the hash of its source and the flags, and loaded with ct
 Every generated function keeps the contract ``f(t, y, p, m, out) -> out``.
 
 * Assigned variables and gradient entries live in a work array ``w``, and each function
-  is split into pieces of about ``PIECE`` lines: the compiler's time stays linear in the
-  model's size (one function of 100k statements is not), and at ``-O2`` pieces of 100
-  lines compile in 0.6 of the time of pieces of 400 (a 160 kB source: 1.6 s against
-  2.6 s), with the same simulation time to the measurement's noise.  The pieces are
-  the places where a large source is cut into translation units
-  (:mod:`acausal.compiler.cbuild`).
+  is split into pieces of about ``PIECE`` lines (``PIECE_LARGE`` in a source large
+  enough to be compiled at ``-O0``, :mod:`acausal.compiler.cbuild`): the compiler's time
+  stays linear in the model's size (one function of 100k statements is not).  Why two
+  sizes (gcc 12, processor time, medians of 2-3 runs on a shared machine): at ``-O2``
+  pieces of 100 lines compile in 0.6-0.7 of the time of 400 (a 160 kB source: 1.3 s
+  against 1.9 s) with the same simulation time to the measurement's noise; at ``-O0``
+  they cost some 20 % more than 400 (an 870 kB source: 2.4 s against 1.9 s).  The
+  pieces are the places where a large source is cut into translation units.
 * Floating point as written: ``-ffp-contract=off`` (no fused multiply-add), no
   ``-ffast-math``.
 * Outside a function's domain C computes NaN or inf where Python raises; a call whose
@@ -43,7 +45,8 @@ from . import cbuild
 __all__ = ["BackendError", "c_source", "build", "attach", "reattach", "compiler_available",
            "cache_dir"]
 
-PIECE = 100
+PIECE = 100               # lines per piece of a function compiled at -O2
+PIECE_LARGE = 400         # and at -O0
 FLAGS, FLAGS_LARGE, LARGE, UNIT = cbuild.FLAGS, cbuild.FLAGS_LARGE, cbuild.LARGE, cbuild.UNIT
 FUNCTIONS = ("residual", "jacobian", "roots", "scales", "expand")
 
@@ -71,15 +74,23 @@ def c_source(programs: dict) -> tuple[str, dict]:
     """C for {prefix: Program}; returns (source, {prefix: work size})."""
     parts = ["#include <math.h>", "", "#define ARGS double t, const double *y, "
              "const double *p, const double *m, double *out, double *w", "#define PASS t, y, p, m, out, w", ""]
-    sizes = {}
+    sizes, functions = {}, []
     for prefix, prog in programs.items():
-        text, n_work = _c_program(prefix, prog)
-        parts.append(text)
+        specs, n_work = _c_program(prefix, prog)
+        functions += specs
         sizes[prefix] = n_work
+    # the pieces' size follows the optimization the source will be compiled with
+    # (cbuild.flags_for): short pieces for -O2, long ones for a large source at -O0
+    # (a line's indentation and newline counted as 4 characters)
+    n_chars = sum(len(ln) + 4 for spec in functions for st in spec[1] for ln in st)
+    piece = PIECE if n_chars <= LARGE else PIECE_LARGE
+    parts += [_c_function(*spec, piece=piece) for spec in functions]
     return "\n".join(parts) + "\n", sizes
 
 
-def _c_program(prefix, prog) -> tuple[str, int]:
+def _c_program(prefix, prog) -> tuple[list, int]:
+    """The functions of one Program as (name, statements, calls, outputs), and the size
+    of its work array."""
     # imported here: printing needs sympy, loading a library built before does not
     from .codegen import combinations, row_groups
     from .emit import Emitter
@@ -123,12 +134,12 @@ def _c_program(prefix, prog) -> tuple[str, int]:
     res = prog.functions["residual"]
     # the assignments the rows need, once: residual, Jacobian and expand call them
     base = prog.needed(res)
-    out.append(_c_function(f"{prefix}assigned", prologue(base)))
+    out.append((f"{prefix}assigned", prologue(base), (), 0))
     pre = [f"{prefix}assigned"]
-    out.append(_c_function(f"{prefix}residual", _c_rows(em, res), pre, len(res)))
+    out.append((f"{prefix}residual", _c_rows(em, res), pre, len(res)))
     jac = [combinations(em, prog.jac[lo:hi], [f"out[{n}]" for n in range(lo, hi)],
                         prog.jac_cols[lo:hi], grad) for lo, hi in row_groups(prog)]
-    out.append(_c_function(f"{prefix}jacobian", grads + jac, pre, len(prog.jac)))
+    out.append((f"{prefix}jacobian", grads + jac, pre, len(prog.jac)))
     have = set(base)
     for name in ("roots", "scales", "expand"):
         exprs = prog.functions.get(name)
@@ -137,20 +148,20 @@ def _c_program(prefix, prog) -> tuple[str, int]:
         need = prog.needed(exprs)
         if name == "expand":
             rest = [k for k in need if k not in have]
-            out.append(_c_function(f"{prefix}{name}", prologue(rest) + _c_rows(em, exprs),
-                                   pre, len(exprs)))
+            out.append((f"{prefix}{name}", prologue(rest) + _c_rows(em, exprs), pre,
+                        len(exprs)))
         else:
-            out.append(_c_function(f"{prefix}{name}", prologue(need) + _c_rows(em, exprs),
-                                   (), len(exprs)))
-    return "\n".join(out), n_a + len(slot)
+            out.append((f"{prefix}{name}", prologue(need) + _c_rows(em, exprs), (),
+                        len(exprs)))
+    return out, n_a + len(slot)
 
 
 def _c_rows(em, exprs) -> list:
     return [em.assign(f"out[{k}]", e) for k, e in enumerate(exprs)]
 
 
-def _c_function(name, statements, calls=(), n_out=0) -> str:
-    """One exported function calling ``calls`` and then pieces of about PIECE lines
+def _c_function(name, statements, calls=(), n_out=0, piece=PIECE) -> str:
+    """One exported function calling ``calls`` and then pieces of about ``piece`` lines
     each (whole statements); a statement's temporaries are local to its block.  Each
     piece, and the exported function with the prototypes it calls, is one segment
     between :data:`UNIT` marks: a translation unit may start at any of them."""
@@ -158,7 +169,7 @@ def _c_function(name, statements, calls=(), n_out=0) -> str:
     for st in statements:
         current.append(st)
         size += len(st)
-        if size >= PIECE:
+        if size >= piece:
             pieces.append(current)
             current, size = [], 0
     if current:

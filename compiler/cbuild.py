@@ -11,7 +11,7 @@ Measured with gcc 12 on x86-64 (processor time, on a shared 2-core machine): at
 ``-O0`` the compiler takes about 3 us per character of generated C, whatever the size
 of the pieces (an RLC ladder of 1000 sections, 0.87 MB: 2.4 s; of 5556 sections,
 100k flat equations, 5 MB: 16.5 s, a third of it register allocation); at ``-O1`` and
-``-O2`` 2.6 and 4.6 times that with pieces of 400 lines, 1.6 and 2.6 times with pieces
+``-O2`` 2.6 and 4.6 times that with pieces of 400 lines, 1.6 and 2.4 times with pieces
 of 100.  The simulation gains from optimization (``-O2`` against ``-O0``: the motor
 drive's steps 5 times faster, the 1000-section ladder's 1.8 times), but on a large
 model the build is what costs.  Hence:
