@@ -12,9 +12,10 @@ Measured with gcc 12 on x86-64 (processor time, on a shared 2-core machine): at
 of the pieces (an RLC ladder of 1000 sections, 0.87 MB: 2.4 s; of 5556 sections,
 100k flat equations, 5 MB: 16.5 s, a third of it register allocation); at ``-O1`` and
 ``-O2`` 2.6 and 4.6 times that with pieces of 400 lines, 1.6 and 2.4 times with pieces
-of 100.  The simulation gains from optimization (``-O2`` against ``-O0``: the motor
-drive's steps 5 times faster, the 1000-section ladder's 1.8 times), but on a large
-model the build is what costs.  Hence:
+of 100.  The simulation gains from optimization (``-O2`` against ``-O0``, medians of 11
+runs' processor time: the motor drive of ``benchmarks/families.py`` M3 3.7 against
+6.2 ms, the 1000-section ladder M1 22 against 33 ms), but on a large model the build is
+what costs (M1 at ``-O2``: some 15 s more of the compiler).  Hence:
 
 * a source of at most :data:`LARGE` characters is one translation unit at ``-O2``;
 * a larger one is compiled at ``-O0`` in units of at most about :data:`UNIT_SIZE`
