@@ -21,7 +21,9 @@ what costs (M1 at ``-O2``: some 15 s more of the compiler).  Hence:
 * a larger one is compiled at ``-O0`` in units of at most about :data:`UNIT_SIZE`
   characters, their number a multiple of the processors this process may use, that
   many compilers at a time, and linked into one library (a few units per processor
-  let a free processor take the next unit while another is held by other work).
+  let a free processor take the next unit while another is held by other work, and
+  bound the compilers' memory: gcc needs 124 MB for a unit of 430 kB, 356 MB for one
+  of 2.5 MB, half of a 100k-equation ladder).
 
 The library is written under a temporary name in the cache directory and renamed into
 place when it is whole: a process that finds the name finds the complete library.
