@@ -145,11 +145,12 @@ def _table(family: str, runs: list) -> str:
     for reps in runs:
         b = reps[-1].get("c_build")
         if b:
-            lines.append(f"  N = {reps[-1]['n']}: C library from {b['characters'] / 1e6:.2f} MB "
-                         f"of C in {b['units']} translation unit(s), {b['jobs']} compiler(s) "
-                         f"at once, {b['flags']}: {b['compile_s']:.2f} s compiling, "
-                         f"{b['link_s']:.2f} s linking; load average "
-                         f"{statistics.median(r.get('load', float('nan')) for r in reps):.1f}")
+            load = statistics.median(r.get("load", float("nan")) for r in reps)
+            lines.append(f"  N = {reps[-1]['n']}: C library from "
+                         f"{b['characters'] / 1e6:.2f} MB of C in {b['units']} translation "
+                         f"unit(s), {b['jobs']} compiler(s) at once, {b['flags']}: "
+                         f"{b['compile_s']:.2f} s compiling, {b['link_s']:.2f} s linking; "
+                         f"load average {load:.1f}")
     per = med[-1][2]["total"] / med[-1][1] * 1e6
     lines.append(f"  largest size: {per:.0f} us per flat equation in total")
     return "\n".join(lines)

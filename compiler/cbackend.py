@@ -47,7 +47,8 @@ __all__ = ["BackendError", "c_source", "build", "attach", "reattach", "compiler_
 
 PIECE = 100               # lines per piece of a function compiled at -O2
 PIECE_LARGE = 400         # and at -O0
-FLAGS, FLAGS_LARGE, LARGE, UNIT = cbuild.FLAGS, cbuild.FLAGS_LARGE, cbuild.LARGE, cbuild.UNIT
+FLAGS, FLAGS_LARGE = cbuild.FLAGS, cbuild.FLAGS_LARGE
+LARGE, UNIT = cbuild.LARGE, cbuild.UNIT
 FUNCTIONS = ("residual", "jacobian", "roots", "scales", "expand")
 
 
@@ -198,7 +199,8 @@ def _c_function(name, statements, calls=(), n_out=0, piece=PIECE) -> str:
 
 
 # -- building and loading ---------------------------------------------------------------------
-def build(source: str, cached_only: bool = False, unit_size: int | None = None) -> str | None:
+def build(source: str, cached_only: bool = False,
+          unit_size: int | None = None) -> str | None:
     """The path of the shared library for source, compiled now or found in the cache
     (with ``cached_only``: None rather than compiling it).
 

@@ -41,12 +41,14 @@ def _functions(compiled):
              "expand": compiled.meta["n_all"]}
     out = []
     for _ in range(3):
-        z = z0 * (1 + 0.1 * rng.standard_normal(z0.size)) + 0.01 * rng.standard_normal(z0.size)
+        z = z0 * (1 + 0.1 * rng.standard_normal(z0.size)) \
+            + 0.01 * rng.standard_normal(z0.size)
+        p, m = compiled.p, compiled.m
         for name, n in sizes.items():
-            out.append(getattr(code, name)(0.3, z, compiled.p, compiled.m.copy(), np.empty(n)))
+            out.append(getattr(code, name)(0.3, z, p, m.copy(), np.empty(n)))
         if compiled.whens is not None:
             w = compiled.whens.code
-            out.append(w.residual(0.3, z, compiled.p, compiled.m.copy(), np.empty(w.n_rows)))
+            out.append(w.residual(0.3, z, p, m.copy(), np.empty(w.n_rows)))
     return out
 
 
