@@ -26,7 +26,7 @@ BROKEN = cbuild.UNIT + "void broken_piece(ARGS) { w[0] = undeclared_name; }\n"
 
 @pytest.fixture
 def small_pieces(monkeypatch):
-    """Pieces of 3 statements: every generated function is several C functions."""
+    """Pieces of about 3 lines: every generated function is several C functions."""
     monkeypatch.setattr(cbackend, "PIECE", 3)
 
 
