@@ -13,7 +13,11 @@ the growth exponent of each pass is
 Every (family, N) is run ``--repeat`` times, the repetitions interleaved (all sizes
 once, then again), and the median of each time is printed: the machine is shared, and
 single timings are noisy.  ``total`` is the wall time of ``compile_model``, ``cpu`` the
-processor time of the process during it (less sensitive to other load).
+processor time of the process during it (less sensitive to other load), ``cc cpu`` that
+of the C compiler's processes (user + system, all translation units; ``RSS MB`` is the
+Python process's peak memory, the compilers' comes on top), and a line per size says
+how the C library was built (translation units, compilers at once, flags, seconds
+compiling and linking; :mod:`acausal.compiler.cbuild`) and the load average then.
 
 ``--front`` stops after index reduction: code generation is replaced by a stand-in
 that builds nothing (the report is still filled, so the cost of its texts is measured),
@@ -77,14 +81,23 @@ def measure_once(family: str, n: int, front: bool) -> dict:
         _front_only()
     _preload()
     model = getattr(families, family)(n)
+    kids0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0, c0 = time.perf_counter(), time.process_time()
     code = compile_model(model)
     total = time.perf_counter() - t0
     report = _last_report if front else code.report
     usage = resource.getrusage(resource.RUSAGE_SELF)
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
+    try:
+        from acausal.compiler.cbuild import last_build
+    except ImportError:
+        last_build = {}
     return {"family": family, "n": n, "flat": report.counts["flatten"]["equations"],
             "total": total, "cpu": time.process_time() - c0, "timings": dict(report.timings),
-            "rss_mb": usage.ru_maxrss / 1024.0}
+            "rss_mb": usage.ru_maxrss / 1024.0,
+            "cc_cpu": (kids.ru_utime - kids0.ru_utime) + (kids.ru_stime - kids0.ru_stime),
+            "c_build": dict(last_build),
+            "load": os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")}
 
 
 def _child(family: str, n: int, front: bool) -> dict:
@@ -115,9 +128,10 @@ def _table(family: str, runs: list) -> str:
         m = {k: statistics.median(r["timings"].get(k, 0.0) for r in reps) for k in passes}
         m["total"] = statistics.median(r["total"] for r in reps)
         m["cpu"] = statistics.median(r["cpu"] for r in reps)
+        m["cc cpu"] = statistics.median(r.get("cc_cpu", 0.0) for r in reps)
         med.append((reps[0]["n"], reps[0]["flat"], m,
                     max(r["rss_mb"] for r in reps)))
-    cols = passes + ["total", "cpu"]
+    cols = passes + ["total", "cpu", "cc cpu"]
     width = max(9, *(len(c) + 1 for c in cols))
     head = f"{'N':>6} {'flat eqs':>9} {'RSS MB':>7} " + "".join(f"{c:>{width}}" for c in cols)
     lines = [f"{family}: median seconds of {len(runs[0])} run(s) per size", head]
@@ -128,6 +142,15 @@ def _table(family: str, runs: list) -> str:
             _, flat0, m0, _ = med[k - 1]
             lines.append(f"{'':>6} {'exponent':>9} {'':>7} " + "".join(
                 f"{_exponent(m0[c], m[c], flat0, flat):>{width}.2f}" for c in cols))
+    for reps in runs:
+        b = reps[-1].get("c_build")
+        if b:
+            load = statistics.median(r.get("load", float("nan")) for r in reps)
+            lines.append(f"  N = {reps[-1]['n']}: C library from "
+                         f"{b['characters'] / 1e6:.2f} MB of C in {b['units']} translation "
+                         f"unit(s), {b['jobs']} compiler(s) at once, {b['flags']}: "
+                         f"{b['compile_s']:.2f} s compiling, {b['link_s']:.2f} s linking; "
+                         f"load average {load:.1f}")
     per = med[-1][2]["total"] / med[-1][1] * 1e6
     lines.append(f"  largest size: {per:.0f} us per flat equation in total")
     return "\n".join(lines)
