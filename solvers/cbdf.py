@@ -27,8 +27,10 @@ When it is used (``step_loop="auto"``): the problem is a compiled model on the C
 (so its functions are C), without ``delay()`` (whose history is kept in Python after
 every step) or stability limit detection, and, with dynamic state selection, at most
 :data:`MAX_DENSE` unknowns (the sparse LU keeps one pattern, which a new choice of
-states changes).  The loop's library is built once per machine into the C backend's
-cache (:func:`build_in_background` starts it during the first compile).  Up to
+states changes), and the loop's library is built.  That library is built once per
+machine into the C backend's cache, in a process of its own that the first compile
+starts (:func:`build_in_background`): a run that starts before it is there takes the
+Python loop rather than wait (``step_loop="c"`` waits for it).  Up to
 :data:`MAX_DENSE` unknowns the C loop factors dense (``cbdf_lu.c``); above, sparse, on the
 model's fixed Jacobian pattern with the column order and pivot rows of one SuperLU
 analysis (``cbdf_sparse.c``, :mod:`~acausal.solvers.cbdf_sparse`).  ``step_loop="c"``
@@ -42,7 +44,10 @@ from __future__ import annotations
 
 import ctypes
 import os
+import subprocess
+import sys
 import threading
+import time
 
 import numpy as np
 
@@ -79,13 +84,17 @@ _KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singu
 
 _lib = None
 _lock = threading.Lock()
-_builder = None          # the thread of build_in_background
+_builder = None          # the process started by build_in_background
+_MARKER = "cbdf-building"    # in the cache while a process builds the library
+_MARKER_AGE = 120.0      # s after which a marker is taken for that of a killed build
+_SOURCES = ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c")
+_text = None
 
 
 def library(cached_only: bool = False):
     """The compiled step loop (built once into the C backend's cache), or None when no
-    C compiler works (with ``cached_only``: also when it is not built yet, or being
-    built by :func:`build_in_background`)."""
+    C compiler works (with ``cached_only``: also when it is not built yet).  Without
+    ``cached_only`` a build that :func:`build_in_background` started is waited for."""
     if _lib is None:
         if not _lock.acquire(blocking=not cached_only):
             return None
@@ -97,16 +106,28 @@ def library(cached_only: bool = False):
     return _lib or None
 
 
+def _source() -> str:
+    global _text
+    if _text is None:       # read once: a run asks for the library more than once
+        here = os.path.dirname(__file__)
+        parts = []
+        for name in _SOURCES:
+            with open(os.path.join(here, name)) as f:
+                parts.append(f.read() + "\n")
+        _text = "".join(parts)
+    return _text
+
+
 def _load(cached_only: bool) -> None:
     global _lib
     from ..compiler.cbackend import build
-    here = os.path.dirname(__file__)
     try:
-        source = ""
-        for name in ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c"):
-            with open(os.path.join(here, name)) as f:
-                source += f.read() + "\n"
-        path = build(source, cached_only=cached_only)
+        source = _source()
+        path = build(source, cached_only=True)
+        if path is None and not cached_only:
+            if _builder is not None:
+                _builder.wait()      # its library, or its failure, then ours
+            path = build(source)
         if path is None:
             return
         lib = ctypes.CDLL(path)
@@ -120,18 +141,91 @@ def _load(cached_only: bool) -> None:
 
 
 def build_in_background() -> None:
-    """Start building the step loop's library in a thread, unless it is built or no C
-    compiler works.  Why: on a machine where it was never built, compiling it (about a
-    second of gcc) would otherwise come after the model's own C, at the first
-    simulate; in a thread it overlaps the model's compile (the compiler runs in its own
-    process, so the thread holds no lock that the compile needs)."""
+    """Start building the step loop's library in a process of its own, unless it is
+    built, being built, or no C compiler works.
+
+    Why a process: compiling it takes about a second and a half of gcc, longer than a
+    small model's whole first run.  A thread would overlap the model's compile, but the
+    interpreter waits for its threads at exit, so the first script would still end only
+    when the build does.  The process outlives this one if need be; its library appears
+    in the cache atomically (:func:`acausal.compiler.cbackend.build` compiles in a
+    temporary directory and renames the result), so a build that is interrupted leaves
+    no library rather than a broken one, and the next process starts it again.  While
+    it runs, the cache holds a marker file, so concurrent processes start one build."""
     global _builder
     if _lib is not None or _builder is not None or library(cached_only=True) is not None:
         return
-    from ..compiler.cbackend import compiler_available
-    if _lib is None and compiler_available() is not None:
-        _builder = threading.Thread(target=library, name="acausal-cbdf-build")
-        _builder.start()
+    from ..compiler.cbackend import cache_dir, compiler_available
+    if compiler_available() is None or _building(os.path.join(cache_dir(), _MARKER)):
+        return
+    _builder = _spawn_builder()
+
+
+def _spawn_builder():
+    """The process of :func:`build_in_background` (a ``subprocess.Popen``), or None when
+    no interpreter can be started (the first run that needs the library builds it)."""
+    package = __name__.rsplit(".", 2)[0]
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    code = (f"import sys; sys.path.insert(0, {root!r}); "
+            f"from {package}.solvers.cbdf import _build_detached; _build_detached()")
+    try:
+        # its own session: a Ctrl-C meant for the script does not reach the build
+        return subprocess.Popen([sys.executable, "-c", code], stdin=subprocess.DEVNULL,
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                start_new_session=True)
+    except OSError:
+        return None
+
+
+def _building(marker: str) -> bool:
+    """Whether a process is building the library: ``marker`` exists and is younger than
+    :data:`_MARKER_AGE` (an older one is left by a build that was killed)."""
+    try:
+        return time.time() - os.stat(marker).st_mtime < _MARKER_AGE
+    except OSError:
+        return False
+
+
+def _build_detached() -> None:
+    """The body of the process of :func:`build_in_background`: build the library unless
+    another process holds the marker.  A termination signal ends the build as an
+    exception does, so its temporary directory and the marker are removed."""
+    import signal
+    signals = (signal.SIGTERM, signal.SIGHUP, signal.SIGINT)
+
+    def stop(signum, frame):
+        for sig in signals:
+            signal.signal(sig, signal.SIG_IGN)
+        if os.getpgrp() == os.getpid():     # the compiler runs in this build's group
+            os.killpg(os.getpgrp(), signal.SIGTERM)
+        raise SystemExit(128 + signum)
+
+    for sig in signals:
+        signal.signal(sig, stop)
+    from ..compiler.cbackend import cache_dir
+    marker = os.path.join(cache_dir(), _MARKER)
+    for _ in range(2):
+        try:
+            fd = os.open(marker, os.O_CREAT | os.O_EXCL | os.O_WRONLY)
+            break
+        except FileExistsError:
+            if _building(marker):
+                return
+            try:                 # a killed build's marker
+                os.remove(marker)
+            except OSError:
+                return
+    else:
+        return
+    try:
+        os.write(fd, str(os.getpid()).encode())
+        os.close(fd)
+        library()
+    finally:
+        try:
+            os.remove(marker)
+        except OSError:
+            pass
 
 
 def _compiled_model(problem) -> bool:
@@ -170,7 +264,9 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         why = ("its after_step hook runs in Python after every step (a compiled model "
                "needs backend='c')")
     if step_loop == "auto":
-        return 0 if model and why is None and library() is not None else None
+        # a library still being built is not waited for: this run takes the Python loop
+        return 0 if model and why is None and library(cached_only=True) is not None \
+            else None
     if why is not None:
         raise ValueError(f"step_loop='c' is not available for this problem: {why}")
     if library() is None:
