@@ -56,8 +56,8 @@ import sys
 
 import numpy as np
 
-__all__ = ["SPARSE_THRESHOLD", "NUMPY_LU_MAX", "LinearSolver", "SingularMatrixError", "singular_block",
-           "make_linear_solver", "equilibrate"]
+__all__ = ["SPARSE_THRESHOLD", "NUMPY_LU_MAX", "LinearSolver", "SingularMatrixError",
+           "singular_block", "make_linear_solver", "equilibrate"]
 
 #: Systems larger than this use sparse LU when the problem offers sparsity.
 SPARSE_THRESHOLD = 60

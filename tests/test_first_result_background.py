@@ -43,7 +43,7 @@ class RC(ac.Component):
 
 
 compiled = ac.compile(RC(), backend=sys.argv[1])
-res = ac.simulate(compiled, t_end=5.0e-3, rtol=1e-6)
+res = ac.simulate(compiled, t_end=5.0e-3, rtol=1e-6, step_loop=sys.argv[2])
 exact = 1.0 - math.exp(-5.0)
 print(json.dumps({"error": abs(float(res["C1.v"][-1]) - exact) / exact,
                   "backend": compiled.backend, "step_loop": res.stats["step_loop"],
@@ -52,9 +52,9 @@ print(json.dumps({"error": abs(float(res["C1.v"][-1]) - exact) / exact,
 '''
 
 
-def _run(script, cache, backend="auto") -> dict:
+def _run(script, cache, backend="auto", step_loop="auto") -> dict:
     env = dict(os.environ, ACAUSAL_CACHE=str(cache))
-    out = subprocess.run([sys.executable, str(script), backend], capture_output=True,
+    out = subprocess.run([sys.executable, str(script), backend, step_loop], capture_output=True,
                          text=True, check=True, env=env, timeout=300).stdout
     return json.loads(out.strip().splitlines()[-1])
 
@@ -96,6 +96,15 @@ def test_the_first_run_takes_the_python_loop_and_the_next_the_compiled_one(scrip
     second = _run(script, cache)
     assert second["error"] < 1e-4
     assert second["step_loop"] == "c" and second["builder"] is None
+
+
+@needs_cc
+def test_asking_for_the_compiled_loop_waits_for_its_build(script, tmp_path):
+    cache = tmp_path / "cache"
+    found = _run(script, cache, backend="c", step_loop="c")
+    assert found["error"] < 1e-4
+    assert found["builder"] is not None and found["step_loop"] == "c"
+    assert not (cache / cbdf._MARKER).exists()       # the build had ended
 
 
 @needs_cc
