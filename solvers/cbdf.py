@@ -151,7 +151,9 @@ def build_in_background() -> None:
     in the cache atomically (:func:`acausal.compiler.cbackend.build` compiles in a
     temporary directory and renames the result), so a build that is interrupted leaves
     no library rather than a broken one, and the next process starts it again.  While
-    it runs, the cache holds a marker file, so concurrent processes start one build."""
+    it runs, the cache holds a marker file, so concurrent processes start one build.
+    It runs at a lower priority (nice 10): on a busy machine the compile and run it
+    overlaps keep the processor."""
     global _builder
     if _lib is not None or _builder is not None or library(cached_only=True) is not None:
         return
@@ -202,6 +204,10 @@ def _build_detached() -> None:
 
     for sig in signals:
         signal.signal(sig, stop)
+    try:                 # idle processor time only: the run it overlaps goes first
+        os.nice(10)
+    except OSError:
+        pass
     from ..compiler.cbackend import cache_dir
     marker = os.path.join(cache_dir(), _MARKER)
     for _ in range(2):
