@@ -193,21 +193,23 @@ def _build_detached() -> None:
     another process holds the marker.  A termination signal ends the build as an
     exception does, so its temporary directory and the marker are removed."""
     import signal
-    signals = (signal.SIGTERM, signal.SIGHUP, signal.SIGINT)
+    signals = [getattr(signal, name) for name in ("SIGTERM", "SIGHUP", "SIGINT")
+               if hasattr(signal, name)]
 
     def stop(signum, frame):
         for sig in signals:
             signal.signal(sig, signal.SIG_IGN)
-        if os.getpgrp() == os.getpid():     # the compiler runs in this build's group
-            os.killpg(os.getpgrp(), signal.SIGTERM)
+        if hasattr(os, "killpg") and os.getpgrp() == os.getpid():
+            os.killpg(os.getpgrp(), signal.SIGTERM)    # the compiler, in this build's group
         raise SystemExit(128 + signum)
 
     for sig in signals:
         signal.signal(sig, stop)
-    try:                 # idle processor time only: the run it overlaps goes first
-        os.nice(10)
-    except OSError:
-        pass
+    if hasattr(os, "nice"):   # idle processor time only: the run it overlaps goes first
+        try:
+            os.nice(10)
+        except OSError:
+            pass
     from ..compiler.cbackend import cache_dir
     marker = os.path.join(cache_dir(), _MARKER)
     for _ in range(2):
