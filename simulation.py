@@ -48,13 +48,18 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
         return model
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r} ({type(model).__name__})")
-    if backend in ("auto", "c"):
-        from .solvers.cbdf import build_in_background
-        build_in_background()
-    mc = compile_model(model, backend, cache=cache, check_units=check_units)
+    from .solvers.cbdf import build_if_long
+    # a long compile overlaps the build of the compiled step loop's library, if it was
+    # never built here; a short one leaves it to the end of the first run
+    with build_if_long(_LONG_COMPILE if backend in ("auto", "c") else None):
+        mc = compile_model(model, backend, cache=cache, check_units=check_units)
     _declare_units(mc, model)
     _exempt_from_collector()
     return CompiledModel(mc)
+
+
+_LONG_COMPILE = 2.0   # s: a compile still running then starts the step loop's build
+# (it takes about as long: a shorter compile would not find it built, only slowed)
 
 
 _exempted = False
@@ -153,6 +158,10 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
                     raise_on_failure, progress, step_loop)
     finally:
         compiled.p[:] = saved
+        if compiled.backend == "c":
+            # for the next runs: this one has not shared the processors with the build
+            from .solvers.cbdf import build_in_background
+            build_in_background()
 
 
 def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,

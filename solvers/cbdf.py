@@ -28,9 +28,10 @@ When it is used (``step_loop="auto"``): the problem is a compiled model on the C
 every step) or stability limit detection, and, with dynamic state selection, at most
 :data:`MAX_DENSE` unknowns (the sparse LU keeps one pattern, which a new choice of
 states changes), and the loop's library is built.  That library is built once per
-machine into the C backend's cache, in a process of its own that the first compile
-starts (:func:`build_in_background`): a run that starts before it is there takes the
-Python loop rather than wait (``step_loop="c"`` waits for it).  Up to
+machine into the C backend's cache, in a process of its own that the first run
+starts when it ends, or the first compile if it takes long (:func:`build_in_background`):
+a run that starts before the library is there takes the Python loop rather than wait
+(``step_loop="c"`` waits for it).  Up to
 :data:`MAX_DENSE` unknowns the C loop factors dense (``cbdf_lu.c``); above, sparse, on the
 model's fixed Jacobian pattern with the column order and pivot rows of one SuperLU
 analysis (``cbdf_sparse.c``, :mod:`~acausal.solvers.cbdf_sparse`).  ``step_loop="c"``
@@ -42,6 +43,7 @@ SuperLU's, so the iteration matrix's solutions differ in rounding.
 """
 from __future__ import annotations
 
+import contextlib
 import ctypes
 import os
 import subprocess
@@ -56,7 +58,8 @@ from . import cbdf_sparse as sparse_lu
 from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
 from .linalg import LinearSolver, singular_block
 
-__all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library"]
+__all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library",
+           "build_in_background", "build_if_long"]
 
 MAX_DENSE = 200          # largest system the compiled loop factors dense (above: sparse LU)
 STEP_LOOPS = ("auto", "c", "python")
@@ -85,6 +88,7 @@ _KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singu
 _lib = None
 _lock = threading.Lock()
 _builder = None          # the process started by build_in_background
+_spawning = threading.Lock()
 _MARKER = "cbdf-building"    # in the cache while a process builds the library
 _MARKER_AGE = 120.0      # s after which a marker is taken for that of a killed build
 _SOURCES = ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c")
@@ -152,15 +156,36 @@ def build_in_background() -> None:
     temporary directory and renames the result), so a build that is interrupted leaves
     no library rather than a broken one, and the next process starts it again.  While
     it runs, the cache holds a marker file, so concurrent processes start one build.
-    It runs at a lower priority (nice 10): on a busy machine the compile and run it
-    overlaps keep the processor."""
+    It runs at a lower priority (nice 10).  :func:`acausal.simulate` starts it after a
+    run, and :func:`acausal.compile` during a compile that takes longer than a small
+    model's (:func:`build_if_long`): a long compile then overlaps the build and finds
+    the library for its first run, while a small model's first run does not share the
+    processors with it."""
     global _builder
-    if _lib is not None or _builder is not None or library(cached_only=True) is not None:
-        return
-    from ..compiler.cbackend import cache_dir, compiler_available
-    if compiler_available() is None or _building(os.path.join(cache_dir(), _MARKER)):
-        return
-    _builder = _spawn_builder()
+    with _spawning:
+        if _lib is not None or _builder is not None or \
+                library(cached_only=True) is not None:
+            return
+        from ..compiler.cbackend import cache_dir, compiler_available
+        if compiler_available() is None or _building(os.path.join(cache_dir(), _MARKER)):
+            return
+        _builder = _spawn_builder()
+
+
+@contextlib.contextmanager
+def build_if_long(seconds: float | None):
+    """A block during which :func:`build_in_background` is called if the block is still
+    running after ``seconds`` (None: never)."""
+    timer = None
+    if seconds is not None and _lib is None and _builder is None:
+        timer = threading.Timer(seconds, build_in_background)
+        timer.daemon = True         # nothing started while it waits: no reason to wait
+        timer.start()
+    try:
+        yield
+    finally:
+        if timer is not None:
+            timer.cancel()
 
 
 def _spawn_builder():

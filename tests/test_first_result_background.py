@@ -1,8 +1,9 @@
 """The first run in a new process with an empty compile cache: what it waits for.
 
 The compiled step loop's library (``solvers/cbdf*.c``, about a second and a half of gcc)
-is built in a process of its own that the first compile starts: the first run takes the
-Python loop, the process ends without waiting, and the next process finds the library.
+is built in a process of its own that the first run starts when it ends (or a long
+compile while it runs): the first run takes the Python loop, the process ends without
+waiting, and the next process finds the library.
 A build that is interrupted leaves neither a library nor its temporary files, and the
 numpy backend's first run of a small model needs no scipy.linalg.  Every run is checked
 against the RC circuit's closed form v_C = V (1 - exp(-t/RC)); no time is asserted
@@ -99,12 +100,38 @@ def test_the_first_run_takes_the_python_loop_and_the_next_the_compiled_one(scrip
 
 
 @needs_cc
-def test_asking_for_the_compiled_loop_waits_for_its_build(script, tmp_path):
+def test_asking_for_the_compiled_loop_builds_it_or_waits_for_its_build(script, tmp_path):
     cache = tmp_path / "cache"
     found = _run(script, cache, backend="c", step_loop="c")
-    assert found["error"] < 1e-4
-    assert found["builder"] is not None and found["step_loop"] == "c"
-    assert not (cache / cbdf._MARKER).exists()       # the build had ended
+    assert found["error"] < 1e-4 and found["step_loop"] == "c"
+    # a build started in the background is waited for, not repeated
+    probe = ("from acausal.solvers import cbdf; import json; cbdf.build_in_background(); "
+             "pid = cbdf._builder.pid; lib = cbdf.library(); "
+             "print(json.dumps([pid, cbdf._builder.returncode, lib is not None]))")
+    env = dict(os.environ, ACAUSAL_CACHE=str(tmp_path / "other"))
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                         check=True, env=env, timeout=300).stdout
+    pid, returncode, loaded = json.loads(out.strip().splitlines()[-1])
+    assert pid is not None and returncode == 0 and loaded
+    assert not (tmp_path / "other" / cbdf._MARKER).exists()
+
+
+@needs_cc
+def test_a_long_compile_starts_the_build_and_a_short_one_does_not(tmp_path):
+    probe = """
+import json, time
+from acausal.solvers import cbdf
+with cbdf.build_if_long(30.0):
+    pass
+short = cbdf._builder
+with cbdf.build_if_long(0.01):
+    time.sleep(2.0)          # a compile far longer than the delay
+print(json.dumps([short is None, cbdf._builder is not None]))
+"""
+    env = dict(os.environ, ACAUSAL_CACHE=str(tmp_path / "cache"))
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                         check=True, env=env, timeout=300).stdout
+    assert json.loads(out.strip().splitlines()[-1]) == [True, True]
 
 
 @needs_cc
