@@ -70,7 +70,7 @@ def _exempt_from_collector() -> None:
     session), collect the garbage once and move what is left to the collector's
     permanent generation (``gc.freeze``).
 
-    Why: sympy's modules are some 10^5 objects that live as long as the process, and
+    Why: sympy's modules are some 65 000 objects that live as long as the process, and
     every full collection walks them -- above all the interpreter's at exit, which with
     sympy loaded took 0.1-0.2 s, as long as a small model's whole compile.  Frozen,
     they are no longer walked, and at exit they are left to the operating system
