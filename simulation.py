@@ -6,6 +6,7 @@ re-initialized) and shows progress in simulated time (``progress=``, a tqdm bar)
 """
 from __future__ import annotations
 
+import contextlib
 import math
 import sys
 import time as _clock
@@ -48,10 +49,13 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
         return model
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r} ({type(model).__name__})")
-    from .solvers.cbdf import build_if_long
-    # a long compile overlaps the build of the compiled step loop's library, if it was
-    # never built here; a short one leaves it to the end of the first run
-    with build_if_long(_LONG_COMPILE if backend in ("auto", "c") else None):
+    during = contextlib.nullcontext()
+    if backend in ("auto", "c"):
+        # a long compile overlaps the build of the compiled step loop's library, if it
+        # was never built here; a short one leaves it to the end of the first run
+        from .solvers.cbdf import build_if_long
+        during = build_if_long(_LONG_COMPILE)
+    with during:
         mc = compile_model(model, backend, cache=cache, check_units=check_units)
     _declare_units(mc, model)
     _exempt_from_collector()
