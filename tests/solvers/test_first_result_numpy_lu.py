@@ -2,13 +2,18 @@
 library is loaded (the first run of a model on the numpy backend): numpy row operations
 judge the pivots as LAPACK's factors are judged, and ``numpy.linalg.solve`` solves.
 Checked against LAPACK (numpy's solve on the unfactored matrix) and Higham's backward
-error bound, on the same cases as the compiled LU."""
+error bound, on the same cases as the compiled LU, and whole integrations on it against
+Radau and closed forms."""
 import numpy as np
 import pytest
 import scipy.linalg
+from scipy.integrate import solve_ivp
 
 from acausal.solvers import linalg
+from acausal.solvers.driver import integrate
 from acausal.solvers.linalg import NUMPY_LU_MAX, LinearSolver, SingularMatrixError
+
+from .problems import DampedOscillator, LinearIndex1, Robertson, VanDerPol
 
 _EPS = np.finfo(float).eps
 
@@ -21,8 +26,13 @@ class _NoScipy:
 
 @pytest.fixture
 def numpy_lu(monkeypatch):
+    """Counts the factorizations judged by the numpy LU."""
     monkeypatch.setattr(linalg, "sys", _NoScipy())
     monkeypatch.setattr(linalg, "_compiled_lu", lambda: None)
+    calls = []
+    judge = linalg._numpy_lu
+    monkeypatch.setattr(linalg, "_numpy_lu", lambda A: (calls.append(1), judge(A))[1])
+    return calls
 
 
 def test_pivots_are_lapacks(numpy_lu):
@@ -77,3 +87,34 @@ def test_a_singular_matrix_is_named_as_with_lapack(numpy_lu):
         LinearSolver(2).factor(np.array([[1.0, np.nan], [0.0, 1.0]]))
     with pytest.raises(SingularMatrixError):       # an exactly zero column
         LinearSolver(2).factor(np.array([[1.0, 0.0], [2.0, 0.0]]))
+
+
+@pytest.mark.parametrize("make, y0, t_end", [(lambda: VanDerPol(10.0), [2.0, 0.0], 3.0),
+                                             (Robertson, [1.0, 0.0, 0.0], 40.0)],
+                         ids=["vanderpol", "robertson"])
+def test_the_python_loop_on_the_numpy_lu_matches_radau(numpy_lu, make, y0, t_end):
+    # stiff problems: the iteration matrix is refactored often, and Robertson's rows
+    # span 10 orders of magnitude (its algebraic row is the conservation law)
+    p = make()
+    ref = solve_ivp(p.ode, (0, t_end), y0, method="Radau", rtol=1e-12, atol=1e-14,
+                    jac=p.ode_jac).y[:, -1]
+    out = integrate(make(), (0, t_end), y0, rtol=1e-10, atol=1e-12, step_loop="python")
+    assert out.success and len(numpy_lu) >= out.stats.lu_factorizations > 10
+    assert np.max(np.abs(out.y[-1] - ref)) / np.max(np.abs(ref)) < 1e-8
+
+
+def test_the_python_loop_on_the_numpy_lu_matches_closed_forms(numpy_lu):
+    t = np.linspace(0, 10, 201)
+    p = DampedOscillator()
+    out = integrate(p, (0, 10), [1.0, 0.0], rtol=1e-10, atol=1e-12, t_eval=t,
+                    step_loop="python")
+    x, v = p.exact(t)
+    assert np.max(np.abs(out.y[:, 0] - x)) < 1e-8 * np.max(np.abs(x))
+    assert np.max(np.abs(out.y[:, 1] - v)) < 1e-8 * np.max(np.abs(v))
+    q = LinearIndex1()
+    out = integrate(q, (0, 10), [1.0, 1.5], rtol=1e-10, atol=1e-12, t_eval=t,
+                    step_loop="python")
+    x, z = q.exact(t, 1.0)
+    assert np.max(np.abs(out.y[:, 0] - x)) < 1e-8 * np.max(np.abs(x))
+    assert np.max(np.abs(out.y[:, 1] - z)) < 1e-8 * np.max(np.abs(z))
+    assert numpy_lu
