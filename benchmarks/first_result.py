@@ -21,7 +21,7 @@ the rest: mostly the imports the compile makes, sympy's above all), simulate, an
 interpreter's teardown after the script's last statement (the time from the child's
 last clock reading to its exit as the parent sees it).  A cold run with the C backend
 starts the build of the compiled step loop's library in a process of its own
-(:func:`acausal.solvers.cbdf.build_in_background`) and does not wait for it; the
+(:func:`acausal.solvers.cbdf_build.build_in_background`) and does not wait for it; the
 benchmark waits for it before the next run (so that it does not compete with that run
 for the processors) and prints how long it went on after the run ended.  The children keep
 their compiled bytecode in a temporary directory, as an installed package has it
@@ -83,7 +83,7 @@ def main(backend, cache):
     t = _clock
     cached = any("compile cache" in n for n in compiled.report.notes)
     timings = {} if cached else compiled.report.timings
-    builder = sys.modules.get("acausal.solvers.cbdf")
+    builder = sys.modules.get("acausal.solvers.cbdf_build")
     print(json.dumps({"import": t[1] - t[0], "compile": t[2] - t[1], "simulate": t[3] - t[2],
                       "gcc": timings.get("c_backend", 0.0),
                       "passes": sum(v for k, v in timings.items() if k != "c_backend"),
@@ -194,7 +194,7 @@ def _rc(script: str, backend: str, env: dict, *flags: str) -> tuple:
 def _wait_for_build(cache: str, pid: int, timeout: float = 600.0) -> float:
     """Wait until the step loop's build in process ``pid`` has ended (its marker in the
     cache is gone); the seconds it took from now."""
-    from acausal.solvers.cbdf import _MARKER
+    from acausal.solvers.cbdf_build import _MARKER
     start = time.perf_counter()
     marker = os.path.join(cache, _MARKER)
     while time.perf_counter() - start < timeout:

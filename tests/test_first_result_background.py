@@ -21,7 +21,7 @@ import time
 import pytest
 
 from acausal.compiler.cbackend import compiler_available
-from acausal.solvers import cbdf
+from acausal.solvers import cbdf_build
 
 needs_cc = pytest.mark.skipif(compiler_available() is None, reason="no C compiler")
 
@@ -29,7 +29,7 @@ RC_SCRIPT = '''
 import json, math, sys
 import acausal as ac
 from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
-from acausal.solvers import cbdf
+from acausal.solvers import cbdf_build
 
 
 class RC(ac.Component):
@@ -48,7 +48,7 @@ res = ac.simulate(compiled, t_end=5.0e-3, rtol=1e-6, step_loop=sys.argv[2])
 exact = 1.0 - math.exp(-5.0)
 print(json.dumps({"error": abs(float(res["C1.v"][-1]) - exact) / exact,
                   "backend": compiled.backend, "step_loop": res.stats["step_loop"],
-                  "builder": getattr(cbdf._builder, "pid", None),
+                  "builder": getattr(cbdf_build._builder, "pid", None),
                   "scipy.linalg": "scipy.linalg" in sys.modules}))
 '''
 
@@ -93,7 +93,7 @@ def test_the_first_run_takes_the_python_loop_and_the_next_the_compiled_one(scrip
     assert first["backend"] == "c" and first["step_loop"] == "python"
     assert first["builder"] is not None and not first["scipy.linalg"]
     # the first process has ended; its build goes on, then leaves the library
-    _wait_gone(cache / cbdf._MARKER, first["builder"])
+    _wait_gone(cache / cbdf_build._MARKER, first["builder"])
     second = _run(script, cache)
     assert second["error"] < 1e-4
     assert second["step_loop"] == "c" and second["builder"] is None
@@ -105,28 +105,28 @@ def test_asking_for_the_compiled_loop_builds_it_or_waits_for_its_build(script, t
     found = _run(script, cache, backend="c", step_loop="c")
     assert found["error"] < 1e-4 and found["step_loop"] == "c"
     # a build started in the background is waited for, not repeated
-    probe = ("from acausal.solvers import cbdf; import json; cbdf.build_in_background(); "
-             "pid = cbdf._builder.pid; lib = cbdf.library(); "
-             "print(json.dumps([pid, cbdf._builder.returncode, lib is not None]))")
+    probe = ("from acausal.solvers import cbdf, cbdf_build as b; import json; "
+             "b.build_in_background(); pid = b._builder.pid; lib = cbdf.library(); "
+             "print(json.dumps([pid, b._builder.returncode, lib is not None]))")
     env = dict(os.environ, ACAUSAL_CACHE=str(tmp_path / "other"))
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
                          check=True, env=env, timeout=300).stdout
     pid, returncode, loaded = json.loads(out.strip().splitlines()[-1])
     assert pid is not None and returncode == 0 and loaded
-    assert not (tmp_path / "other" / cbdf._MARKER).exists()
+    assert not (tmp_path / "other" / cbdf_build._MARKER).exists()
 
 
 @needs_cc
 def test_a_long_compile_starts_the_build_and_a_short_one_does_not(tmp_path):
     probe = """
 import json, time
-from acausal.solvers import cbdf
-with cbdf.build_if_long(30.0):
+from acausal.solvers import cbdf_build
+with cbdf_build.build_if_long(30.0):
     pass
-short = cbdf._builder
-with cbdf.build_if_long(0.01):
+short = cbdf_build._builder
+with cbdf_build.build_if_long(0.01):
     time.sleep(2.0)          # a compile far longer than the delay
-print(json.dumps([short is None, cbdf._builder is not None]))
+print(json.dumps([short is None, cbdf_build._builder is not None]))
 """
     env = dict(os.environ, ACAUSAL_CACHE=str(tmp_path / "cache"))
     out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
@@ -139,8 +139,8 @@ def test_an_interrupted_build_leaves_nothing_and_the_next_one_works(tmp_path,
                                                                     monkeypatch):
     cache = tmp_path / "cache"
     monkeypatch.setenv("ACAUSAL_CACHE", str(cache))
-    proc = cbdf._spawn_builder()
-    marker = cache / cbdf._MARKER
+    proc = cbdf_build._spawn_builder()
+    marker = cache / cbdf_build._MARKER
     end = time.monotonic() + 120
     while not marker.exists() and proc.poll() is None and time.monotonic() < end:
         time.sleep(0.02)
@@ -160,7 +160,7 @@ def test_an_interrupted_build_leaves_nothing_and_the_next_one_works(tmp_path,
         return json.loads(out.strip().splitlines()[-1])
 
     assert not built()
-    proc = cbdf._spawn_builder()
+    proc = cbdf_build._spawn_builder()
     assert proc.wait(timeout=240) == 0
     assert not marker.exists()
     assert built()
