@@ -54,9 +54,9 @@ def build_in_background() -> None:
 def build_if_long(seconds: float | None):
     """A block during which :func:`build_in_background` is called if the block is still
     running after ``seconds`` (None: never)."""
-    from . import cbdf
+    from .cbdf import library
     timer = None
-    if seconds is not None and not cbdf._lib and _builder is None:
+    if seconds is not None and _builder is None and library(cached_only=True) is None:
         timer = threading.Timer(seconds, build_in_background)
         timer.daemon = True         # nothing started while it waits: no reason to wait
         timer.start()
