@@ -6,6 +6,7 @@ re-initialized) and shows progress in simulated time (``progress=``, a tqdm bar)
 """
 from __future__ import annotations
 
+import contextlib
 import math
 import sys
 import time as _clock
@@ -48,12 +49,49 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
         return model
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r} ({type(model).__name__})")
+    during = contextlib.nullcontext()
     if backend in ("auto", "c"):
-        from .solvers.cbdf import build_in_background
-        build_in_background()
-    mc = compile_model(model, backend, cache=cache, check_units=check_units)
+        # a long compile overlaps the build of the compiled step loop's library, if it
+        # was never built here; a short one leaves it to the end of the first run
+        from .solvers.cbdf import build_if_long
+        during = build_if_long(_LONG_COMPILE)
+    with during:
+        mc = compile_model(model, backend, cache=cache, check_units=check_units)
     _declare_units(mc, model)
+    _exempt_from_collector()
     return CompiledModel(mc)
+
+
+_LONG_COMPILE = 2.0   # s: a compile still running then starts the step loop's build
+# (it takes about as long: a shorter compile would not find it built, only slowed)
+
+
+_exempted = False
+
+
+def _exempt_from_collector() -> None:
+    """After the first compile that loaded sympy in a script (not an interactive
+    session), collect the garbage once and move what is left to the collector's
+    permanent generation (``gc.freeze``).
+
+    Why: sympy's modules are some 65 000 objects that live as long as the process, and
+    every full collection walks them -- above all the interpreter's at exit, which with
+    sympy loaded took 0.1-0.2 s, as long as a small model's whole compile.  Frozen,
+    they are no longer walked, and at exit they are left to the operating system
+    rather than taken apart one by one (Python does not promise to finalize what is
+    alive at exit).  The price: an object that was alive at that moment and becomes
+    garbage in a reference cycle later is not collected, so the exemption is made
+    once per process, after the collection, and not in an interactive session, where
+    the objects made before the first compile may be many and exit time does not
+    matter."""
+    global _exempted
+    if _exempted or "sympy" not in sys.modules or hasattr(sys, "ps1") \
+            or sys.flags.interactive or "IPython" in sys.modules:
+        return
+    _exempted = True
+    import gc
+    gc.collect()
+    gc.freeze()
 
 
 def _declare_units(mc, model) -> None:
@@ -124,6 +162,10 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
                     raise_on_failure, progress, step_loop)
     finally:
         compiled.p[:] = saved
+        if compiled.backend == "c":
+            # for the next runs: this one has not shared the processors with the build
+            from .solvers.cbdf import build_in_background
+            build_in_background()
 
 
 def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,

@@ -15,12 +15,21 @@ who runs a script), so what is timed includes every import the call needs:
 
 The runs are interleaved, ``--repeat`` times (default 3), and the medians printed, with
 the modules of sympy and scipy the warm run loaded; wall times on a shared machine are
-noisy, so the CPU time (user + system) of the child is printed too.  The children keep
+noisy, so the CPU time (user + system) of the child is printed too.  Each run is broken
+down into its import, compile (the passes, the C compiler for the model's library, and
+the rest: mostly the imports the compile makes, sympy's above all), simulate, and the
+interpreter's teardown after the script's last statement (the time from the child's
+last clock reading to its exit as the parent sees it).  A cold run with the C backend
+starts the build of the compiled step loop's library in a process of its own
+(:func:`acausal.solvers.cbdf_build.build_in_background`) and does not wait for it; the
+benchmark waits for it before the next run (so that it does not compete with that run
+for the processors) and prints how long it went on after the run ended.  The children keep
 their compiled bytecode in a temporary directory, as an installed package has it
 (``--source`` compiles the modules in every run instead, as an environment with
 PYTHONDONTWRITEBYTECODE does).  Then ``python -X importtime`` is run once on each script
-(warm cache, C backend when it works) and its ten most expensive modules (own time)
-printed, with the time spent in each top-level package.
+(warm cache, C backend when it works), and on a cold run of each backend, and its ten
+most expensive modules (own time) printed, with the time spent in each top-level
+package.
 
     python benchmarks/first_result.py [--repeat N] [--source]
 """
@@ -72,11 +81,19 @@ def main(backend, cache):
     counts = compiled.report.counts
     heavy = ("sympy", "sympy.physics.units", "scipy.sparse", "scipy.linalg", "scipy.optimize")
     t = _clock
+    cached = any("compile cache" in n for n in compiled.report.notes)
+    timings = {} if cached else compiled.report.timings
+    builder = sys.modules.get("acausal.solvers.cbdf_build")
     print(json.dumps({"import": t[1] - t[0], "compile": t[2] - t[1], "simulate": t[3] - t[2],
+                      "gcc": timings.get("c_backend", 0.0),
+                      "passes": sum(v for k, v in timings.items() if k != "c_backend"),
                       "equations": [counts["flatten"]["equations"],
                                     counts["alias"]["equations"]],
-                      "backend": compiled.backend,
-                      "loaded": [m for m in heavy if m in sys.modules]}))
+                      "backend": compiled.backend, "step_loop": res.stats["step_loop"],
+                      "builder": getattr(getattr(builder, "_builder", None), "pid", None),
+                      "module": ac.__file__,
+                      "loaded": [m for m in heavy if m in sys.modules],
+                      "end": time.time()}))
 
 
 main(*sys.argv[1:3])
@@ -95,6 +112,7 @@ def run_child(code: str, *flags: str, env: dict | None = None, file: bool = Fals
     proc = subprocess.run([sys.executable, *flags, *source, *args], capture_output=True,
                           text=True, env=env if env is not None else environment())
     wall = time.perf_counter() - start
+    run_child.ended = time.time()         # when the child had exited, for its teardown
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if proc.returncode != 0:
         raise RuntimeError(f"child failed ({proc.returncode}):\n{proc.stderr}")
@@ -161,8 +179,32 @@ def main(argv=None) -> None:
 
 
 def _rc(script: str, backend: str, env: dict, *flags: str) -> tuple:
+    """One run of the RC script: (wall s, cpu s, the child's phases, its stderr); the
+    phases get ``teardown`` and, when the run started the build of the step loop's
+    library, ``background``: how long that build went on after the run ended (it is
+    waited for here, so that it does not share the processors with the next run)."""
     wall, cpu, out, err = run_child(script, *flags, env=env, file=True, args=(backend, "tree"))
-    return wall, cpu, json.loads(out.strip().splitlines()[-1]), err
+    phases = json.loads(out.strip().splitlines()[-1])
+    phases["teardown"] = run_child.ended - phases["end"]
+    if phases["builder"] is not None:
+        phases["background"] = _wait_for_build(env["ACAUSAL_CACHE"], phases["builder"])
+    return wall, cpu, phases, err
+
+
+def _wait_for_build(cache: str, pid: int, timeout: float = 600.0) -> float:
+    """Wait until the step loop's build in process ``pid`` has ended (its marker in the
+    cache is gone); the seconds it took from now."""
+    from acausal.solvers.cbdf_build import _MARKER
+    start = time.perf_counter()
+    marker = os.path.join(cache, _MARKER)
+    while time.perf_counter() - start < timeout:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            if not os.path.exists(marker):
+                break
+        time.sleep(0.01)
+    return time.perf_counter() - start
 
 
 def _report(repeat: int, env: dict, script: str, cache: str, mode: str) -> None:
@@ -183,14 +225,27 @@ def _report(repeat: int, env: dict, script: str, cache: str, mode: str) -> None:
     print(f"  import acausal                      wall {median(w for w, _ in imports):.3f} s"
           f"   cpu {median(c for _, c in imports):.3f} s")
     first = runs["numpy", "cold"][0][2]
+    print(f"  acausal from {os.path.dirname(first['module'])}")
     print(f"  RC circuit ({first['equations'][0]} equations after flattening, "
-          f"{first['equations'][1]} after alias elimination), import + compile + simulate:")
+          f"{first['equations'][1]} after alias elimination), import + compile + simulate "
+          "+ teardown:")
     for (backend, state), rows in runs.items():
         phases = [r[2] for r in rows]
+        m = {k: median(p[k] for p in phases) for k in
+             ("import", "compile", "simulate", "teardown", "passes", "gcc")}
         print(f"    {backend:<5} {state} cache   wall {median(r[0] for r in rows):.3f} s"
               f"   cpu {median(r[1] for r in rows):.3f} s   (inside: " + ", ".join(
-                  f"{k} {median(p[k] for p in phases):.3f}" for k in
-                  ("import", "compile", "simulate")) + f"; backend {phases[-1]['backend']})")
+                  f"{k} {m[k]:.3f}" for k in ("import", "compile", "simulate"))
+              + f"; teardown {m['teardown']:.3f}; backend {phases[-1]['backend']}, step "
+              f"loop {phases[-1]['step_loop']})")
+        if state == "cold":
+            rest = m["compile"] - m["passes"] - m["gcc"]
+            print(f"      compile: passes {m['passes']:.3f}, C compiler for the model "
+                  f"{m['gcc']:.3f}, the rest (imports: sympy, the compiler) {rest:.3f}")
+            built = [p["background"] for p in phases if "background" in p]
+            if built:
+                print(f"      the step loop's library was built in the background, done "
+                      f"{median(built):.3f} s after the run ended (not waited for)")
         if state == "warm":
             loaded = ", ".join(phases[-1]["loaded"]) or "none of them"
             print(f"      sympy, sympy.physics.units, scipy.sparse/linalg/optimize loaded: "
@@ -198,9 +253,14 @@ def _report(repeat: int, env: dict, script: str, cache: str, mode: str) -> None:
 
     _, _, _, err = run_child(IMPORT_SCRIPT, "-X", "importtime", env=env)
     _print_import_profile("python -X importtime -c 'import acausal'", import_times(err))
+    for backend in ("numpy", "c"):
+        cold = {**env, "ACAUSAL_CACHE": os.path.join(cache, f"importtime-{backend}")}
+        _, _, _, err = _rc(script, backend, cold, "-X", "importtime")
+        _print_import_profile(f"python -X importtime (RC, {backend}, cold cache: import, "
+                              "compile, simulate)", import_times(err))
     warm = {**env, "ACAUSAL_CACHE": os.path.join(cache, "models-c-0")}
     _, _, _, err = _rc(script, "c", warm, "-X", "importtime")
-    _print_import_profile("python -X importtime (RC, warm cache: import, compile, simulate)",
+    _print_import_profile("python -X importtime (RC, c, warm cache: import, compile, simulate)",
                           import_times(err))
 
 

@@ -27,8 +27,11 @@ When it is used (``step_loop="auto"``): the problem is a compiled model on the C
 (so its functions are C), without ``delay()`` (whose history is kept in Python after
 every step) or stability limit detection, and, with dynamic state selection, at most
 :data:`MAX_DENSE` unknowns (the sparse LU keeps one pattern, which a new choice of
-states changes).  The loop's library is built once per machine into the C backend's
-cache (:func:`build_in_background` starts it during the first compile).  Up to
+states changes), and the loop's library is built.  That library is built once per
+machine into the C backend's cache, in a process of its own that the first run
+starts when it ends, or the first compile if it takes long (:func:`build_in_background`):
+a run that starts before the library is there takes the Python loop rather than wait
+(``step_loop="c"`` waits for it).  Up to
 :data:`MAX_DENSE` unknowns the C loop factors dense (``cbdf_lu.c``); above, sparse, on the
 model's fixed Jacobian pattern with the column order and pivot rows of one SuperLU
 analysis (``cbdf_sparse.c``, :mod:`~acausal.solvers.cbdf_sparse`).  ``step_loop="c"``
@@ -49,9 +52,12 @@ import numpy as np
 from ..errors import BackendError
 from . import cbdf_sparse as sparse_lu
 from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
+from . import cbdf_build
+from .cbdf_build import build_if_long, build_in_background
 from .linalg import LinearSolver, singular_block
 
-__all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library"]
+__all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library",
+           "build_in_background", "build_if_long"]
 
 MAX_DENSE = 200          # largest system the compiled loop factors dense (above: sparse LU)
 STEP_LOOPS = ("auto", "c", "python")
@@ -79,13 +85,14 @@ _KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singu
 
 _lib = None
 _lock = threading.Lock()
-_builder = None          # the thread of build_in_background
+_SOURCES = ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c")
+_text = None
 
 
 def library(cached_only: bool = False):
     """The compiled step loop (built once into the C backend's cache), or None when no
-    C compiler works (with ``cached_only``: also when it is not built yet, or being
-    built by :func:`build_in_background`)."""
+    C compiler works (with ``cached_only``: also when it is not built yet).  Without
+    ``cached_only`` a build that :func:`build_in_background` started is waited for."""
     if _lib is None:
         if not _lock.acquire(blocking=not cached_only):
             return None
@@ -97,16 +104,29 @@ def library(cached_only: bool = False):
     return _lib or None
 
 
+def _source() -> str:
+    global _text
+    if _text is None:       # read once: a run asks for the library more than once
+        here = os.path.dirname(__file__)
+        parts = []
+        for name in _SOURCES:
+            with open(os.path.join(here, name)) as f:
+                parts.append(f.read() + "\n")
+        _text = "".join(parts)
+    return _text
+
+
 def _load(cached_only: bool) -> None:
     global _lib
     from ..compiler.cbackend import build
-    here = os.path.dirname(__file__)
     try:
-        source = ""
-        for name in ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c"):
-            with open(os.path.join(here, name)) as f:
-                source += f.read() + "\n"
-        path = build(source, cached_only=cached_only)
+        source = _source()
+        path = build(source, cached_only=True)
+        if path is None and not cached_only:
+            builder = cbdf_build._builder
+            if builder is not None:
+                builder.wait()       # its library, or its failure, then ours
+            path = build(source)
         if path is None:
             return
         lib = ctypes.CDLL(path)
@@ -117,21 +137,6 @@ def _load(cached_only: bool) -> None:
     lib.cbdf_run.restype = ctypes.c_int
     sparse_lu.bind(lib)
     _lib = lib
-
-
-def build_in_background() -> None:
-    """Start building the step loop's library in a thread, unless it is built or no C
-    compiler works.  Why: on a machine where it was never built, compiling it (about a
-    second of gcc) would otherwise come after the model's own C, at the first
-    simulate; in a thread it overlaps the model's compile (the compiler runs in its own
-    process, so the thread holds no lock that the compile needs)."""
-    global _builder
-    if _lib is not None or _builder is not None or library(cached_only=True) is not None:
-        return
-    from ..compiler.cbackend import compiler_available
-    if _lib is None and compiler_available() is not None:
-        _builder = threading.Thread(target=library, name="acausal-cbdf-build")
-        _builder.start()
 
 
 def _compiled_model(problem) -> bool:
@@ -170,7 +175,9 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         why = ("its after_step hook runs in Python after every step (a compiled model "
                "needs backend='c')")
     if step_loop == "auto":
-        return 0 if model and why is None and library() is not None else None
+        # a library still being built is not waited for: this run takes the Python loop
+        return 0 if model and why is None and library(cached_only=True) is not None \
+            else None
     if why is not None:
         raise ValueError(f"step_loop='c' is not available for this problem: {why}")
     if library() is None:

@@ -10,7 +10,12 @@ chosen automatically from what the problem supplies:
   scipy.linalg is not loaded yet and the compiled step loop's library is already built
   (:mod:`.cbdf`), its LU (``cbdf_lu.c``, partial pivoting, the same pivot test and
   equilibration) instead, since importing scipy.linalg takes 0.2-0.4 s, longer than a
-  small model's whole run from a warm cache;
+  small model's whole run from a warm cache; when neither is there (the numpy backend,
+  or the step loop's library still being built) and the system has at most
+  :data:`NUMPY_LU_MAX` unknowns, a factorization is judged by an LU of numpy row
+  operations (the same partial pivoting and pivot test) and solves call
+  ``numpy.linalg.solve`` (LAPACK's ``gesv``) on the matrix judged, so that the first
+  run of a small model never waits for scipy.linalg;
 * sparse LU (SuperLU through :func:`scipy.sparse.linalg.splu`) when the problem gives a
   ``jac_pattern`` or returns a scipy.sparse matrix and ``n`` exceeds
   :data:`SPARSE_THRESHOLD`.  The iteration matrix keeps its pattern from one
@@ -51,11 +56,15 @@ import sys
 
 import numpy as np
 
-__all__ = ["SPARSE_THRESHOLD", "LinearSolver", "SingularMatrixError", "singular_block",
-           "make_linear_solver", "equilibrate"]
+__all__ = ["SPARSE_THRESHOLD", "NUMPY_LU_MAX", "LinearSolver", "SingularMatrixError",
+           "singular_block", "make_linear_solver", "equilibrate"]
 
 #: Systems larger than this use sparse LU when the problem offers sparsity.
 SPARSE_THRESHOLD = 60
+#: Dense systems up to this size are factored without scipy.linalg when it is not loaded
+#: (and the compiled LU is not built): a factorization costs about n numpy calls, a few
+#: microseconds each, against 0.2-0.4 s for the import.
+NUMPY_LU_MAX = 16
 
 # A pivot of the equilibrated matrix this small relative to the largest one is treated
 # as zero: below it, LU solutions carry no correct digits and a Newton step built on
@@ -218,6 +227,7 @@ class LinearSolver:
         self._clu = None             # the compiled refactorization on that analysis
         self._dlu = None             # the compiled step loop's library, for a dense LU
         self._in_c = False           # whether the last factorization is the compiled one
+        self._numpy = False          # dense, judged by _numpy_lu and solved by numpy
 
     def dense_decided(self) -> bool:
         """Whether the factorization is dense whatever form the matrix comes in."""
@@ -231,7 +241,9 @@ class LinearSolver:
         if not self.sparse:
             self._dlu = _compiled_lu()
             if self._dlu is None:
-                self._lapack()
+                self._numpy = "scipy.linalg" not in sys.modules and self.n <= NUMPY_LU_MAX
+                if not self._numpy:
+                    self._lapack()
 
     def _lapack(self) -> None:
         from scipy.linalg import get_lapack_funcs    # only a dense factorization needs it
@@ -240,7 +252,7 @@ class LinearSolver:
     def factor(self, J) -> None:
         """LU-factor ``J``; raise :class:`SingularMatrixError` if it is singular."""
         if self.sparse is None or (not self.sparse and self._getrf is None
-                                   and self._dlu is None):
+                                   and self._dlu is None and not self._numpy):
             self._decide(J)
         if self.sparse:
             self._factor_sparse(J)
@@ -257,6 +269,9 @@ class LinearSolver:
                 return
             self._lapack()        # singular: LAPACK's path, for its diagnostics
         self._in_c = False
+        if self._numpy:
+            self._factor_numpy(A, J)
+            return
         lu, piv, info = self._getrf(np.array(A, order="F"), overwrite_a=True)
         if info == 0 and _pivots_ok(np.diagonal(lu)):
             self._lu, self._piv, self._r = lu, piv, None
@@ -282,6 +297,20 @@ class LinearSolver:
         self._lu, self._piv, self._in_c = lu, piv, True
         self._r, self._c = (r, c) if equil.value else (None, None)
         return True
+
+    def _factor_numpy(self, A: np.ndarray, J) -> None:
+        """Judge ``A`` by :func:`_numpy_lu` as :meth:`_factor_dense` judges LAPACK's
+        factors, and keep the matrix judged (``A`` or its equilibrated form) for
+        ``numpy.linalg.solve``."""
+        self._c = None
+        if _pivots_ok(_numpy_lu(A)):
+            self._lu, self._r = np.array(A), None
+            return
+        r, c = equilibrate(A)
+        B = A * r[:, None] * c
+        if not _pivots_ok(_numpy_lu(B)):
+            raise SingularMatrixError("iteration matrix is singular", matrix=J)
+        self._lu, self._r, self._c = B, r, c
 
     def _factor_sparse(self, J) -> None:
         import scipy.sparse as sp
@@ -354,6 +383,10 @@ class LinearSolver:
                                   None if r is None else self._c.ctypes.data, self.n,
                                   x.ctypes.data)
             return x
+        if self._numpy:
+            if r is None:
+                return np.linalg.solve(self._lu, b)
+            return self._c * np.linalg.solve(self._lu, r * b)
         if r is None:
             return self._getrs(self._lu, self._piv, b)[0]
         x, _ = self._getrs(self._lu, self._piv, r * b, overwrite_b=True)
@@ -369,6 +402,25 @@ def _same_pattern(A, indptr, indices) -> bool:
 def _pivots_ok(diag) -> bool:
     d = np.abs(diag)
     return bool(d.size) and d.min() > _PIVOT_RTOL * d.max()
+
+
+def _numpy_lu(A: np.ndarray) -> np.ndarray:
+    """The pivots (diagonal of U) of the LU of ``A`` with partial pivoting, by numpy
+    row operations (the algorithm of LAPACK's ``getf2`` and of ``cbdf_lu.c``, for small
+    matrices); zeros from the first exactly zero pivot on."""
+    U = np.array(A, dtype=float)
+    n = len(U)
+    pivots = np.zeros(n)
+    for k in range(n):
+        p = k + int(np.argmax(np.abs(U[k:, k])))
+        if p != k:
+            U[[k, p], k:] = U[[p, k], k:]
+        d = pivots[k] = U[k, k]
+        if d == 0.0:
+            break
+        m = U[k + 1:, k] * (1.0 / d)
+        U[k + 1:, k + 1:] -= np.outer(m, U[k, k + 1:])
+    return pivots
 
 
 def _splu(A):

@@ -1,0 +1,79 @@
+"""The first compile that loads sympy exempts what is alive from the cyclic collector
+(``gc.freeze``), once, in a script: sympy's objects are then neither walked by later
+collections nor taken apart at exit.  What was garbage is collected first, garbage made
+later is still collected, an interactive session is left alone, and the run is still
+right (the RC circuit's v_C = V (1 - exp(-t/RC))).  No time is asserted."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+SCRIPT = '''
+import gc, json, math, sys, weakref
+import acausal as ac
+from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
+
+
+class RC(ac.Component):
+    src = StepVoltage(V=1.0)
+    R1 = Resistor(R=1.0e3)
+    C1 = Capacitor(C=1.0e-6)
+    gnd = Ground()
+
+    def equations(self):
+        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
+                ac.connect(self.C1.n, self.src.n, self.gnd.p)]
+
+
+class Node:
+    pass
+
+
+def cycle():
+    a, b = Node(), Node()
+    a.other, b.other = b, a
+    return weakref.ref(a)
+
+
+freezes = []
+_freeze = gc.freeze
+gc.freeze = lambda: (freezes.append(1), _freeze())[1]
+gc.disable()                 # nothing but an explicit collection frees a cycle
+before = cycle()             # garbage when the compile starts
+compiled = ac.compile(RC(), backend="numpy", cache=False)
+frozen = gc.get_freeze_count()
+after = cycle()              # garbage made after the exemption
+gc.collect()
+compiled2 = ac.compile(RC(), backend="numpy", cache=False)
+res = ac.simulate(compiled, t_end=5.0e-3, rtol=1e-6)
+exact = 1.0 - math.exp(-5.0)
+print(json.dumps({"frozen": frozen, "freezes": len(freezes),
+                  "before_collected": before() is None, "after_collected": after() is None,
+                  "error": abs(float(res["C1.v"][-1]) - exact) / exact}))
+'''
+
+
+def _run(tmp_path, *flags) -> dict:
+    path = tmp_path / "collector.py"
+    path.write_text(SCRIPT)
+    env = dict(os.environ, ACAUSAL_CACHE=str(tmp_path / "cache"))
+    out = subprocess.run([sys.executable, *flags, str(path)], capture_output=True, text=True,
+                         check=True, env=env, stdin=subprocess.DEVNULL, timeout=300).stdout
+    return json.loads([ln for ln in out.splitlines() if ln.startswith("{")][-1])
+
+
+def test_a_script_freezes_once_after_collecting(tmp_path):
+    found = _run(tmp_path)
+    assert found["error"] < 1e-4
+    assert found["frozen"] > 10_000                      # sympy's modules, at least
+    assert found["freezes"] == 1                         # once: not by the second compile
+    assert found["before_collected"] and found["after_collected"]
+
+
+def test_an_interactive_session_is_left_alone(tmp_path):
+    found = _run(tmp_path, "-i")
+    assert found["error"] < 1e-4
+    assert found["frozen"] == 0 and found["freezes"] == 0
+    assert found["after_collected"]
