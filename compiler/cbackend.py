@@ -77,7 +77,9 @@ def c_source(programs: dict) -> tuple[str, dict]:
              "const double *p, const double *m, double *out, double *w", "#define PASS t, y, p, m, out, w", ""]
     sizes, functions = {}, []
     for prefix, prog in programs.items():
-        specs, n_work = _c_program(prefix, prog)
+        # the model's own functions, when large: one loop per group (compiler/cloops.py)
+        looped = _looped(prefix, prog) if prefix == "f_" else None
+        specs, n_work = looped or _c_program(prefix, prog)
         functions += specs
         sizes[prefix] = n_work
     # the pieces' size follows the optimization the source will be compiled with
@@ -87,6 +89,11 @@ def c_source(programs: dict) -> tuple[str, dict]:
     piece = PIECE if n_chars <= LARGE else PIECE_LARGE
     parts += [_c_function(*spec, piece=piece) for spec in functions]
     return "\n".join(parts) + "\n", sizes
+
+
+def _looped(prefix, prog):
+    from .cloops import looped_program
+    return looped_program(prefix, prog)
 
 
 def _c_program(prefix, prog) -> tuple[list, int]:

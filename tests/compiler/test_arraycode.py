@@ -1,5 +1,5 @@
-"""The numpy backend's array code (acausal.compiler.arraycode) computes what the scalar
-code computes.
+"""The numpy backend's array code (acausal.compiler.arraycode) and the C backend's
+looped code (acausal.compiler.cloops) compute what the scalar code computes.
 
 Reference: the scalar functions of the same program (one Python statement per value,
 the functions the C backend is tested against).  Every function of the array module is
@@ -14,6 +14,7 @@ import pytest
 
 import acausal as ac
 from acausal.compiler.arraycode import MIN_STATEMENTS, array_source
+from acausal.compiler.cbackend import compiler_available
 from acausal.compiler.lazycode import ArrayFunction, GeneratedModule
 from acausal.library import electrical as el
 from acausal.library.electromechanical.examples.sampled_speed_control import SampledSpeedLoop
@@ -34,11 +35,12 @@ def _sizes(prog):
     return kinds.count("y"), kinds.count("p"), n_m
 
 
-def _compare(code, p_values, rng, points=5):
+def _compare(code, p_values, rng, points=5, arrays=None):
     prog = code.program
-    made = array_source(prog, small=True)
-    assert made is not None, "every operator of these models has an array form"
-    arrays = GeneratedModule(made[0], filename="<test arrays>").namespace()
+    if arrays is None:
+        made = array_source(prog, small=True)
+        assert made is not None, "every operator of these models has an array form"
+        arrays = GeneratedModule(made[0], filename="<test arrays>").namespace()
     n_y, n_p, n_m = _sizes(prog)
     sizes = {"residual": code.n_rows, "jacobian": len(code.jac_rows), "roots": code.n_roots}
     for name in ("residual", "jacobian", "roots", "scales", "expand"):
@@ -67,6 +69,18 @@ def _compare(code, p_values, rng, points=5):
 def test_array_functions_equal_the_scalar_functions(cls):
     compiled = ac.compile(cls(), backend="numpy", cache=False)
     _compare(compiled.code, compiled.p, np.random.default_rng(7))
+
+
+@pytest.mark.skipif(not compiler_available(), reason="no C compiler")
+@pytest.mark.parametrize("cls", MODELS, ids=lambda c: c.__name__)
+def test_looped_c_functions_equal_the_scalar_functions(cls, monkeypatch):
+    monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
+    compiled = ac.compile(cls(), backend="c", cache=False)
+    code = compiled.code
+    assert "for (int i = 0;" in code.c_source
+    c_functions = {name: getattr(code, name) for name in
+                   ("residual", "jacobian", "roots", "scales", "expand")}
+    _compare(code, compiled.p, np.random.default_rng(11), arrays=c_functions)
 
 
 R, L, C = 1.0, 1e-3, 1e-3
@@ -190,3 +204,19 @@ def test_every_function_of_the_printer_has_its_numpy_form():
         want = [ref(a, b) if f is sp.atan2 else ref(b if f is sp.acosh else a)
                 for a, b in zip(xs, ys)]
         assert np.allclose(got, want, rtol=1e-12, atol=0.0), name
+
+
+@pytest.mark.skipif(not compiler_available(), reason="no C compiler")
+def test_a_ladder_runs_on_looped_c(monkeypatch):
+    """The compiled step loop calling looped C functions, against the exact solution."""
+    monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
+    n = 60
+    compiled = ac.compile(Ladder(n), backend="c", cache=False)
+    assert "for (int i = 0;" in compiled.code.c_source
+    t = np.linspace(0.0, 5e-3, 6)
+    res = ac.simulate(compiled, t_end=t[-1], rtol=1e-8, t_eval=t)
+    assert res.success, res.message
+    x = _exact(n, t)
+    for k in (0, 1, n - 1):
+        assert np.max(np.abs(res[f"L[{k}].i"] - x[:, k])) <= 1e-5 * np.max(np.abs(x[:, 0]))
+        assert np.max(np.abs(res[f"C[{k}].v"] - x[:, n + k])) <= 1e-5 * np.max(np.abs(x[:, n]))
