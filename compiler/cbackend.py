@@ -77,8 +77,8 @@ def c_source(programs: dict) -> tuple[str, dict]:
              "const double *p, const double *m, double *out, double *w", "#define PASS t, y, p, m, out, w", ""]
     sizes, functions = {}, []
     for prefix, prog in programs.items():
-        # the model's own functions, when large: one loop per group (compiler/cloops.py)
-        looped = _looped(prefix, prog) if prefix == "f_" else None
+        # a large program's functions: one loop per group (compiler/cloops.py)
+        looped = _looped(prefix, prog)
         specs, n_work = looped or _c_program(prefix, prog)
         functions += specs
         sizes[prefix] = n_work

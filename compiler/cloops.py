@@ -34,6 +34,8 @@ from .emit import Emitter
 
 __all__ = ["looped_program", "MIN_STATEMENTS"]
 
+FUNCTIONS = ("residual", "jacobian", "roots", "scales", "expand")
+
 #: below this many residual statements the straight-line C compiles fast enough
 MIN_STATEMENTS = 2000
 
@@ -41,9 +43,10 @@ MIN_STATEMENTS = 2000
 def looped_program(prefix, prog) -> tuple[list, int] | None:
     """The functions of a Program as ``(name, statements, calls, n_out)`` specs for
     :func:`acausal.compiler.cbackend._c_function`, and the size of the work array; None
-    when the straight-line C is kept."""
+    when the straight-line C is kept (also for a program with other functions than
+    those of a model's or its initial equations' code)."""
     mode = os.environ.get("ACAUSAL_ARRAY_CODE", "auto")
-    if mode == "never":
+    if mode == "never" or not set(prog.functions) <= set(FUNCTIONS):
         return None
     n_y = sum(1 for w in prog.refs.values() if w[0] == "y")
     n_p = sum(1 for w in prog.refs.values() if w[0] == "p")
@@ -60,7 +63,7 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
     specs, n_work, assigned = [], n_in, {}
     _NUMBERS.clear()
     try:
-        for name in ("residual", "jacobian", "roots", "scales", "expand"):
+        for name in FUNCTIONS:
             if name not in prog.functions and name != "jacobian":
                 continue
             statements = _statements(prog, name, assigned)
