@@ -23,6 +23,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..components.component import Component
+from .gcpause import collect_after_pause
 from .graph import UNASSIGNED
 from .modelcode import DelayCode, DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
 from .report import EquationNames, IndexReport, mode_structures
@@ -69,6 +70,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
         if symbolic is not None:     # what it keeps of this model's expressions
             symbolic.forget_expressions()
         if collecting:
+            collect_after_pause()
             _gc.enable()
 
 
