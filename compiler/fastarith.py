@@ -7,9 +7,9 @@ sympy's general machinery: ``Add``/``Mul`` with its cache look-up, ``flatten`` a
 sort by ``Basic.compare``, 15-50 us a time, a third of flattening a large model.  For
 two commutative symbols of different names the result is known: the sum or product
 of the two (the second negated, ``Mul(-1, y)``, for a difference), in sympy's order
-(:func:`~acausal.compiler.fastsubs.sort_args`); so is a symbol times ``der(...)``.  :func:`symbol_arithmetic` installs
-these as ``Symbol``'s own ``__add__``/``__sub__``/``__mul__`` for the duration of a
-``with`` block; any other operand (a number, an expression, a symbol of the same name,
+(:func:`~acausal.compiler.fastsubs.sort_args`); so is a symbol times ``der(...)``.
+:func:`symbol_arithmetic` installs these as ``Symbol``'s own ``__add__``/``__sub__``/
+``__mul__`` for the duration of a ``with`` block; any other operand (a number, an expression, a symbol of the same name,
 a non-commutative one), sympy's ``evaluate(False)``, or a constructor postprocessor
 registered for these classes takes sympy's own method, so every result is the
 expression sympy builds.  ``ACAUSAL_CHECK_FASTSUBS=1`` compares each result with it.

@@ -12,8 +12,9 @@ NAMES = ["a", "b", "a.b", "a_b", "A", "R1.p.v", "R10.n.i", "x[1]", "x[10]", "Z",
 
 
 def _operands(rng):
-    syms = [sp.Symbol(n, real=True) for n in NAMES] + [sp.Symbol("q"), sp.Symbol("a"),
-                                                       sp.Dummy("d"), sp.Symbol("nc", commutative=False)]
+    syms = [sp.Symbol(n, real=True) for n in NAMES]
+    syms += [sp.Symbol("q"), sp.Symbol("a"), sp.Dummy("d"),
+             sp.Symbol("nc", commutative=False)]
     pool = syms + [der(syms[0]), der(syms[3] - syms[4]), sp.Integer(2), sp.Float(1.5),
                    syms[1] + syms[2], -syms[5]]
     return rng.choice(syms), rng.choice(pool)
