@@ -85,8 +85,13 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
                 not a.fixed, order[s])
 
     # Removing an alias can make a neighbouring equation trivial (a node's current sum
-    # that collapses to gnd.p.i = 0), so equations sharing a variable with a removed one
-    # are substituted and classified again: a worklist, linear in the incidence.
+    # that collapses to gnd.p.i = 0), so the equations of a variable whose representative
+    # or value a removal changed are substituted and classified again: a worklist.
+    # Invariant: an equation is rewritten in the round in which one of its variables
+    # stops being a representative, so by_symbol[r] holds every live equation that reads
+    # a variable of r's set; touching only the changed variables' equations (not every
+    # equation sharing a variable with the removed one: the N + 1 equalities of a node
+    # of N + 2 ports share one) keeps the worklist linear in the incidence.
     eqs = list(flat.equations)
     alive = [True] * len(eqs)
     by_symbol = {}
@@ -94,14 +99,18 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         for q in symbols_of(eq.residual):
             by_symbol.setdefault(q, set()).add(i)
     queue = set(range(len(eqs)))
+    none = frozenset()
     while queue:
         touched = set()
         for i in sorted(queue):
-            if alive[i] and _classify(eqs[i], info, find, rank, parent, constants, params):
+            if not alive[i]:
+                continue
+            changed = _classify(eqs[i], info, find, rank, parent, constants, params)
+            if changed is not None:
                 alive[i] = False
                 removed.append(eqs[i])
-                for q in symbols_of(eqs[i].residual):
-                    touched |= by_symbol.get(q, set())
+                for q in changed:
+                    touched |= by_symbol.get(q, none)
         queue = set()
         for j in touched:
             if not alive[j]:
@@ -116,15 +125,19 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     kept = [eq for eq, a in zip(eqs, alive) if a]
 
     _check_fixed_constants(flat, find, constants)
+    # the union-find is final: every variable's (sign, representative), once, in order
+    resolved = [(sign, syms[k]) for sign, k in map(find_k, range(len(syms)))]
     table = AliasTable(equations_before=len(flat.equations), removed=removed)
-    subs = _substitutions(flat, find, constants)
-    for v in flat.variables:
-        sign, root = find(v.symbol)
+    subs = {}
+    signs = {1: sp.Integer(1), -1: sp.Integer(-1)}
+    for v, (sign, root) in zip(flat.variables, resolved):
         if root in constants:
-            table.constants[v.name] = _signed(sign, constants[root])
+            subs[v.symbol] = value = _signed(sign, constants[root])
+            table.constants[v.name] = value
         elif root is not v.symbol:
-            table.aliases[v.name] = (sp.Integer(sign), root.name)
-    return _rebuild(flat, kept, subs, table, find, constants), table
+            subs[v.symbol] = _signed(sign, root)
+            table.aliases[v.name] = (signs[sign], root.name)
+    return _rebuild(flat, kept, subs, table, find, constants, resolved), table
 
 
 class _Parents:
@@ -144,8 +157,10 @@ def _check_fixed_constants(flat, find, constants) -> None:
     """A variable with a fixed start value that an equation fixes to another constant is a
     contradiction (Modelica: an over-specified initial problem); say so by name."""
     for v in flat.variables:
+        if not v.attrs.fixed or v.attrs.start is None:
+            continue
         sign, root = find(v.symbol)
-        if not v.attrs.fixed or v.attrs.start is None or root not in constants:
+        if root not in constants:
             continue
         value = _signed(sign, constants[root])
         if value.is_number and abs(float(value) - v.attrs.start) > 1e-12 * (1 + abs(v.attrs.start)):
@@ -188,33 +203,24 @@ def _with_residual(eq, residual):
     return out
 
 
-def _substitutions(flat, find, constants) -> dict:
-    subs = {}
-    for v in flat.variables:
-        sign, root = find(v.symbol)
-        if root in constants:
-            subs[v.symbol] = _signed(sign, constants[root])
-        elif root is not v.symbol:
-            subs[v.symbol] = _signed(sign, root)
-    return subs
-
-
-def _classify(eq, info, find, rank, parent, constants, params=frozenset()) -> bool:
-    """Record eq in the union-find if it is trivial; True when it was removed."""
+def _classify(eq, info, find, rank, parent, constants, params=frozenset()):
+    """Record eq in the union-find if it is trivial.  None when it is kept; when it was
+    removed, the representatives whose resolution it changed (a set that now has a new
+    representative, or a constant value)."""
     pattern = _alias_pattern(eq.residual, info, params)
     if pattern is None:
-        return False
+        return None
     kind, a, b, k = pattern
     if kind == "const":
         sa, ra = find(a)
         if ra in constants:
-            return False          # a second value for the same variable: left for diagnosis
+            return None           # a second value for the same variable: left for diagnosis
         constants[ra] = _signed(sa, k)
-        return True
+        return (ra,)
     k = int(k)
     (sa, ra), (sb, rb) = find(a), find(b)
     if ra is rb or (ra in constants and rb in constants):
-        return False              # a redundant or contradictory loop: left for diagnosis
+        return None               # a redundant or contradictory loop: left for diagnosis
     # a = k*b  =>  sa*ra = k*sb*rb  (all signs are +-1, so each is its own inverse)
     if rank(ra) <= rank(rb):
         child, root, sign = rb, ra, sa * k * sb
@@ -223,7 +229,8 @@ def _classify(eq, info, find, rank, parent, constants, params=frozenset()) -> bo
     parent[child] = (sign, root)
     if child in constants:
         constants[root] = _signed(sign, constants.pop(child))
-    return True
+        return child, root
+    return (child,)
 
 
 def _alias_pattern(residual: sp.Expr, info: dict, params: frozenset = frozenset()):
@@ -274,13 +281,10 @@ def _plain_alias(residual: sp.Expr, info: dict):
     return "alias", a, b, -signs[b] * signs[a]      # -sb/sa, the signs being +-1
 
 
-def _rebuild(flat, kept, subs, table, find, constants):
-    variables = []
-    for v in flat.variables:
-        sign, root = find(v.symbol)
-        if root is v.symbol and root not in constants:
-            variables.append(v)
-    merged = _merge_attributes(flat, variables, find)
+def _rebuild(flat, kept, subs, table, find, constants, resolved):
+    variables = [v for v, (_, root) in zip(flat.variables, resolved)
+                 if root is v.symbol and root not in constants]
+    merged = _merge_attributes(flat, variables, resolved)
     derivatives = _derivatives_after_aliases(flat, find, constants, subs)
     equations = []
     for eq in kept:
@@ -376,13 +380,12 @@ def _when_after_aliases(w, subs, find, constants):
     return out
 
 
-def _merge_attributes(flat, variables, find):
-    """Carry start/fixed/nominal/state_select from aliases onto their representative."""
-    by_root = {v.symbol: v for v in variables}
+def _merge_attributes(flat, variables, resolved):
+    """Carry start/fixed/nominal/state_select from aliases onto their representative
+    (``resolved``: each flat variable's (sign, representative))."""
     out = {v.symbol: v.attrs for v in variables}
-    for v in flat.variables:
-        sign, root = find(v.symbol)
-        if root not in by_root or root is v.symbol:
+    for v, (sign, root) in zip(flat.variables, resolved):
+        if root is v.symbol or root not in out:
             continue
         a, r = v.attrs, out[root]
         if a.start is not None:
@@ -398,4 +401,7 @@ def _merge_attributes(flat, variables, find):
         if STATE_SELECT[a.state_select] > STATE_SELECT[new.state_select]:
             new = replace(new, state_select=a.state_select)
         out[root] = new
-    return [replace(v, attrs=out[v.symbol]) for v in variables]
+    # a representative whose attributes nothing changed is kept as it is (the same
+    # value replace() would copy)
+    return [v if out[v.symbol] is v.attrs else replace(v, attrs=out[v.symbol])
+            for v in variables]

@@ -336,7 +336,9 @@ def _matrix_text(matrix) -> str:
 
 
 # -- regular blocks, certified cheaply ---------------------------------------------------
-_PRIME = 2**61 - 1
+# the largest prime below 2**30: residues are one CPython digit and their products two
+# (with 2**61 - 1 the products were five-digit integers, a third of the elimination)
+_PRIME = 1073741789
 
 
 def _null_vectors(rows: dict) -> list:
@@ -355,10 +357,9 @@ def _null_vectors(rows: dict) -> list:
     return left_null_vectors(rows)
 
 
-def _full_row_rank_mod_p(rows: dict) -> bool:
+def _full_row_rank_mod_p(rows: dict, p: int = _PRIME) -> bool:
     """Sparse Gaussian elimination over GF(p), pivoting as :mod:`acausal.compiler.exact`
     does (the column with the fewest non-zeros, then its shortest row)."""
-    p = _PRIME
     a, col_rows = {}, {}
     for r, vals in rows.items():
         row = {}
@@ -376,26 +377,30 @@ def _full_row_rank_mod_p(rows: dict) -> bool:
     done, rank = set(), 0
     while heap:
         count, c = heapq.heappop(heap)
-        if c in done or count != len(col_rows[c]):
+        rows_c = col_rows[c]
+        if c in done or count != len(rows_c):
             continue                    # stale entry: the count changed since
         done.add(c)
         if count == 0:
             continue
-        piv = min(col_rows[c], key=lambda r: (len(a[r]), r))
-        prow = a.pop(piv)
-        inv = pow(prow[c], -1, p)
-        for q in sorted(col_rows[c] - {piv}):
+        piv = min(rows_c, key=lambda r: (len(a[r]), r))
+        pivot_row = a.pop(piv)
+        inv = pow(pivot_row[c], -1, p)
+        prow = list(pivot_row.items())
+        for q in sorted(rows_c - {piv}):
             qrow = a[q]
+            get = qrow.get
             f = qrow[c] * inv % p
-            for k, v in prow.items():    # row_q -= f row_p: zero at c
-                x = (qrow.get(k, 0) - f * v) % p
+            for k, v in prow:            # row_q -= f row_p: zero at c
+                x = (get(k, 0) - f * v) % p
                 if x:
+                    if k not in qrow:
+                        col_rows[k].add(q)
                     qrow[k] = x
-                    col_rows[k].add(q)
                 else:
                     qrow.pop(k, None)
                     col_rows[k].discard(q)
-        for k in prow:
+        for k, _ in prow:
             col_rows[k].discard(piv)
             if k not in done:
                 heapq.heappush(heap, (len(col_rows[k]), k))

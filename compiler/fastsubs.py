@@ -22,7 +22,7 @@ import os
 import sympy as sp
 from sympy.core.basic import _args_sortkey
 
-__all__ = ["fast_xreplace", "fast_difference", "has_undefined"]
+__all__ = ["fast_xreplace", "fast_difference", "has_undefined", "sort_args"]
 
 _ONE, _ZERO, _MINUS = sp.S.One, sp.S.Zero, sp.S.NegativeOne
 _Symbol, _Add, _Mul = sp.Symbol, sp.Add, sp.Mul
@@ -162,7 +162,7 @@ def _product(e, mapping):
             raise _Fallback
     if coeff is not None and any(f.is_Add for f in factors):
         raise _Fallback
-    factors.sort(key=_args_sortkey)
+    sort_args(factors)
     if coeff is not None:
         factors.insert(0, coeff)
     if len(factors) == 1:
@@ -261,7 +261,7 @@ def _assemble_sum(new_args):
             seq.append(key[0] if len(key) == 1 else _Mul._from_args(key, True))
         else:
             seq.append(_Mul._from_args((c,) + key, True))
-    seq.sort(key=_args_sortkey)
+    sort_args(seq)
     if coeff is not _ZERO:
         seq.insert(0, coeff)
     if not seq:
@@ -269,3 +269,45 @@ def _assemble_sum(new_args):
     if len(seq) == 1:
         return seq[0]
     return _Add._from_args(seq, True)
+
+
+def sort_args(seq: list) -> None:
+    """``seq.sort(key=_args_sortkey)``: sympy's canonical order of the arguments of a sum
+    or product, in place.
+
+    ``Basic.compare`` orders by class first (a Symbol before a Mul), then by the
+    hashable contents: a symbol's is its name followed by its assumptions, a product's
+    its arguments.  Where every argument is a symbol or ``-1`` times a symbol, and all
+    these symbols have the same assumptions (as a model's variables do), that order is
+    the order of the keys (0, name) and (1, name); the comparisons, each a few calls
+    into sympy, were most of the time of building a model's sums.  Anything else is
+    sorted by sympy's key."""
+    keys = _plain_keys(seq)
+    if keys is None:
+        seq.sort(key=_args_sortkey)
+        return
+    ordered = [t for _, _, t in sorted(zip(keys, range(len(seq)), seq))]
+    if _CHECK:
+        ref = sorted(seq, key=_args_sortkey)
+        if any(a is not b for a, b in zip(ordered, ref)):
+            raise AssertionError(f"sort_args({seq}) gave {ordered}, sympy {ref}")
+    seq[:] = ordered
+
+
+def _plain_keys(seq):
+    """The keys of :func:`sort_args`, or None where they do not give sympy's order."""
+    keys, facts = [], None
+    for t in seq:
+        if type(t) is _Symbol:
+            kind, q = 0, t
+        elif type(t) is _Mul and len(t.args) == 2 and t.args[0] is _MINUS \
+                and type(t.args[1]) is _Symbol:
+            kind, q = 1, t.args[1]
+        else:
+            return None
+        if facts is None:
+            facts = q._assumptions0
+        elif q._assumptions0 != facts:
+            return None
+        keys.append((kind, q.name))
+    return keys

@@ -27,6 +27,7 @@ from ..components.component import (Component, Connection, InvalidConnection,
                                      Port, compiling, in_context)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
 from ..components.symbols import Equation, When, der, text, time
+from .fastarith import symbol_arithmetic
 from .fastsubs import fast_difference, fast_xreplace, has_undefined
 from .flatder import check_der_arguments, expand_derivatives, has_der
 from .gcpause import gc_paused
@@ -127,7 +128,7 @@ def flatten(model: Component) -> FlatModel:
     nodes = list(_walk(model))
     flat = FlatModel(name=type(model).__name__, variables=[], parameters=[], equations=[])
     connections = []
-    with compiling(model):
+    with compiling(model), symbol_arithmetic():
         for comp in nodes:
             flat.components[comp.path] = type(comp).__name__
             _collect_declarations(comp, flat)

@@ -16,15 +16,17 @@ counts of every pass go into the index report.  The result is a
 from __future__ import annotations
 
 import gc as _gc
+import sys as _sys
 import time as _time
 from dataclasses import replace
 
 import numpy as np
 
 from ..components.component import Component
+from .gcpause import collect_after_pause
 from .graph import UNASSIGNED
 from .modelcode import DelayCode, DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
-from .report import IndexReport
+from .report import EquationNames, IndexReport, mode_structures
 
 # The passes and sympy are imported where they run: a model found in the compile cache
 # is returned without importing either.
@@ -64,7 +66,11 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
     try:
         return _compile(model, backend, cache, check_units)
     finally:
+        symbolic = _sys.modules.get(__package__ + ".symbolic")
+        if symbolic is not None:     # what it keeps of this model's expressions
+            symbolic.forget_expressions()
         if collecting:
+            collect_after_pause()
             _gc.enable()
 
 
@@ -95,7 +101,7 @@ def _compile(model, backend, cache, check_units) -> ModelCode:
     report = IndexReport(model_name=type(model).__name__)
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
-    report.modes = _mode_structures(model)
+    report.modes = mode_structures(model)
     from .unitcheck import check_units as unit_check
     report.derived_parameters = dict(flat.derived)
     key = None
@@ -308,7 +314,7 @@ def _assemble(system, reduction, reduced, flat, aliases, report, discretes,
         dynamic=_dynamic(reduction) if reduction.dynamic else None,
         meta={"n_all": len(syms), "causal": caus.causal,
               "assigned_names": [a.name for a, _ in assigned],
-              "equation_names": [system.equations[e].name(system) for e in caus.residual_eqs],
+              "equation_names": EquationNames(system, caus.residual_eqs),
               "structural_zeros": sorted(zeros),
               "self_scaled": _self_scaled(system, z_syms, {syms[v] for v in caus.kept_for_fill}),
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
@@ -583,18 +589,3 @@ def _initial_rows(system, reduced, reduction, caus):
             rows.append(system.symbols[v] - start)
             text.append(f"{system.symbols[v].name} = {start} (start value of a state)")
     return rows, text, n_mandatory
-
-
-def _mode_structures(model) -> list:
-    """The modes of every component that describes them (``mode_structure()``), in
-    declaration order, for the index report."""
-    out, stack = [], [model]
-    while stack:
-        comp = stack.pop()
-        describe = getattr(comp, "mode_structure", None)
-        if callable(describe):
-            out.append({"component": comp.path, "class": type(comp).__name__,
-                        "modes": describe()})
-        stack.extend(reversed([c for c in comp.children().values()
-                               if hasattr(c, "children")]))
-    return out

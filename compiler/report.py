@@ -12,9 +12,10 @@ equations) is not kept.  Unpickling it needs no sympy.
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
-__all__ = ["IndexReport", "AliasSummary"]
+__all__ = ["IndexReport", "AliasSummary", "EquationNames", "mode_structures"]
 
 
 @dataclass
@@ -64,6 +65,7 @@ class IndexReport:
     derived_parameters: dict = field(default_factory=dict)   # name -> (binding, value)
 
     def __getstate__(self):
+        self.equations                 # noqa: B018  (prints the texts not printed yet)
         state = dict(self.__dict__)
         state["aliases"] = AliasSummary.of(self.aliases)
         state["reduction"] = None
@@ -107,19 +109,23 @@ class IndexReport:
                 f"dummy derivatives at level {level}: the structural choice "
                 f"{', '.join(names_of(system, before))} has a singular constant coefficient "
                 f"matrix; chosen by exact rank instead: {', '.join(names_of(system, after))}")
+        # every equation's text ("text": None here) is printed when the rows are first
+        # read (_rows_with_texts): most reports of a large model are never shown
         self.equations = [{
-            "index": k, "text": eq.name(system), "label": _label(system, eq),
+            "index": k, "text": None, "label": _label(system, eq),
             "component": eq.component,
             "kind": eq.kind, "order": eq.order,
             "derivative_of": eq.derivative_of,
             "differentiated": _times_differentiated(s, k),
         } for k, eq in enumerate(system.equations)]
+        self.__dict__["_texts_of"] = system
         self.states = [names[v] for v in reduction.states]
         self.dummy_derivatives = [names[v] for v in reduction.dummies]
         self.state_sets = [{"level": ss.level,
                             "candidates": [names[c] for c in ss.candidates],
                             "n_dummies": ss.n_dummies,
-                            "constraints": [self.equations[r]["text"] for r in ss.equations]}
+                            "constraints": [system.equations[r].name(system)
+                                            for r in ss.equations]}
                            for ss in reduction.selection.state_sets]
         if self.state_sets:
             self.notes.append(
@@ -288,6 +294,64 @@ class IndexReport:
         return "\n".join(lines)
 
 
+def _rows_with_texts(report) -> list:
+    """``report.equations``: the rows, their texts printed on the first read (from the
+    symbolic system :meth:`IndexReport.fill` left, which is then let go)."""
+    system = report.__dict__.pop("_texts_of", None)
+    rows = report.__dict__["equations"]
+    if system is not None:
+        for row, eq in zip(rows, system.equations):
+            row["text"] = eq.name(system)
+    return rows
+
+
+def _set_rows(report, rows) -> None:
+    report.__dict__.pop("_texts_of", None)
+    report.__dict__["equations"] = rows
+
+
+# a property over the dataclass field (whose __init__, comparison and repr go through it)
+IndexReport.equations = property(_rows_with_texts, _set_rows,
+                                 doc="per equation of the reduced system: index, text, "
+                                     "label, component, kind, order, derivative_of, "
+                                     "differentiated")
+
+
+class EquationNames(Sequence):
+    """The names (``SymbolicEquation.name``) of the equations ``rows`` of ``system``, as a
+    read-only list printed on its first read; it pickles as a plain list."""
+
+    def __init__(self, system, rows):
+        self._system, self._rows, self._names = system, list(rows), None
+
+    def _list(self) -> list:
+        if self._names is None:
+            system = self._system
+            self._names = [system.equations[e].name(system) for e in self._rows]
+            self._system = None
+        return self._names
+
+    def __getitem__(self, k):
+        return self._list()[k]
+
+    def __iter__(self):
+        return iter(self._list())
+
+    def __len__(self) -> int:
+        return len(self._rows)
+
+    def __eq__(self, other):
+        return list(self) == (list(other) if isinstance(other, Sequence) else other)
+
+    __hash__ = None
+
+    def __repr__(self) -> str:
+        return repr(self._list())
+
+    def __reduce__(self):
+        return list, (self._list(),)
+
+
 def _conversion_dict(conv):
     if conv is None or isinstance(conv, dict):      # a loaded report keeps the dict
         return conv
@@ -332,3 +396,18 @@ def _times_differentiated(s, e) -> int:
         e = s.eq_to_diff[e]
         k += 1
     return k
+
+
+def mode_structures(model) -> list:
+    """The modes of every component that describes them (``mode_structure()``), in
+    declaration order, for the index report."""
+    out, stack = [], [model]
+    while stack:
+        comp = stack.pop()
+        describe = getattr(comp, "mode_structure", None)
+        if callable(describe):
+            out.append({"component": comp.path, "class": type(comp).__name__,
+                        "modes": describe()})
+        stack.extend(reversed([c for c in comp.children().values()
+                               if hasattr(c, "children")]))
+    return out

@@ -18,14 +18,15 @@ from dataclasses import dataclass, field
 from functools import lru_cache, partial as bound
 
 import sympy as sp
-from sympy.core.add import _addsort
 
 from ..components.symbols import der, time
 from .derivative import partial
+from .fastsubs import sort_args
 from .graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER, STATE_SELECT,
                     UNASSIGNED, Names, Structure)
 
 __all__ = ["SymbolicEquation", "SymbolicSystem", "ExactText", "coefficient_kind",
+           "forget_expressions",
            "sum_partial", "symbols_of", "derivative_symbol", "signed_terms", "signed_sum"]
 
 
@@ -302,6 +303,14 @@ def symbols_of(expr: sp.Basic) -> frozenset:
 _PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
 
 
+def forget_expressions() -> None:
+    """Empty the caches of :func:`symbols_of` and ``_terms_with`` (a compile's end): the
+    expressions they keep would outlive the compile, in memory and in every walk of
+    the garbage collector over the live objects."""
+    symbols_of.cache_clear()
+    _terms_with.cache_clear()
+
+
 def derivative_symbol(x: sp.Symbol, derivatives: dict) -> sp.Symbol:
     d = derivatives.get(x)
     if d is None:
@@ -347,7 +356,7 @@ def signed_sum(coeffs: dict) -> sp.Expr:
     terms = [q if c == 1 else sp.Mul._from_args((_MINUS, q)) for q, c in coeffs.items()]
     if len(terms) == 1:
         return terms[0]
-    _addsort(terms)
+    sort_args(terms)     # sympy's _addsort
     return sp.Add._from_args(terms)
 
 

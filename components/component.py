@@ -564,9 +564,17 @@ def _is_component_list(value) -> bool:
             and all(isinstance(v, Component) for v in value))
 
 
+_PLAIN_ITEMS = set()     # Equation, Connection and When (filled on first use)
+
+
 def flatten_equation_list(items) -> list:
     """Equations may be returned as nested lists or generators; make one flat list."""
-    from .symbols import Equation, When   # sympy: only models with equations need it
+    if not _PLAIN_ITEMS:
+        from .symbols import Equation, When   # sympy: only models with equations need it
+        _PLAIN_ITEMS.update((Equation, Connection, When))
+    if type(items) is list and all(type(i) in _PLAIN_ITEMS for i in items):
+        return list(items)       # the common case: a list of equations, already flat
+    kinds = tuple(_PLAIN_ITEMS)
     out = []
     stack = [iter(items if items is not None else [])]
     while stack:
@@ -575,7 +583,7 @@ def flatten_equation_list(items) -> list:
         except StopIteration:
             stack.pop()
             continue
-        if isinstance(item, (Equation, Connection, When)):
+        if isinstance(item, kinds):
             out.append(item)
         elif isinstance(item, (list, tuple)) or hasattr(item, "__next__"):
             stack.append(iter(item))

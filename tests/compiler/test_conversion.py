@@ -304,3 +304,23 @@ def test_exact_rank_choice_keeps_a_regular_structural_choice():
 
     numeric = select_states(r, coefficient)
     assert numeric.dummies == select_states(r).dummies and not numeric.numeric_changes
+
+
+def test_rank_mod_p_certifies_exact_full_rank():
+    """Full row rank modulo the prime is full row rank over the rationals (the rows then
+    have no left null vector); rows with a dependent row are never certified."""
+    import random
+
+    from acausal.compiler.conversion import _full_row_rank_mod_p
+    rng = random.Random(7)
+    for trial in range(1500):
+        n = rng.randint(1, 7)
+        m = rng.randint(n, 8)
+        rows = {i: {j: Fraction(rng.randint(-3, 3), rng.choice([1, 1, 2, 3]))
+                    for j in rng.sample(range(m), rng.randint(1, m))} for i in range(n)}
+        dependent = trial % 3 == 0 and n > 1
+        if dependent:
+            rows[n - 1] = {j: 2 * v for j, v in rows[rng.randrange(n - 1)].items()}
+        certified = _full_row_rank_mod_p(rows)
+        assert certified == (not left_null_vectors(rows))   # no unlucky prime here
+        assert not (dependent and certified)

@@ -84,3 +84,27 @@ def test_a_factor_that_becomes_zero():
     _same(-P[0] * a * b + c, {a: sp.S.Zero})
     _same(sp.oo * a + b, {a: sp.S.Zero})             # oo*0: nan, left to sympy
     _same(sp.Float(2.5) * a * b + c, {a: sp.S.Zero})
+
+
+def test_sort_args_is_sympys_order():
+    """Sums of +-symbols are ordered by their names where that is sympy's order
+    (symbols before products, names as strings, equal assumptions); mixed assumptions,
+    other coefficients and other terms are left to sympy's key: always sympy's order."""
+    from sympy.core.basic import _args_sortkey
+
+    from acausal.compiler.fastsubs import sort_args
+    rng = random.Random(5)
+    names = ["a", "b", "a.b", "a_b", "A", "R1.p.v", "R10.n.i", "der(x)", "x[1]", "x[10]",
+             "x[2]", "Z", "_x", "é"]
+    for trial in range(600):
+        syms = [sp.Symbol(n, real=True) for n in rng.sample(names, rng.randint(1, 8))]
+        if trial % 5 == 0:
+            syms.append(sp.Symbol("q"))                   # other assumptions
+        terms = [s if rng.random() < 0.5 else -s for s in syms]
+        if trial % 7 == 0:
+            terms.append(2 * sp.Symbol("k", real=True))   # another coefficient
+        rng.shuffle(terms)
+        out = list(terms)
+        sort_args(out)
+        ref = sorted(terms, key=_args_sortkey)
+        assert all(x is y for x, y in zip(out, ref)), (out, ref)

@@ -47,3 +47,39 @@ def test_structural_zero_is_reported():
     compiled = ac.compile(Motor())
     assert any("m.L" in note for note in compiled.report.notes)
     assert "m.La.i" not in compiled.states
+
+
+def test_equation_texts_printed_on_first_read_are_the_same():
+    """The texts are printed when the report is first read: the rows, the printed report
+    and the JSON of a report read after pickling (which prints them) equal those of the
+    report read directly, and each names its equation as written with its component."""
+    import pickle
+
+    from acausal.compiler.pipeline import compile_model
+    first = compile_model(Pendulum(), "numpy").report
+    second = pickle.loads(pickle.dumps(compile_model(Pendulum(), "numpy").report))
+    assert [e["text"] for e in first.equations] == [e["text"] for e in second.equations]
+    assert all(isinstance(e["text"], str) and "[" in e["text"] or e["order"] > 0
+               for e in first.equations)
+    strip = (lambda text: text.rsplit("compile time", 1)[0])
+    assert strip(str(first)) == strip(str(second))
+    one, two = json.loads(first.to_json()), json.loads(second.to_json())
+    for d in (one, two):
+        d.pop("timings_s")
+        d["units"].pop("seconds", None)
+    assert one == two
+
+
+def test_residual_names_read_as_a_list():
+    """The names of the residual rows (messages about failing rows) are a sequence that
+    equals, and pickles as, the plain list of the equations' texts."""
+    import pickle
+
+    from acausal.compiler.pipeline import compile_model
+    mc = compile_model(Pendulum(), "numpy")
+    names = mc.meta["equation_names"]
+    assert len(names) == mc.n_res > 0 and list(names) == [names[k] for k in range(len(names))]
+    texts = {e["text"] for e in mc.report.equations}
+    assert set(names) <= texts
+    back = pickle.loads(pickle.dumps(names))
+    assert type(back) is list and back == list(names) and names == back
