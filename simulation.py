@@ -90,7 +90,10 @@ def _exempt_from_collector() -> None:
         return
     _exempted = True
     import gc
-    gc.collect()
+    from .compiler import gcpause
+    if not gcpause.collected:       # the compile has just collected, if it was large
+        gc.collect()
+    gcpause.collected = False
     gc.freeze()
 
 

@@ -53,6 +53,13 @@ def collect_after_pause() -> None:
     so many that CPython's schedule would soon run one anyway (more than a quarter of
     the old objects: then its young and middle collections walking them first are
     saved); else nothing."""
+    global collected
     young = gc.get_count()[0]
     if young > YOUNG_ENOUGH and 4 * young > len(gc.get_objects(generation=2)):
         gc.collect()
+        collected = True
+
+
+#: whether :func:`collect_after_pause` has collected since the flag was last cleared
+#: (acausal.simulation.compile then need not collect again before freezing)
+collected = False
