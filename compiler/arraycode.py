@@ -37,7 +37,8 @@ import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import ITE, And, BooleanFalse, BooleanTrue, Not, Or
 
-from .emit import _FUNCS, Emitter, _plain
+from .codegen import _negate
+from .emit import _FUNCS, Emitter
 from .lazycode import install_array_code
 
 __all__ = ["array_source", "use_array_code", "MIN_STATEMENTS", "MIN_GROUP"]
@@ -251,10 +252,6 @@ class _ArrayEmitter(Emitter):
         return super()._power(b, r).replace("math.pow(", "np.power(")
 
 
-def _negate(text):
-    return text[1:] if text.startswith("-") and _plain(text) else f"(-{text})"
-
-
 #: a sum with more linear terms than this has them evaluated as one dot product
 LONG_SUM = 32
 
@@ -302,9 +299,11 @@ def _leaves_read(st, rest) -> list:
     return sorted(read)
 
 
-def _print_group(st, rest=None) -> tuple[list, str | None]:
+def _print_group(st, rest=None, emitter=None) -> tuple[list, str | None]:
     """(temporary lines, value text) of one member, its leaf k read as ``x{k}``; with
-    ``rest``, of those terms of a long sum only (None when there are none)."""
+    ``rest``, of those terms of a long sum only (None when there are none).
+    ``emitter(ref)`` makes the printer (numpy's by default; C's for looped C)."""
+    emitter = emitter or _ArrayEmitter
     if rest is not None:
         if not rest:
             return [], None
@@ -312,11 +311,11 @@ def _print_group(st, rest=None) -> tuple[list, str | None]:
         st = _Statement(st.target, st.key, st.leaves, terms=(rest, leafidx))
     if st.expr is not None:
         e, leafidx = st.expr
-        em = _ArrayEmitter(lambda q: f"x{leafidx[q]}")
+        em = emitter(lambda q: f"x{leafidx[q]}")
         lines = []
         return lines, em.expression(e, lines)
     printed, leafidx = st.terms
-    em = _ArrayEmitter(lambda q: f"x{leafidx[q]}")
+    em = emitter(lambda q: f"x{leafidx[q]}")
     lines, parts = [], []
     for d, g in printed:
         c = em.expression(d, lines)
@@ -382,6 +381,18 @@ class _Writer:
         return lines + ["    return out", "", ""]
 
 
+def input_layout(prog) -> tuple[tuple, dict]:
+    """((n_y, n_p, n_m), {input: its position in the work vector}): y, p, m, then t."""
+    n_y = sum(1 for w in prog.refs.values() if w[0] == "y")
+    n_p = sum(1 for w in prog.refs.values() if w[0] == "p")
+    n_m = 1 + max((w[1] for w in prog.refs.values() if w[0] == "m"), default=-1)
+    inputs = {("y", k): k for k in range(n_y)}
+    inputs.update({("p", k): n_y + k for k in range(n_p)})
+    inputs.update({("m", k): n_y + n_p + k for k in range(n_m)})
+    inputs[("t",)] = n_y + n_p + n_m
+    return (n_y, n_p, n_m), inputs
+
+
 def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
     """The array module of a program (functions ``residual``, ``jacobian``, ``roots``,
     ``scales``, ``expand`` as in the scalar module), with the numbers of statements and
@@ -389,14 +400,8 @@ def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
     the residual has fewer than :data:`MIN_STATEMENTS` statements or fewer than
     :data:`MIN_GROUP` per group (unless ``small``), or a statement has an operator with
     no numpy form."""
-    n_y = sum(1 for w in prog.refs.values() if w[0] == "y")
-    n_p = sum(1 for w in prog.refs.values() if w[0] == "p")
-    n_m = 1 + max((w[1] for w in prog.refs.values() if w[0] == "m"), default=-1)
-    inputs = {("y", k): k for k in range(n_y)}
-    inputs.update({("p", k): n_y + k for k in range(n_p)})
-    inputs.update({("m", k): n_y + n_p + k for k in range(n_m)})
-    inputs[("t",)] = n_in = n_y + n_p + n_m
-    n_in += 1
+    (n_y, n_p, n_m), inputs = input_layout(prog)
+    n_in = len(inputs)
     input_lines = [f"V[0:{n_y}] = y", f"V[{n_y}:{n_y + n_p}] = p",
                    f"V[{n_y + n_p}:{n_y + n_p + n_m}] = m[:{n_m}]", f"V[{n_in - 1}] = t"]
     writer, lines, assigned = _Writer(), [], {}

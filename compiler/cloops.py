@@ -28,8 +28,8 @@ from __future__ import annotations
 
 import os
 
-from .arraycode import (_NUMBERS, MIN_GROUP, _leaves_read, _linear_part, _Schedule,
-                        _Statement, _statements, _Unsupported)
+from .arraycode import (_NUMBERS, MIN_GROUP, _leaves_read, _linear_part, _print_group,
+                        _Schedule, _statements, _Unsupported, input_layout)
 from .emit import Emitter
 
 __all__ = ["looped_program", "MIN_STATEMENTS"]
@@ -48,14 +48,8 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
     mode = os.environ.get("ACAUSAL_ARRAY_CODE", "auto")
     if mode == "never" or not set(prog.functions) <= set(FUNCTIONS):
         return None
-    n_y = sum(1 for w in prog.refs.values() if w[0] == "y")
-    n_p = sum(1 for w in prog.refs.values() if w[0] == "p")
-    n_m = 1 + max((w[1] for w in prog.refs.values() if w[0] == "m"), default=-1)
-    inputs = {("y", k): k for k in range(n_y)}
-    inputs.update({("p", k): n_y + k for k in range(n_p)})
-    inputs.update({("m", k): n_y + n_p + k for k in range(n_m)})
-    inputs[("t",)] = n_in = n_y + n_p + n_m
-    n_in += 1
+    (n_y, n_p, n_m), inputs = input_layout(prog)
+    n_in = len(inputs)
     entry = [f"for (int i = 0; i < {n_y}; ++i) w[i] = y[i];",
              f"for (int i = 0; i < {n_p}; ++i) w[{n_y} + i] = p[i];",
              f"for (int i = 0; i < {n_m}; ++i) w[{n_y + n_p} + i] = m[i];",
@@ -109,7 +103,7 @@ def _loop(group, sched) -> list:
     for k in used:
         pos = _index([sched.where(st.leaves[k]) for st in group], f"I{k}", lines)
         body.append(f"double x{k} = w[{pos}];")
-    temps, text = _print_c(rep, rest)
+    temps, text = _print_group(rep, rest, lambda ref: Emitter("c", ref))
     body += temps
     if linear:
         coefs = ", ".join(repr(c) for c, _ in linear)
@@ -121,32 +115,6 @@ def _loop(group, sched) -> list:
         text = "s" if text is None else f"s + {text}"
     body.append(f"w[{lo} + i] = {text};")
     return lines + [f"for (int i = 0; i < {n}; ++i) {{"] + ["  " + b for b in body] + ["}"]
-
-
-def _print_c(st, rest):
-    """(temporary lines, value text) of a group's shape in C, leaf k read as ``x{k}``."""
-    from .codegen import _negate
-    if rest is not None:
-        if not rest:
-            return [], None
-        leafidx = st.expr[1] if st.expr is not None else st.terms[1]
-        st = _Statement(st.target, st.key, st.leaves, terms=(rest, leafidx))
-    if st.expr is not None:
-        e, leafidx = st.expr
-        em = Emitter("c", lambda q: f"x{leafidx[q]}")
-        lines = []
-        return lines, em.expression(e, lines)
-    printed, leafidx = st.terms
-    em = Emitter("c", lambda q: f"x{leafidx[q]}")
-    lines, parts = [], []
-    for d, g in printed:
-        c = em.expression(d, lines)
-        if g is None:
-            parts.append(c)
-            continue
-        x = f"x{leafidx[g]}"
-        parts.append(x if c == "1.0" else _negate(x) if c == "-1.0" else f"{c}*{x}")
-    return lines, em.join_sum(parts)
 
 
 def _copy_out(slots) -> list:

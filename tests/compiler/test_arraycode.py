@@ -16,7 +16,6 @@ import acausal as ac
 from acausal.compiler.arraycode import MIN_STATEMENTS, array_source
 from acausal.compiler.cbackend import compiler_available
 from acausal.compiler.lazycode import ArrayFunction, GeneratedModule
-from acausal.library import electrical as el
 from acausal.library.electromechanical.examples.sampled_speed_control import SampledSpeedLoop
 from acausal.library.friction.examples.stick_slip import StickSlip
 from acausal.library.gas.examples.moore_greitzer import Surge
@@ -24,6 +23,7 @@ from acausal.library.hydraulics.examples.valve_motor import ValveControlledMotor
 from acausal.library.multibody.examples.squeezer import AndrewsSqueezer
 from acausal.library.rotational.examples.coupled_clutches import CoupledClutches
 from acausal.library.translational.examples.mass_with_stop import MassAgainstStop
+from acausal.tests.models.test_large_ladder import Ladder, _exact
 
 MODELS = [CoupledClutches, ValveControlledMotor, StickSlip, AndrewsSqueezer, Surge,
           SampledSpeedLoop, MassAgainstStop]
@@ -81,44 +81,6 @@ def test_looped_c_functions_equal_the_scalar_functions(cls, monkeypatch):
     c_functions = {name: getattr(code, name) for name in
                    ("residual", "jacobian", "roots", "scales", "expand")}
     _compare(code, compiled.p, np.random.default_rng(11), arrays=c_functions)
-
-
-R, L, C = 1.0, 1e-3, 1e-3
-
-
-class Ladder(ac.Component):
-    def __init__(self, n, **mods):
-        super().__init__(**mods)
-        self.src = el.StepVoltage(V=1.0, startTime=0.0)
-        self.gnd = el.Ground()
-        self.R = [el.Resistor(R=R) for _ in range(n)]
-        self.L = [el.Inductor(L=L) for _ in range(n)]
-        self.C = [el.Capacitor(C=C) for _ in range(n)]
-
-    def equations(self):
-        eqs = [ac.connect(self.src.n, self.gnd.p, *[c.n for c in self.C])]
-        node = self.src.p
-        for r, l, c in zip(self.R, self.L, self.C):
-            eqs += [ac.connect(node, r.p), ac.connect(r.n, l.p), ac.connect(l.n, c.p)]
-            node = c.p
-        return eqs
-
-
-def _exact(n, t):
-    """L i_k' = v_(k-1) - R i_k - v_k, C v_k' = i_k - i_(k+1), v_0 = 1 V: by expm."""
-    import scipy.sparse as sps
-    from scipy.sparse.linalg import expm_multiply
-    k = np.arange(n)
-    A = sps.lil_matrix((2 * n + 1, 2 * n + 1))
-    A[k, k] = -R / L
-    A[k, n + k] = -1 / L
-    A[k[1:], n + k[:-1]] = 1 / L
-    A[0, 2 * n] = 1 / L
-    A[n + k, k] = 1 / C
-    A[n + k[:-1], k[1:]] = -1 / C
-    x0 = np.zeros(2 * n + 1)
-    x0[-1] = 1.0
-    return expm_multiply(A.tocsc(), x0, start=0.0, stop=t[-1], num=len(t), endpoint=True)
 
 
 def test_a_large_model_runs_on_array_code(tmp_path, monkeypatch):
