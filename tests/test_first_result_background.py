@@ -22,26 +22,14 @@ import pytest
 
 from acausal.compiler.cbackend import compiler_available
 from acausal.solvers import cbdf_build
+from acausal.tests.rc_script import RC_CLASS
 
 needs_cc = pytest.mark.skipif(compiler_available() is None, reason="no C compiler")
 
 RC_SCRIPT = '''
 import json, math, sys
-import acausal as ac
-from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
 from acausal.solvers import cbdf_build
-
-
-class RC(ac.Component):
-    src = StepVoltage(V=1.0)
-    R1 = Resistor(R=1.0e3)
-    C1 = Capacitor(C=1.0e-6)
-    gnd = Ground()
-
-    def equations(self):
-        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
-                ac.connect(self.C1.n, self.src.n, self.gnd.p)]
-
+''' + RC_CLASS + '''
 
 compiled = ac.compile(RC(), backend=sys.argv[1])
 res = ac.simulate(compiled, t_end=5.0e-3, rtol=1e-6, step_loop=sys.argv[2])

@@ -14,6 +14,8 @@ import sys
 
 import pytest
 
+from acausal.tests.rc_script import RC_CLASS
+
 HEAVY = ("sympy", "networkx", "matplotlib", "scipy.sparse")
 
 
@@ -116,20 +118,7 @@ def test_unknown_names_raise_attribute_error():
 
 RC_MODEL = '''
 import json, math, sys
-import acausal as ac
-from acausal.library.electrical import Capacitor, Ground, Resistor, StepVoltage
-
-
-class RC(ac.Component):
-    src = StepVoltage(V=1.0)
-    R1 = Resistor(R=1.0e3)
-    C1 = Capacitor(C=1.0e-6)
-    gnd = Ground()
-
-    def equations(self):
-        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.C1.p),
-                ac.connect(self.C1.n, self.src.n, self.gnd.p)]
-
+''' + RC_CLASS + '''
 
 compiled = ac.compile(RC(), cache={"tree": "tree", "flat": True}[sys.argv[1]],
                       backend=sys.argv[2])
