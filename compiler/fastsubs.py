@@ -22,6 +22,8 @@ import os
 import sympy as sp
 from sympy.core.basic import _args_sortkey
 
+from ..components.symbols import has_atom_in
+
 __all__ = ["fast_xreplace", "fast_difference", "has_undefined", "sort_args"]
 
 _ONE, _ZERO, _MINUS = sp.S.One, sp.S.Zero, sp.S.NegativeOne
@@ -53,17 +55,8 @@ _UNDEFINED = frozenset((sp.zoo, sp.nan))
 
 
 def has_undefined(expr) -> bool:
-    """``expr.has(sp.zoo, sp.nan)`` by one walk over the arguments (sympy's ``has``
-    builds a matcher and an iterator per node)."""
-    stack = [expr]
-    while stack:
-        e = stack.pop()
-        if e.is_Atom:
-            if e in _UNDEFINED:
-                return True
-        else:
-            stack.extend(e.args)
-    return False
+    """``expr.has(sp.zoo, sp.nan)``, by one walk over the arguments."""
+    return has_atom_in(expr, _UNDEFINED)
 
 
 def _contains_key(e, mapping) -> bool:

@@ -274,18 +274,22 @@ _NON_FINITE_SET = frozenset(_NON_FINITE)
 _PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
 
 
-def _has_non_finite(expr) -> bool:
-    """``expr.has(*_NON_FINITE)``: one walk over the arguments, the atoms looked up in a
-    set (sympy's ``has`` builds a matcher and an iterator per node)."""
+def has_atom_in(expr, atoms: frozenset) -> bool:
+    """``expr.has(*atoms)`` for atoms: one walk over the arguments, each atom looked up
+    in the set (sympy's ``has`` builds a matcher and an iterator per node)."""
     stack = [expr]
     while stack:
         e = stack.pop()
         if e.is_Atom:
-            if e in _NON_FINITE_SET:
+            if e in atoms:
                 return True
         else:
             stack.extend(e.args)
     return False
+
+
+def _has_non_finite(expr) -> bool:
+    return has_atom_in(expr, _NON_FINITE_SET)
 
 
 def _may_vary(expr) -> bool:
