@@ -272,7 +272,7 @@ def _linear_part(st):
     linear, rest = [], []
     for d, g in terms:
         c, x = (d, g) if g is not None else _coefficient_leaf(d)
-        if x is not None and c is not None and c.is_Number:
+        if x is not None and c is not None and c.is_Number and c.is_finite:
             linear.append((float(c), leafidx[x]))
         else:
             rest.append((d, g))

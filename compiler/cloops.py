@@ -20,9 +20,10 @@ what it needs itself (the straight-line C shares the assignments through one fun
 The same floating-point operations are applied to the same values as in the
 straight-line C, except that the operands of a sum or product may be in another order
 (a shape is printed from one member): results agree to rounding, not bitwise.  Used for
-the model's own functions when the residual has at least :data:`MIN_STATEMENTS`
-statements and the array code's grouping applies (``ACAUSAL_ARRAY_CODE`` as there:
-``never`` keeps straight-line C, ``always`` loops whatever the size).
+each program (the model's, its initial equations', when-clauses', delays') whose
+residual has at least :data:`MIN_STATEMENTS` statements and whose statements group
+(``ACAUSAL_ARRAY_CODE`` as there: ``never`` keeps straight-line C, ``always`` loops
+whatever the size).
 """
 from __future__ import annotations
 
