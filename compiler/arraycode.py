@@ -47,6 +47,9 @@ __all__ = ["array_source", "use_array_code", "MIN_STATEMENTS", "MIN_GROUP"]
 MIN_STATEMENTS = 400
 #: statements per group the residual must average for the array code to be used
 MIN_GROUP = 8
+#: another function of fewer statements stays scalar (the zero-crossing functions of a
+#: large model are often a handful of statements: a call of the array form costs more)
+MIN_FUNCTION = 64
 
 _ATOMS = (sp.Symbol, sp.Number, sp.NumberSymbol, BooleanTrue, BooleanFalse)
 _NODES = (sp.Add, sp.Mul, sp.Pow, sp.Piecewise, sp.functions.elementary.piecewise.ExprCondPair,
@@ -357,9 +360,15 @@ class _Writer:
         self.consts.append(slots)
         return f"_I{len(self.consts) - 1}"
 
-    def function(self, name, sched, outputs, input_lines) -> list:
+    def function(self, name, sched, outputs, sizes) -> list:
         lines = [f"def {name}(t, y, p, m, out):", f"    V = np.empty({sched.size})"]
-        lines += ["    " + ln for ln in input_lines]
+        base = {"y": 0, "p": sizes[0], "m": sizes[0] + sizes[1]}
+        for block, lo, hi in inputs_read(sched, outputs, sizes):
+            if block == "t":
+                lines.append(f"    V[{sum(sizes)}] = t")
+            else:
+                b = base[block]
+                lines.append(f"    V[{b + lo}:{b + hi}] = {block}[{lo}:{hi}]")
         lines.append("    with _quiet():")
         for g in sched.groups:
             lo = sched.slot[g[0].target]
@@ -381,6 +390,25 @@ class _Writer:
         return lines + ["    return out", "", ""]
 
 
+def inputs_read(sched, outputs, sizes) -> list:
+    """The parts of the inputs one function reads, as (block, first, past-the-end) with
+    block "y", "p", "m" or "t" and positions within it: only they are copied into the
+    work vector (a zero-crossing function of a large model reads a few of its thousands
+    of inputs, and copying them all would cost more than computing it)."""
+    n_y, n_p, n_m = sizes
+    starts = (("y", 0, n_y), ("p", n_y, n_p), ("m", n_y + n_p, n_m), ("t", n_y + n_p + n_m, 1))
+    n_in = n_y + n_p + n_m + 1
+    read = {sched.where(v) for g in sched.groups for st in g for v in st.leaves}
+    read.update(sched.where(o) for o in outputs)
+    read = sorted(s for s in read if s < n_in)
+    parts = []
+    for block, start, size in starts:
+        inside = [s - start for s in read if start <= s < start + size]
+        if inside:
+            parts.append((block, inside[0], inside[-1] + 1))
+    return parts
+
+
 def input_layout(prog) -> tuple[tuple, dict]:
     """((n_y, n_p, n_m), {input: its position in the work vector}): y, p, m, then t."""
     n_y = sum(1 for w in prog.refs.values() if w[0] == "y")
@@ -399,11 +427,10 @@ def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
     of array operations (groups) in the residual, or None when it would not be faster:
     the residual has fewer than :data:`MIN_STATEMENTS` statements or fewer than
     :data:`MIN_GROUP` per group (unless ``small``), or a statement has an operator with
-    no numpy form."""
+    no numpy form.  Another function of fewer than :data:`MIN_FUNCTION` statements is
+    left out (its scalar form is used), unless ``small``."""
     (n_y, n_p, n_m), inputs = input_layout(prog)
     n_in = len(inputs)
-    input_lines = [f"V[0:{n_y}] = y", f"V[{n_y}:{n_y + n_p}] = p",
-                   f"V[{n_y + n_p}:{n_y + n_p + n_m}] = m[:{n_m}]", f"V[{n_in - 1}] = t"]
     writer, lines, assigned = _Writer(), [], {}
     _NUMBERS.clear()
     try:
@@ -416,8 +443,10 @@ def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
                 n_st, n_groups = len(statements), len(sched.groups)
                 if not small and (n_st < MIN_STATEMENTS or n_st < MIN_GROUP * n_groups):
                     return None
+            elif not small and len(statements) < MIN_FUNCTION:
+                continue          # the scalar function stays
             outputs = [st.target for st in statements if st.target[0] == "o"]
-            lines += writer.function(name, sched, outputs, input_lines)
+            lines += writer.function(name, sched, outputs, (n_y, n_p, n_m))
     except (_Unsupported, RecursionError):
         return None
     finally:

@@ -13,8 +13,8 @@ with the shape printed once by the scalar C printer (:class:`acausal.compiler.em
 if-expressions stay lazy ternaries, powers and functions as in the straight-line C), a
 leaf read at evenly spaced positions as ``w[a + s*i]`` and otherwise through a static
 index array, and the linear terms of a long sum (a node balance) as an inner loop over
-coefficients.  The work array ``w`` holds the inputs (y, p, m, t, copied in on entry)
-followed by every computed value, as the array code's ``V``.  Every function computes
+coefficients.  The work array ``w`` holds the inputs (y, p, m, t: the parts a function
+reads are copied in on entry) followed by every computed value, as the array code's ``V``.  Every function computes
 what it needs itself (the straight-line C shares the assignments through one function).
 
 The same floating-point operations are applied to the same values as in the
@@ -30,7 +30,7 @@ from __future__ import annotations
 import os
 
 from .arraycode import (_NUMBERS, MIN_GROUP, _leaves_read, _linear_part, _print_group,
-                        _Schedule, _statements, _Unsupported, input_layout)
+                        _Schedule, _statements, _Unsupported, input_layout, inputs_read)
 from .emit import Emitter
 
 __all__ = ["looped_program", "MIN_STATEMENTS"]
@@ -51,10 +51,6 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
         return None
     (n_y, n_p, n_m), inputs = input_layout(prog)
     n_in = len(inputs)
-    entry = [f"for (int i = 0; i < {n_y}; ++i) w[i] = y[i];",
-             f"for (int i = 0; i < {n_p}; ++i) w[{n_y} + i] = p[i];",
-             f"for (int i = 0; i < {n_m}; ++i) w[{n_y + n_p} + i] = m[i];",
-             f"w[{n_in - 1}] = t;"]
     specs, n_work, assigned = [], n_in, {}
     _NUMBERS.clear()
     try:
@@ -68,7 +64,8 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
                 if n_st < MIN_STATEMENTS or n_st < MIN_GROUP * n_groups:
                     return None
             outputs = [st.target for st in statements if st.target[0] == "o"]
-            body = [[ln] for ln in entry] + [_loop(g, sched) for g in sched.groups]
+            body = [[ln] for ln in _entry(sched, outputs, (n_y, n_p, n_m))] + \
+                [_loop(g, sched) for g in sched.groups]
             if outputs:
                 body.append(_copy_out([sched.where(o) for o in outputs]))
             specs.append((f"{prefix}{name}", body, (), len(outputs)))
@@ -78,6 +75,19 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
     finally:
         _NUMBERS.clear()
     return specs, n_work
+
+
+def _entry(sched, outputs, sizes) -> list:
+    """The inputs the function reads, copied into ``w`` (arraycode.inputs_read)."""
+    base = {"y": 0, "p": sizes[0], "m": sizes[0] + sizes[1], "t": sum(sizes)}
+    lines = []
+    for block, lo, hi in inputs_read(sched, outputs, sizes):
+        if block == "t":
+            lines.append(f"w[{base['t']}] = t;")
+        else:
+            lines.append(f"for (int i = {lo}; i < {hi}; ++i) w[{base[block]} + i] = "
+                         f"{block}[i];")
+    return lines
 
 
 def _index(slots, name, lines, i="i") -> str:

@@ -24,6 +24,7 @@ Frozen floor values (:mod:`acausal.compiler.discrete`) follow the relations in `
 from __future__ import annotations
 
 import hashlib
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -352,8 +353,15 @@ def _py_function(name, prologue, body) -> list:
     head = [f"def {name}(t, y, p, m, out):"]
     if not body:
         return head + ["    return out", "", ""]
-    head += ["    y = _list(y)", "    p = _list(p)", "    m = _list(m)"]
-    return head + ["    " + ln for ln in prologue + body] + ["    return out", "", ""]
+    lines = ["    " + ln for ln in prologue + body]
+    # an input is made a list of floats only when read: for a zero-crossing function
+    # of a large model, converting its thousands of unknowns would be most of the call
+    text = "\n".join(lines)
+    head += [f"    {a} = _list({a})" for a in ("y", "p", "m") if _READS[a].search(text)]
+    return head + lines + ["    return out", "", ""]
+
+
+_READS = {a: re.compile(rf"(?<![\w.]){a}\[") for a in ("y", "p", "m")}
 
 
 def _py_rows(em, exprs) -> list:
