@@ -138,8 +138,9 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     ``backend``: how a Component is compiled (see :func:`compile`).  ``progress``: a
     progress bar in simulated time (tqdm, the ``progress`` extra; a widget in notebooks);
     None shows it only when stderr is a terminal and the run takes more than 2 s.
-    ``step_loop``: where the BDF steps run: "auto" (the compiled loop when the model runs
-    on the C backend and qualifies, see :mod:`acausal.solvers.cbdf`), "c" or "python".
+    ``step_loop``: where the BDF steps run: "auto" (the compiled loop when the model
+    qualifies and the loop's library is built, on either backend, see
+    :mod:`acausal.solvers.cbdf`), "c" or "python".
     ``check_units``: as in :func:`compile`, for a Component compiled here.
     """
     t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
@@ -165,8 +166,9 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
                     raise_on_failure, progress, step_loop)
     finally:
         compiled.p[:] = saved
-        if compiled.backend == "c":
-            # for the next runs: this one has not shared the processors with the build
+        if compiled.backend in ("c", "numpy"):
+            # for the next runs (either backend's model runs in the compiled loop): this
+            # one has not shared the processors with the build
             from .solvers.cbdf import build_in_background
             build_in_background()
 

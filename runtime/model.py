@@ -223,9 +223,10 @@ class CompiledModel(DAEProblem):
             self._p_listed = (p.copy(), p.tolist())
         return self._p_listed[1]
 
-    def _call(self, fn, t, z, size):
+    def _call(self, fn, t, z, size, out=None):
+        """fn(t, z, p, m, out) into ``out`` (a new array when None); NaN where it fails."""
         try:
-            return fn(t, z, self._params(), self.m, np.empty(size))
+            return fn(t, z, self._params(), self.m, np.empty(size) if out is None else out)
         except DOMAIN_ERRORS as exc:
             # outside a function's domain (sqrt of a negative, ...): the point is unusable,
             # which Newton treats as a failed iterate; the words are kept for the message
@@ -235,7 +236,10 @@ class CompiledModel(DAEProblem):
             note = f"{what} failed at t = {t:.6g}: {type(exc).__name__}: {exc}"
             if note not in self.evaluation_errors:
                 self.evaluation_errors.append(note)
-            return np.full(size, np.nan)
+            if out is None:
+                return np.full(size, np.nan)
+            out[:] = np.nan
+            return out
 
     def _rows(self, t, z):
         return self._call(self.code.residual, t, z, self.code.n_rows)

@@ -23,8 +23,10 @@ choice of states is still good enough (:mod:`.cbdf_dyn`), and returns to Python 
 the search when it is not; a new choice comes back as other active linking rows, the
 history kept.
 
-When it is used (``step_loop="auto"``): the problem is a compiled model on the C backend
-(so its functions are C), without ``delay()`` (whose history is kept in Python after
+When it is used (``step_loop="auto"``): the problem is a compiled model -- on the C
+backend its functions are C; on the numpy backend its generated functions are called
+back through the same pointers (:mod:`.cbdf_callbacks`, as IDA calls a Python residual)
+-- without ``delay()`` (whose history is kept in Python after
 every step) or stability limit detection, and, with dynamic state selection, at most
 :data:`MAX_DENSE` unknowns (the sparse LU keeps one pattern, which a new choice of
 states changes), and the loop's library is built.  That library is built once per
@@ -36,8 +38,8 @@ a run that starts before the library is there takes the Python loop rather than 
 model's fixed Jacobian pattern with the column order and pivot rows of one SuperLU
 analysis (``cbdf_sparse.c``, :mod:`~acausal.solvers.cbdf_sparse`).  ``step_loop="c"``
 also runs any other problem of at most :data:`MAX_DENSE` unknowns, calling its Python
-residual, Jacobian and zero-crossing functions back (for tests against the Python loop;
-no faster).  Without a C compiler ``"auto"`` is the Python loop.  Results agree with the
+residual, Jacobian and zero-crossing functions back (mode 1: the problem's functions,
+not a model's generated ones; for tests against the Python loop, no faster).  Without a C compiler ``"auto"`` is the Python loop.  Results agree with the
 Python loop to the integration tolerance, not bitwise: the LU is not LAPACK's or
 SuperLU's, so the iteration matrix's solutions differ in rounding.
 """
@@ -54,6 +56,7 @@ from . import cbdf_sparse as sparse_lu
 from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
 from . import cbdf_build
 from .cbdf_build import build_if_long, build_in_background
+from .cbdf_callbacks import Callbacks
 from .linalg import LinearSolver, singular_block
 
 __all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library",
@@ -140,14 +143,18 @@ def _load(cached_only: bool) -> None:
 
 
 def _compiled_model(problem) -> bool:
-    """A compiled model whose residual, Jacobian and zero-crossing functions are C."""
+    """A compiled model whose residual, Jacobian and zero-crossing functions are C, or
+    its generated numpy code (called back: :mod:`.cbdf_callbacks`)."""
     from ..compiler.cbackend import _CFunction
     code = getattr(problem, "code", None)
-    if code is None or getattr(problem, "backend", None) != "c" or \
+    backend = getattr(problem, "backend", None)
+    if code is None or backend not in ("c", "numpy") or \
             not hasattr(problem, "discrete") or not hasattr(problem, "dynamic"):
         return False
     need = [code.residual, code.jacobian] + ([code.roots, code.scales]
                                               if problem.n_roots else [])
+    if backend == "numpy":
+        return all(callable(f) for f in need)
     return all(isinstance(f, _CFunction) for f in need)
 
 
@@ -163,7 +170,7 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
     why = None
     if problem.n > MAX_DENSE and not model:
         why = (f"it has {problem.n} unknowns, more than {MAX_DENSE} (dense LU; the "
-               "sparse LU needs a compiled model on the C backend)")
+               "sparse LU needs a compiled model)")
     elif problem.n > MAX_DENSE and getattr(problem, "dynamic", None) is not None:
         why = (f"it has {problem.n} unknowns, more than {MAX_DENSE}, and dynamic state "
                "selection (the sparse LU keeps one pattern)")
@@ -172,8 +179,7 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
     elif getattr(problem, "delays", None) is not None:
         why = "delay() keeps the history of every accepted step in Python"
     elif not model and getattr(problem, "after_step", None) is not None:
-        why = ("its after_step hook runs in Python after every step (a compiled model "
-               "needs backend='c')")
+        why = "its after_step hook runs in Python after every step"
     if step_loop == "auto":
         # a library still being built is not waited for: this run takes the Python loop
         return 0 if model and why is None and library(cached_only=True) is not None \
@@ -200,6 +206,7 @@ class CompiledBDF(BDF):
         n = problem.n
         self.lib = library()
         self.mode = mode
+        self.callbacks = None       # a numpy model's functions (mode 0): cbdf_callbacks
         self.dv = np.zeros(D_SIZE)
         self.dv[D_ALPHAS:D_ALPHAS + MAX_ORDER + 2] = _ALPHAS
         self.iv = np.zeros(I_SIZE, dtype=np.int64)
@@ -266,10 +273,17 @@ class CompiledBDF(BDF):
     # ------------------------------------------------------------------ binding
     def _bind_model(self, p) -> None:
         code = p.code
-        addr = lambda f: ctypes.cast(f.fn, ctypes.c_void_p).value   # noqa: E731
-        self.pv[P_RESFN], self.pv[P_JACFN] = addr(code.residual), addr(code.jacobian)
-        layout = code.c_layout
-        self._buf("mw", max(int(layout["n_work"]), 1), P_MW)
+        d = p.discrete
+        if p.backend == "c":
+            addr = lambda name, _: ctypes.cast(getattr(code, name).fn,  # noqa: E731
+                                               ctypes.c_void_p).value
+            n_work = int(code.c_layout["n_work"])
+        else:
+            self.callbacks = Callbacks(p)
+            addr, n_work = self.callbacks.address, 0
+        self.pv[P_RESFN] = addr("residual", int(code.n_rows))
+        self.pv[P_JACFN] = addr("jacobian", len(code.jac_rows))
+        self._buf("mw", max(n_work, 1), P_MW)
         self._buf("mout", max(int(code.n_rows), 1), P_MOUT)
         self._buf("jvals", max(len(code.jac_rows), 1), P_JVALS)
         self._set("jrows", code.jac_rows, P_JROWS, np.int64)
@@ -281,10 +295,10 @@ class CompiledBDF(BDF):
         iv = self.iv
         iv[I_NRES], iv[I_NSZ], iv[I_NLINK] = p.n_res, len(p.state_z), len(p.link_s)
         iv[I_NJAC], iv[I_NROWS] = len(code.jac_rows), code.n_rows
-        d = p.discrete
         iv[I_NREL], iv[I_NDISC] = d.n_rel, d.n_disc
         if p.n_roots:
-            self.pv[P_ROOTSFN], self.pv[P_SCALESFN] = addr(code.roots), addr(code.scales)
+            self.pv[P_ROOTSFN] = addr("roots", d.n_rel + d.n_disc)
+            self.pv[P_SCALESFN] = addr("scales", d.n_rel)
             self._buf("rv", d.n_rel + d.n_disc, P_RV)
             self._buf("rscale", max(d.n_rel, 1), P_RSCALE)
             self._set("rnom", d.nominal, P_RNOM)
@@ -439,6 +453,8 @@ class CompiledBDF(BDF):
             bind(self)
         code = self.lib.cbdf_run(_ptr(self.dv), _ptr(iv), ctypes.addressof(pv))
         iv[I_NROOTS] = self._n_roots
+        if self.callbacks is not None:
+            self.callbacks.reraise()
         self._pull()
         if nr:
             sign_ref[:] = self._keep["signref"][:nr]

@@ -23,6 +23,7 @@ from acausal.library.hydraulics.examples.valve_motor import ValveControlledMotor
 from acausal.library.multibody.examples.squeezer import AndrewsSqueezer
 from acausal.library.rotational.examples.coupled_clutches import CoupledClutches
 from acausal.library.translational.examples.mass_with_stop import MassAgainstStop
+from acausal.solvers import cbdf
 from acausal.tests.models.test_large_ladder import Ladder, _exact
 
 MODELS = [CoupledClutches, ValveControlledMotor, StickSlip, AndrewsSqueezer, Surge,
@@ -98,12 +99,16 @@ def _against_exact(compiled, n):
 
 def test_a_large_model_runs_on_array_code(tmp_path, monkeypatch):
     monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path))
-    n = MIN_STATEMENTS // 4
+    n = MIN_STATEMENTS // 4 + 1     # array code, and more unknowns than the dense LU takes
     compiled = ac.compile(Ladder(n), backend="numpy")
     assert isinstance(compiled.code.residual, ArrayFunction)
     assert any("array operations" in note for note in compiled.report.notes)
     _compare(compiled.code, compiled.p, np.random.default_rng(3), points=2)
     res, t = _against_exact(compiled, n)
+    # more unknowns than the dense LU takes: the compiled loop's sparse LU, calling the
+    # array functions back (solvers/cbdf_callbacks.py), once its library is built
+    assert compiled.n > cbdf.MAX_DENSE
+    assert res.stats["step_loop"] == ("c" if cbdf.library() is not None else "python")
     # the same model from the compile cache: its array code comes with it
     again = ac.compile(Ladder(n), backend="numpy")
     assert any("came from the compile cache" in note for note in again.report.notes)

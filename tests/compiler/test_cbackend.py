@@ -60,13 +60,16 @@ def test_every_generated_function_agrees_at_random_points(model_class, t_end):
 
 
 @needs_cc
+@pytest.mark.parametrize("loop", ["python", "c"])
 @pytest.mark.parametrize("model_class, t_end", MODELS, ids=lambda m: getattr(m, "__name__", ""))
-def test_simulations_agree_to_1e_12_of_each_signal(model_class, t_end):
+def test_simulations_agree_to_1e_12_of_each_signal(model_class, t_end, loop):
     py, c = _pair(model_class)
-    a = ac.simulate(py, t_end=t_end, rtol=1e-6)
-    # the same (Python) step loop on both: the compiled loop factors with its own LU, so
-    # it agrees to the tolerance, not to rounding (tests/solvers/test_cbdf.py)
-    b = ac.simulate(c, t_end=t_end, rtol=1e-6, step_loop="python")
+    # the same step loop on both (the compiled loop calls the numpy code back): the two
+    # loops factor with different LUs, so they agree to the tolerance, not to rounding
+    # (tests/solvers/test_cbdf.py)
+    a = ac.simulate(py, t_end=t_end, rtol=1e-6, step_loop=loop)
+    b = ac.simulate(c, t_end=t_end, rtol=1e-6, step_loop=loop)
+    assert a.stats["step_loop"] == b.stats["step_loop"] == loop
     assert a.success and b.success
     assert len(a.t) == len(b.t)
     np.testing.assert_allclose(b.t, a.t, rtol=1e-12, atol=0)

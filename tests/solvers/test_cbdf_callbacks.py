@@ -1,0 +1,65 @@
+"""A numpy-backend model in the compiled step loop (solvers/cbdf_callbacks.py): its
+generated functions are called back through the pointers the C backend's functions
+take.  The two backends on the same loop agree to rounding
+(tests/compiler/test_cbackend.py); here: the loop is chosen, a point outside a
+function's domain is reported as the Python loop reports it, another exception is
+raised.  A large numpy model (sparse LU, array code) in the compiled loop, against its
+exact solution: tests/compiler/test_arraycode.py."""
+import warnings
+
+import numpy as np
+import pytest
+import sympy as sp
+
+import acausal as ac
+from acausal.solvers import cbdf
+
+needs_loop = pytest.mark.skipif(cbdf.library() is None, reason="no C compiler on this machine")
+
+
+class Runout(ac.Component):
+    """der(x) = sqrt(1 - t): undefined after t = 1, where the run must stop."""
+
+    x = ac.Variable(start=0.0)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), sp.sqrt(1.0 - ac.time))]
+
+
+@needs_loop
+def test_a_domain_error_is_reported_as_in_the_python_loop():
+    model = ac.compile(Runout(), backend="numpy")
+    runs = {}
+    for loop in ("python", "c"):
+        model.evaluation_errors.clear()
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            res = ac.simulate(model, t_end=2.0, rtol=1e-8, step_loop=loop)
+        assert res.stats["step_loop"] == loop and not res.success
+        runs[loop] = (res, list(model.evaluation_errors))
+    (a, errors_a), (b, errors_b) = runs["python"], runs["c"]
+    # x = (2/3)(1 - (1 - t)^1.5) up to t = 1, where both stop
+    for res in (a, b):
+        early = res.t <= 0.9           # away from the infinite slope at t = 1
+        exact = 2.0 / 3.0 * (1.0 - (1.0 - res.t[early]) ** 1.5)
+        assert np.max(np.abs(res["x"][early] - exact)) < 1e-6 * 2.0 / 3.0
+        assert abs(res.t[-1] - 1.0) < 1e-9
+    assert errors_b and all("der(x)" in e and "math domain error" in e for e in errors_b)
+    assert errors_a == errors_b
+
+
+@needs_loop
+def test_another_exception_in_a_callback_is_raised_when_the_loop_returns():
+    model = ac.compile(Runout(), backend="numpy")
+    good = model.code.residual
+    calls = []
+
+    def failing(*args):
+        calls.append(args[0])
+        if len(calls) > 20:
+            raise RuntimeError("a bug in a user function")
+        return good(*args)
+
+    model.code.residual = failing
+    with pytest.raises(RuntimeError, match="a bug in a user function"):
+        ac.simulate(model, t_end=0.5, step_loop="c")
