@@ -16,7 +16,7 @@ default) for every solver:
 
 The hand-written forms are in ``peers_models.py``, the runners in ``peers_solvers.py``.
 Wall times are medians of ``--repeats`` runs, interleaved (A, B, C, A, B, C, ...), since
-the machine may be shared; build times are one run each.  Every peer's final state is
+the machine may be shared, after one untimed run of each; build times are one run each.  Every peer's final state is
 compared with acausal's: ``dev`` is the largest |peer - acausal| at t_end over a group
 of variables (currents, voltages, positions, ...) divided by the group's peak |value|
 over acausal's run, the largest over the groups.  A deviation above 1e-3 is flagged
@@ -79,16 +79,20 @@ def build(name: str, n: int, rtol: float, peers: dict, backends: tuple) -> tuple
 
 
 def measure(runners: list, repeats: int) -> dict:
-    """Interleaved runs; {runner index: list of Outcomes}.  A runner that fails gets its
-    reason and is not run again."""
+    """One untimed run of each runner (what a first call pays once: imports, a solver's
+    set-up, first touches of memory), then interleaved timed runs; {runner index: list
+    of Outcomes}.  A runner that fails gets its reason and is not run again."""
     outcomes = {k: [] for k, r in enumerate(runners) if r.run is not None}
-    for _ in range(repeats):
+    for timed in [False] + [True] * repeats:
         for k in list(outcomes):
             try:
-                outcomes[k].append(runners[k].run())
+                outcome = runners[k].run()
             except Exception as err:      # noqa: BLE001  (reported in the table)
                 runners[k].reason = f"failed: {type(err).__name__}: {err}"
                 del outcomes[k]
+                continue
+            if timed:
+                outcomes[k].append(outcome)
     return outcomes
 
 
@@ -123,7 +127,7 @@ def report(name: str, n: int, t_end: float, rtol: float, repeats: int, groups: d
     """Print the model's table; return its (label, median s) rows."""
     size = DESCRIPTIONS[name].format(n=n, two_n=2 * n)
     print(f"\n{name}: {size}; t_end = {t_end:g} s, rtol = {rtol:g}, atol = rtol x nominal; "
-          f"medians of {repeats} interleaved runs, builds timed once")
+          f"medians of {repeats} interleaved runs after one untimed run each, builds timed once")
     rows = _medians(runners, outcomes)
     ours = [(r, s, o) for r, s, o in rows if _is_acausal(r)]
     if not ours:
