@@ -246,14 +246,21 @@ class CompiledBDF(BDF):
     def _bind_sparse(self) -> None:
         """The sparse LU on the problem's Jacobian pattern, analysed at the current
         point; again whenever the pattern is another (a new choice of linked states
-        makes a new one)."""
+        makes a new one).  The analysis (SuperLU's orderings) is kept with the problem
+        for its next runs: the C factorization pivots afresh where a kept pivot has
+        become small (:mod:`.cbdf_sparse`), so values of another run need no new one."""
         p = self.problem
-        if self._splu is not None and self._splu_pattern is p._jac_indptr:
+        pattern = p._jac_indptr
+        if self._splu is not None and self._splu_pattern is pattern:
             return
-        self._splu = sparse_lu.SparseLU(self.lib, self.n, p._jac_indptr, p._jac_indices,
+        kept = getattr(p, "_cbdf_analysis", None)
+        perms = kept[1] if kept is not None and kept[0] is pattern else None
+        self._splu = sparse_lu.SparseLU(self.lib, self.n, pattern, p._jac_indices,
                                         p._jac_slot, p.jacobian(self.tn, self.y, self.yp,
-                                                                self.cj))
-        self._splu_pattern = p._jac_indptr
+                                                                self.cj), perms)
+        if self._splu.perms is not None:
+            p._cbdf_analysis = (pattern, self._splu.perms)
+        self._splu_pattern = pattern
         self.pv[P_SPLU] = self._splu.handle
         self.force_setup = True
 

@@ -39,11 +39,11 @@ def bind(lib) -> None:
 
 
 def analysis(A, perms=None):
-    """(column order q, preferred pivot row of every step, a guess of nnz(L + U)) of the
-    CSC matrix ``A`` from SuperLU (``perms``: the ``(perm_c, perm_r)`` of its
+    """(column order q, preferred pivot row of every step, a guess of nnz(L + U),
+    SuperLU's ``(perm_c, perm_r)``) of the CSC matrix ``A`` (``perms``: those of its
     factorization, if made already): step k factors column ``q[k]`` and prefers row
     ``pref[k]``.  A matrix SuperLU cannot factor gives the natural order and no
-    preference (the C factorization then pivots on its own)."""
+    preference (the C factorization then pivots on its own), and perms None."""
     from scipy.sparse.linalg import splu
     n = A.shape[0]
     if perms is None:
@@ -52,14 +52,14 @@ def analysis(A, perms=None):
                 raise RuntimeError("not finite")
             lu = splu(A, permc_spec="COLAMD")
         except RuntimeError:
-            return np.arange(n), np.full(n, -1), 2 * A.nnz
+            return np.arange(n), np.full(n, -1), 2 * A.nnz, None
         perms = (lu.perm_c, lu.perm_r)
     perm_c, perm_r = perms
     q = np.empty(n, dtype=np.int64)
     q[perm_c] = np.arange(n)
     pref = np.empty(n, dtype=np.int64)
     pref[perm_r] = np.arange(n)
-    return q, pref, 2 * A.nnz
+    return q, pref, 2 * A.nnz, perms
 
 
 def _ptr(a: np.ndarray) -> int:
@@ -71,10 +71,11 @@ class SparseLU:
     indices)`` of an n x n matrix; ``slot[e]`` is the position of the e-th entry of the
     problem's ``jac_pattern`` (entries at one position add up); ``A``: a matrix of that
     pattern to analyse, ``perms`` SuperLU's permutations of it if known
-    (:func:`analysis`).  ``handle`` is what the step loop gets."""
+    (:func:`analysis`).  ``handle`` is what the step loop gets; ``perms`` SuperLU's
+    permutations it was made with (None when SuperLU could not factor ``A``)."""
 
     def __init__(self, lib, n, indptr, indices, slot, A, perms=None):
-        q, pref, cap = analysis(A, perms)
+        q, pref, cap, self.perms = analysis(A, perms)
         arrays = [np.ascontiguousarray(a, dtype=np.int64) for a in
                   (indptr, indices, slot, q, pref)]
         if ctypes.sizeof(ctypes.c_long) != 8:

@@ -63,3 +63,28 @@ def test_another_exception_in_a_callback_is_raised_when_the_loop_returns():
     model.code.residual = failing
     with pytest.raises(RuntimeError, match="a bug in a user function"):
         ac.simulate(model, t_end=0.5, step_loop="c")
+
+
+@needs_loop
+def test_the_sparse_analysis_is_made_once_per_model_and_pattern(monkeypatch):
+    """The compiled loop's sparse LU keeps SuperLU's orderings with the model: the
+    second run makes no analysis of its own and, from the same start, computes the
+    same numbers."""
+    from acausal.solvers import cbdf_sparse
+    from acausal.tests.models.test_large_ladder import Ladder
+    made = []
+    analysis = cbdf_sparse.analysis
+
+    def recorded(A, perms=None):
+        made.append(perms is None)
+        return analysis(A, perms)
+
+    monkeypatch.setattr(cbdf_sparse, "analysis", recorded)
+    model = ac.compile(Ladder(110), backend="numpy")
+    assert model.n > cbdf.MAX_DENSE
+    first = ac.simulate(model, t_end=2e-3)
+    second = ac.simulate(model, t_end=2e-3)
+    assert first.stats["step_loop"] == second.stats["step_loop"] == "c"
+    assert made == [True, False]
+    np.testing.assert_array_equal(first.t, second.t)
+    np.testing.assert_array_equal(first["C[109].v"], second["C[109].v"])
