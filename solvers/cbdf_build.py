@@ -84,12 +84,24 @@ def _spawn_builder():
 
 
 def _building(marker: str) -> bool:
-    """Whether a process is building the library: ``marker`` exists and is younger than
-    :data:`_MARKER_AGE` (an older one is left by a build that was killed)."""
+    """Whether a process is building the library: ``marker`` exists, the process whose
+    number it holds is alive, and it is younger than :data:`_MARKER_AGE` (a marker
+    whose process is gone, or an older one, is left by a build that was killed)."""
     try:
-        return time.time() - os.stat(marker).st_mtime < _MARKER_AGE
+        if time.time() - os.stat(marker).st_mtime >= _MARKER_AGE:
+            return False
+        with open(marker) as f:
+            text = f.read().strip()
     except OSError:
         return False
+    if text.isdigit():         # empty: the builder has not written its number yet
+        try:
+            os.kill(int(text), 0)
+        except ProcessLookupError:
+            return False
+        except OSError:        # alive, another user's
+            pass
+    return True
 
 
 def _build_detached() -> None:

@@ -169,3 +169,19 @@ def test_the_numpy_backend_runs_a_small_model_without_scipy_linalg(script, tmp_p
     second = _run(script, cache, backend="numpy")
     assert second["error"] < 1e-4 and second["step_loop"] == "c"
     assert not second["scipy.linalg"] and second["builder"] is None
+
+
+def test_a_marker_whose_build_was_killed_does_not_hold_back_the_next(tmp_path):
+    """The marker holds the builder's process number: a build killed without cleaning
+    up (SIGKILL) leaves a marker that the next process recognises at once."""
+    marker = tmp_path / cbdf_build._MARKER
+    marker.write_text(str(os.getpid()))
+    assert cbdf_build._building(str(marker))
+    ended = subprocess.Popen([sys.executable, "-c", "pass"])
+    ended.wait()
+    marker.write_text(str(ended.pid))
+    assert not cbdf_build._building(str(marker))
+    marker.write_text("")                  # created, its number not written yet
+    assert cbdf_build._building(str(marker))
+    os.utime(marker, (time.time() - 2 * cbdf_build._MARKER_AGE,) * 2)
+    assert not cbdf_build._building(str(marker))
