@@ -224,6 +224,12 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
     start = _singular_start(compiled, t_start) if not out.success else None
     if start and start not in message:
         message = f"{message}; {start}"
+    missed = out.stats.interpolated_outputs
+    if missed:
+        # the algebraic values there could not be solved from the states: said, not hidden
+        message = (f"{message}; at {missed} requested output time(s) the algebraic "
+                   "unknowns without an error bound are interpolated, not solved")
+        warnings.warn(f"simulate: {message}", RuntimeWarning, stacklevel=3)
     return _result(compiled, out, out.success, message, marks)
 
 

@@ -35,7 +35,7 @@ from .delays import DelayLines, FilledCode
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from .dynamic import DynamicStateSelection
 from .events import WhenClauses, iterate_event
-from .initial import InitialConditions, initialize, reinitialize
+from .initial import InitialConditions, consistent_output, initialize, reinitialize
 from .modes import DiscreteState
 
 __all__ = ["CompiledModel"]
@@ -179,6 +179,10 @@ class CompiledModel(DAEProblem):
         self.state_index = np.concatenate([self.state_z, self.link_s]).astype(np.int64)
         self.algebraic = np.ones(self.n, dtype=bool)
         self.algebraic[self.state_index] = False
+        # algebraic unknowns the error test leaves out (as solvers.bdf decides, from
+        # contract item 6): values at output times between steps are solved for them
+        out = self.algebraic & self.self_scaled
+        self.uncontrolled = bool(out.any() and not out.all())
         r0 = self.n_res + len(self.state_z)
         rows_link = r0 + np.arange(len(self.link_s))
         c = self.code
@@ -390,6 +394,14 @@ class CompiledModel(DAEProblem):
     def reinitialize(self, t, z, zp, rtol=1e-6, atol=1e-6):
         """After an event: states kept, algebraic unknowns and every z' made consistent."""
         return reinitialize(self, t, z, zp, rtol=rtol, atol=atol)
+
+    def output_point(self, t, z, rtol):
+        """Solver contract item 17: z at an output time between steps, its algebraic
+        unknowns solved from the interpolated states where the error test leaves some
+        out (:func:`.initial.consistent_output`); None where that fails."""
+        if not self.uncontrolled:
+            return z
+        return consistent_output(self, t, z, rtol)
 
     # -- dynamic state selection ------------------------------------------------------------
     def reselect_states(self, t, z, hysteresis=0.5) -> bool:

@@ -87,6 +87,12 @@ What a problem provides (numbered, so integrators can cite it)
    with every output point (``SolverOutput.point_values``, one row per point): the
    delayed values, which results need after the history is gone.
 
+17. ``output_point(t, y, rtol) -> y | None`` (optional): y at a requested output time
+   that falls between steps, given its interpolated value; the problem may solve
+   components the error test does not bound between steps (item 6) from its
+   equations.  None: it could not, the interpolated value is kept and counted
+   (``SolverStats.interpolated_outputs``).
+
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
 (convergence) failures, events, the steps taken at each order, the order reductions
@@ -169,6 +175,7 @@ class SolverStats:
     stability_limit_reductions: int = 0   # order lowered by stability limit detection
     linear_solver: str = ""      # "dense" or "sparse" LU, as chosen for the problem
     step_loop: str = "python"    # where the steps ran: "python" or "c" (solvers.cbdf)
+    interpolated_outputs: int = 0   # output times whose item-17 solve failed
 
     def as_dict(self) -> dict:
         return dict(self.__dict__)

@@ -38,8 +38,9 @@ from __future__ import annotations
 import numpy as np
 
 from .base import (DAEProblem, EventAction, InitializationFailed, SimulationError,
-                   SolverOutput, SolverStats, equation_label)
+                   SolverOutput, SolverStats)
 from .bdf import BDF, StepFailure
+from .failures import failure_message
 from .initialization import consistent_initial, reinitialize
 
 __all__ = ["integrate"]
@@ -50,7 +51,6 @@ _ZENO_RATIO = 0.95       # ... each at most this ratio of the one before ...
 _ZENO_SPREAD = 1.15      # ... and nearly constant (max/min ratio) means Zeno
 _BURST_EVENTS = 50       # this many state events ...
 _BURST_WINDOW = 1e-6     # ... within this fraction of the span means chattering
-_N_NAMED = 3
 _ECHO_TTOLS = 1e3        # an unchanged event this close (in ttol) to the last is the same
 
 
@@ -167,6 +167,7 @@ class _Run:
         # the accepted solution (item 15) and values recorded per output point (item 16)
         self.commit = getattr(problem, "commit", None)
         self.point_values = getattr(problem, "point_values", None)
+        self.output_point = getattr(problem, "output_point", None)      # item 17
         self.values = []
 
     # ------------------------------------------------------------------ main loop
@@ -243,6 +244,8 @@ class _Run:
         ts, ys, yps = s.points
         if self.t_eval is not None:
             self.i_eval = s.i_eval
+            for k in range(len(ts)):       # interpolated in C, in this discrete state
+                ys[k] = self._consistent(ts[k], ys[k])
         if len(ts):
             # a block of points as one (k, n) array: _output stacks blocks and rows
             self.ts.extend(ts.tolist())
@@ -310,8 +313,20 @@ class _Run:
         while self.i_eval < ev.size and (ev[self.i_eval] < t_hi or (
                 ev[self.i_eval] == t_hi and not before_event)):
             if ev[self.i_eval] >= t_lo:
-                self._append(ev[self.i_eval], *s.interpolate(ev[self.i_eval]), snapshot)
+                t = ev[self.i_eval]
+                y, yp = s.interpolate(t)
+                self._append(t, self._consistent(t, y), yp, snapshot)
             self.i_eval += 1
+
+    def _consistent(self, t, y):
+        """y at an output time between steps, as the problem completes it (item 17)."""
+        if self.output_point is None:
+            return y
+        z = self.output_point(float(t), y, self.rtol)
+        if z is None:
+            self.stats.interpolated_outputs += 1
+            return y
+        return z
 
     def _emit_eval_rest(self) -> None:
         """t_eval points equal to t_end after rounding."""
@@ -361,58 +376,7 @@ class _Run:
         return SimulationError(message, t=t, variables=list(variables), partial=partial)
 
     def _step_failure(self, exc: StepFailure) -> SimulationError:
-        names = self.problem.names
-        if exc.kind == "singular":
-            variables = [names[c] for c in exc.cols]
-            equations = [equation_label(self.problem, r) for r in exc.rows]
-            if "non-finite" in str(exc):
-                # not a structural matter: a derivative that is infinite there
-                msg = (f"the iteration matrix has non-finite entries at t={exc.t:.10g}: "
-                       f"the derivatives of equations {equations} with respect to "
-                       f"{variables} are not finite (a function at the edge of its "
-                       f"domain, such as sqrt(x) at x = 0, or a division by a variable "
-                       f"that reached 0)")
-            else:
-                msg = (f"singular iteration matrix at t={exc.t:.10g}: variables "
-                       f"{variables}, equations {equations} (a higher-index or "
-                       f"structurally singular model, or a singular configuration of it)")
-            return self._error(msg, exc.t, variables)
-        undefined = self._non_finite_residuals()
-        if undefined:
-            msg = (f"the residuals of equations {undefined} are not finite at "
-                   f"t={self.solver.t:.10g} (an undefined value where the solution is: "
-                   f"a division by zero or a function outside its domain, possibly in "
-                   f"the branch of an if-expression or min/max that was just taken)")
-            return self._error(msg, exc.t, [])
-        variables = self._dominant(exc.weighted)
-        what = {"step_size": "step size too small",
-                "error_test": "repeated local error test failures",
-                "newton": "repeated corrector (Newton) convergence failures"}.get(
-                    exc.kind, exc.kind)
-        msg = (f"{what} at t={exc.t:.10g} (h={exc.h:.3g}); the largest weighted errors "
-               f"are in {variables}. The solution may blow up, be non-smooth, or the "
-               f"model may switch without an event there")
-        return self._error(msg, exc.t, variables)
-
-    def _non_finite_residuals(self) -> list:
-        """The equations whose residual is NaN or infinite at the last accepted point
-        (a failed step leaves the solver there): no step can succeed from there."""
-        s = getattr(self, "solver", None)
-        if s is None:
-            return []
-        try:
-            with np.errstate(all="ignore"):
-                r = np.asarray(self.problem.residual(s.t, s.y, s.yp), float)
-        except Exception:   # a residual that raises is reported by the step failure
-            return []
-        return [equation_label(self.problem, i) for i in np.flatnonzero(~np.isfinite(r))]
-
-    def _dominant(self, weighted):
-        if weighted is None:
-            return []
-        v = np.nan_to_num(np.abs(weighted), nan=np.inf)
-        order = np.argsort(-v, kind="stable")[:_N_NAMED]
-        return [self.problem.names[i] for i in order if v[i] > 0]
+        return self._error(*failure_message(self.problem, getattr(self, "solver", None), exc))
 
     # ------------------------------------------------------------------ roots
     def _signed_roots(self, t, y, yp) -> np.ndarray:
