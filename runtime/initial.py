@@ -33,6 +33,8 @@ unknowns are solved again.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..errors import InitializationFailed
@@ -192,28 +194,62 @@ def consistent_output(model, t: float, z: np.ndarray, rtol: float):
     are therefore computed from the interpolated states by the model's equations, as
     a tool integrating the states alone computes its algebraic variables.  Only models
     with such unknowns need it (:attr:`CompiledModel.uncontrolled`); the others'
-    interpolants are held to the tolerance by the error test."""
-    alg = np.flatnonzero(model.algebraic)
+    interpolants are held to the tolerance by the error test.
+
+    Output times are usually close together, so the factorization of the last one is
+    used again (a chord iteration) while it converges, and made afresh where it does
+    not: a point then costs a residual and a solve."""
+    alg = model.algebraic_index
     z = np.array(z, dtype=float)
     if not alg.size:
         return z
+    kept = getattr(model, "_output_lu", None)
+    lin = kept[1] if kept is not None and kept[0] is model._jac_indptr else None
+    for fresh in ((False, True) if lin is not None else (True,)):
+        if fresh:
+            lin = _output_factor(model, t, z, alg)
+            if lin is None:
+                return None
+            model._output_lu = (model._jac_indptr, lin)
+        trial = z.copy()
+        if _chord(model, t, trial, alg, lin, rtol):
+            return trial
+    return None
+
+
+def _output_factor(model, t, z, alg):
+    """The LU of dG/dz over the algebraic unknowns at (t, z), or None if singular."""
     dense = model.n <= SPARSE_THRESHOLD
-    lin = LinearSolver(alg.size, not dense)
+    try:
+        J = model.dG_dy(t, z, dense=dense)
+        lin = LinearSolver(alg.size, not dense)
+        lin.factor(J[:, alg] if dense else J.tocsc()[:, alg])
+    except SingularMatrixError:
+        return None
+    return lin
+
+
+def _chord(model, t, z, alg, lin, rtol) -> bool:
+    """Newton's corrections with the factorization ``lin``, in place, until the last is
+    half the tolerance (what is left is that times the contraction rate, small for a
+    matrix of a nearby point); False if they stall or the residual is not finite."""
+    last = np.inf
+    nominal = model.nominal[alg]
     for _ in range(_OUTPUT_ITERATIONS):
         g = model.G(t, z)
-        if not np.all(np.isfinite(g)):
-            return None
-        J = model.dG_dy(t, z, dense=dense)
-        try:
-            lin.factor(J[:, alg] if dense else J.tocsc()[:, alg])
-            dx = lin.solve(g)
-        except SingularMatrixError:
-            return None
-        z[alg] -= dx
-        weights = 1.0 / (rtol * np.abs(z[alg]) + rtol * model.nominal[alg])
-        if np.sqrt(np.mean((dx * weights) ** 2)) <= 1e-3:
-            return z
-    return None
+        dx = lin.solve(g)
+        if not np.isfinite(dx.sum()):
+            return False
+        za = z[alg] - dx
+        z[alg] = za
+        scaled = dx / (rtol * (np.abs(za) + nominal))
+        size = math.sqrt(scaled.dot(scaled) / scaled.size)
+        if size <= 0.5:
+            return True
+        if not size < 0.5 * last:
+            return False
+        last = size
+    return False
 
 
 def algebraic_system(model, t: float, z: np.ndarray):

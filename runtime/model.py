@@ -179,6 +179,7 @@ class CompiledModel(DAEProblem):
         self.state_index = np.concatenate([self.state_z, self.link_s]).astype(np.int64)
         self.algebraic = np.ones(self.n, dtype=bool)
         self.algebraic[self.state_index] = False
+        self.algebraic_index = np.flatnonzero(self.algebraic)
         # algebraic unknowns the error test leaves out (as solvers.bdf decides, from
         # contract item 6): values at output times between steps are solved for them
         out = self.algebraic & self.self_scaled
