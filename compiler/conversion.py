@@ -515,7 +515,9 @@ def convert_model(system, structure: Structure, flat) -> ConversionResult:
 
 
 def _numeric_block(system, rows, symbolic, res, chains) -> NumericBlock:
-    cols = [res.transversal[i] for i in rows]
+    # the block's columns in their own order, not the transversal's: several
+    # transversals of highest value may exist, and the block is the same for each
+    cols = sorted({res.transversal[i] for i in rows})
     pos_r = {i: k for k, i in enumerate(rows)}
     pos_c = {j: k for k, j in enumerate(cols)}
     return NumericBlock(list(rows), [system.equations[i].name(system) for i in rows],
