@@ -109,6 +109,23 @@ def _entries(sigma) -> tuple:
     return a.shape[0], a.shape[1], i, j, a[i, j]
 
 
+def _certified(n: int, i, j, val, start):
+    """The transversal of ``start = (transversal, c, d)`` if the offsets prove it one of
+    highest value, else None.  The proof is the assignment problem's duality: offsets
+    with ``d_j - c_i >= sigma_ij`` on every entry bound every transversal's value by
+    ``sum d - sum c``, which a transversal on which they hold with equality reaches."""
+    cols, c, d = (np.asarray(x, dtype=np.int64) for x in start)
+    if cols.shape != (n,) or c.shape != (n,) or d.shape != (n,):
+        return None
+    if not np.array_equal(np.sort(cols), np.arange(n)):
+        return None
+    slack = d[j] - c[i] - val
+    on_t = cols[i] == j
+    if (slack < 0).any() or on_t.sum() != n or (slack[on_t] != 0).any():
+        return None
+    return cols
+
+
 def _transversal(n: int, i, j, val) -> np.ndarray:
     """Step 1: column of each row in a maximum-value transversal."""
     if n <= _OWN_LIMIT:
@@ -243,7 +260,7 @@ def _offsets(n: int, i, j, val, cols) -> tuple:
         c = c_new
 
 
-def sigma_method(sigma) -> SigmaResult:
+def sigma_method(sigma, start=None) -> SigmaResult:
     """Pryce's structural analysis of a square signature matrix.
 
     Parameters
@@ -251,6 +268,11 @@ def sigma_method(sigma) -> SigmaResult:
     sigma : array_like of shape (n, n), or dict
         ``sigma[i][j]``: order of variable j in equation i; ``None`` or ``-inf`` where
         absent.  Or a dict ``{(i, j): order}`` of the present entries.
+    start : tuple, optional
+        ``(transversal, c, d)`` found by other means (Pantelides' final matching and
+        differentiation counts): taken as step 1's result when the offsets prove the
+        transversal of highest value (:func:`_certified`), else step 1 runs.  The
+        offsets returned are the smallest ones either way, computed from it.
 
     Returns
     -------
@@ -266,7 +288,9 @@ def sigma_method(sigma) -> SigmaResult:
         raise StructurallySingular(f"signature matrix is not square: {n} x {m}")
     if n == 0:
         return SigmaResult([], [], [], 0, 0, 0)
-    cols = _transversal(n, i, j, val)
+    cols = _certified(n, i, j, val, start) if start is not None else None
+    if cols is None:
+        cols = _transversal(n, i, j, val)
     c, d, value = _offsets(n, i, j, val, cols)
     index = int(c.max()) + (1 if (d == 0).any() else 0)
     return SigmaResult([int(x) for x in cols], c.tolist(), d.tolist(), index,

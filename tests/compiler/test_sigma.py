@@ -169,3 +169,46 @@ def test_large_model_needs_no_scipy():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          timeout=120, check=True).stdout.split()
     assert out == ["2", "0", "False"]
+
+
+def test_a_transversal_given_is_used_only_when_its_offsets_prove_it():
+    """Pantelides' final matching read as a transversal, as the index-as-written report
+    passes it: on random well-posed DAEs it is proved of highest value, and the offsets
+    are those the Sigma-method finds alone.  A start whose offsets prove nothing (one
+    offset lowered, or a transversal not of highest value) is ignored, same result."""
+    from acausal.compiler import sigma as sig_mod
+    from acausal.compiler.reduction import _pantelides_transversal
+    rng = random.Random(3)
+    proved = refused = 0
+    for _ in range(600):
+        s = _random_dae(rng)
+        if diagnose(s).kind != "ok":
+            continue
+        entries, columns = signature_matrix(s, sparse=True)
+        alone = sigma_method(entries)
+        start = _pantelides_transversal(pantelides(s), columns, s.n_eqs)
+        n, _, i, j, val = sig_mod._entries(entries)
+        assert sig_mod._certified(n, i, j, val, start) is not None
+        proved += 1
+        given = sigma_method(entries, start=start)
+        assert (given.c, given.d, given.index, given.dof, given.value) == \
+            (alone.c, alone.d, alone.index, alone.dof, alone.value)
+        transversal, c, d = start
+        if max(d) > 0:                 # a tight offset lowered: no longer a proof
+            k = d.index(max(d))
+            wrong = (transversal, c, d[:k] + [d[k] - 1] + d[k + 1:])
+            assert sig_mod._certified(n, i, j, val, wrong) is None
+            assert sigma_method(entries, start=wrong) == alone
+            refused += 1
+    assert proved > 200 and refused > 50
+
+
+def test_a_start_that_is_not_a_highest_value_transversal_is_refused():
+    # x' + y = 0, x + y' = 0 as sigma [[1, 0], [0, 1]]: the diagonal (value 2) is the
+    # highest; the anti-diagonal (value 0) with offsets 0 proves nothing
+    sig = {(0, 0): 1, (0, 1): 0, (1, 0): 0, (1, 1): 1}
+    n, _, i, j, val = sigma_mod._entries(sig)
+    assert sigma_mod._certified(n, i, j, val, ([1, 0], [0, 0], [0, 0])) is None
+    assert sigma_mod._certified(n, i, j, val, ([0, 1], [0, 0], [1, 1])) is not None
+    r = sigma_method(sig, start=([1, 0], [0, 0], [0, 0]))
+    assert (r.transversal, r.c, r.d, r.index) == ([0, 1], [0, 0], [1, 1], 0)
