@@ -352,7 +352,11 @@ def _null_vectors(rows: dict) -> list:
     Exact elimination of a large regular block (the capacitors of a network) spends
     its time on the growth of its integers; mod p it is the sparse elimination alone.
     """
-    if _full_row_rank_mod_p(rows):
+    if len(rows) == 1:      # most blocks: one row, of full rank if an entry is not 0
+        (row,) = rows.values()
+        if any(row.values()):
+            return []
+    elif _full_row_rank_mod_p(rows):
         return []
     return left_null_vectors(rows)
 
