@@ -352,7 +352,11 @@ def _null_vectors(rows: dict) -> list:
     Exact elimination of a large regular block (the capacitors of a network) spends
     its time on the growth of its integers; mod p it is the sparse elimination alone.
     """
-    if _full_row_rank_mod_p(rows):
+    if len(rows) == 1:      # most blocks: one row, of full rank if an entry is not 0
+        (row,) = rows.values()
+        if any(row.values()):
+            return []
+    elif _full_row_rank_mod_p(rows):
         return []
     return left_null_vectors(rows)
 
@@ -515,7 +519,9 @@ def convert_model(system, structure: Structure, flat) -> ConversionResult:
 
 
 def _numeric_block(system, rows, symbolic, res, chains) -> NumericBlock:
-    cols = [res.transversal[i] for i in rows]
+    # the block's columns in their own order, not the transversal's: several
+    # transversals of highest value may exist, and the block is the same for each
+    cols = sorted({res.transversal[i] for i in rows})
     pos_r = {i: k for k, i in enumerate(rows)}
     pos_c = {j: k for k, j in enumerate(cols)}
     return NumericBlock(list(rows), [system.equations[i].name(system) for i in rows],

@@ -19,24 +19,33 @@ __all__ = ["partial", "plain_coefficient", "solve_linear"]
 def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
     """d expr / d x."""
     if x not in _symbols(expr):
-        return sp.Integer(0)
+        return sp.S.Zero
     if expr == x:
-        return sp.Integer(1)
+        return sp.S.One
     if expr.is_Add:
-        return sp.Add(*[partial(a, x) for a in expr.args if x in _symbols(a)])
+        return _sum([partial(a, x) for a in expr.args if x in _symbols(a)])
     if expr.is_Mul:
         # product rule over the factors that contain x
         args = expr.args
         terms = []
         for i, a in enumerate(args):
             if x in _symbols(a):
-                terms.append(sp.Mul(*args[:i], partial(a, x), *args[i + 1:]))
-        return sp.Add(*terms)
+                inner = partial(a, x)
+                if len(args) == 2 and inner is sp.S.One:   # k*x: Mul(k, 1) is k
+                    terms.append(args[1 - i])
+                else:
+                    terms.append(sp.Mul(*args[:i], inner, *args[i + 1:]))
+        return _sum(terms)
     if expr.is_Pow and x not in _symbols(expr.exp):
         # r u^(r-1) u' directly: sympy writes r u^r/u, which is 0/0 where u = 0
         base, r = expr.args
         return r * base ** (r - 1) * partial(base, x)
     return sp.diff(expr, x)
+
+
+def _sum(terms: list) -> sp.Expr:
+    """``Add(*terms)``; a single term is its own sum (what Add returns for it)."""
+    return terms[0] if len(terms) == 1 else sp.Add(*terms)
 
 
 def solve_linear(residual, x):

@@ -470,10 +470,12 @@ def _cycle_error(flat: FlatModel, exprs: dict, waits: dict) -> InvalidValue:
 def _check_bounds(flat: FlatModel, resolved: dict) -> None:
     """Each parameter's value (a binding evaluated with the values it uses) is a real
     number within its declared [min, max]."""
-    leaf = {p.symbol: _as_sympy_number(p.value) for p in flat.parameters
-            if p.symbol not in resolved}
+    leaf = None        # the values bindings are evaluated with, made for the first one
     for p in flat.parameters:
         if p.symbol in resolved:
+            if leaf is None:
+                leaf = {q.symbol: _as_sympy_number(q.value) for q in flat.parameters
+                        if q.symbol not in resolved}
             expr = resolved[p.symbol].xreplace(leaf)
             try:
                 value = float(expr)

@@ -86,8 +86,10 @@ def as_written(flat) -> dict:
     from .structure import StructuralError
     s = _flat_structure(flat)
     try:
-        counts = pantelides(s).diff_counts[: s.n_eqs]
-        sig = sigma_method(signature_matrix(s, sparse=True)[0])
+        found = pantelides(s)
+        counts = found.diff_counts[: s.n_eqs]
+        entries, columns = signature_matrix(s, sparse=True)
+        sig = sigma_method(entries, start=_pantelides_transversal(found, columns, s.n_eqs))
     except StructuralError as err:   # report only: the balance pass has the diagnosis
         return {"error": str(err).splitlines()[0]}
     index_p = _index_from_counts(counts, sig.d)
@@ -96,6 +98,38 @@ def as_written(flat) -> dict:
             "counts": counts, "c": sig.c, "d": sig.d, "dof": sig.dof,
             "agrees": index_p == sig.index and not disagree,
             "disagreements": [s.eq_names[k] for k in disagree][:20]}
+
+
+def _pantelides_transversal(found, columns: list, n_eqs: int):
+    """Pantelides' final matching read as a transversal of the signature matrix, with
+    offsets: equation i, differentiated c_i times, is matched to the highest derivative
+    of a variable chain j, whose order d_j is the highest the chain reached.  The
+    Sigma-method uses it only if these offsets prove it of highest value, which saves
+    it an assignment problem of the model's size; the offsets it reports, the smallest,
+    it computes from the transversal, not from Pantelides' counts."""
+    from .structure import base_variables
+    aug = found.structure
+    base = base_variables(aug)
+    col = {b: k for k, b in enumerate(columns)}
+    d = [0] * len(columns)
+    for v in range(aug.n_vars):
+        if aug.diff_to_var[v] is UNASSIGNED:        # walk each chain up once
+            k, w = 0, aug.var_to_diff[v]
+            while w is not UNASSIGNED:
+                k, w = k + 1, aug.var_to_diff[w]
+            j = col.get(v)
+            if j is not None:
+                d[j] = k
+    transversal = []
+    for e, c in enumerate(found.diff_counts[:n_eqs]):
+        top = e
+        for _ in range(c):
+            top = aug.eq_to_diff[top]
+        v = found.eq_to_var[top]
+        if v is UNASSIGNED or base[v] not in col:
+            return None
+        transversal.append(col[base[v]])
+    return transversal, found.diff_counts[:n_eqs], d
 
 
 def _index_from_counts(counts, d) -> int:

@@ -23,15 +23,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from .graph import Structure
-from .structure import StructurallySingular, base_variables
+from .structure import StructurallySingular, _match, base_variables
 
 __all__ = ["SigmaResult", "signature_matrix", "sigma_method"]
 
-_DENSE_LIMIT = 1000    # above this, the sparse assignment solver is used
-# Up to this size the assignment is solved here (Hungarian method) rather than by
-# scipy.optimize, whose import (0.3-0.4 s, with scipy.sparse and scipy.linalg) is longer
-# than the whole compile of a small model; the pure-numpy method costs O(n^2) vector
-# operations, under 20 ms at this size.
+# Up to this size the assignment is solved densely (Hungarian method, O(n^2) vector
+# operations); past it on the finite entries only (_sparse_transversal).  Neither needs
+# scipy, whose import (0.3-0.5 s with scipy.sparse) is longer than the whole compile of
+# a small model.
 _OWN_LIMIT = 40
 
 
@@ -110,33 +109,101 @@ def _entries(sigma) -> tuple:
     return a.shape[0], a.shape[1], i, j, a[i, j]
 
 
+def _certified(n: int, i, j, val, start):
+    """The transversal of ``start = (transversal, c, d)`` if the offsets prove it one of
+    highest value, else None.  The proof is the assignment problem's duality: offsets
+    with ``d_j - c_i >= sigma_ij`` on every entry bound every transversal's value by
+    ``sum d - sum c``, which a transversal on which they hold with equality reaches."""
+    cols, c, d = (np.asarray(x, dtype=np.int64) for x in start)
+    if cols.shape != (n,) or c.shape != (n,) or d.shape != (n,):
+        return None
+    if not np.array_equal(np.sort(cols), np.arange(n)):
+        return None
+    slack = d[j] - c[i] - val
+    on_t = cols[i] == j
+    if (slack < 0).any() or on_t.sum() != n or (slack[on_t] != 0).any():
+        return None
+    return cols
+
+
 def _transversal(n: int, i, j, val) -> np.ndarray:
     """Step 1: column of each row in a maximum-value transversal."""
-    top = val.max(initial=0.0)
-    if n <= _DENSE_LIMIT:
+    if n <= _OWN_LIMIT:
         finite = np.zeros((n, n), bool)
         finite[i, j] = True
+        top = val.max(initial=0.0)
         big = (n + 1) * (top - val.min(initial=0.0) + 1)
         a = np.full((n, n), -big)
         a[i, j] = val
-        if n <= _OWN_LIMIT:
-            cols = _hungarian(-a)
-        else:
-            from scipy.optimize import linear_sum_assignment
-            _, cols = linear_sum_assignment(a, maximize=True)
-        ok = finite[np.arange(n), cols].all()
-    else:       # weights top+1-sigma are all >= 1: no entry is an implicit zero
-        from scipy.sparse import csr_matrix
-        from scipy.sparse.csgraph import min_weight_full_bipartite_matching
-        w = csr_matrix((top + 1 - val, (i, j)), shape=(n, n))
-        try:
-            _, cols = min_weight_full_bipartite_matching(w)
-            ok = True
-        except ValueError:
-            ok = False
-    if not ok:
+        cols = _hungarian(-a)
+        if not finite[np.arange(n), cols].all():
+            raise StructurallySingular("signature matrix has no finite transversal")
+        return cols
+    return _sparse_transversal(n, i.tolist(), j.tolist(), [int(v) for v in val.tolist()])
+
+
+def _sparse_transversal(n: int, rows: list, cols: list, vals: list) -> np.ndarray:
+    """The primal-dual (Hungarian) method on the finite entries only, in integers.
+
+    Offsets c (rows) and d (columns) with ``d_j - c_i >= sigma_ij`` are kept throughout
+    (the dual of the assignment problem), starting from c = 0 and d_j the column
+    maximum; the entries where equality holds (tight) are matched by Hopcroft-Karp,
+    resumed from the previous matching.  While rows remain free, a Dijkstra search from
+    them over the slacks ``d_j - c_i - sigma_ij`` (matched entries cost nothing) finds
+    the distance D of the nearest free column, and each node reached closer than D has
+    its offset raised by D minus its distance: the offsets stay feasible, matched
+    entries stay tight and a shortest augmenting path becomes tight.  A perfect matching
+    on tight entries is a transversal of highest value (its value equals
+    ``sum d - sum c``, a bound for every transversal).  The rounds are about as many as
+    the distinct distances, a few for a model: no dense n x n matrix and no solver
+    import at any size."""
+    import heapq
+    adj = [[] for _ in range(n)]
+    d = [None] * n
+    for r, k, v in zip(rows, cols, vals):
+        adj[r].append((k, v))
+        if d[k] is None or v > d[k]:
+            d[k] = v
+    if None in d or not all(adj):
         raise StructurallySingular("signature matrix has no finite transversal")
-    return np.asarray(cols)
+    c = [0] * n
+    l2r, r2l = [-1] * n, [-1] * n
+    while True:
+        tight = [[k for k, v in entries if d[k] - cr == v]
+                 for entries, cr in zip(adj, c)]
+        l2r, r2l = _match(tight, n, l2r, r2l)
+        free = [r for r in range(n) if l2r[r] < 0]
+        if not free:
+            return np.array(l2r, dtype=np.int64)
+        row_dist, col_dist, best = {}, {}, {}
+        heap = [(0, 0, r) for r in free]          # (distance, 0 row / 1 column, index)
+        reach = None
+        while heap:
+            dist, kind, x = heapq.heappop(heap)
+            if kind == 0:
+                if x in row_dist:
+                    continue
+                row_dist[x] = dist
+                cx = c[x]
+                for k, v in adj[x]:
+                    nd = dist + d[k] - cx - v
+                    if k not in col_dist and nd < best.get(k, nd + 1):
+                        best[k] = nd
+                        heapq.heappush(heap, (nd, 1, k))
+            elif x not in col_dist and best[x] == dist:
+                col_dist[x] = dist
+                owner = r2l[x]
+                if owner < 0:
+                    reach = dist
+                    break
+                if owner not in row_dist:
+                    heapq.heappush(heap, (dist, 0, owner))
+        if reach is None:
+            raise StructurallySingular("signature matrix has no finite transversal")
+        for r, dist in row_dist.items():
+            c[r] += reach - dist
+        for k, dist in col_dist.items():
+            d[k] += reach - dist
 
 
 def _hungarian(cost: np.ndarray) -> np.ndarray:
@@ -193,7 +260,7 @@ def _offsets(n: int, i, j, val, cols) -> tuple:
         c = c_new
 
 
-def sigma_method(sigma) -> SigmaResult:
+def sigma_method(sigma, start=None) -> SigmaResult:
     """Pryce's structural analysis of a square signature matrix.
 
     Parameters
@@ -201,6 +268,11 @@ def sigma_method(sigma) -> SigmaResult:
     sigma : array_like of shape (n, n), or dict
         ``sigma[i][j]``: order of variable j in equation i; ``None`` or ``-inf`` where
         absent.  Or a dict ``{(i, j): order}`` of the present entries.
+    start : tuple, optional
+        ``(transversal, c, d)`` found by other means (Pantelides' final matching and
+        differentiation counts): taken as step 1's result when the offsets prove the
+        transversal of highest value (:func:`_certified`), else step 1 runs.  The
+        offsets returned are the smallest ones either way, computed from it.
 
     Returns
     -------
@@ -216,7 +288,9 @@ def sigma_method(sigma) -> SigmaResult:
         raise StructurallySingular(f"signature matrix is not square: {n} x {m}")
     if n == 0:
         return SigmaResult([], [], [], 0, 0, 0)
-    cols = _transversal(n, i, j, val)
+    cols = _certified(n, i, j, val, start) if start is not None else None
+    if cols is None:
+        cols = _transversal(n, i, j, val)
     c, d, value = _offsets(n, i, j, val, cols)
     index = int(c.max()) + (1 if (d == 0).any() else 0)
     return SigmaResult([int(x) for x in cols], c.tolist(), d.tolist(), index,

@@ -248,11 +248,13 @@ def sum_partial(r: sp.Expr, x: sp.Symbol) -> sp.Expr:
         return partial(r, x)
     terms = _terms_with(r).get(x)
     if terms is None:
-        return sp.Integer(0)
+        return sp.S.Zero
+    if len(terms) == 1:
+        return partial(terms[0], x)
     return sp.Add(*[partial(t, x) for t in terms])
 
 
-@lru_cache(maxsize=4096)
+@lru_cache(maxsize=200_000)
 def _terms_with(r: sp.Expr) -> dict:
     """symbol -> the terms of the sum r that contain it, in the order of r's arguments
     (every symbol a term has, as ``has`` sees them)."""

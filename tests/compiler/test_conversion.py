@@ -324,3 +324,19 @@ def test_rank_mod_p_certifies_exact_full_rank():
         certified = _full_row_rank_mod_p(rows)
         assert certified == (not left_null_vectors(rows))   # no unlucky prime here
         assert not (dependent and certified)
+
+
+def test_a_one_row_block_whose_coefficient_is_zero_is_converted():
+    # f1: (C1 - C2) x' + x - sin t = 0 with C1 = C2 = 1:  Sigma = [[1]], J = [[C1 - C2]]
+    # = [[0]]: the one-row block is singular (u = (1)), and f1 without its x' term is
+    # x - sin t = 0, algebraic (Sigma = [[0]], index 1, no degree of freedom)
+    f1 = (C1 - C2) * der(x) + x - sp.sin(time)
+    system, values = system_of([f1], [x], {x: 1}, {C1: 1.0, C2: 1.0})
+    conv = convert(system, values=values)
+    assert conv.changed and conv.conversions[0].parameter_dependent
+    assert same(system.equations[0].residual, x - sp.sin(time))
+    assert conv.sigma.c == [0] and conv.sigma.d == [0] and conv.sigma.dof == 0
+    # with C2 = 2 the coefficient is -1: the block is regular and nothing changes
+    system, values = system_of([f1], [x], {x: 1}, {C1: 1.0, C2: 2.0})
+    conv = convert(system, values=values)
+    assert not conv.changed and conv.sigma.d == [1] and conv.sigma.dof == 1
