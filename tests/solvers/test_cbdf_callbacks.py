@@ -71,7 +71,7 @@ def test_the_sparse_analysis_is_made_once_per_model_and_pattern(monkeypatch):
     second run makes no analysis of its own and, from the same start, computes the
     same numbers."""
     from acausal.solvers import cbdf_sparse
-    from acausal.tests.models.test_large_ladder import Ladder
+    from acausal.tests.models.test_large_ladder import Ladder, _exact
     made = []
     analysis = cbdf_sparse.analysis
 
@@ -88,3 +88,10 @@ def test_the_sparse_analysis_is_made_once_per_model_and_pattern(monkeypatch):
     assert made == [True, False]
     np.testing.assert_array_equal(first.t, second.t)
     np.testing.assert_array_equal(first["C[109].v"], second["C[109].v"])
+    # and the run is the ladder's solution (matrix exponential)
+    t = np.linspace(0.0, 2e-3, 5)
+    res = ac.simulate(model, t_end=t[-1], rtol=1e-8, t_eval=t)
+    x = _exact(110, t)
+    for k in (0, 109):
+        assert np.max(np.abs(res[f"L[{k}].i"] - x[:, k])) <= 1e-5 * np.max(np.abs(x[:, 0]))
+        assert np.max(np.abs(res[f"C[{k}].v"] - x[:, 110 + k])) <= 1e-5 * np.max(np.abs(x[:, 110]))
