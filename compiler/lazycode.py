@@ -48,10 +48,14 @@ class GeneratedModule:
 
     @property
     def source(self) -> str:
-        if self._source is None:
-            self._source = self._printer()
+        source = self._source
+        if source is None:
+            printer = self._printer
+            if printer is None:         # printed by another thread meanwhile
+                return self._source
+            source = self._source = printer()
             self._printer = None
-        return self._source
+        return source
 
     @property
     def printed(self) -> bool:
