@@ -57,8 +57,8 @@ from .cachekeys import fingerprint, flat_key, tree_key
 from .lazycode import GeneratedModule, install_array_code
 
 __all__ = ["LoadedCode", "ParameterFunction", "portable", "load_notes", "flat_key",
-           "tree_key", "fingerprint", "lookup", "prepare", "store", "store_index",
-           "enabled", "models_dir"]
+           "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
+           "models_dir"]
 
 DEFAULT_SIZE = 512 * 2**20
 _MAGIC = importlib.util.MAGIC_NUMBER
@@ -358,37 +358,22 @@ def lookup(key: str | None = None, tree: str | None = None):
     return mc, _time.perf_counter() - t0
 
 
-def prepare(mc) -> bytes | None:
-    """The part of :func:`store` that does not depend on the backend's functions, done
-    ahead (while the C compiler runs, :func:`acausal.compiler.cbackend.bind`): the
-    pickled Programs of the side file (None if they do not pickle), and the texts of the
-    report's equations printed (a pickled report holds them).  Never raises."""
-    try:
-        mc.report.equations              # noqa: B018  (prints the texts)
-        list(mc.meta.get("equation_names", ()))
-    except Exception:      # noqa: BLE001 - printed again by the pickling, or not stored
-        pass
-    programs = {w: getattr(c, "program", None) for w, c in _codes(mc).items()}
-    try:
-        return pickle.dumps(programs, protocol=pickle.HIGHEST_PROTOCOL)
-    except Exception:      # noqa: BLE001 - then the entry keeps every source printed
-        return None
-
-
-def store(key: str, mc, tree: str | None = None, side=False) -> None:
+def store(key: str, mc, tree: str | None = None) -> None:
     """Write the portable form of ``mc`` under ``key`` (and the index for ``tree``),
-    atomically; a cache that cannot be written is skipped, never an error.  ``side``:
-    what :func:`prepare` returned for ``mc``, if it ran."""
+    atomically; a cache that cannot be written is skipped, never an error."""
     try:
         root = models_dir()
         path = os.path.join(root, f"{key}.pkl")
-        if side is False:
-            side = prepare(mc)
         # the side file first: an entry whose fallback sources are printed from its
         # Programs is only found with them (a concurrent lookup finds both or neither)
-        if side is not None:
-            _atomic_write(_side_file(path), side)
-        _atomic_write(path, pickle.dumps(portable(mc, entry=side is not None),
+        programs = {w: getattr(c, "program", None) for w, c in _codes(mc).items()}
+        try:
+            _atomic_write(_side_file(path),
+                          pickle.dumps(programs, protocol=pickle.HIGHEST_PROTOCOL))
+            sided = True
+        except Exception:      # noqa: BLE001 - then the entry keeps every source printed
+            sided = False
+        _atomic_write(path, pickle.dumps(portable(mc, entry=sided),
                                          protocol=pickle.HIGHEST_PROTOCOL))
         if tree is not None:
             store_index(tree, key)

@@ -336,23 +336,17 @@ def _numpy(mc, report) -> None:
                             f"statements as {made[1]} array operations")
 
 
-def bind(mc, backend: str, report, meanwhile=None) -> None:
+def bind(mc, backend: str, report) -> None:
     """Put the compiled functions behind the ModelCode ``mc`` (model, initial and when
     code share one library), or keep the Python ones: ``backend`` is ``"c"`` (raise
     :class:`BackendError` when it cannot be built), ``"numpy"``, or ``"auto"`` (C when a
-    compiler works, else numpy, with the reason in the report).
-
-    ``meanwhile``: a function of no arguments, called once whatever the backend; while
-    the C compiler runs, if it runs (a process of its own: the interpreter would only
-    wait for it).  The compile cache prepares its entry there."""
+    compiler works, else numpy, with the reason in the report)."""
     if backend not in BACKENDS:
         raise ValueError(f"backend must be one of {', '.join(map(repr, BACKENDS))}, "
                          f"got {backend!r}")
     mc.meta["backend"] = "numpy"
-    pending = [meanwhile] if meanwhile is not None else []
     if backend == "numpy":
-        _numpy(mc, report)
-        return _call(pending)
+        return _numpy(mc, report)
     codes = {"f_": mc.code, "i_": mc.initial.code}
     if mc.whens is not None:
         codes["w_"] = mc.whens.code
@@ -360,7 +354,7 @@ def bind(mc, backend: str, report, meanwhile=None) -> None:
         codes["d_"] = mc.delays.code
     try:
         source, sizes = c_source({k: c.program for k, c in codes.items()})
-        lib = _build_meanwhile(source, pending)
+        lib = build(source)
         for prefix, code in codes.items():
             attach(code, lib, prefix, sizes[prefix])
             code.c_source = source       # one string, shared: a pickle holds it once
@@ -369,39 +363,5 @@ def bind(mc, backend: str, report, meanwhile=None) -> None:
             raise BackendError(str(exc)) from exc
         report.notes.append(f"the C backend is not available ({str(exc).splitlines()[0]}); "
                             "the numpy backend runs the model")
-        _numpy(mc, report)
-        return _call(pending)
+        return _numpy(mc, report)
     mc.meta["backend"] = "c"
-
-
-def _call(pending: list) -> None:
-    """Call the function in ``pending``, if one is left there (it is taken out first:
-    called once)."""
-    if pending:
-        pending.pop()()
-
-
-def _build_meanwhile(source: str, pending: list) -> str:
-    """:func:`build` of ``source`` in a thread (which waits for the compiler processes)
-    while the function in ``pending`` runs in this one (:func:`_call`); the library's
-    path, or what the build raised.  The build is waited for however that ends."""
-    if not pending or compiler_available() is None:
-        return build(source)
-    import threading
-    done = {}
-
-    def run():
-        try:
-            done["lib"] = build(source)
-        except BaseException as exc:      # noqa: BLE001 - raised in the caller's thread
-            done["error"] = exc
-
-    worker = threading.Thread(target=run, name="acausal-build")
-    worker.start()
-    try:
-        _call(pending)
-    finally:
-        worker.join()
-    if "error" in done:
-        raise done["error"]
-    return done["lib"]

@@ -161,20 +161,11 @@ def _compile(model, backend, cache, check_units) -> ModelCode:
                 discretes, helds, delays)
     clock("report", report.fill, system, reduction, out)
     from .cbackend import bind
-    ahead = {}
-
-    def prepare():          # run while the C compiler works (or after the numpy backend)
-        t = _time.perf_counter()
-        ahead["side"] = store.prepare(out)
-        ahead["s"] = _time.perf_counter() - t
-
-    clock("c_backend", bind, out, backend, report, prepare if key is not None else None)
+    clock("c_backend", bind, out, backend, report)
     if key is not None:
         t2 = _time.perf_counter()
-        store.store(key, out, tree, ahead.get("side", False))
-        # not in the entry; the preparation is charged here, not to the backend
-        report.timings["c_backend"] -= ahead.get("s", 0.0)
-        report.timings["cache_store"] = _time.perf_counter() - t2 + ahead.get("s", 0.0)
+        store.store(key, out, tree)
+        report.timings["cache_store"] = _time.perf_counter() - t2    # not in the entry
     return out
 
 

@@ -134,38 +134,3 @@ def _source_of(model_class):
     if mc.whens is not None:
         codes["w_"] = mc.whens.code
     return cbackend.c_source({k: c.program for k, c in codes.items()})
-
-
-def test_the_cache_entry_is_prepared_once_while_the_compiler_runs(tmp_path, monkeypatch):
-    """The compile cache prints and pickles what it can of its entry while the C
-    compiler works (a process of its own); once on every path, and a build that fails
-    under ``backend="auto"`` still stores the numpy model, which loads and runs."""
-    import threading
-
-    from acausal.compiler import cache
-    monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path))
-    real_prepare, calls = cache.prepare, []
-
-    def prepare(mc):
-        calls.append(any(t.name == "acausal-build" for t in threading.enumerate()))
-        return real_prepare(mc)
-
-    monkeypatch.setattr(cache, "prepare", prepare)
-    ac.compile(LimitedHeater(), backend="c", cache=True)
-    assert calls == [True]
-    calls.clear()
-    ac.compile(LimitedHeater(), backend="numpy", cache=True)
-    assert calls == [False]
-    calls.clear()
-    real = cbackend.c_source
-    monkeypatch.setattr(cbackend, "c_source", lambda progs: (real(progs)[0] + BROKEN,
-                                                              real(progs)[1]))
-    monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path / "other"))
-    compiled = ac.compile(LimitedHeater(), backend="auto", cache=True)
-    assert compiled.backend == "numpy" and len(calls) == 1
-    again = ac.compile(LimitedHeater(), backend="auto", cache=True)
-    assert any("came from the compile cache" in n for n in again.report.notes)
-    assert again.backend == "numpy"
-    a = ac.simulate(compiled, t_end=600.0, rtol=1e-6)
-    b = ac.simulate(again, t_end=600.0, rtol=1e-6)
-    assert a.success and np.array_equal(a.t, b.t)
