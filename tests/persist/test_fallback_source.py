@@ -91,3 +91,15 @@ def test_pruning_removes_an_entry_with_its_side_file(cache_dir, monkeypatch):
     from acausal.compiler import cache
     cache._prune(str(cache_dir))
     assert not list(models.glob("*.pkl"))
+
+
+def test_a_model_from_the_cache_pickles_with_its_source_printed():
+    """A user's pickle of a model loaded from the cache carries the source (printed
+    from the entry's side file), so it needs neither the cache nor the Program."""
+    CompiledModel(compile_model(SqrtOfStart(), "c", cache=True))
+    loaded = CompiledModel(compile_model(SqrtOfStart(), "c", cache=True))
+    assert any(HIT in n for n in loaded.report.notes)
+    assert not loaded.model_code.initial.code.module.printed
+    again = pickle.loads(pickle.dumps(loaded))
+    assert again.model_code.initial.code.module.printed
+    assert _failure(again) == _numpy_message()
