@@ -55,13 +55,17 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
         # was never built here; a short one leaves it to the end of the first run
         from .solvers.cbdf import build_if_long
         during = build_if_long(_LONG_COMPILE)
-    exempting = _exemption_pending()
+    global _collected_before
+    exempting = _exemption_pending() and not _collected_before
     if exempting:
         # the garbage made so far is found while the heap is small; the collector then
-        # stays paused until what the compile leaves is frozen (compiler/gcpause.py)
+        # stays paused until what the compile leaves is frozen (compiler/gcpause.py).
+        # Once: a compile that loads no sympy (a model found by its instance tree) is
+        # not followed by the freeze, and later ones collect as before
         import gc
         from .compiler.gcpause import paused
         gc.collect()
+        _collected_before = True
     with during, paused() if exempting else contextlib.nullcontext():
         mc = compile_model(model, backend, cache=cache, check_units=check_units)
         _declare_units(mc, model)
@@ -74,6 +78,7 @@ _LONG_COMPILE = 2.0   # s: a compile still running then starts the step loop's b
 
 
 _exempted = False
+_collected_before = False       # a compile was preceded by a collection (see compile)
 
 
 def _exemption_pending() -> bool:
