@@ -55,10 +55,21 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
         # was never built here; a short one leaves it to the end of the first run
         from .solvers.cbdf import build_if_long
         during = build_if_long(_LONG_COMPILE)
-    with during:
+    global _collected_before
+    exempting = _exemption_pending() and not _collected_before
+    if exempting:
+        # the garbage made so far is found while the heap is small; the collector then
+        # stays paused until what the compile leaves is frozen (compiler/gcpause.py).
+        # Once: a compile that loads no sympy (a model found by its instance tree) is
+        # not followed by the freeze, and later ones collect as before
+        import gc
+        from .compiler.gcpause import paused
+        gc.collect()
+        _collected_before = True
+    with during, paused() if exempting else contextlib.nullcontext():
         mc = compile_model(model, backend, cache=cache, check_units=check_units)
-    _declare_units(mc, model)
-    _exempt_from_collector()
+        _declare_units(mc, model)
+        _exempt_from_collector(collected=exempting)
     return CompiledModel(mc)
 
 
@@ -67,31 +78,42 @@ _LONG_COMPILE = 2.0   # s: a compile still running then starts the step loop's b
 
 
 _exempted = False
+_collected_before = False       # a compile was preceded by a collection (see compile)
 
 
-def _exempt_from_collector() -> None:
+def _exemption_pending() -> bool:
+    """Whether the compile about to run may be the one after which
+    :func:`_exempt_from_collector` freezes (not yet done, not an interactive session)."""
+    return not (_exempted or hasattr(sys, "ps1") or sys.flags.interactive
+                or "IPython" in sys.modules)
+
+
+def _exempt_from_collector(collected: bool = False) -> None:
     """After the first compile that loaded sympy in a script (not an interactive
-    session), collect the garbage once and move what is left to the collector's
-    permanent generation (``gc.freeze``).
+    session), move what is alive to the collector's permanent generation
+    (``gc.freeze``), the garbage collected first: before the compile (``collected``,
+    the collector paused since) or now.
 
     Why: sympy's modules are some 65 000 objects that live as long as the process, and
     every full collection walks them -- above all the interpreter's at exit, which with
     sympy loaded took 0.1-0.2 s, as long as a small model's whole compile.  Frozen,
     they are no longer walked, and at exit they are left to the operating system
     rather than taken apart one by one (Python does not promise to finalize what is
-    alive at exit).  The price: an object that was alive at that moment and becomes
-    garbage in a reference cycle later is not collected, so the exemption is made
-    once per process, after the collection, and not in an interactive session, where
-    the objects made before the first compile may be many and exit time does not
-    matter."""
+    alive at exit).  Collected before the compile, what it keeps is frozen without
+    being walked (the walk of a large model's hundreds of thousands of objects took
+    0.4-0.6 s on an 18 000-equation one), and with it the compile's own garbage
+    cycles, a few hundred objects (:mod:`acausal.compiler.gcpause`).  The price: an
+    object that was alive at that moment and becomes garbage in a reference cycle later
+    is not collected, so the exemption is made once per process, and not in an
+    interactive session, where the objects made before the first compile may be many
+    and exit time does not matter."""
     global _exempted
-    if _exempted or "sympy" not in sys.modules or hasattr(sys, "ps1") \
-            or sys.flags.interactive or "IPython" in sys.modules:
+    if "sympy" not in sys.modules or not _exemption_pending():
         return
     _exempted = True
     import gc
     from .compiler import gcpause
-    if not gcpause.collected:       # the compile has just collected, if it was large
+    if not (collected or gcpause.collected):     # a large compile has just collected
         gc.collect()
     gcpause.collected = False
     gc.freeze()

@@ -160,15 +160,22 @@ class _Schedule:
     """Levels, groups and the layout of ``V`` for one function."""
 
     def __init__(self, statements, n_inputs, input_slot):
-        self.alias = {}
+        # a value is computed before it is read, so an alias is entered resolved: one
+        # look-up resolves any value (this loop runs once per statement and leaf)
+        self.alias = alias = {}
         level = {}
         groups = {}
         for st in statements:
             src = _copy_of(st)
             if src is not None:
-                self.alias[st.target] = self._resolve(src)
+                alias[st.target] = alias.get(src, src)
                 continue
-            lv = 1 + max((level.get(self._resolve(v), 0) for v in st.leaves), default=0)
+            lv = 0
+            for v in st.leaves:
+                n = level.get(alias.get(v, v), 0)
+                if n > lv:
+                    lv = n
+            lv += 1
             level[st.target] = lv
             groups.setdefault((lv, st.key), []).append(st)
         self.groups = sorted(groups.values(), key=lambda g: level[g[0].target])
@@ -180,13 +187,8 @@ class _Schedule:
                 n += 1
         self.slot, self.size = slot, n
 
-    def _resolve(self, v):
-        while v in self.alias:
-            v = self.alias[v]
-        return v
-
     def where(self, v) -> int:
-        return self.slot[self._resolve(v)]
+        return self.slot[self.alias.get(v, v)]
 
 
 # numpy's names where they differ from C's (numpy < 2 has no asin, ...), and floor and

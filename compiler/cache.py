@@ -95,35 +95,61 @@ class LoadedCode:
     Python has the same bytecode version; a source behind a C library that never ran
     goes without), so it is rebuilt, not unpickled, in the receiving process.  A code loaded from the compile cache finds its Program in the
     entry's side file when something asks for it (an FMU export prints its C from it):
-    only then are the Program and sympy loaded."""
+    only then are the Program and sympy loaded.
 
-    _program = None
-    _program_file = None        # (path of the side file, which code), set by lookup()
+    In a compile cache entry (:func:`store`) a Python source that is only the fallback
+    of a C library or of array code and was never printed is not printed for it either:
+    the entry keeps the names of its functions, and the source is printed from the
+    Program in the side file when first needed (a failing statement to name, a call the
+    C library could not finish).  An entry whose side file is gone is not loaded
+    (:func:`lookup`)."""
+
+    _in_cache_entry = False     # pickled into a cache entry, which has the side file
 
     @property
     def program(self):
-        if self._program is None and self._program_file is not None:
-            self._program = _load_program(*self._program_file)
-            self._program_file = None
-        return self._program
+        return self._place.get()
 
     @program.setter
     def program(self, value) -> None:
-        self._program = value
+        place = self.__dict__.get("_place")
+        if place is None:
+            self._place = _ProgramPlace(value)
+        else:               # the place its module's printer reads stays the same
+            place.program = value
 
-    def __init__(self, source, jac_rows, jac_cols, n_rows, n_roots, digest, c=None,
+    @property
+    def _program_file(self):
+        return self._place.file
+
+    @_program_file.setter
+    def _program_file(self, where) -> None:
+        """(path of the side file, which code), set by :func:`lookup`."""
+        self._place.file = where
+
+    @property
+    def source(self) -> str:
+        return self.module.source
+
+    @property
+    def digest(self) -> str:
+        import hashlib
+        return hashlib.sha1(self.source.encode()).hexdigest()[:16]
+
+    def __init__(self, source, jac_rows, jac_cols, n_rows, n_roots, names=None, c=None,
                  bytecode=None, array_source=None):
         self.bytecode = bytecode if bytecode and bytecode[:len(_MAGIC)] == _MAGIC else None
-        self.source = source
+        self.program = None
+        if source is None:          # printed from the Program of the entry's side file
+            source = self._place.python_source
         # executed when a function is first called: behind a C library, rarely
-        self.module = module = GeneratedModule(source, self.bytecode)
+        self.module = module = GeneratedModule(source, self.bytecode, names=names)
         fn = module.function
         self.residual, self.jacobian, self.roots = fn("residual"), fn("jacobian"), fn("roots")
         self.scales, self.expand = fn("scales"), fn("expand")
         self.jac_rows = np.asarray(jac_rows, dtype=np.int64)
         self.jac_cols = np.asarray(jac_cols, dtype=np.int64)
-        self.n_rows, self.n_roots, self.digest = int(n_rows), int(n_roots), digest
-        self.program = None
+        self.n_rows, self.n_roots = int(n_rows), int(n_roots)
         self.backend = "numpy"
         self.load_note = None
         if array_source is not None:
@@ -147,7 +173,7 @@ class LoadedCode:
             return code
         out = cls.__new__(cls)
         out.__dict__.update({k: v for k, v in vars(code).items()
-                             if k not in ("program", "_program", "_program_file")})
+                             if k not in ("program", "_place")})
         out.program = None
         out.load_note = None
         out.bytecode = None
@@ -157,21 +183,55 @@ class LoadedCode:
         c = None
         if self.backend == "c":
             c = {"library": self.library, "source": self.c_source, "layout": self.c_layout}
-        return (LoadedCode, (self.source, self.jac_rows, self.jac_cols, self.n_rows,
-                             self.n_roots, self.digest, c, self._bytes(),
+        bytecode = self._bytes()
+        module = self.module
+        source = module.source if module.printed or not self._in_cache_entry else None
+        return (LoadedCode, (source, self.jac_rows, self.jac_cols, self.n_rows,
+                             self.n_roots, module.names, c, bytecode,
                              getattr(self, "array_source", None)))
+
+    def _fallback_only(self) -> bool:
+        # behind a C library or array code the scalar functions are the fallback
+        return self.backend == "c" or bool(getattr(self, "array_source", None))
 
     def _bytes(self) -> bytes | None:
         """The bytecode an entry keeps: that of the compile which ran the functions
         (compiled now for the numpy backend, whose functions will run); a source behind
         a C library that was never called is stored without, and compiled where needed."""
         if getattr(self, "bytecode", None) is None:      # compiled once, then kept
-            module = getattr(self, "module", None) or GeneratedModule(self.source)
-            # behind a C library or array code the scalar functions are the fallback
-            fallback_only = self.backend == "c" or getattr(self, "array_source", None)
-            if module.compiled or not fallback_only:
+            module = self.module
+            if module.compiled or not self._fallback_only():
                 self.bytecode = module.bytecode()
         return self.bytecode
+
+
+class _ProgramPlace:
+    """Where a :class:`LoadedCode`'s Program is: in memory, in a cache entry's side file
+    (loaded on first use), or nowhere; and the printer of its Python source from it
+    (the code's module holds this, not the code: no reference cycle)."""
+
+    __slots__ = ("program", "file")
+
+    def __init__(self, program=None):
+        self.program, self.file = program, None
+
+    def get(self):
+        if self.program is None and self.file is not None:
+            self.program = _load_program(*self.file)
+            self.file = None
+        return self.program
+
+    def python_source(self) -> str:
+        """The Python source, printed from the Program as the code generator printed
+        it when the model was compiled (:func:`acausal.compiler.codegen.python_source`)."""
+        from ..errors import BackendError
+        from .codegen import python_source
+        prog = self.get()
+        if prog is None:
+            raise BackendError("the Python functions of this model are printed from its "
+                               "compile cache entry's side file, which is gone; compile "
+                               "the model again")
+        return python_source(prog)
 
 
 class ParameterFunction:
@@ -204,16 +264,24 @@ def _load_program(path: str, which: str):
         return None
 
 
-def portable(mc):
+def portable(mc, entry: bool = False):
     """``mc`` with every generated code as a :class:`LoadedCode`: picklable, and loadable
-    without sympy.  The functions themselves are shared, not rebuilt."""
-    out = replace(mc, code=LoadedCode.of(mc.code),
-                  initial=replace(mc.initial, code=LoadedCode.of(mc.initial.code)),
+    without sympy.  The functions themselves are shared, not rebuilt.  ``entry``: for a
+    compile cache entry, whose side file keeps the Programs (a fallback source not
+    printed yet is then left to be printed from there)."""
+    def loaded(code):
+        out = LoadedCode.of(code)
+        if entry and out is not code:
+            out._in_cache_entry = True
+        return out
+
+    out = replace(mc, code=loaded(mc.code),
+                  initial=replace(mc.initial, code=loaded(mc.initial.code)),
                   meta=dict(mc.meta))
     if mc.whens is not None:
-        out.whens = replace(mc.whens, code=LoadedCode.of(mc.whens.code))
+        out.whens = replace(mc.whens, code=loaded(mc.whens.code))
     if mc.delays is not None:
-        out.delays = replace(mc.delays, code=LoadedCode.of(mc.delays.code))
+        out.delays = replace(mc.delays, code=loaded(mc.delays.code))
     return out
 
 
@@ -277,10 +345,14 @@ def lookup(key: str | None = None, tree: str | None = None):
     except Exception:       # noqa: BLE001 - a corrupt or foreign entry: compile again
         _remove(path)
         return None
+    side = _side_file(path)
+    codes = _codes(mc)
+    if not all(c.module.printed for c in codes.values()) and not os.path.exists(side):
+        _remove(path)      # a source to be printed from the side file: compile again
+        return None
     with contextlib.suppress(OSError):
         os.utime(path)      # recently used: pruned last
-    side = os.path.join(models_dir(), f"{key}.programs.pkl")
-    for which, code in _codes(mc).items():
+    for which, code in codes.items():
         if isinstance(code, LoadedCode):
             code._program_file = (side, which)
     return mc, _time.perf_counter() - t0
@@ -291,17 +363,29 @@ def store(key: str, mc, tree: str | None = None) -> None:
     atomically; a cache that cannot be written is skipped, never an error."""
     try:
         root = models_dir()
-        _atomic_write(os.path.join(root, f"{key}.pkl"),
-                      pickle.dumps(portable(mc), protocol=pickle.HIGHEST_PROTOCOL))
-        with contextlib.suppress(Exception):     # the Programs only serve FMU export
-            programs = {w: getattr(c, "program", None) for w, c in _codes(mc).items()}
-            _atomic_write(os.path.join(root, f"{key}.programs.pkl"),
+        path = os.path.join(root, f"{key}.pkl")
+        # the side file first: an entry whose fallback sources are printed from its
+        # Programs is only found with them (a concurrent lookup finds both or neither)
+        programs = {w: getattr(c, "program", None) for w, c in _codes(mc).items()}
+        try:
+            _atomic_write(_side_file(path),
                           pickle.dumps(programs, protocol=pickle.HIGHEST_PROTOCOL))
+            sided = True
+        except Exception:      # noqa: BLE001 - then the entry keeps every source printed
+            sided = False
+        _atomic_write(path, pickle.dumps(portable(mc, entry=sided),
+                                         protocol=pickle.HIGHEST_PROTOCOL))
         if tree is not None:
             store_index(tree, key)
         _prune(os.path.dirname(root))
     except Exception:      # noqa: BLE001 - the cache saves time; it never fails a compile
         return
+
+
+def _side_file(path: str) -> str:
+    """The side file of the entry ``path``: the Programs of its codes (FMU export, and
+    the Python sources not printed at compile time, :class:`LoadedCode`)."""
+    return path[:-len(".pkl")] + ".programs.pkl"
 
 
 def store_index(tree: str, key: str) -> None:
@@ -329,20 +413,30 @@ def _remove(path: str) -> None:
 
 
 def _prune(root: str) -> None:
-    """Remove least recently used entries and libraries until the cache fits its size."""
+    """Remove least recently used entries and libraries until the cache fits its size;
+    an entry's side file goes with it (and counts with it)."""
     limit = int(os.environ.get("ACAUSAL_CACHE_SIZE", DEFAULT_SIZE))
     items = []
     for d in (root, os.path.join(root, "models")):
         for entry in os.scandir(d):
-            if entry.name.endswith((".so", ".pkl")) or entry.name.startswith("tree-"):
+            name = entry.name
+            if name.endswith(".programs.pkl"):
+                continue
+            if name.endswith((".so", ".pkl")) or name.startswith("tree-"):
                 try:
                     st = entry.stat()
                 except OSError:
                     continue
-                items.append((st.st_mtime, entry.path, st.st_size))
+                size, paths = st.st_size, [entry.path]
+                if name.endswith(".pkl"):
+                    paths.append(_side_file(entry.path))
+                    with contextlib.suppress(OSError):
+                        size += os.stat(paths[1]).st_size
+                items.append((st.st_mtime, paths, size))
     total = sum(s for _, _, s in items)
-    for _, p, size in sorted(items):
+    for _, paths, size in sorted(items):
         if total <= limit:
             break
-        _remove(p)          # a library still named by an entry is rebuilt on load
+        for p in paths:     # a library still named by an entry is rebuilt on load
+            _remove(p)
         total -= size

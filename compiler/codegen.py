@@ -35,25 +35,32 @@ from .emit import Emitter, _plain
 from .lazycode import GeneratedModule
 from .symbolic import symbols_of
 
-__all__ = ["GeneratedCode", "Program", "generate", "plan", "python_code", "extract_relations"]
+__all__ = ["GeneratedCode", "Program", "generate", "plan", "python_code", "python_source",
+           "extract_relations"]
 
 
-@dataclass
 class GeneratedCode:
-    source: str
-    residual: object
-    jacobian: object
-    roots: object
-    jac_rows: np.ndarray
-    jac_cols: np.ndarray
-    n_rows: int
-    n_roots: int
-    digest: str
-    scales: object = None
-    expand: object = None
-    program: object = None
-    backend: str = "numpy"
-    module: object = None         # the GeneratedModule the functions are compiled in
+    """The generated functions of a :class:`Program` (each ``f(t, y, p, m, out) ->
+    out``), the Jacobian's sparsity pattern, and the Python module they are compiled
+    in (``module``): its ``source`` is printed when first read, or when a Python function
+    is first called (:mod:`acausal.compiler.lazycode`)."""
+
+    def __init__(self, module, residual, jacobian, roots, jac_rows, jac_cols, n_rows,
+                 n_roots, scales=None, expand=None, program=None, backend="numpy"):
+        self.module = module
+        self.residual, self.jacobian, self.roots = residual, jacobian, roots
+        self.scales, self.expand = scales, expand
+        self.jac_rows, self.jac_cols = jac_rows, jac_cols
+        self.n_rows, self.n_roots = n_rows, n_roots
+        self.program, self.backend = program, backend
+
+    @property
+    def source(self) -> str:
+        return self.module.source
+
+    @property
+    def digest(self) -> str:
+        return hashlib.sha1(self.source.encode()).hexdigest()[:16]
 
 
 def event_form(expr: sp.Expr) -> sp.Expr:
@@ -305,7 +312,28 @@ def _python_ref(refs):
 
 
 def python_code(prog: Program) -> GeneratedCode:
-    """The Python module of a program: functions ``f(t, y, p, m, out)`` on floats."""
+    """The Python module of a program: functions ``f(t, y, p, m, out)`` on floats.
+
+    Its source is printed (:func:`python_source`) and compiled when first needed, by
+    the first call of one of its functions or a reader of ``source``: behind the C
+    backend or the numpy backend's array code the Python functions are the fallback for
+    an output that is not finite, which most runs never call (printing is a third of
+    the code generation of a large model)."""
+    import functools
+    res = prog.functions["residual"]
+    names = ["residual", "jacobian"] + [n for n in ("roots", "scales", "expand")
+                                        if n in prog.functions]
+    module = GeneratedModule(functools.partial(python_source, prog), names=names)
+    fn = module.function
+    return GeneratedCode(module, fn("residual"), fn("jacobian"), fn("roots"),
+                         np.array(prog.jac_rows, dtype=np.int64),
+                         np.array(prog.jac_cols, dtype=np.int64),
+                         len(res), len(prog.functions["roots"]),
+                         fn("scales"), fn("expand"), prog)
+
+
+def python_source(prog: Program) -> str:
+    """The text of :func:`python_code`'s module (the same program gives the same text)."""
     em = Emitter("py", _python_ref(prog.refs))
     assign_lines = {}
 
@@ -332,17 +360,7 @@ def python_code(prog: Program) -> GeneratedCode:
         if name in prog.functions:
             exprs = prog.functions[name]
             lines += _py_function(name, prologue(prog.needed(exprs)), _py_rows(em, exprs))
-    source = "\n".join(lines) + "\n"
-    # compiled by the first call of one of its functions (acausal.compiler.lazycode):
-    # with the C backend most runs never call them
-    module = GeneratedModule(source)
-    fn = module.function
-    return GeneratedCode(source, fn("residual"), fn("jacobian"), fn("roots"),
-                         np.array(prog.jac_rows, dtype=np.int64),
-                         np.array(prog.jac_cols, dtype=np.int64),
-                         len(res), len(prog.functions["roots"]),
-                         hashlib.sha1(source.encode()).hexdigest()[:16],
-                         fn("scales"), fn("expand"), prog, module=module)
+    return "\n".join(lines) + "\n"
 
 
 def _list(a):

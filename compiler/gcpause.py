@@ -19,13 +19,22 @@ collection, by the middle one its survivors move to, and by the full collection 
 follows when they outnumber a quarter of the old objects (CPython's rule); a
 100 000-equation model kept about 4 million objects, 4-6 s of walks.
 :func:`collect_after_pause` does that full collection at once, one walk.
+
+When what the compile keeps is to be frozen right after it (``gc.freeze``: the first
+compile of a script, :func:`acausal.simulation.compile`), even that walk is saved: the
+caller collects before the compile, while the heap is small, keeps the collector paused
+(:func:`paused`) until the freeze, and the compile's own garbage cycles (a few hundred
+objects of any model's compile: recursive closures, local classes of the modules it
+imports) are frozen with the rest, once per process.  On the 18 000-equation RLC
+ladder the walk took 0.4-0.6 s.
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import gc
 
-__all__ = ["gc_paused", "collect_after_pause"]
+__all__ = ["gc_paused", "paused", "collect_after_pause"]
 
 
 def gc_paused(func):
@@ -42,6 +51,18 @@ def gc_paused(func):
         finally:
             gc.enable()
     return run
+
+
+@contextlib.contextmanager
+def paused():
+    """The collector disabled within (and then restored as it was)."""
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was:
+            gc.enable()
 
 
 # below this many new objects the collector's own schedule costs little

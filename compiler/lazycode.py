@@ -1,11 +1,13 @@
 """Generated Python source, compiled when one of its functions is first called.
 
 Compiling the source of a large model is a large part of its build (CPython compiles
-some 40 000 lines a second), and with the C backend the Python functions are only the
-fallback for a call whose output is not finite: most runs never call them.  So the
-source is compiled, in one piece (a traceback's line number is its line in the whole
-source, :mod:`acausal.runtime.diagnostics`), by the first call of any of its functions,
-and then kept.  Nothing here imports sympy: a model loaded from the compile cache uses
+some 40 000 lines a second), and with the C backend (or the numpy backend's array code)
+the Python functions are only the fallback for a call whose output is not finite: most
+runs never call them.  So the source is printed when first needed
+(:func:`acausal.compiler.codegen.python_code`), and compiled, in one piece (a
+traceback's line number is its line in the whole source,
+:mod:`acausal.runtime.diagnostics`), by the first call of any of its functions, and
+then kept.  Nothing here imports sympy: a model loaded from the compile cache uses
 it too.
 """
 from __future__ import annotations
@@ -29,14 +31,36 @@ def _list(a):
 
 class GeneratedModule:
     """``source`` (and, when given, the bytecode it was compiled to by a Python of this
-    bytecode version), executed on first use."""
+    bytecode version), executed on first use.  ``source`` may also be a function of no
+    arguments that prints it, called when the text is first needed (to compile it, or
+    to read a failing line); ``names`` then lists the functions it defines."""
 
-    def __init__(self, source: str, bytecode: bytes | None = None, filename: str = FILENAME):
-        self.source = source
+    def __init__(self, source, bytecode: bytes | None = None, filename: str = FILENAME,
+                 names=None):
+        printed = isinstance(source, str)
+        self._source = source if printed else None
+        self._printer = None if printed else source
+        self.names = tuple(names) if names is not None else None
         self.filename = filename
         self.code_object = None
         self._bytecode = bytecode
         self._namespace = None
+
+    @property
+    def source(self) -> str:
+        source = self._source
+        if source is None:
+            printer = self._printer
+            if printer is None:         # printed by another thread meanwhile
+                return self._source
+            source = self._source = printer()
+            self._printer = None
+        return source
+
+    @property
+    def printed(self) -> bool:
+        """Whether the source text exists yet (see the class docstring)."""
+        return self._source is not None
 
     @property
     def compiled(self) -> bool:
@@ -64,9 +88,14 @@ class GeneratedModule:
         self.namespace()
         return _MAGIC + marshal.dumps(self.code_object)
 
+    def defines(self, name: str) -> bool:
+        if self.names is not None:
+            return name in self.names
+        return f"\ndef {name}(" in self.source
+
     def function(self, name: str):
         """The function ``name`` of the source, or None when the source defines none."""
-        if f"\ndef {name}(" not in self.source:
+        if not self.defines(name):
             return None
         return GeneratedFunction(self, name)
 

@@ -18,7 +18,7 @@ import numpy as np
 import sympy as sp
 from sympy import S
 from sympy.core.parameters import global_parameters
-from sympy.printing.precedence import precedence
+from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
@@ -115,7 +115,6 @@ class _TextPrinter(StrPrinter):
             return super()._print_Mul(expr)
         # StrPrinter._print_Mul from here on, for the factors it would have ordered so
         sign, items = ordered
-        prec = precedence(expr)
         num, den = [], []
         for item in items:
             if item.is_Pow and item.exp < 0:
@@ -129,13 +128,43 @@ class _TextPrinter(StrPrinter):
             else:
                 num.append(item)
         num = num or [S.One]
-        a_str = [self.parenthesize(x, prec, strict=False) for x in num]
-        b_str = [self.parenthesize(x, prec, strict=False) for x in den]
+        # a symbol is never parenthesized (its precedence is an atom's), so the
+        # product's precedence (a walk of its classes) is only found for other factors
+        prec = None
+        a_str, b_str = [], []
+        for factors, texts in ((num, a_str), (den, b_str)):
+            for x in factors:
+                if type(x) is sp.Symbol:
+                    texts.append(x.name)
+                    continue
+                if prec is None:
+                    prec = precedence(expr)
+                texts.append(self.parenthesize(x, prec, strict=False))
         if not den:
             return sign + "*".join(a_str)
         if len(den) == 1:
             return sign + "*".join(a_str) + "/" + b_str[0]
         return sign + "*".join(a_str) + "/(%s)" % "*".join(b_str)
+
+    def _print_Add(self, expr, order=None):
+        """StrPrinter._print_Add, with the precedence of a symbol or product term (an
+        atom's; a product's is never below a sum's) not looked up."""
+        terms = self._as_ordered_terms(expr, order=order)
+        prec = precedence(expr)
+        out = []
+        for term in terms:
+            t = self._print(term)
+            if t.startswith("-") and not term.is_Add:
+                sign, t = "-", t[1:]
+            else:
+                sign = "+"
+            plain = type(term) is sp.Symbol or (term.is_Mul and prec <= PREC_ADD)
+            if not plain and (precedence(term) < prec or term.is_Add):
+                out += [sign, f"({t})"]
+            else:
+                out += [sign, t]
+        sign = out.pop(0)
+        return ("" if sign == "+" else sign) + " ".join(out)
 
     def _as_ordered_terms(self, expr, order=None):
         if (order or self.order) is None and expr.is_Add:
@@ -207,7 +236,7 @@ def _ordered_factors(expr):
     if not (c.is_Rational or c.is_Float):
         return None
     sign = ""
-    if c < 0:
+    if (c.p < 0) if c.is_Rational else (c < 0):     # a Rational's sign without sympify
         c, sign = -c, "-"
     named, add, fn = [], None, None
     for f in (e.args if e.is_Mul else (e,)):
@@ -217,7 +246,7 @@ def _ordered_factors(expr):
             named.append((f.base.name, f))
         elif f.is_Add and add is None:
             add = f
-        elif isinstance(f, sp.Function) and fn is None and f.class_key()[0] == 4:
+        elif isinstance(f, sp.Function) and fn is None and _class_group(f) == 4:
             fn = f
         else:
             return None
@@ -228,6 +257,18 @@ def _ordered_factors(expr):
     return sign, items + [x for x in (add, fn) if x is not None]
 
 
+_FUNCTION_CLASS_KEY = sp.Function.class_key.__func__
+
+
+def _class_group(f) -> int:
+    """``f.class_key()[0]``: 4 for a function class that keeps Function's class_key
+    (which would otherwise build the set of its numbers of arguments to say so)."""
+    if getattr(type(f).class_key, "__func__", None) is _FUNCTION_CLASS_KEY:
+        return 4
+    return f.class_key()[0]
+
+
+PREC_ADD = PRECEDENCE["Add"]      # a product's precedence is a sum's or a product's
 _PRINTER = _TextPrinter()
 
 
