@@ -13,7 +13,9 @@ from acausal.compiler import cbackend
 from acausal.compiler.pipeline import compile_model
 from acausal.runtime import CompiledModel
 
-from .circuits import SqrtOfStart
+# the package name, as the other process imports it: the tree key names the class by
+# its module, and pytest may import this directory under another name
+from acausal.tests.persist.circuits import SqrtOfStart
 from .helpers import run_python
 
 pytestmark = pytest.mark.skipif(cbackend.compiler_available() is None,
