@@ -54,7 +54,7 @@ from dataclasses import fields, is_dataclass, replace
 import numpy as np
 
 from .cachekeys import fingerprint, flat_key, tree_key
-from .lazycode import GeneratedModule, install_array_code
+from .lazycode import GeneratedModule, ModuleSource, install_array_code
 
 __all__ = ["LoadedCode", "ParameterFunction", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
@@ -86,7 +86,7 @@ def _run(source: str, what: str, bytecode: bytes | None = None) -> dict:
     return namespace
 
 
-class LoadedCode:
+class LoadedCode(ModuleSource):
     """A generated code without its Program: the functions executed from ``source``
     when first called (:mod:`acausal.compiler.lazycode`), and the C library behind them
     when ``c`` is given.  Reads like a
@@ -127,14 +127,6 @@ class LoadedCode:
         """(path of the side file, which code), set by :func:`lookup`."""
         self._place.file = where
 
-    @property
-    def source(self) -> str:
-        return self.module.source
-
-    @property
-    def digest(self) -> str:
-        import hashlib
-        return hashlib.sha1(self.source.encode()).hexdigest()[:16]
 
     def __init__(self, source, jac_rows, jac_cols, n_rows, n_roots, names=None, c=None,
                  bytecode=None, array_source=None):

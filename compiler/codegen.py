@@ -23,7 +23,6 @@ Frozen floor values (:mod:`acausal.compiler.discrete`) follow the relations in `
 """
 from __future__ import annotations
 
-import hashlib
 import re
 from dataclasses import dataclass
 
@@ -32,14 +31,14 @@ import sympy as sp
 
 from .derivative import partial as _partial
 from .emit import Emitter, _plain
-from .lazycode import GeneratedModule
+from .lazycode import GeneratedModule, ModuleSource
 from .symbolic import symbols_of
 
 __all__ = ["GeneratedCode", "Program", "generate", "plan", "python_code", "python_source",
            "extract_relations"]
 
 
-class GeneratedCode:
+class GeneratedCode(ModuleSource):
     """The generated functions of a :class:`Program` (each ``f(t, y, p, m, out) ->
     out``), the Jacobian's sparsity pattern, and the Python module they are compiled
     in (``module``): its ``source`` is printed when first read, or when a Python function
@@ -54,13 +53,6 @@ class GeneratedCode:
         self.n_rows, self.n_roots = n_rows, n_roots
         self.program, self.backend = program, backend
 
-    @property
-    def source(self) -> str:
-        return self.module.source
-
-    @property
-    def digest(self) -> str:
-        return hashlib.sha1(self.source.encode()).hexdigest()[:16]
 
 
 def event_form(expr: sp.Expr) -> sp.Expr:

@@ -19,7 +19,7 @@ from importlib.util import MAGIC_NUMBER as _MAGIC
 import numpy as np
 
 __all__ = ["GeneratedModule", "GeneratedFunction", "FILENAME", "ArrayFunction",
-           "install_array_code"]
+           "install_array_code", "ModuleSource"]
 
 FILENAME = "<acausal generated>"
 ARRAY_FILENAME = "<acausal arrays>"
@@ -98,6 +98,21 @@ class GeneratedModule:
         if not self.defines(name):
             return None
         return GeneratedFunction(self, name)
+
+
+class ModuleSource:
+    """``source`` and ``digest`` of a generated code whose functions live in
+    ``self.module`` (a :class:`GeneratedModule`): read, and printed if need be, on
+    demand."""
+
+    @property
+    def source(self) -> str:
+        return self.module.source
+
+    @property
+    def digest(self) -> str:
+        import hashlib
+        return hashlib.sha1(self.source.encode()).hexdigest()[:16]
 
 
 class GeneratedFunction:

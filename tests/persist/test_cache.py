@@ -26,12 +26,8 @@ HIT = "came from the compile cache"
 
 
 @pytest.fixture(autouse=True)
-def cache_dir(tmp_path, monkeypatch):
-    path = tmp_path / "cache"
-    monkeypatch.setenv("ACAUSAL_CACHE", str(path))
-    monkeypatch.delenv("ACAUSAL_COMPILE_CACHE", raising=False)
-    monkeypatch.delenv("ACAUSAL_CACHE_SIZE", raising=False)
-    return path
+def cache_dir(fresh_cache):
+    return fresh_cache
 
 
 def _compile(model, backend="numpy", cache=True):
