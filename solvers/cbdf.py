@@ -87,6 +87,7 @@ R_BUDGET, R_FULL, R_SPECIAL, R_FAIL = range(4)
 _KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singular"}
 
 _lib = None
+_failed_with = ()         # the compiler a failed build used (() : no build failed)
 _lock = threading.Lock()
 _SOURCES = ("cbdf_lu.c", "cbdf_dyn.c", "cbdf_sparse.c", "cbdf.c")
 _text = None
@@ -95,7 +96,13 @@ _text = None
 def library(cached_only: bool = False):
     """The compiled step loop (built once into the C backend's cache), or None when no
     C compiler works (with ``cached_only``: also when it is not built yet).  Without
-    ``cached_only`` a build that :func:`build_in_background` started is waited for."""
+    ``cached_only`` a build that :func:`build_in_background` started is waited for.
+    A build that failed is tried again once another compiler is named (``CC``)."""
+    global _lib
+    if _lib is False and _failed_with != ():
+        from ..compiler.cbackend import compiler_available
+        if compiler_available() != _failed_with:
+            _lib = None
     if _lib is None:
         if not _lock.acquire(blocking=not cached_only):
             return None
@@ -120,8 +127,8 @@ def _source() -> str:
 
 
 def _load(cached_only: bool) -> None:
-    global _lib
-    from ..compiler.cbackend import build
+    global _lib, _failed_with
+    from ..compiler.cbackend import build, compiler_available
     try:
         source = _source()
         path = build(source, cached_only=True)
@@ -134,7 +141,7 @@ def _load(cached_only: bool) -> None:
             return
         lib = ctypes.CDLL(path)
     except (BackendError, OSError):
-        _lib = False
+        _lib, _failed_with = False, compiler_available()
         return
     lib.cbdf_run.argtypes = [ctypes.c_void_p] * 3
     lib.cbdf_run.restype = ctypes.c_int

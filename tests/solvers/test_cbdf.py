@@ -239,3 +239,16 @@ def test_a_model_with_a_delay_keeps_the_python_loop():
     assert res.success and res.stats["step_loop"] == "python"
     with pytest.raises(ValueError, match="delay"):
         ac.simulate(c, t_end=2.0, step_loop="c")
+
+
+def test_a_failed_build_is_tried_again_with_another_compiler(monkeypatch):
+    """A process that once found no working compiler (CC naming none) loads the loop
+    when CC names one again, instead of keeping the failure for good."""
+    if cbdf.library() is None:
+        pytest.skip("no C compiler on this machine")
+    monkeypatch.setattr(cbdf, "_lib", None)
+    monkeypatch.setattr(cbdf, "_failed_with", ())
+    monkeypatch.setenv("CC", "no-such-compiler-acausal")
+    assert cbdf.library() is None
+    monkeypatch.delenv("CC")
+    assert cbdf.library() is not None
