@@ -365,3 +365,7 @@ def bind(mc, backend: str, report) -> None:
                             "the numpy backend runs the model")
         return _numpy(mc, report)
     mc.meta["backend"] = "c"
+    looped = getattr(mc.code.program, "looped", None)
+    if looped is not None:
+        report.notes.append(f"the C backend evaluates the residual's {looped[0]} "
+                            f"statements in {looped[1]} loops")

@@ -45,13 +45,15 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
     """The functions of a Program as ``(name, statements, calls, n_out)`` specs for
     :func:`acausal.compiler.cbackend._c_function`, and the size of the work array; None
     when the straight-line C is kept (also for a program with other functions than
-    those of a model's or its initial equations' code)."""
+    those of a model's or its initial equations' code).  A looped program records its
+    residual's numbers of statements and of loops as ``prog.looped``."""
     mode = os.environ.get("ACAUSAL_ARRAY_CODE", "auto")
     if mode == "never" or not set(prog.functions) <= set(FUNCTIONS):
         return None
     (n_y, n_p, n_m), inputs = input_layout(prog)
     n_in = len(inputs)
     specs, n_work, assigned = [], n_in, {}
+    n_st = n_groups = 0
     _NUMBERS.clear()
     try:
         for name in FUNCTIONS:
@@ -59,9 +61,10 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
                 continue
             statements = _statements(prog, name, assigned)
             sched = _Schedule(statements, n_in, inputs)
-            if name == "residual" and mode != "always":
+            if name == "residual":
                 n_st, n_groups = len(statements), len(sched.groups)
-                if n_st < MIN_STATEMENTS or n_st < MIN_GROUP * n_groups:
+                small = n_st < MIN_STATEMENTS or n_st < MIN_GROUP * n_groups
+                if small and mode != "always":
                     return None
             outputs = [st.target for st in statements if st.target[0] == "o"]
             body = [[ln] for ln in _entry(sched, outputs, (n_y, n_p, n_m))] + \
@@ -74,6 +77,7 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
         return None
     finally:
         _NUMBERS.clear()
+    prog.looped = (n_st, n_groups)     # for the report (cbackend.bind)
     return specs, n_work
 
 

@@ -190,4 +190,10 @@ def test_a_ladder_runs_on_looped_c(monkeypatch):
     n = 60
     compiled = ac.compile(Ladder(n), backend="c", cache=False)
     assert "for (int i = 0;" in compiled.code.c_source
+    # the report says so, with the residual's statements and the loops they became
+    import re
+    said = [re.search(r"the C backend evaluates the residual's (\d+) statements in "
+                      r"(\d+) loops", note) for note in compiled.report.notes]
+    said = [m for m in said if m]
+    assert len(said) == 1 and 0 < int(said[0][2]) < int(said[0][1])
     res, t = _against_exact(compiled, n)
