@@ -411,6 +411,12 @@ def inputs_read(sched, outputs, sizes) -> list:
     return parts
 
 
+def too_few(n_statements: int, n_groups: int, minimum: int = MIN_STATEMENTS) -> bool:
+    """Whether a residual of ``n_statements`` in ``n_groups`` groups stays straight-line
+    code: fewer than ``minimum`` statements, or fewer than :data:`MIN_GROUP` a group."""
+    return n_statements < minimum or n_statements < MIN_GROUP * n_groups
+
+
 def input_layout(prog) -> tuple[tuple, dict]:
     """((n_y, n_p, n_m), {input: its position in the work vector}): y, p, m, then t."""
     n_y = sum(1 for w in prog.refs.values() if w[0] == "y")
@@ -443,7 +449,7 @@ def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
             sched = _Schedule(statements, n_in, inputs)
             if name == "residual":
                 n_st, n_groups = len(statements), len(sched.groups)
-                if not small and (n_st < MIN_STATEMENTS or n_st < MIN_GROUP * n_groups):
+                if not small and too_few(n_st, n_groups):
                     return None
             elif not small and len(statements) < MIN_FUNCTION:
                 continue          # the scalar function stays

@@ -29,8 +29,8 @@ from __future__ import annotations
 
 import os
 
-from .arraycode import (_NUMBERS, MIN_GROUP, _leaves_read, _linear_part, _print_group,
-                        _Schedule, _statements, _Unsupported, input_layout, inputs_read)
+from .arraycode import (_NUMBERS, _leaves_read, _linear_part, _print_group, _Schedule,
+                        _statements, _Unsupported, input_layout, inputs_read, too_few)
 from .emit import Emitter
 
 __all__ = ["looped_program", "MIN_STATEMENTS"]
@@ -63,8 +63,7 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
             sched = _Schedule(statements, n_in, inputs)
             if name == "residual":
                 n_st, n_groups = len(statements), len(sched.groups)
-                small = n_st < MIN_STATEMENTS or n_st < MIN_GROUP * n_groups
-                if small and mode != "always":
+                if mode != "always" and too_few(n_st, n_groups, MIN_STATEMENTS):
                     return None
             outputs = [st.target for st in statements if st.target[0] == "o"]
             body = [[ln] for ln in _entry(sched, outputs, (n_y, n_p, n_m))] + \
