@@ -43,6 +43,8 @@ from .lazycode import install_array_code
 
 __all__ = ["array_source", "use_array_code", "MIN_STATEMENTS", "MIN_GROUP"]
 
+#: the functions of a program printed as array code (and as looped C)
+FUNCTIONS = ("residual", "jacobian", "roots", "scales", "expand")
 #: below this many statements in the residual the scalar code is at least as fast
 MIN_STATEMENTS = 400
 #: statements per group the residual must average for the array code to be used
@@ -417,6 +419,27 @@ def too_few(n_statements: int, n_groups: int, minimum: int = MIN_STATEMENTS) -> 
     return n_statements < minimum or n_statements < MIN_GROUP * n_groups
 
 
+def schedules(prog, minimum: int | None) -> list | None:
+    """``(name, statements, schedule, outputs)`` of each function of ``prog``, in the
+    order of :data:`FUNCTIONS`, or None when ``minimum`` is given and the residual is
+    too small for grouped code (:func:`too_few`).  The array code and the looped C are
+    printed from these."""
+    _, inputs = input_layout(prog)
+    n_in = len(inputs)
+    out, assigned = [], {}
+    for name in FUNCTIONS:
+        if name not in prog.functions and name != "jacobian":
+            continue
+        statements = _statements(prog, name, assigned)
+        sched = _Schedule(statements, n_in, inputs)
+        if name == "residual" and minimum is not None and \
+                too_few(len(statements), len(sched.groups), minimum):
+            return None
+        out.append((name, statements, sched,
+                    [st.target for st in statements if st.target[0] == "o"]))
+    return out
+
+
 def input_layout(prog) -> tuple[tuple, dict]:
     """((n_y, n_p, n_m), {input: its position in the work vector}): y, p, m, then t."""
     n_y = sum(1 for w in prog.refs.values() if w[0] == "y")
@@ -437,24 +460,19 @@ def array_source(prog, small: bool = False) -> tuple[str, int, int] | None:
     :data:`MIN_GROUP` per group (unless ``small``), or a statement has an operator with
     no numpy form.  Another function of fewer than :data:`MIN_FUNCTION` statements is
     left out (its scalar form is used), unless ``small``."""
-    (n_y, n_p, n_m), inputs = input_layout(prog)
-    n_in = len(inputs)
-    writer, lines, assigned = _Writer(), [], {}
+    sizes = input_layout(prog)[0]
+    writer, lines = _Writer(), []
     _NUMBERS.clear()
     try:
-        for name in ("residual", "jacobian", "roots", "scales", "expand"):
-            if name not in prog.functions and name != "jacobian":
-                continue
-            statements = _statements(prog, name, assigned)
-            sched = _Schedule(statements, n_in, inputs)
+        made = schedules(prog, None if small else MIN_STATEMENTS)
+        if made is None:
+            return None
+        for name, statements, sched, outputs in made:
             if name == "residual":
                 n_st, n_groups = len(statements), len(sched.groups)
-                if not small and too_few(n_st, n_groups):
-                    return None
             elif not small and len(statements) < MIN_FUNCTION:
                 continue          # the scalar function stays
-            outputs = [st.target for st in statements if st.target[0] == "o"]
-            lines += writer.function(name, sched, outputs, (n_y, n_p, n_m))
+            lines += writer.function(name, sched, outputs, sizes)
     except (_Unsupported, RecursionError):
         return None
     finally:

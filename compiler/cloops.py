@@ -29,13 +29,11 @@ from __future__ import annotations
 
 import os
 
-from .arraycode import (_NUMBERS, _leaves_read, _linear_part, _print_group, _Schedule,
-                        _statements, _Unsupported, input_layout, inputs_read, too_few)
+from .arraycode import (_NUMBERS, FUNCTIONS, _leaves_read, _linear_part, _print_group,
+                        _Unsupported, input_layout, inputs_read, schedules)
 from .emit import Emitter
 
 __all__ = ["looped_program", "MIN_STATEMENTS"]
-
-FUNCTIONS = ("residual", "jacobian", "roots", "scales", "expand")
 
 #: below this many residual statements the straight-line C compiles fast enough
 MIN_STATEMENTS = 2000
@@ -50,23 +48,18 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
     mode = os.environ.get("ACAUSAL_ARRAY_CODE", "auto")
     if mode == "never" or not set(prog.functions) <= set(FUNCTIONS):
         return None
-    (n_y, n_p, n_m), inputs = input_layout(prog)
-    n_in = len(inputs)
-    specs, n_work, assigned = [], n_in, {}
+    sizes, inputs = input_layout(prog)
+    specs, n_work = [], len(inputs)
     n_st = n_groups = 0
     _NUMBERS.clear()
     try:
-        for name in FUNCTIONS:
-            if name not in prog.functions and name != "jacobian":
-                continue
-            statements = _statements(prog, name, assigned)
-            sched = _Schedule(statements, n_in, inputs)
+        made = schedules(prog, None if mode == "always" else MIN_STATEMENTS)
+        if made is None:
+            return None
+        for name, statements, sched, outputs in made:
             if name == "residual":
                 n_st, n_groups = len(statements), len(sched.groups)
-                if mode != "always" and too_few(n_st, n_groups, MIN_STATEMENTS):
-                    return None
-            outputs = [st.target for st in statements if st.target[0] == "o"]
-            body = [[ln] for ln in _entry(sched, outputs, (n_y, n_p, n_m))] + \
+            body = [[ln] for ln in _entry(sched, outputs, sizes)] + \
                 [_loop(g, sched) for g in sched.groups]
             if outputs:
                 body.append(_copy_out([sched.where(o) for o in outputs]))
