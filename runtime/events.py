@@ -278,7 +278,7 @@ def _solve_live(model, t, z, decided) -> np.ndarray:
     """The algebraic unknowns with the undecided relations following every iterate, then
     the discrete state taken from the solution (module docstring)."""
     disc, p = model.discrete, model.p
-    alg = np.flatnonzero(model.algebraic)
+    alg = model.algebraic_index
     free = ~decided
     zeros = np.zeros(disc.n_rel + disc.n_disc)
     z = z.copy()

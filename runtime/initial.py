@@ -255,7 +255,7 @@ def _chord(model, t, z, alg, lin, rtol) -> bool:
 def algebraic_system(model, t: float, z: np.ndarray):
     """``(alg, F, J)``: G(t, z) = 0 as a function of the algebraic unknowns ``z[alg]``
     alone, the states (and the discrete state) held at their values in ``z``."""
-    alg = np.flatnonzero(model.algebraic)
+    alg = model.algebraic_index
 
     def F(za):
         zz = z.copy()
@@ -277,7 +277,7 @@ def consistent_derivatives(model, t: float, z: np.ndarray) -> np.ndarray:
     S = model.state_index
     if S.size:
         zp[S] = model.state_derivatives(t, z)
-    alg = np.flatnonzero(model.algebraic)
+    alg = model.algebraic_index
     if not alg.size:
         return zp
     Gz = model.dG_dy(t, z).tocsc()

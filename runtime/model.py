@@ -29,7 +29,7 @@ import types
 import numpy as np
 
 from ..components.component import InvalidValue, NotInModel
-from ..solvers.base import DAEProblem
+from ..solvers.base import DAEProblem, unbounded
 from ..solvers.linalg import assemble
 from .delays import DelayLines, FilledCode
 from .diagnostics import DOMAIN_ERRORS, failing_statement
@@ -180,10 +180,9 @@ class CompiledModel(DAEProblem):
         self.algebraic = np.ones(self.n, dtype=bool)
         self.algebraic[self.state_index] = False
         self.algebraic_index = np.flatnonzero(self.algebraic)
-        # algebraic unknowns the error test leaves out (as solvers.bdf decides, from
-        # contract item 6): values at output times between steps are solved for them
-        out = self.algebraic & self.self_scaled
-        self.uncontrolled = bool(out.any() and not out.all())
+        # algebraic unknowns the error test leaves out (contract item 6): values at
+        # output times between steps are solved for them
+        self.uncontrolled = bool(unbounded(self.algebraic, self.self_scaled).any())
         r0 = self.n_res + len(self.state_z)
         rows_link = r0 + np.arange(len(self.link_s))
         c = self.code

@@ -195,6 +195,16 @@ class SolverOutput:
     point_values: list = field(default_factory=list)      # per point, item 16
 
 
+def unbounded(algebraic, self_scaled) -> np.ndarray:
+    """The components the error test leaves out (item 6): algebraic and self-scaled,
+    unless every component is (a problem with nothing else to judge them by)."""
+    mask = np.asarray(algebraic, bool) & (False if self_scaled is None
+                                           else np.asarray(self_scaled, bool))
+    if mask.all():
+        mask[:] = False
+    return mask
+
+
 def equation_label(problem: DAEProblem, i: int) -> str:
     """The user's label of residual ``i`` (``problem.equation_names`` if present)."""
     names = getattr(problem, "equation_names", None)

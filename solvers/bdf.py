@@ -56,7 +56,7 @@ import math
 
 import numpy as np
 
-from .base import DAEProblem, SolverStats
+from .base import DAEProblem, SolverStats, unbounded
 from .corrector import NewtonFail, solve_corrector
 from .first_step import initial_step, probed_step
 from .linalg import LinearSolver, SingularMatrixError, make_linear_solver
@@ -208,10 +208,7 @@ class BDF:
     def _read_masks(self) -> None:
         # which components are algebraic depends on the formulation (the choice of states)
         self.alg = np.asarray(self.problem.algebraic, bool).copy()
-        scaled = getattr(self.problem, "self_scaled", None)
-        self.self_scaled = self.alg & (False if scaled is None else np.asarray(scaled, bool))
-        if self.self_scaled.all():
-            self.self_scaled[:] = False
+        self.self_scaled = unbounded(self.alg, getattr(self.problem, "self_scaled", None))
 
     def _update_weights(self) -> None:
         self.ewt_newton = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
