@@ -44,8 +44,9 @@ def test_a_domain_error_is_reported_as_in_the_python_loop():
         exact = 2.0 / 3.0 * (1.0 - (1.0 - res.t[early]) ** 1.5)
         assert np.max(np.abs(res["x"][early] - exact)) < 1e-6 * 2.0 / 3.0
         assert abs(res.t[-1] - 1.0) < 1e-9
-    assert errors_b and all("der(x)" in e and "math domain error" in e for e in errors_b)
-    assert errors_a == errors_b
+    for errors in (errors_a, errors_b):     # in the same words in both loops
+        assert errors and all(e.startswith("computing der(x) failed at t = ") and
+                              e.endswith("ValueError: math domain error") for e in errors)
 
 
 @needs_loop
