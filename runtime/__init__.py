@@ -44,6 +44,10 @@ What the runtime provides (numbered, so the code can cite it)
    generated code; the step is limited to the shortest T (``max_step``), jumps come
    back as time events at t_e + T, and the delayed values are recorded at every
    output point (``point_values``).
+10. Values at output times between steps (``output_point``, solver contract item 17):
+   where the error test leaves algebraic unknowns out (self-scaled derivatives), they
+   are solved from G(t, z) = 0 at the interpolated states instead of interpolated
+   (:func:`.initial.consistent_output`); a failed solve is counted and said.
 """
 from .. import _lazy_exports
 
