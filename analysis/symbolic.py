@@ -25,7 +25,7 @@ import sympy as sp
 from ..compiler.alias import eliminate_aliases
 from ..compiler.causalize import causalize
 from ..compiler.flatten import flatten
-from ..compiler.pipeline import solve_linear
+from ..compiler.assemble import solve_linear
 from ..compiler.reduction import reduce_index
 from ..compiler.symbolic import SymbolicSystem
 from .plant import _Harness, top_level_inputs

@@ -318,7 +318,11 @@ def _read_index(tree: str) -> str | None:
 
 def lookup(key: str | None = None, tree: str | None = None):
     """The cached ModelCode for a flat key or a tree key (tried in that order), or None.
-    Returns (ModelCode, seconds spent loading).  An unreadable entry is removed."""
+    Returns (ModelCode, seconds spent loading).  An unreadable entry is removed.
+    Entries this process is still storing beside its work (:mod:`sidejobs`) are
+    waited for first."""
+    from .sidejobs import settle
+    settle()
     if key is None and tree is not None:
         key = _read_index(tree)
     if key is None:

@@ -156,7 +156,7 @@ def delay_code(delays, rows, code, parameters, psyms, known, feedback=True):
     float or a function of the tunable parameters ``psyms``."""
     from ..components.symbols import time
     from .modelcode import DelayCode
-    from .pipeline import _parameter_functions
+    from .assemble import _parameter_functions
     for d, row in zip(delays, rows):
         unknown = sorted(q.name for q in row.free_symbols if q not in known and q != time)
         if unknown:

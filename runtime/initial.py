@@ -3,7 +3,7 @@
 At t0 the unknowns are the solver vector z (the states and tearing variables, or every
 variable in the full form).  The equations are the model's rows G(t0, z) = 0 plus as many
 *initial conditions* as there are states, chosen by the compiler
-(:func:`acausal.compiler.pipeline.choose_initial_rows`):
+(:func:`acausal.compiler.assemble.choose_initial_rows`):
 
 1. the user's initial equations (e.g. ``der(w) = 0`` for steady state);
 2. ``v = start`` for every variable with ``fixed=True``;

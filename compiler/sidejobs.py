@@ -1,0 +1,188 @@
+"""Work of a large compile done beside the passes, in a forked copy of the process.
+
+Two parts of a compile read what the passes have made but feed no later pass: the
+structural index of the equations as written (:func:`acausal.compiler.reduction.as_written`,
+for the report) and the compile cache's entry (:func:`acausal.compiler.cache.store`,
+which pickles the model and prints its equations' texts).  On a machine with a second
+processor they need not wait for each other or for the passes:
+
+- :class:`Beside` runs a function in a forked child while the passes go on, and returns
+  its result (pickled back through a pipe) where the pipeline needs it;
+- :func:`detach` runs one whose result nobody waits for (the cache store); the process
+  reaps it later (:func:`settle`, which a cache lookup calls first, so a process finds
+  what it stored itself).
+
+Why fork: the child starts as a copy-on-write image of the parent (a 200 MB compile
+forks in a few milliseconds), so nothing is pickled on the way in; pickling the flat
+model instead would cost more than the work it carries.  sweeps.py forks its workers
+for the same reason.
+
+The result does not depend on where the work ran.  It runs in the process itself, at
+the point its result is needed, when
+
+- the operating system cannot fork, or ``ACAUSAL_SIDE_JOBS=0``;
+- a Python thread other than acausal's own runs: a lock such a thread holds at the fork
+  would stay held in the child forever (acausal's threads, a timer and the C compiler's
+  feeders, take no lock the child's work takes); threads of native libraries (the BLAS
+  pool) hold no lock of the interpreter's;
+- the child ends without a result (it raised, it was killed, its result would not
+  pickle): the parent runs the function again, which raises the same error with its
+  whole traceback, or returns the result.
+
+A child ends itself after ``LIMIT`` seconds (an alarm), so a child that cannot finish
+never outlives its purpose; its work is then redone by the parent or, for the cache,
+left undone (a later compile stores the entry).
+"""
+from __future__ import annotations
+
+import os
+import pickle
+import signal
+import threading
+import time
+import warnings
+
+__all__ = ["Beside", "available", "detach", "settle"]
+
+LIMIT = 600                # s: a child's alarm
+_OURS = "acausal-"         # the prefix of the names of acausal's own threads
+_detached: list = []       # pids of the children of detach() not reaped yet
+
+
+def available() -> bool:
+    """True when work can be forked (see the module docstring)."""
+    if not hasattr(os, "fork"):
+        return False
+    if os.environ.get("ACAUSAL_SIDE_JOBS", "1").strip().lower() in ("0", "no", "off", "false"):
+        return False
+    main = threading.main_thread()
+    return all(t is main or t.name.startswith(_OURS) for t in threading.enumerate())
+
+
+def _fork() -> int:
+    with warnings.catch_warnings():
+        # Python 3.12+ warns at any fork of a process with more than one OS thread;
+        # available() has checked the only ones that matter here (its docstring)
+        warnings.simplefilter("ignore", DeprecationWarning)
+        return os.fork()
+
+
+def _child(fn, args, w: int | None) -> None:
+    """The forked child: run fn, send (result, seconds) to w, end without cleanup
+    (what the parent's exit handlers and buffers hold is the parent's)."""
+    try:
+        signal.signal(signal.SIGALRM, signal.SIG_DFL)
+        signal.alarm(LIMIT)
+        t0 = time.perf_counter()
+        out = fn(*args)
+        if w is not None:
+            data = pickle.dumps((out, time.perf_counter() - t0),
+                                protocol=pickle.HIGHEST_PROTOCOL)
+            view = memoryview(data)
+            while view:
+                view = view[os.write(w, view):]
+    except BaseException:      # noqa: BLE001 - the parent runs it again and sees why
+        pass
+    finally:
+        os._exit(0)
+
+
+class Beside:
+    """``fn(*args)`` run in a forked child from now on (``fork=False``: run by
+    :meth:`result`); :meth:`result` returns what it returned.  ``seconds`` is then the time the work took where it ran, ``forked``
+    whether that was in the child."""
+
+    def __init__(self, fn, *args, fork: bool = True):
+        self.fn, self.args = fn, args
+        self.pid = self.fd = None
+        self.forked, self.seconds = False, 0.0
+        if not (fork and available()):
+            return
+        r, w = os.pipe()
+        try:
+            pid = _fork()
+        except OSError:
+            os.close(r), os.close(w)
+            return
+        if pid == 0:
+            os.close(r)
+            _child(fn, args, w)
+        os.close(w)
+        self.pid, self.fd = pid, r
+
+    @property
+    def running(self) -> bool:
+        """True while a forked child does the work."""
+        return self.pid is not None
+
+    def result(self):
+        if self.pid is not None:
+            data = self._read()
+            self.pid = None
+            if data:
+                try:
+                    out, self.seconds = pickle.loads(data)
+                    self.forked = True
+                    return out
+                except Exception:       # noqa: BLE001 - run it here instead
+                    pass
+        t0 = time.perf_counter()
+        out = self.fn(*self.args)
+        self.seconds = time.perf_counter() - t0
+        return out
+
+    def _read(self) -> bytes:
+        chunks = []
+        try:
+            while True:
+                chunk = os.read(self.fd, 1 << 20)
+                if not chunk:
+                    break
+                chunks.append(chunk)
+        finally:
+            os.close(self.fd)
+            _reap(self.pid, block=True)
+        return b"".join(chunks)
+
+    def cancel(self) -> None:
+        """Stop the child (its result is not needed: the compile ended early)."""
+        if self.pid is not None:
+            try:
+                os.kill(self.pid, signal.SIGKILL)
+            except OSError:
+                pass
+            os.close(self.fd)
+            _reap(self.pid, block=True)
+            self.pid = None
+
+
+def detach(fn, *args) -> bool:
+    """Run ``fn(*args)`` in a forked child and go on without its result; False (and
+    nothing done) when work cannot be forked: the caller then runs it itself."""
+    settle(block=False)
+    if not available():
+        return False
+    try:
+        pid = _fork()
+    except OSError:
+        return False
+    if pid == 0:
+        _child(fn, args, None)
+    _detached.append(pid)
+    return True
+
+
+def settle(block: bool = True) -> None:
+    """Reap the children of :func:`detach` that have ended (``block``: wait for all)."""
+    for pid in list(_detached):
+        if _reap(pid, block):
+            _detached.remove(pid)
+
+
+def _reap(pid: int, block: bool) -> bool:
+    """True when the child ``pid`` has ended (and is reaped) or is not ours."""
+    try:
+        done, _ = os.waitpid(pid, 0 if block else os.WNOHANG)
+    except ChildProcessError:
+        return True
+    return done != 0

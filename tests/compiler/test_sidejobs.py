@@ -1,0 +1,142 @@
+"""Work done beside the compile passes in a forked child (acausal.compiler.sidejobs): the
+result is the one the process would compute itself, however the child ends, and a
+compile that forks gives the same model, report and cache entry as one that does not.
+
+The reference of every check is the same work run in the process itself.
+"""
+import os
+import threading
+
+import pytest
+
+import acausal as ac
+from acausal.compiler import cache as store
+from acausal.compiler import pipeline, sidejobs
+from acausal.compiler.reduction import as_written
+
+pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="no fork on this system")
+
+PARENT = os.getpid()
+
+
+def _work(n):
+    return {"pid_was_parent": os.getpid() == PARENT, "squares": [k * k for k in range(n)]}
+
+
+def test_the_child_returns_what_the_process_would():
+    job = sidejobs.Beside(_work, 1000)
+    assert job.running
+    out = job.result()
+    assert job.forked and not job.running
+    assert out["squares"] == [k * k for k in range(1000)]
+    assert out["pid_was_parent"] is False        # it did run in the child
+    inline = sidejobs.Beside(_work, 1000, fork=False)
+    assert not inline.running
+    assert inline.result() == {"pid_was_parent": True, "squares": out["squares"]}
+    assert not inline.forked
+
+
+def _fails_in_the_child(how):
+    if os.getpid() != PARENT:
+        if how == "raise":
+            raise ValueError("only in the child")
+        if how == "exit":
+            os._exit(3)
+        if how == "unpicklable":
+            return lambda: None
+    return "done by the parent"
+
+
+@pytest.mark.parametrize("how", ["raise", "exit", "unpicklable"])
+def test_a_child_that_ends_without_a_result_leaves_the_work_to_the_parent(how):
+    job = sidejobs.Beside(_fails_in_the_child, how)
+    assert job.result() == "done by the parent"
+    assert not job.forked
+
+
+def _raises():
+    raise KeyError("the same error in both")
+
+
+def test_an_error_of_the_work_reaches_the_caller_with_its_type():
+    with pytest.raises(KeyError, match="the same error in both"):
+        sidejobs.Beside(_raises).result()
+
+
+def test_a_cancelled_job_leaves_no_child():
+    job = sidejobs.Beside(_work, 10)
+    pid = job.pid
+    job.cancel()
+    assert not job.running
+    with pytest.raises(ChildProcessError):
+        os.waitpid(pid, os.WNOHANG)       # reaped
+
+
+def _write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def test_detached_work_is_done_by_the_time_the_process_settles(tmp_path):
+    path = tmp_path / "out.txt"
+    assert sidejobs.detach(_write, str(path), "written by the child")
+    sidejobs.settle()
+    assert path.read_text() == "written by the child"
+    assert not sidejobs._detached
+
+
+def test_a_foreign_thread_keeps_the_work_in_the_process(monkeypatch):
+    monkeypatch.delenv("ACAUSAL_SIDE_JOBS", raising=False)
+    assert sidejobs.available()
+    stop = threading.Event()
+    other = threading.Thread(target=stop.wait, name="someone-else", daemon=True)
+    other.start()
+    try:
+        assert not sidejobs.available()
+        job = sidejobs.Beside(_work, 5)
+        assert not job.running and job.result()["pid_was_parent"]
+        assert not sidejobs.detach(_write, os.devnull, "")
+    finally:
+        stop.set()
+        other.join()
+    ours = threading.Thread(target=lambda: None, name="acausal-test")
+    assert sidejobs.available()       # acausal's own threads take no lock of the work
+    monkeypatch.setenv("ACAUSAL_SIDE_JOBS", "0")
+    assert not sidejobs.available()
+    del ours
+
+
+@pytest.fixture
+def fresh_cache(tmp_path, monkeypatch):
+    monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path / "cache"))
+    monkeypatch.delenv("ACAUSAL_COMPILE_CACHE", raising=False)
+    monkeypatch.delenv("ACAUSAL_SIDE_JOBS", raising=False)
+    return tmp_path / "cache"
+
+
+def test_a_compile_with_side_jobs_equals_one_without(fresh_cache, monkeypatch):
+    """The Cartesian pendulum (index 3 as written): forced to fork at any size, its key,
+    index as written, report and cache entry equal those of a compile that does not."""
+    from acausal.compiler.flatten import flatten
+    from acausal.library.examples.pendulum import Pendulum
+    plain = pipeline.compile_model(Pendulum(), "numpy", cache=False)
+    monkeypatch.setattr(pipeline, "SIDE_JOBS_FROM", 0)
+    forked = pipeline.compile_model(Pendulum(), "numpy", cache=True)
+    assert any("second process" in n for n in forked.report.notes)
+    assert forked.report.sigma == plain.report.sigma == as_written(flatten(Pendulum()))
+    assert forked.report.sigma["index_sigma"] == 3
+    def text(report):       # all but the timings and the notes that name them
+        return [line for line in str(report).splitlines()
+                if "note:" not in line and "compile time" not in line]
+    assert text(forked.report) == text(plain.report)
+    key = store.flat_key(flatten(Pendulum()), "numpy")
+    found = store.lookup(key)          # stored by the detached child, waited for
+    assert found is not None
+    again = pipeline.compile_model(Pendulum(), "numpy", cache=True)
+    assert any("came from the compile cache" in n for n in again.report.notes)
+    assert again.report.sigma == plain.report.sigma
+    a = ac.simulate(ac.runtime.CompiledModel(plain), t_end=2.0, rtol=1e-9)
+    b = ac.simulate(ac.runtime.CompiledModel(again), t_end=2.0, rtol=1e-9)
+    for name in ("x", "y", "lam"):
+        scale = max(abs(a[name]).max(), 1e-300)
+        assert abs(a[name] - b[name]).max() <= 1e-12 * scale
