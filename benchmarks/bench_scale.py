@@ -13,9 +13,12 @@ the growth exponent of each pass is
 Every (family, N) is run ``--repeat`` times, the repetitions interleaved (all sizes
 once, then again), and the median of each time is printed: the machine is shared, and
 single timings are noisy.  ``total`` is the wall time of ``compile_model``, ``cpu`` the
-processor time of the process during it (less sensitive to other load), ``cc cpu`` that
-of the C compiler's processes (user + system, all translation units; ``RSS MB`` is the
-Python process's peak memory, the compilers' comes on top), and a line per size says
+processor time of the process during it (less sensitive to other load), ``sub cpu`` that
+of its child processes -- the C compiler's (all translation units) and the compile's side
+jobs (:mod:`acausal.compiler.sidejobs`: the cache key, the index as written and the cache
+store, in forked copies) -- user + system; ``RSS MB`` is the Python process's peak
+memory, ``sub MB`` the largest child's (a forked child shares the parent's pages until
+it writes them, so this over-counts what it adds), and a line per size says
 how the C library was built (translation units, compilers at once, flags, seconds
 compiling and linking; :mod:`acausal.compiler.cbuild`) and the load average then.
 
@@ -87,6 +90,8 @@ def measure_once(family: str, n: int, front: bool) -> dict:
     total = time.perf_counter() - t0
     report = _last_report if front else code.report
     usage = resource.getrusage(resource.RUSAGE_SELF)
+    from acausal.compiler import sidejobs
+    sidejobs.settle()        # the cache store beside the compile: its time and memory too
     kids = resource.getrusage(resource.RUSAGE_CHILDREN)
     try:
         from acausal.compiler.cbuild import last_build
@@ -94,7 +99,7 @@ def measure_once(family: str, n: int, front: bool) -> dict:
         last_build = {}
     return {"family": family, "n": n, "flat": report.counts["flatten"]["equations"],
             "total": total, "cpu": time.process_time() - c0, "timings": dict(report.timings),
-            "rss_mb": usage.ru_maxrss / 1024.0,
+            "rss_mb": usage.ru_maxrss / 1024.0, "child_rss_mb": kids.ru_maxrss / 1024.0,
             "cc_cpu": (kids.ru_utime - kids0.ru_utime) + (kids.ru_stime - kids0.ru_stime),
             "c_build": dict(last_build),
             "load": os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")}
@@ -128,10 +133,11 @@ def _table(family: str, runs: list) -> str:
         m = {k: statistics.median(r["timings"].get(k, 0.0) for r in reps) for k in passes}
         m["total"] = statistics.median(r["total"] for r in reps)
         m["cpu"] = statistics.median(r["cpu"] for r in reps)
-        m["cc cpu"] = statistics.median(r.get("cc_cpu", 0.0) for r in reps)
+        m["sub cpu"] = statistics.median(r.get("cc_cpu", 0.0) for r in reps)
+        m["sub MB"] = max(r.get("child_rss_mb", 0.0) for r in reps)
         med.append((reps[0]["n"], reps[0]["flat"], m,
                     max(r["rss_mb"] for r in reps)))
-    cols = passes + ["total", "cpu", "cc cpu"]
+    cols = passes + ["total", "cpu", "sub cpu", "sub MB"]
     width = max(9, *(len(c) + 1 for c in cols))
     head = f"{'N':>6} {'flat eqs':>9} {'RSS MB':>7} " + "".join(f"{c:>{width}}" for c in cols)
     lines = [f"{family}: median seconds of {len(runs[0])} run(s) per size", head]
