@@ -8,11 +8,15 @@ coefficients, the Jacobian and the initialization Jacobian.
 """
 from __future__ import annotations
 
+import os
 from functools import lru_cache
 
 import sympy as sp
+from sympy.core.basic import _args_sortkey
 
 __all__ = ["partial", "plain_coefficient", "solve_linear"]
+
+_CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
 
 
 @lru_cache(maxsize=200_000)
@@ -106,14 +110,59 @@ def _solved(rest, c):
         if c.is_Number:
             # x = (-1/c) * r0, kept as a product: distributing the number over the
             # sum would rebuild every term
+            if c is sp.S.One:     # what Mul(-1, r0, evaluate=False) makes
+                return sp.Mul._from_args((sp.S.NegativeOne, r0))
             return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
         return -r0 / c
     # one other term: r(x=0) is that term
     if c is sp.S.One:
-        return -rest[0]
+        return _negated(rest[0])
     if c is sp.S.NegativeOne:
         return rest[0]
-    return -rest[0] / c
+    return _checked(_quotient(_negated(rest[0]), c), -rest[0] / c if _CHECK else None)
+
+
+def _negated(t):
+    """-t, as sympy builds it; a product of a number and other factors (``-L.v``,
+    ``-R*i``) directly: its coefficient negated, the other factors as they were."""
+    if type(t) is sp.Mul and t.args[0].is_Number and t.is_commutative:
+        k, others = -t.args[0], t.args[1:]
+        if k is sp.S.One:
+            out = others[0] if len(others) == 1 else sp.Mul._from_args(others, True)
+        else:
+            out = sp.Mul._from_args((k, *others), True)
+        return _checked(out, -t if _CHECK else None)
+    if type(t) is sp.Symbol:
+        return _checked(sp.Mul._from_args((sp.S.NegativeOne, t), True), -t if _CHECK else None)
+    return -t
+
+
+def _quotient(t, c):
+    """t / c, as sympy builds it; for a symbol c and a product of a number and symbols
+    other than c (``L.v / L.L``) directly: the factors and c**-1 in sympy's order,
+    the number first (there is nothing to combine)."""
+    if type(c) is not sp.Symbol or not c.is_commutative:
+        return t / c
+    if type(t) is sp.Symbol:
+        k, factors = None, [t]
+    elif type(t) is sp.Mul and all(type(f) is sp.Symbol for f in t.args[1:]) \
+            and (type(t.args[0]) is sp.Symbol or t.args[0].is_Number):
+        k = t.args[0] if t.args[0].is_Number else None
+        factors = list(t.args[1:] if k is not None else t.args)
+    else:
+        return t / c
+    if c in factors or not all(f.is_commutative for f in factors):
+        return t / c
+    factors.append(sp.Pow(c, sp.S.NegativeOne))
+    factors.sort(key=_args_sortkey)
+    return sp.Mul._from_args(([k] if k is not None else []) + factors, True)
+
+
+def _checked(out, ref):
+    """``out``; with ``ACAUSAL_CHECK_FASTSUBS=1``, first compared with sympy's ``ref``."""
+    if _CHECK and (out != ref or sp.srepr(out) != sp.srepr(ref)):
+        raise AssertionError(f"built {out}, sympy builds {ref}")
+    return out
 
 
 def _solve_general(residual, x):

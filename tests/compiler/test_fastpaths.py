@@ -19,7 +19,12 @@ x, y, z, p, q = sp.symbols("x y z p q", real=True)
 
 RESIDUALS = [x + y, -x + y, 2 * x - y, x - y + z, -x + y - z, sp.Rational(1, 3) * x + y + z,
              sp.Float(0.5) * x - y, p * x - y, p * x - y + z, x * y - z, x ** 2 - y,
-             p * (x - y) + z, sp.sin(y) + p * x, x + y * z + q]
+             p * (x - y) + z, sp.sin(y) + p * x, x + y * z + q,
+             # one other term, negated and divided directly (derivative._negated,
+             # _quotient), and the cases they leave to sympy
+             p * x + y, p * x - 2 * y * z, p * x - q * y, p * x - sp.Float(1.5) * y,
+             x - y * z, x + 2 * y, p * x - p * y, p * x - sp.sin(y), q * x - p * y * z,
+             x - y - z]
 LINEAR = [r for r in RESIDUALS if sp.degree(r, x) == 1]
 
 
