@@ -29,14 +29,18 @@ the point its result is needed, when
   pickle): the parent runs the function again, which raises the same error with its
   whole traceback, or returns the result.
 
-A child ends itself after ``LIMIT`` seconds (an alarm), so a child that cannot finish
-never outlives its purpose; its work is then redone by the parent or, for the cache,
-left undone (a later compile stores the entry).
+A child that cannot finish must not hold up the compile: the parent waits for a result
+at most five seconds plus three times as long as it went on without it, and for its own
+cache store at most ``STORE_PATIENCE`` seconds, then stops the child (the work is
+redone by the parent, or the entry is left to a later compile: it is written whole or
+not at all).  A child also ends itself after ``LIMIT`` seconds (an alarm), so none
+outlives its purpose.
 """
 from __future__ import annotations
 
 import os
 import pickle
+import select
 import signal
 import threading
 import time
@@ -89,8 +93,8 @@ def _child(fn, args, w: int | None) -> None:
 
 class Beside:
     """``fn(*args)`` run in a forked child from now on (``fork=False``: run by
-    :meth:`result`); :meth:`result` returns what it returned.  ``seconds`` is then the time the work took where it ran, ``forked``
-    whether that was in the child."""
+    :meth:`result`); :meth:`result` returns what it returned.  ``seconds`` is then the
+    time the work took where it ran, ``forked`` whether that was in the child."""
 
     def __init__(self, fn, *args, fork: bool = True):
         self.fn, self.args = fn, args
@@ -108,7 +112,7 @@ class Beside:
             os.close(r)
             _child(fn, args, w)
         os.close(w)
-        self.pid, self.fd = pid, r
+        self.pid, self.fd, self.started = pid, r, time.monotonic()
 
     @property
     def running(self) -> bool:
@@ -116,9 +120,13 @@ class Beside:
         return self.pid is not None
 
     def result(self):
+        """What ``fn(*args)`` returned: the child's, or computed here when the child
+        ended without it or has not sent it within ``PATIENCE`` (the time the caller
+        went on meanwhile, times three, plus five seconds: a child that should have been
+        done long ago is stopped; the work is the caller's again)."""
         if self.pid is not None:
-            data = self._read()
-            self.pid = None
+            waited = time.monotonic() - self.started
+            data = self._read(PATIENCE[0] + PATIENCE[1] * waited)
             if data:
                 try:
                     out, self.seconds = pickle.loads(data)
@@ -131,29 +139,38 @@ class Beside:
         self.seconds = time.perf_counter() - t0
         return out
 
-    def _read(self) -> bytes:
-        chunks = []
+    def _read(self, patience: float) -> bytes | None:
+        """The child's whole message, or None (it ended without one, or ran out of
+        patience); the child is reaped either way."""
+        chunks, end = [], time.monotonic() + patience
         try:
             while True:
+                left = end - time.monotonic()
+                if left <= 0 or not select.select([self.fd], [], [], left)[0]:
+                    return None
                 chunk = os.read(self.fd, 1 << 20)
-                if not chunk:
-                    break
+                if not chunk:           # sent: the child is ending (os._exit)
+                    os.waitpid(self.pid, 0)
+                    os.close(self.fd)
+                    self.pid = None
+                    return b"".join(chunks)
                 chunks.append(chunk)
         finally:
-            os.close(self.fd)
-            _reap(self.pid, block=True)
-        return b"".join(chunks)
+            self.cancel()
 
     def cancel(self) -> None:
-        """Stop the child (its result is not needed: the compile ended early)."""
+        """Stop the child if it still runs, and reap it (its result is not needed, or
+        has been read)."""
         if self.pid is not None:
-            try:
-                os.kill(self.pid, signal.SIGKILL)
-            except OSError:
-                pass
+            _stop(self.pid)
             os.close(self.fd)
-            _reap(self.pid, block=True)
             self.pid = None
+
+
+# how long a caller waits for a child beyond the time it went on without it:
+# (seconds, factor) -- see Beside.result
+PATIENCE = (5.0, 3.0)
+STORE_PATIENCE = 60.0      # s a process waits for its own cache store (settle)
 
 
 def detach(fn, *args) -> bool:
@@ -168,21 +185,45 @@ def detach(fn, *args) -> bool:
         return False
     if pid == 0:
         _child(fn, args, None)
-    _detached.append(pid)
+    _detached.append((pid, time.monotonic()))
     return True
 
 
 def settle(block: bool = True) -> None:
-    """Reap the children of :func:`detach` that have ended (``block``: wait for all)."""
-    for pid in list(_detached):
-        if _reap(pid, block):
-            _detached.remove(pid)
+    """Reap the children of :func:`detach` that have ended; with ``block``, wait for
+    the others, each until ``STORE_PATIENCE`` seconds after it started, and stop it
+    then (a cache entry is written whole or not at all)."""
+    for item in list(_detached):
+        pid, started = item
+        done = _ended(pid)
+        while block and not done:
+            if time.monotonic() - started > STORE_PATIENCE:
+                _stop(pid)
+                done = True
+                break
+            time.sleep(0.005)
+            done = _ended(pid)
+        if done:
+            _detached.remove(item)
 
 
-def _reap(pid: int, block: bool) -> bool:
-    """True when the child ``pid`` has ended (and is reaped) or is not ours."""
+def _ended(pid: int) -> bool:
+    """True when the child ``pid`` has ended (and is now reaped) or is not ours."""
     try:
-        done, _ = os.waitpid(pid, 0 if block else os.WNOHANG)
+        done, _ = os.waitpid(pid, os.WNOHANG)
     except ChildProcessError:
         return True
     return done != 0
+
+
+def _stop(pid: int) -> None:
+    """End the child ``pid`` (if it still runs) and reap it."""
+    if not _ended(pid):
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except OSError:
+            pass
+        try:
+            os.waitpid(pid, 0)
+        except ChildProcessError:
+            pass

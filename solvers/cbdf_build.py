@@ -58,6 +58,7 @@ def build_if_long(seconds: float | None):
     timer = None
     if seconds is not None and _builder is None and library(cached_only=True) is None:
         timer = threading.Timer(seconds, build_in_background)
+        timer.name = "acausal-loop-build-timer"   # acausal's own (compiler.sidejobs)
         timer.daemon = True         # nothing started while it waits: no reason to wait
         timer.start()
     try:

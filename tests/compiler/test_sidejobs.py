@@ -6,6 +6,7 @@ The reference of every check is the same work run in the process itself.
 """
 import os
 import threading
+import time
 
 import pytest
 
@@ -52,6 +53,30 @@ def test_a_child_that_ends_without_a_result_leaves_the_work_to_the_parent(how):
     job = sidejobs.Beside(_fails_in_the_child, how)
     assert job.result() == "done by the parent"
     assert not job.forked
+
+
+def _hangs_in_the_child():
+    if os.getpid() != PARENT:
+        time.sleep(3600)
+    return "done by the parent"
+
+
+def test_a_child_that_does_not_finish_is_stopped_and_its_work_done_here(monkeypatch, tmp_path):
+    monkeypatch.setattr(sidejobs, "PATIENCE", (0.3, 0.0))
+    job = sidejobs.Beside(_hangs_in_the_child)
+    pid = job.pid
+    t0 = time.monotonic()
+    assert job.result() == "done by the parent"
+    assert time.monotonic() - t0 < 30 and not job.forked
+    with pytest.raises(ChildProcessError):
+        os.waitpid(pid, os.WNOHANG)       # stopped and reaped
+    monkeypatch.setattr(sidejobs, "STORE_PATIENCE", 0.3)
+    assert sidejobs.detach(_hangs_in_the_child)
+    (pid, _), = sidejobs._detached
+    sidejobs.settle()
+    assert not sidejobs._detached
+    with pytest.raises(ChildProcessError):
+        os.waitpid(pid, os.WNOHANG)
 
 
 def _raises():
