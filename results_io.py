@@ -67,24 +67,6 @@ def declared_attributes(model) -> tuple[dict, dict]:
     return units, descriptions
 
 
-def with_derivatives(units: dict, names) -> dict:
-    """``units`` completed with ``der(x)`` for each such name: x's unit per second."""
-    out = dict(units)
-    for n in names:
-        if n.startswith("der(") and n.endswith(")") and n not in out:
-            out[n] = per_second(units.get(n[4:-1], ""))
-    return out
-
-
-def per_second(unit: str) -> str:
-    """A unit divided by seconds, in Modelica's unit syntax ("m/s" -> "m/s2")."""
-    if not unit:
-        return "1/s"
-    if unit.endswith("/s"):
-        return unit + "2"
-    return f"{unit}/s" if "/" not in unit else f"({unit})/s"
-
-
 # -- the Dymola / OpenModelica result file ------------------------------------------------
 def _char_columns(strings) -> np.ndarray:
     """Strings as a transposed char matrix (one string per column, padded with blanks).

@@ -124,14 +124,12 @@ def _declare_units(mc, model) -> None:
     the component tree declares them, unless the compiler put them there already."""
     if "units" in mc.meta and "descriptions" in mc.meta:
         return
-    from .results_io import declared_attributes, with_derivatives
-    units, descriptions = declared_attributes(model)
-    names = list(mc.outputs) + list(mc.param_names)
-    mc.meta.setdefault("units", with_derivatives(
-        {n: units.get(n, "") for n in names if not n.startswith("der(")}, names))
-    mc.meta.setdefault("descriptions", {
-        n: descriptions.get(n, "") if not n.startswith("der(") else
-        f"derivative of {n[4:-1]}" for n in names})
+    from .components.units import output_tables
+    from .results_io import declared_attributes
+    units, descriptions = output_tables(*declared_attributes(model),
+                                        list(mc.outputs) + list(mc.param_names))
+    mc.meta.setdefault("units", units)
+    mc.meta.setdefault("descriptions", descriptions)
 
 
 def initial_values(compiled: CompiledModel, t0: float = 0.0) -> np.ndarray:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..components.units import output_tables
 from .graph import UNASSIGNED
 from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
 from .report import EquationNames
@@ -97,6 +98,13 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms),
               "derived_parameters": dict(flat.derived)})
+    # the declared unit and description of every name of a result
+    out.meta["units"], out.meta["descriptions"] = output_tables(
+        {**{v.name: v.attrs.unit for v in flat.variables},
+         **{p.name: p.unit for p in flat.parameters}},
+        {**{v.name: v.attrs.description for v in flat.variables},
+         **{p.name: p.description for p in flat.parameters}},
+        list(out.outputs) + list(out.param_names))
     if delays:
         from .delays import delay_code, feeds_back
         out.delays = delay_code(delays, delay_rows, generate(

@@ -26,7 +26,7 @@ from typing import NamedTuple
 
 from .component import ModelError
 
-__all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "parse_unit",
+__all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "output_tables", "parse_unit",
            "dimension_text", "has_unit", "convert_value", "BASE_DIMENSIONS",
            "DIMENSIONLESS"]
 
@@ -328,3 +328,31 @@ class UnitCheck:
             text += (f"; {len(self.unitless_variables)} variable(s) without a unit (any "
                      f"dimension): {', '.join(self.unitless_variables)}")
         return text
+
+
+# -- the units and descriptions of a result's names ------------------------------------
+def output_tables(units: dict, descriptions: dict, names) -> tuple[dict, dict]:
+    """(unit, description) by each of ``names`` (a model's outputs and parameters), from
+    the declared ones by dotted name; ``der(x)`` has x's unit per second."""
+    return (with_derivatives({n: units.get(n, "") for n in names
+                              if not n.startswith("der(")}, names),
+            {n: descriptions.get(n, "") if not n.startswith("der(") else
+             f"derivative of {n[4:-1]}" for n in names})
+
+
+def with_derivatives(units: dict, names) -> dict:
+    """``units`` completed with ``der(x)`` for each such name: x's unit per second."""
+    out = dict(units)
+    for n in names:
+        if n.startswith("der(") and n.endswith(")") and n not in out:
+            out[n] = per_second(units.get(n[4:-1], ""))
+    return out
+
+
+def per_second(unit: str) -> str:
+    """A unit divided by seconds, in Modelica's unit syntax ("m/s" -> "m/s2")."""
+    if not unit:
+        return "1/s"
+    if unit.endswith("/s"):
+        return unit + "2"
+    return f"{unit}/s" if "/" not in unit else f"({unit})/s"
