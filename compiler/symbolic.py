@@ -220,12 +220,9 @@ def coefficient_kind(r: sp.Expr, s: sp.Symbol, index: dict, parameters: set) -> 
     # from that term (what sum_partial returns, without building it)
     terms = _terms_with(r).get(s, ()) if r.is_Add else (r,)
     if len(terms) == 1:
-        from .derivative import plain_coefficient
-        k = plain_coefficient(terms[0], s)
-        if k is not None:
-            if k.is_Number:
-                return LINEAR_CONST if k != 0 else NONLINEAR
-            return LINEAR_PARAM if k in parameters else LINEAR_VAR
+        kind = _factor_kind(terms[0], s, parameters)
+        if kind is not None:
+            return kind
     c = sum_partial(r, s)
     if s in _symbol_nodes(c):           # c.has(s)
         return NONLINEAR
@@ -234,6 +231,27 @@ def coefficient_kind(r: sp.Expr, s: sp.Symbol, index: dict, parameters: set) -> 
     if symbols_of(c) <= parameters:
         return LINEAR_PARAM
     return LINEAR_VAR
+
+
+def _factor_kind(t, s, parameters: set) -> int | None:
+    """The kind of the coefficient of s in the term t when t is s or a product in which
+    s is one factor and the others are numbers and symbols (``-C*der(v)``): read from
+    the other factors, without building their product; None for any other term."""
+    if t is s:
+        return LINEAR_CONST
+    if type(t) is not sp.Mul:
+        return None
+    kind, found = LINEAR_CONST, False
+    for f in t.args:
+        if f is s:
+            found = True
+        elif type(f) is sp.Symbol:
+            if f == s:
+                return None         # an equal symbol of another object: sympy decides
+            kind = max(kind, LINEAR_PARAM if f in parameters else LINEAR_VAR)
+        elif not f.is_Number:
+            return None
+    return kind if found else None
 
 
 def sum_partial(r: sp.Expr, x: sp.Symbol) -> sp.Expr:

@@ -24,7 +24,9 @@ RESIDUALS = [x + y, -x + y, 2 * x - y, x - y + z, -x + y - z, sp.Rational(1, 3) 
              # _quotient), and the cases they leave to sympy
              p * x + y, p * x - 2 * y * z, p * x - q * y, p * x - sp.Float(1.5) * y,
              x - y * z, x + 2 * y, p * x - p * y, p * x - sp.sin(y), q * x - p * y * z,
-             x - y - z]
+             x - y - z,
+             # a coefficient of several factors, classified from them (_factor_kind)
+             -p * q * x + y, 2 * p * x * y - z, sp.Float(0.5) * p * x - y, x * y * z]
 LINEAR = [r for r in RESIDUALS if sp.degree(r, x) == 1]
 
 
