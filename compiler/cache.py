@@ -15,8 +15,9 @@ being ``$ACAUSAL_CACHE`` or ``~/.cache/acausal``.  Two keys lead to it, both SHA
 over the backend (and C compiler) and the :func:`fingerprint` of the compiler:
 
 * the **flat key** (:func:`flat_key`): everything of the flat model the compiler reads
-  -- variables and all their attributes, parameters and values, every residual printed
-  exactly (:class:`~acausal.compiler.symbolic.ExactText`) and the source of its text,
+  -- variables and all their attributes, parameters and values, every equation printed
+  exactly (:class:`~acausal.compiler.symbolic.ExactText`: its source as written, and its
+  residual where flattening did not make it from that source),
   initial equations, when-clauses, derivatives, structural zeros, ports, components.
   Needs flattening, hence sympy.
 * the **tree key** (:func:`tree_key`, only with ``cache="tree"``), from the instance

@@ -119,8 +119,13 @@ def _flat_key(flat, backend: str) -> str:
           p.component_class, ex(p.min), ex(p.max))
     for eqs, tag in ((flat.equations, "e"), (flat.initial_equations, "i")):
         for e in eqs:
-            h(tag, e.kind, ex(e.residual), source(e), e.component, e.component_class,
-              e.label)
+            # the residual of an equation written as Eq(lhs, rhs) is made from it by
+            # flattening (whose source the fingerprint covers) and the parameters and
+            # derivatives hashed here, so its exact text says nothing more; a residual
+            # made otherwise (a connection set's sum, an equation read back from its
+            # text) is hashed itself
+            made = "" if isinstance(e.source, Equation) else ex(e.residual)
+            h(tag, e.kind, made, source(e), e.component, e.component_class, e.label)
     for x, d in flat.derivatives.items():
         h("d", ex(x), ex(d))
     for w in flat.whens:
