@@ -150,7 +150,10 @@ class Beside:
                     return None
                 chunk = os.read(self.fd, 1 << 20)
                 if not chunk:           # sent: the child is ending (os._exit)
-                    os.waitpid(self.pid, 0)
+                    try:
+                        os.waitpid(self.pid, 0)
+                    except ChildProcessError:   # reaped already (SIGCHLD ignored)
+                        pass
                     os.close(self.fd)
                     self.pid = None
                     return b"".join(chunks)

@@ -165,3 +165,19 @@ def test_a_compile_with_side_jobs_equals_one_without(fresh_cache, monkeypatch):
     for name in ("x", "y", "lam"):
         scale = max(abs(a[name]).max(), 1e-300)
         assert abs(a[name] - b[name]).max() <= 1e-12 * scale
+
+
+def test_children_reaped_by_the_system_are_no_error(tmp_path):
+    """With SIGCHLD ignored the system reaps the children itself (waitpid then has
+    nothing to wait for)."""
+    import signal
+    old = signal.signal(signal.SIGCHLD, signal.SIG_IGN)
+    try:
+        job = sidejobs.Beside(_work, 50)
+        assert job.result()["squares"] == [k * k for k in range(50)]
+        path = tmp_path / "out.txt"
+        assert sidejobs.detach(_write, str(path), "written")
+        sidejobs.settle()
+        assert not sidejobs._detached
+    finally:
+        signal.signal(signal.SIGCHLD, old)
