@@ -10,6 +10,7 @@ import numpy as np
 from ..components.units import output_tables
 from .graph import UNASSIGNED
 from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
+from .numeric import is_number
 from .report import EquationNames
 
 __all__ = ["assemble", "choose_initial_rows", "solve_linear"]
@@ -58,7 +59,7 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
     delay_rows = list(parts[4])
     zeros = set(reduced.structural_zeros)
-    params = [p for p in reduced.parameters if _is_number(p.value) and p.name not in zeros]
+    params = [p for p in reduced.parameters if is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
     # m: relation values, floor values, then held(y) and pre(y) of the discrete variables
     dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + [h.pre for h in helds]
@@ -262,14 +263,6 @@ def _dynamic(reduction) -> DynamicSets:
                        priority, [s.order(v) for v in range(s.n_vars)], s.var_names)
 
 
-def _is_number(value) -> bool:
-    try:
-        float(value)
-        return True
-    except (TypeError, ValueError):
-        return False
-
-
 def _nominal(system, k) -> float:
     if system.symbols[k] in system.var_info:
         nom = system.var_info[system.symbols[k]].attrs.nominal
@@ -323,7 +316,7 @@ def _derived_bounds(parameters, psyms) -> list:
     tunable = set(psyms)
     derived = {}
     for q in parameters:
-        if (q.min is None and q.max is None) or _is_number(q.value):
+        if (q.min is None and q.max is None) or is_number(q.value):
             continue
         value = sp.sympify(q.value)
         if value.free_symbols and value.free_symbols <= tunable:

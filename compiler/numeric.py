@@ -31,7 +31,7 @@ class CoefficientValues:
         # value, parameters their value, in that order of precedence)
         self.system = system
         self._parameters = {p.symbol: float(p.value) for p in parameters
-                            if _is_number(p.value)}
+                            if is_number(p.value)}
         self._discretes = {d.symbol for d in discretes}
         self._subs = {}
         self._cache = {}
@@ -71,7 +71,8 @@ class CoefficientValues:
         return out
 
 
-def _is_number(value) -> bool:
+def is_number(value) -> bool:
+    """Whether float(value) works (a parameter's value is a number, not an expression)."""
     try:
         float(value)
         return True
