@@ -35,8 +35,15 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
         for i, a in enumerate(args):
             if x in _symbols(a):
                 inner = partial(a, x)
-                if len(args) == 2 and inner is sp.S.One:   # k*x: Mul(k, 1) is k
-                    terms.append(args[1 - i])
+                others = args[:i] + args[i + 1:]
+                if inner is sp.S.One and expr.is_commutative and not (
+                        others[0].is_Number and any(o.is_Add for o in others)):
+                    # d/dx of k*x*y is k*y: the other factors, still in sympy's order
+                    # and with nothing to combine, are the product sympy would build
+                    # (but a number times a sum is distributed over it)
+                    terms.append(_checked(
+                        others[0] if len(others) == 1 else sp.Mul._from_args(others, True),
+                        sp.Mul(*others) if _CHECK else None))
                 else:
                     terms.append(sp.Mul(*args[:i], inner, *args[i + 1:]))
         return _sum(terms)

@@ -65,3 +65,14 @@ def test_generated_functions_compile_on_first_call_and_keep_line_numbers():
     line = [f.lineno for f in __import__("traceback").extract_tb(err.value.__traceback__)
             if f.filename == "<acausal generated>"][-1]
     assert code.source.splitlines()[line - 1].strip().startswith("out[1] = ")
+
+
+@pytest.mark.parametrize("e", [-x * y, 2 * x * y * z, -x * (y + z), 3 * x * (y - z),
+                               p * x / q, x * sp.sin(y), -sp.Float(1.5) * x * y ** 2],
+                         ids=str)
+def test_partial_of_a_product_is_sympys(e):
+    """d/dx of a product in which x is a factor: the other factors (derivative.partial
+    builds them directly unless a number would be distributed over a sum)."""
+    from acausal.compiler.derivative import partial
+    d = partial(e, x)
+    assert sp.srepr(d) == sp.srepr(sp.diff(e, x))
