@@ -1,10 +1,12 @@
 """Work of a large compile done beside the passes, in a forked copy of the process.
 
-Two parts of a compile read what the passes have made but feed no later pass: the
-structural index of the equations as written (:func:`acausal.compiler.reduction.as_written`,
-for the report) and the compile cache's entry (:func:`acausal.compiler.cache.store`,
-which pickles the model and prints its equations' texts).  On a machine with a second
-processor they need not wait for each other or for the passes:
+Three parts of a large compile read what the passes have made but feed no later pass:
+the compile cache's key of the flat model (:func:`acausal.compiler.cachekeys.flat_key`,
+hashed beside the passes before alias elimination), the structural index of the
+equations as written (:func:`acausal.compiler.reduction.as_written`, for the report) and
+the compile cache's entry (:func:`acausal.compiler.cache.store`, which pickles the model
+and prints its equations' texts).  On a machine with a second processor they need not
+wait for each other or for the passes (:mod:`acausal.compiler.pipeline` says when):
 
 - :class:`Beside` runs a function in a forked child while the passes go on, and returns
   its result (pickled back through a pipe) where the pipeline needs it;
@@ -50,7 +52,7 @@ __all__ = ["Beside", "available", "detach", "settle"]
 
 LIMIT = 600                # s: a child's alarm
 _OURS = "acausal-"         # the prefix of the names of acausal's own threads
-_detached: list = []       # pids of the children of detach() not reaped yet
+_detached: list = []       # (pid, start) of the children of detach() not reaped yet
 
 
 def available() -> bool:
