@@ -131,8 +131,10 @@ def _solved(rest, c):
 
 def _negated(t):
     """-t, as sympy builds it; a product of a number and other factors (``-L.v``,
-    ``-R*i``) directly: its coefficient negated, the other factors as they were."""
-    if type(t) is sp.Mul and t.args[0].is_Number and t.is_commutative:
+    ``-R*i``) directly: its coefficient negated, the other factors as they were (but
+    sympy distributes a number over a sum, so a product with a sum is left to it)."""
+    if type(t) is sp.Mul and t.args[0].is_Number and t.is_commutative \
+            and not any(f.is_Add for f in t.args):
         k, others = -t.args[0], t.args[1:]
         if k is sp.S.One:
             out = others[0] if len(others) == 1 else sp.Mul._from_args(others, True)
@@ -140,7 +142,8 @@ def _negated(t):
             out = sp.Mul._from_args((k, *others), True)
         return _checked(out, -t if _CHECK else None)
     if type(t) is sp.Symbol:
-        return _checked(sp.Mul._from_args((sp.S.NegativeOne, t), True), -t if _CHECK else None)
+        return _checked(sp.Mul._from_args((sp.S.NegativeOne, t), True),
+                        -t if _CHECK else None)
     return -t
 
 

@@ -59,7 +59,8 @@ def available() -> bool:
     """True when work can be forked (see the module docstring)."""
     if not hasattr(os, "fork"):
         return False
-    if os.environ.get("ACAUSAL_SIDE_JOBS", "1").strip().lower() in ("0", "no", "off", "false"):
+    switch = os.environ.get("ACAUSAL_SIDE_JOBS", "1").strip().lower()
+    if switch in ("0", "no", "off", "false"):
         return False
     main = threading.main_thread()
     return all(t is main or t.name.startswith(_OURS) for t in threading.enumerate())

@@ -26,8 +26,8 @@ from typing import NamedTuple
 
 from .component import ModelError
 
-__all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "output_tables", "parse_unit",
-           "dimension_text", "has_unit", "convert_value", "BASE_DIMENSIONS",
+__all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "output_tables",
+           "parse_unit", "dimension_text", "has_unit", "convert_value", "BASE_DIMENSIONS",
            "DIMENSIONLESS"]
 
 # check_units= of acausal.compile (the check itself: compiler/unitcheck.py)

@@ -26,7 +26,9 @@ RESIDUALS = [x + y, -x + y, 2 * x - y, x - y + z, -x + y - z, sp.Rational(1, 3) 
              x - y * z, x + 2 * y, p * x - p * y, p * x - sp.sin(y), q * x - p * y * z,
              x - y - z,
              # a coefficient of several factors, classified from them (_factor_kind)
-             -p * q * x + y, 2 * p * x * y - z, sp.Float(0.5) * p * x - y, x * y * z]
+             -p * q * x + y, 2 * p * x * y - z, sp.Float(0.5) * p * x - y, x * y * z,
+             # a product with a sum, over which sympy's negation distributes a number
+             x - 2 * y * (z + q), p * x + 3 * y * (z - q)]
 LINEAR = [r for r in RESIDUALS if sp.degree(r, x) == 1]
 
 
