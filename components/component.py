@@ -304,11 +304,9 @@ class Component(metaclass=_ComponentType):
                     f"{type(self).__name__}.{name} has no name yet: a component's "
                     "variables are named when the model is compiled (acausal.compile)")
             full = f"{self._path}.{name}" if self._path else name
-            import sympy    # the first symbol of a model loads sympy, not the class
-            # the object Symbol(full, real=True) makes, without sympy's symbol cache:
-            # each variable of a model has a name of its own, so the cache look-up (40% of
-            # the constructor) would find nothing; an equal Symbol made elsewhere is equal
-            sym = sympy.Symbol.__xnew__(sympy.Symbol, full, real=True)
+            # the first symbol of a model loads sympy, not the class
+            from .symbols import real_symbol
+            sym = real_symbol(full)
             self._symbols[name] = sym
         return sym
 

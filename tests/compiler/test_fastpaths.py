@@ -6,6 +6,8 @@
 * the generated Python is compiled by the first call of one of its functions, once, and
   a traceback still points at the line of the whole source.
 """
+import pickle
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -78,3 +80,19 @@ def test_partial_of_a_product_is_sympys(e):
     from acausal.compiler.derivative import partial
     d = partial(e, x)
     assert sp.srepr(d) == sp.srepr(sp.diff(e, x))
+
+
+def test_a_variable_symbol_is_the_symbol_sympy_makes():
+    """real_symbol(name) against Symbol.__xnew__(Symbol, name, real=True): equal, with the
+    same hash, text and facts."""
+    from acausal.components.symbols import real_symbol
+    a, b = real_symbol("R1.v"), sp.Symbol.__xnew__(sp.Symbol, "R1.v", real=True)
+    assert a == b and hash(a) == hash(b) and sp.srepr(a) == sp.srepr(b)
+    assert a == sp.Symbol("R1.v", real=True)
+    assert a._assumptions0 == b._assumptions0 and a._assumptions_orig == b._assumptions_orig
+    # every fact a knows (the given ones, and those learned by any symbol sharing its
+    # table) is the one sympy finds for b
+    assert (a**2).is_nonnegative and a.is_positive is None and a.is_real
+    for fact, value in dict(a._assumptions).items():
+        assert getattr(b, "is_" + fact) == value, fact
+    assert pickle.loads(pickle.dumps(a)) == b
