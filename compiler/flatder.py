@@ -17,12 +17,14 @@ from .symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
 __all__ = ["expand_derivatives", "has_der", "check_der_arguments"]
 
 
-def expand_derivatives(flat) -> None:
-    """Replace der(expr) by symbols der(x), expanding der of expressions by the chain rule."""
+def expand_derivatives(flat, with_der: set | None = None) -> None:
+    """Replace der(expr) by symbols der(x), expanding der of expressions by the chain rule
+    (``with_der``: the ids of the equations that have a der(), if known)."""
     var_syms = {v.symbol for v in flat.variables}
     der_syms = set(flat.derivatives.values())
     for eq in flat.equations + flat.initial_equations:
-        if has_der(eq.residual):
+        found = has_der(eq.residual) if with_der is None else id(eq) in with_der
+        if found:
             eq.residual = _replace_der(eq.residual, var_syms, flat.derivatives, der_syms)
 
 

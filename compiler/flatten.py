@@ -128,6 +128,7 @@ def flatten(model: Component) -> FlatModel:
     nodes = list(_walk(model))
     flat = FlatModel(name=type(model).__name__, variables=[], parameters=[], equations=[])
     connections = []
+    with_der = set()     # ids of the flat equations whose residuals contain der()
     with compiling(model), symbol_arithmetic():
         for comp in nodes:
             flat.components[comp.path] = type(comp).__name__
@@ -143,19 +144,20 @@ def flatten(model: Component) -> FlatModel:
                     item.origin, item.origin_class = comp.path, type(comp).__name__
                     flat.whens.append(item)
                 else:
-                    flat.equations.append(_flat_equation(item, comp, "equation"))
+                    flat.equations.append(_flat_equation(item, comp, "equation", with_der))
             for item in _read(comp, "initial_equations"):
                 if not isinstance(item, Equation):
                     raise InvalidEquation(f"{comp._describe()}.initial_equations() returned "
                                           f"{item!r}; expected ac.Eq(lhs, rhs)")
-                flat.initial_equations.append(_flat_equation(item, comp, "initial"))
+                flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
     _check_connections(connections, model)
     flat.equations.extend(_connection_equations(connections, nodes))
-    _check_symbols(flat)
+    _check_symbols(flat, with_der)
     # substitution first: a structural zero removes the derivative it multiplies
-    # (L*der(i) with L = 0), and no der(i) may be created for it
+    # (L*der(i) with L = 0), and no der(i) may be created for it (substituting
+    # parameters makes no der(): with_der still holds every residual that has one)
     _substitute_parameter_expressions(flat)
-    expand_derivatives(flat)
+    expand_derivatives(flat, with_der)
     _check_infinite_parameters(flat)
     return flat
 
@@ -215,14 +217,20 @@ def _collect_declarations(comp: Component, flat: FlatModel) -> None:
                                                hint))
 
 
-def _flat_equation(eq: Equation, comp: Component, kind: str) -> FlatEquation:
+def _flat_equation(eq: Equation, comp: Component, kind: str, with_der: set) -> FlatEquation:
+    """The FlatEquation of ``eq``; its id is added to ``with_der`` if it has a der()."""
     eq.origin, eq.origin_class = comp.path, type(comp).__name__
     coeffs = {}
     if signed_terms(eq.lhs, 1, coeffs) and signed_terms(eq.rhs, -1, coeffs) and coeffs:
         residual = signed_sum(coeffs)
+        ders = any(type(q) is der for q in coeffs)
     else:
         residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
-    return FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+        ders = has_der(residual)
+    out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+    if ders:
+        with_der.add(id(out))
+    return out
 
 
 # -- connections -----------------------------------------------------------------------
@@ -322,9 +330,10 @@ def _node_equations(members: list, connections: list) -> list:
 
 
 # -- what equations and parameter bindings may refer to -----------------------------------
-def _check_symbols(flat: FlatModel) -> None:
+def _check_symbols(flat: FlatModel, with_der: set) -> None:
     """Parameter bindings use only parameters; equations use only the model's variables,
-    parameters and time, and at least one variable."""
+    parameters and time, and at least one variable (``with_der``: the ids of the
+    equations with der(), whose arguments are checked)."""
     var_syms = {v.symbol for v in flat.variables}
     par_syms = {p.symbol for p in flat.parameters}
     allowed = var_syms | par_syms | {time}
@@ -337,7 +346,7 @@ def _check_symbols(flat: FlatModel) -> None:
         free = symbols_of(eq.residual)
         if not free <= allowed:
             _check_known(free - allowed, f"equation '{eq.text}' in {eq.where}")
-        if has_der(eq.residual):
+        if id(eq) in with_der:
             check_der_arguments(eq, var_syms)
         if free.isdisjoint(var_syms):
             raise InvalidEquation(f"equation '{eq.text}' in {eq.where} involves no "
