@@ -17,7 +17,11 @@ __all__ = ["assemble", "choose_initial_rows", "solve_linear"]
 
 
 def assemble(system, reduction, reduced, flat, aliases, report, discretes,
-             helds=(), delays=()) -> ModelCode:
+             helds=(), delays=(), programs_made=None) -> ModelCode:
+    """The ModelCode of the index-reduced ``system``.  ``programs_made``, if given, is
+    called with the generated Programs by prefix (:func:`acausal.compiler.cbackend.programs`)
+    as soon as they are all made, before the rest of the ModelCode: the C backend
+    can print and compile them meanwhile (:mod:`acausal.compiler.pipeline`)."""
     import sympy as sp
     from types import SimpleNamespace
     from .causalize import causalize, full_form
@@ -71,6 +75,13 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
                     discretes=dsyms, scales=[sp.Abs(r.lhs) + sp.Abs(r.rhs) for r in rel_list])
     init_code = generate(init_rows, z_syms, inputs, len(modes), None, assigned,
                          discretes=dsyms)
+    delays_code = generate(delay_rows, z_syms, inputs, len(modes), None, assigned,
+                           discretes=dsyms) if delays else None
+    whens_code = generate(when_rows, z_syms, inputs, len(modes), None, assigned,
+                         discretes=dsyms) if reduced.whens else None
+    if programs_made is not None:
+        from .cbackend import programs
+        programs_made(programs(code, init_code, whens_code, delays_code))
     names = [q.name for q in z_syms]
     relations = RelationInfo(
         ops=[type(r).__name__ for r in rel_list],
@@ -108,17 +119,14 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
         list(out.outputs) + list(out.param_names))
     if delays:
         from .delays import delay_code, feeds_back
-        out.delays = delay_code(delays, delay_rows, generate(
-            delay_rows, z_syms, inputs, len(modes), None, assigned, discretes=dsyms),
-            reduced.parameters, psyms, set(z_syms) | {a for a, _ in assigned} | set(inputs)
-            | set(dsyms) | set(modes), feeds_back(system, delays))
+        out.delays = delay_code(
+            delays, delay_rows, delays_code, reduced.parameters, psyms,
+            set(z_syms) | {a for a, _ in assigned} | set(inputs) | set(dsyms) | set(modes),
+            feeds_back(system, delays))
     if reduced.whens:
-        out.whens = WhenCode(generate(when_rows, z_syms, inputs, len(modes), None, assigned,
-                                      discretes=dsyms),
-                             len(reduced.whens), texts=[
-                                 f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} "
-                                 f"({w.origin_class})]" for w in reduced.whens],
-                             **when_layout)
+        out.whens = WhenCode(whens_code, len(reduced.whens), texts=[
+            f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} ({w.origin_class})]"
+            for w in reduced.whens], **when_layout)
     return out
 
 

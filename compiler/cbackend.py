@@ -4,7 +4,10 @@ The same :class:`~acausal.compiler.codegen.Program` that the Python module is pr
 from is printed as C99 (:mod:`acausal.compiler.emit`: the same operations in the same
 order, so both backends agree to rounding), compiled by the system C compiler into a
 shared library named by the hash of its source and the flags, and loaded with ctypes.
-Every generated function keeps the contract ``f(t, y, p, m, out) -> out``.
+Every generated function keeps the contract ``f(t, y, p, m, out) -> out``.  The
+compiler runs in a thread of its own while the pipeline goes on (:func:`prepare`), and
+a looped program's index arrays are given to the library when it is loaded, not
+compiled (:func:`c_source`).
 
 * Assigned variables and gradient entries live in a work array ``w``, and each function
   is split into pieces of about ``PIECE`` lines (``PIECE_LARGE`` in a source large
@@ -33,9 +36,11 @@ backend and says so in the index report, and ``backend="c"`` raises
 from __future__ import annotations
 
 import ctypes
+import functools
 import hashlib
 import os
 import shutil
+import threading
 
 import numpy as np
 
@@ -43,7 +48,7 @@ from ..errors import BackendError
 from . import cbuild
 
 __all__ = ["BackendError", "c_source", "build", "attach", "reattach", "compiler_available",
-           "cache_dir"]
+           "cache_dir", "programs", "prepare"]
 
 PIECE = 100               # lines per piece of a function compiled at -O2
 PIECE_LARGE = 400         # and at -O0
@@ -71,29 +76,57 @@ def cache_dir() -> str:
 
 
 # -- printing ------------------------------------------------------------------------------
-def c_source(programs: dict) -> tuple[str, dict]:
-    """C for {prefix: Program}; returns (source, {prefix: work size})."""
+def c_source(programs: dict, index: dict | None = None) -> tuple[str, dict]:
+    """C for {prefix: Program}; returns (source, {prefix: work size}).
+
+    Given a dict ``index``, the index arrays of looped programs (:mod:`acausal.compiler.cloops`)
+    are not in the source: they go into ``index`` as {prefix: int32 array}, which the
+    library reads through ``<prefix>ix`` once :func:`attach` has set it.  The source
+    names each array's digest, so a library (named by its source) has one index."""
     parts = ["#include <math.h>", "", "#define ARGS double t, const double *y, "
              "const double *p, const double *m, double *out, double *w", "#define PASS t, y, p, m, out, w", ""]
-    sizes, functions = {}, []
+    sizes, functions, any_looped = {}, [], False
     for prefix, prog in programs.items():
         # a large program's functions: one loop per group (compiler/cloops.py)
-        looped = _looped(prefix, prog)
+        values = [] if index is not None else None
+        looped = _looped(prefix, prog, values)
+        any_looped = any_looped or looped is not None
         specs, n_work = looped or _c_program(prefix, prog)
         functions += specs
         sizes[prefix] = n_work
+        if looped and values:
+            index[prefix] = np.array(values, dtype=np.int32)
     # the pieces' size follows the optimization the source will be compiled with
     # (cbuild.flags_for): short pieces for -O2, long ones for a large source at -O0
     # (a line's indentation and newline counted as 4 characters)
     n_chars = sum(len(ln) + 4 for spec in functions for st in spec[1] for ln in st)
     piece = PIECE if n_chars <= LARGE else PIECE_LARGE
+    if any_looped:
+        parts += [cbuild.LOOPED]
+    if index:
+        parts += _index_pointers(index)
     parts += [_c_function(*spec, piece=piece) for spec in functions]
+    if index:
+        parts += [UNIT] + [f"HIDDEN const int *{k}ix = 0;\n"
+                           f"void {k}set_ix(const int *d) {{ {k}ix = d; }}" for k in index]
     return "\n".join(parts) + "\n", sizes
 
 
-def _looped(prefix, prog):
+def _index_pointers(index) -> list:
+    """The header's declarations of the index pointers (hidden: no other library's
+    symbol of the same name can stand in for them)."""
+    lines = ["#if defined(__GNUC__)", '#define HIDDEN __attribute__((visibility("hidden")))',
+             "#else", "#define HIDDEN", "#endif"]
+    for k, values in index.items():
+        digest = hashlib.sha256(values.tobytes()).hexdigest()[:24]
+        lines += [f"/* {k}ix: {len(values)} indices, sha256 {digest} */",
+                  f"extern HIDDEN const int *{k}ix;"]
+    return lines + [""]
+
+
+def _looped(prefix, prog, index=None):
     from .cloops import looped_program
-    return looped_program(prefix, prog)
+    return looped_program(prefix, prog, index)
 
 
 def _c_program(prefix, prog) -> tuple[list, int]:
@@ -267,10 +300,11 @@ class _CFunction:
         return out
 
 
-def attach(code, lib_path: str, prefix: str, n_work: int):
+def attach(code, lib_path: str, prefix: str, n_work: int, index=None):
     """Replace the Python functions of a GeneratedCode by the compiled ones (the Python
     ones stay as the fallback).  What the wrappers need is kept in ``code.c_layout``, so
-    that a loaded model can attach the library again without the Program."""
+    that a loaded model can attach the library again without the Program; ``index``:
+    the program's index array, when :func:`c_source` left it out of the source."""
     prog = code.program
     sizes = (sum(1 for w in prog.refs.values() if w[0] == "y"),
              sum(1 for w in prog.refs.values() if w[0] == "p"),
@@ -282,14 +316,35 @@ def attach(code, lib_path: str, prefix: str, n_work: int):
                            "roots": code.n_roots}.get(name)
             if n_out[name] is None:
                 n_out[name] = len(prog.functions[name])
-    code.c_layout = {"prefix": prefix, "n_work": n_work, "sizes": sizes, "n_out": n_out}
+    code.c_layout = {"prefix": prefix, "n_work": n_work, "sizes": sizes, "n_out": n_out,
+                     "index": index}
     _wrap(code, ctypes.CDLL(lib_path), code.c_layout)
     code.library = lib_path
     return code
 
 
+# the index arrays given to loaded libraries, by (library handle, prefix): a library is
+# given its index once and keeps reading it, whichever of the models it serves is freed
+_INDEX_GIVEN: dict = {}
+
+
+def _give_index(lib, prefix, index) -> None:
+    """Point ``<prefix>ix`` of the library at its index array.  The array is kept for
+    the life of the process; the source names its digest, so every model that loads
+    this library has an equal one."""
+    key = (lib._handle, prefix)
+    if key not in _INDEX_GIVEN:
+        kept = np.ascontiguousarray(index, dtype=np.int32)
+        setter = getattr(lib, f"{prefix}set_ix")
+        setter.argtypes, setter.restype = [ctypes.c_void_p], None
+        setter(kept.ctypes.data)
+        _INDEX_GIVEN[key] = kept
+
+
 def _wrap(code, lib, layout) -> None:
     argtypes = [ctypes.c_double] + [ctypes.c_void_p] * 5
+    if layout.get("index") is not None:
+        _give_index(lib, layout["prefix"], layout["index"])
     for name, n_out in layout["n_out"].items():
         py = getattr(code, name)
         py = getattr(py, "fallback", py)
@@ -336,11 +391,54 @@ def _numpy(mc, report) -> None:
                             f"statements as {made[1]} array operations")
 
 
-def bind(mc, backend: str, report) -> None:
+def programs(code, initial, whens=None, delays=None) -> dict:
+    """{prefix: Program} of a model's generated codes (the model's, its initial
+    equations', when-clauses' and delays'), in the order of the library's source."""
+    codes = {"f_": code, "i_": initial, "w_": whens, "d_": delays}
+    return {k: c.program for k, c in codes.items() if c is not None}
+
+
+def prepare(progs: dict):
+    """Print the C source of ``progs`` ({prefix: Program}) now and compile it in a
+    thread; returns ``finish()``, which waits for the compiler and returns the source,
+    its work sizes ({prefix: size}), the library's path and the index arrays
+    ({prefix: array}, :func:`c_source`), or raises what printing or building raised.
+
+    The compiler is a process of its own: while it runs, this one goes on with the rest
+    of the compile (the pipeline calls this as soon as the Programs are made)."""
+    outcome, index = {}, {}
+    try:
+        source, sizes = c_source(progs, index)
+    except Exception as exc:          # noqa: BLE001 - raised where the library is wanted
+        outcome["error"] = exc
+        return functools.partial(_finish, outcome, None)
+
+    def compile_it():
+        try:
+            outcome["lib"] = build(source)
+        except BaseException as exc:  # noqa: BLE001 - raised by finish()
+            outcome["error"] = exc
+
+    thread = threading.Thread(target=compile_it, name="acausal-cc-build", daemon=True)
+    thread.start()
+    return functools.partial(_finish, outcome, thread, source, sizes, index)
+
+
+def _finish(outcome, thread, *printed):
+    if thread is not None:
+        thread.join()
+    if "error" in outcome:
+        raise outcome["error"]
+    source, sizes, index = printed
+    return source, sizes, outcome["lib"], index
+
+
+def bind(mc, backend: str, report, prepared=None) -> None:
     """Put the compiled functions behind the ModelCode ``mc`` (model, initial and when
     code share one library), or keep the Python ones: ``backend`` is ``"c"`` (raise
     :class:`BackendError` when it cannot be built), ``"numpy"``, or ``"auto"`` (C when a
-    compiler works, else numpy, with the reason in the report)."""
+    compiler works, else numpy, with the reason in the report).  ``prepared``: what
+    :func:`prepare` returned for the model's Programs, if it was called already."""
     if backend not in BACKENDS:
         raise ValueError(f"backend must be one of {', '.join(map(repr, BACKENDS))}, "
                          f"got {backend!r}")
@@ -353,10 +451,10 @@ def bind(mc, backend: str, report) -> None:
     if mc.delays is not None:
         codes["d_"] = mc.delays.code
     try:
-        source, sizes = c_source({k: c.program for k, c in codes.items()})
-        lib = build(source)
+        finish = prepared or prepare({k: c.program for k, c in codes.items()})
+        source, sizes, lib, index = finish()
         for prefix, code in codes.items():
-            attach(code, lib, prefix, sizes[prefix])
+            attach(code, lib, prefix, sizes[prefix], index.get(prefix))
             code.c_source = source       # one string, shared: a pickle holds it once
     except (BackendError, OSError) as exc:
         if backend == "c":

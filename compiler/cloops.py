@@ -11,9 +11,9 @@ The statements are grouped as the numpy backend's array code groups them
 
 with the shape printed once by the scalar C printer (:class:`acausal.compiler.emit.Emitter`:
 if-expressions stay lazy ternaries, powers and functions as in the straight-line C), a
-leaf read at evenly spaced positions as ``w[a + s*i]`` and otherwise through a static
-index array, and the linear terms of a long sum (a node balance) as an inner loop over
-coefficients.  The work array ``w`` holds the inputs (y, p, m, t: the parts a function
+leaf read at evenly spaced positions as ``w[a + s*i]`` and otherwise through an index
+array (given to the library when it is loaded, :func:`looped_program`), and the linear
+terms of a long sum (a node balance) as an inner loop over coefficients.  The work array ``w`` holds the inputs (y, p, m, t: the parts a function
 reads are copied in on entry) followed by every computed value, as the array code's ``V``.  Every function computes
 what it needs itself (the straight-line C shares the assignments through one function).
 
@@ -39,16 +39,23 @@ __all__ = ["looped_program", "MIN_STATEMENTS"]
 MIN_STATEMENTS = 2000
 
 
-def looped_program(prefix, prog) -> tuple[list, int] | None:
+def looped_program(prefix, prog, index: list | None = None) -> tuple[list, int] | None:
     """The functions of a Program as ``(name, statements, calls, n_out)`` specs for
     :func:`acausal.compiler.cbackend._c_function`, and the size of the work array; None
     when the straight-line C is kept (also for a program with other functions than
     those of a model's or its initial equations' code).  A looped program records its
-    residual's numbers of statements and of loops as ``prog.looped``."""
+    residual's numbers of statements and of loops as ``prog.looped``.
+
+    The index arrays of the loops are static arrays in the source, or, given a list
+    ``index``, appended to it and read through the pointer ``<prefix>ix`` that the
+    library is given when it is loaded (:func:`acausal.compiler.cbackend.attach`): the
+    compiler parses a number in an initializer at about 3 us, and the arrays are most
+    of a large model's looped C (176 of 219 kB on the 1000-section RLC ladder)."""
     mode = os.environ.get("ACAUSAL_ARRAY_CODE", "auto")
     if mode == "never" or not set(prog.functions) <= set(FUNCTIONS):
         return None
     sizes, inputs = input_layout(prog)
+    arrays = _Arrays(prefix, index)
     specs, n_work = [], len(inputs)
     n_st = n_groups = 0
     _NUMBERS.clear()
@@ -60,9 +67,9 @@ def looped_program(prefix, prog) -> tuple[list, int] | None:
             if name == "residual":
                 n_st, n_groups = len(statements), len(sched.groups)
             body = [[ln] for ln in _entry(sched, outputs, sizes)] + \
-                [_loop(g, sched) for g in sched.groups]
+                [_loop(g, sched, arrays) for g in sched.groups]
             if outputs:
-                body.append(_copy_out([sched.where(o) for o in outputs]))
+                body.append(_copy_out([sched.where(o) for o in outputs], arrays))
             specs.append((f"{prefix}{name}", body, (), len(outputs)))
             n_work = max(n_work, sched.size)
     except (_Unsupported, RecursionError):
@@ -86,9 +93,25 @@ def _entry(sched, outputs, sizes) -> list:
     return lines
 
 
-def _index(slots, name, lines, i="i") -> str:
+class _Arrays:
+    """Where a program's index arrays go: static arrays in the source, or the list
+    ``index`` read through the pointer ``<prefix>ix`` (:func:`looped_program`)."""
+
+    def __init__(self, prefix, index):
+        self.pointer, self.index = f"{prefix}ix", index
+
+    def declare(self, name, slots, lines) -> None:
+        if self.index is None:
+            lines.append(f"static const int {name}[{len(slots)}] = "
+                         f"{{{', '.join(map(str, slots))}}};")
+        else:
+            lines.append(f"const int *{name} = {self.pointer} + {len(self.index)};")
+            self.index.extend(slots)
+
+
+def _index(slots, name, lines, arrays, i="i") -> str:
     """The C text of ``w``'s position for member ``i``: a constant, an evenly spaced
-    position, or a static index array declared in ``lines``."""
+    position, or an index array declared in ``lines``."""
     first = slots[0]
     if all(s == first for s in slots):
         return str(first)
@@ -96,11 +119,11 @@ def _index(slots, name, lines, i="i") -> str:
         step = slots[1] - slots[0]
         if all(b - a == step for a, b in zip(slots, slots[1:])):
             return f"{first} + {step}*({i})" if step != 1 else f"{first} + ({i})"
-    lines.append(f"static const int {name}[{len(slots)}] = {{{', '.join(map(str, slots))}}};")
+    arrays.declare(name, slots, lines)
     return f"{name}[{i}]"
 
 
-def _loop(group, sched) -> list:
+def _loop(group, sched, arrays) -> list:
     """One group as a loop over its members (one statement of lines)."""
     rep, n = group[0], len(group)
     lo = sched.slot[rep.target]
@@ -108,7 +131,7 @@ def _loop(group, sched) -> list:
     lines, body = [], []
     used = range(len(rep.leaves)) if rest is None else _leaves_read(rep, rest)
     for k in used:
-        pos = _index([sched.where(st.leaves[k]) for st in group], f"I{k}", lines)
+        pos = _index([sched.where(st.leaves[k]) for st in group], f"I{k}", lines, arrays)
         body.append(f"double x{k} = w[{pos}];")
     temps, text = _print_group(rep, rest, lambda ref: Emitter("c", ref))
     body += temps
@@ -116,7 +139,7 @@ def _loop(group, sched) -> list:
         coefs = ", ".join(repr(c) for c, _ in linear)
         slots = [sched.where(st.leaves[k]) for _, k in linear for st in group]
         lines.append(f"static const double C[{len(linear)}] = {{{coefs}}};")
-        pos = _index(slots, "J", lines, i=f"k*{n} + i")
+        pos = _index(slots, "J", lines, arrays, i=f"k*{n} + i")
         body.append("double s = 0.0;")
         body.append(f"for (int k = 0; k < {len(linear)}; ++k) s += C[k]*w[{pos}];")
         text = "s" if text is None else f"s + {text}"
@@ -124,7 +147,7 @@ def _loop(group, sched) -> list:
     return lines + [f"for (int i = 0; i < {n}; ++i) {{"] + ["  " + b for b in body] + ["}"]
 
 
-def _copy_out(slots) -> list:
+def _copy_out(slots, arrays) -> list:
     lines = []
-    pos = _index(slots, "O", lines)
+    pos = _index(slots, "O", lines, arrays)
     return lines + [f"for (int i = 0; i < {len(slots)}; ++i) out[i] = w[{pos}];"]

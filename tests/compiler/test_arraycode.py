@@ -197,3 +197,37 @@ def test_a_ladder_runs_on_looped_c(monkeypatch):
     said = [m for m in said if m]
     assert len(said) == 1 and 0 < int(said[0][2]) < int(said[0][1])
     res, t = _against_exact(compiled, n)
+
+
+@pytest.mark.skipif(not compiler_available(), reason="no C compiler")
+def test_looped_c_reads_its_index_arrays_at_run_time(tmp_path, monkeypatch):
+    """A looped library is given its index arrays when it is loaded: two ladders alive
+    at once each compute their own exact solution, and a pickled one, its library
+    deleted, is rebuilt from its source and given its index again."""
+    import hashlib
+    import os
+    import pickle
+
+    from acausal.compiler import cbuild
+    monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
+    monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path))
+    first = ac.compile(Ladder(60), backend="c", cache=False)
+    second = ac.compile(Ladder(61), backend="c", cache=False)
+    for compiled in (first, second):
+        code = compiled.code
+        index = code.c_layout["index"]
+        assert index is not None and len(index) > 0
+        assert "static const int" not in code.c_source
+        # the source names the index it reads: one library, one index
+        assert hashlib.sha256(index.tobytes()).hexdigest()[:24] in code.c_source
+        assert cbuild.flags_for(code.c_source) == cbuild.FLAGS_LOOPED
+    assert first.code.library != second.code.library
+    res, t = _against_exact(first, 60)
+    _against_exact(second, 61)
+    data = pickle.dumps(first)
+    os.remove(first.code.library)
+    loaded = pickle.loads(data)
+    assert loaded.backend == "c" and os.path.exists(loaded.code.library)
+    again = ac.simulate(loaded, t_end=t[-1], rtol=1e-8, t_eval=t)
+    scale = np.max(np.abs(res["C[0].v"]))
+    assert np.max(np.abs(again["C[0].v"] - res["C[0].v"])) <= 1e-12 * scale

@@ -111,8 +111,8 @@ def test_auto_falls_back_to_numpy_when_a_unit_fails_and_c_raises(tmp_path, monke
     monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path))
     real = cbackend.c_source
 
-    def broken_source(programs):
-        source, sizes = real(programs)
+    def broken_source(programs, index=None):
+        source, sizes = real(programs, index)
         return source + BROKEN, sizes
 
     monkeypatch.setattr(cbackend, "c_source", broken_source)
