@@ -26,6 +26,7 @@ from sympy.core.parameters import global_parameters
 
 from ..components.symbols import der
 from . import fastsubs
+from .symbolic import negated
 
 __all__ = ["symbol_arithmetic"]
 
@@ -45,8 +46,11 @@ def _pair(a, b) -> bool:
 def _derivative_factor(a, b) -> bool:
     """A symbol times ``der(...)`` (``C*der(v)``): two factors of different bases, which
     sympy's Mul puts in its order and leaves as they are."""
-    return (type(b) is der and type(a) is _Symbol and a.is_commutative
-            and b.is_commutative and global_parameters.evaluate)
+    if type(b) is not der or type(a) is not _Symbol or not a.is_commutative:
+        return False
+    x = b.args[0]      # der(x) of a symbol is as commutative as x (no query of der's own)
+    return (x.is_commutative if type(x) is _Symbol else b.is_commutative) \
+        and global_parameters.evaluate
 
 
 def _checked(out, op, a, b):
@@ -68,16 +72,21 @@ def _add(self, other):
 def _sub(self, other):
     if not _pair(self, other):
         return Expr.__sub__(self, other)
-    args = [self, _Mul._from_args((_MINUS, other), True)]
+    args = [self, negated(other)]
     fastsubs.sort_args(args)
     return _checked(_Add._from_args(args, True), "__sub__", self, other)
 
 
 def _mul(self, other):
-    if not (_pair(self, other) or _derivative_factor(self, other)):
+    if _pair(self, other):
+        args = [self, other]
+        fastsubs.sort_args(args)
+    elif _derivative_factor(self, other):
+        # sympy orders a Symbol before an application of a function class it does not
+        # list (Basic.compare by ordering_of_classes), der among them
+        args = [self, other]
+    else:
         return Expr.__mul__(self, other)
-    args = [self, other]
-    fastsubs.sort_args(args)
     return _checked(_Mul._from_args(args, True), "__mul__", self, other)
 
 

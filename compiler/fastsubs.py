@@ -279,7 +279,10 @@ def sort_args(seq: list) -> None:
     if keys is None:
         seq.sort(key=_args_sortkey)
         return
-    ordered = [t for _, _, t in sorted(zip(keys, range(len(seq)), seq))]
+    if len(seq) == 2:               # most sums: no sort needed to order two
+        ordered = seq[::-1] if keys[1] < keys[0] else list(seq)
+    else:
+        ordered = [seq[k] for k in sorted(range(len(seq)), key=keys.__getitem__)]
     if _CHECK:
         ref = sorted(seq, key=_args_sortkey)
         if any(a is not b for a, b in zip(ordered, ref)):
@@ -291,16 +294,20 @@ def _plain_keys(seq):
     """The keys of :func:`sort_args`, or None where they do not give sympy's order."""
     keys, facts = [], None
     for t in seq:
-        if type(t) is _Symbol:
-            kind, q = 0, t
-        elif type(t) is _Mul and len(t.args) == 2 and t.args[0] is _MINUS \
-                and type(t.args[1]) is _Symbol:
-            kind, q = 1, t.args[1]
+        kind = type(t)
+        if kind is _Symbol:
+            key, q = (0, t.name), t
+        elif kind is _Mul:
+            args = t._args
+            if len(args) != 2 or args[0] is not _MINUS or type(args[1]) is not _Symbol:
+                return None
+            q = args[1]
+            key = (1, q.name)
         else:
             return None
         if facts is None:
             facts = q._assumptions0
-        elif q._assumptions0 != facts:
+        elif q._assumptions0 is not facts and q._assumptions0 != facts:
             return None
-        keys.append((kind, q.name))
+        keys.append(key)
     return keys

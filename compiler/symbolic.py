@@ -324,11 +324,12 @@ _PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
 
 
 def forget_expressions() -> None:
-    """Empty the caches of :func:`symbols_of` and ``_terms_with`` (a compile's end): the
-    expressions they keep would outlive the compile, in memory and in every walk of
-    the garbage collector over the live objects."""
+    """Empty the caches of :func:`symbols_of`, ``_terms_with`` and :func:`negated` (a
+    compile's end): the expressions they keep would outlive the compile, in memory and
+    in every walk of the garbage collector over the live objects."""
     symbols_of.cache_clear()
     _terms_with.cache_clear()
+    _NEGATED.clear()
 
 
 def derivative_symbol(x: sp.Symbol, derivatives: dict) -> sp.Symbol:
@@ -371,9 +372,22 @@ def signed_terms(side, sign: int, coeffs: dict) -> bool:
     return True
 
 
+def negated(q) -> sp.Expr:
+    """``-q`` of a symbol or der(symbol), as sympy builds it (``Mul(-1, q)``), made once
+    per compile: the same node serves every sum it is a term of (a port's voltage is
+    negated in its element's equation and in the connection's)."""
+    out = _NEGATED.get(q)
+    if out is None:
+        out = _NEGATED[q] = sp.Mul._from_args((_MINUS, q), q.is_commutative)
+    return out
+
+
+_NEGATED: dict = {}
+
+
 def signed_sum(coeffs: dict) -> sp.Expr:
     """sum of c * q over coeffs {symbol q: +-1}, as sympy's Add builds it."""
-    terms = [q if c == 1 else sp.Mul._from_args((_MINUS, q)) for q, c in coeffs.items()]
+    terms = [q if c == 1 else negated(q) for q, c in coeffs.items()]
     if len(terms) == 1:
         return terms[0]
     sort_args(terms)     # sympy's _addsort

@@ -31,13 +31,12 @@ flattening, units when the model is compiled (``units.py``).
 """
 from __future__ import annotations
 
-import contextvars
 import copy
 from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
 from . import inheritance
-from .declarations import (Parameter, Variable, check_parameter_value,
+from .declarations import (COMPILING, Parameter, Variable, check_parameter_value,
                            check_structural_value, declaration_doc, is_symbolic,
                            parameter_signature, ref, shown_value)
 
@@ -86,7 +85,8 @@ class NotInModel(ModelError):
 
 # The root of the model being flattened: reading a variable of a component outside it is
 # an error (its symbol would name a variable of another model, or one that does not exist).
-_COMPILING = contextvars.ContextVar("acausal_compiling", default=None)
+# (declarations.py holds it: a declaration's own look-up reads it.)
+_COMPILING = COMPILING
 
 
 @contextmanager

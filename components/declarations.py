@@ -15,6 +15,7 @@ that into a ``ModelError`` naming the component path and the declaration.
 """
 from __future__ import annotations
 
+import contextvars
 import math
 import numbers
 import sys
@@ -22,6 +23,9 @@ from dataclasses import dataclass, fields, replace
 from decimal import Decimal
 
 import numpy as np
+
+# The root of the model being flattened, set by components.component.compiling
+COMPILING = contextvars.ContextVar("acausal_compiling", default=None)
 
 __all__ = ["Parameter", "Variable", "Across", "Through", "Signal", "VariableAttributes", "ref",
            "real_number", "check_parameter_value", "check_structural_value",
@@ -202,6 +206,13 @@ class _Declaration:
         if self.shape is not None:
             from .arrays import symbol_array
             return symbol_array(instance, self.name, self)
+        # the symbol made before, read here (every equation reads several): the
+        # component makes it, and says what is wrong when none can be read
+        sym = instance._symbols.get(self.name)
+        if sym is not None:
+            active = COMPILING.get()
+            if active is None or instance._root is active:
+                return sym
         return instance._symbol(self.name)
 
 

@@ -344,6 +344,8 @@ def sympify_value(value):
     """Turn numbers, Symbols and objects with ``_sympy_`` (signal ports) into sympy."""
     if isinstance(value, sp.Basic):       # most values: sympify would return them as-is
         return value
+    if type(value) is int and value == 0:   # Eq(0, ...), written for every balance
+        return S.Zero
     if isinstance(value, np.ndarray):
         if value.ndim == 0:
             return sympify_value(value.item())
@@ -417,6 +419,8 @@ def _text(value) -> str:
 def _side(value, lhs, rhs) -> sp.Expr:
     """One side of an equation: a finite value, not a relation or a logical value."""
     expr = sympify_value(value)
+    if type(expr) is sp.Symbol:           # a variable: a value, finite
+        return expr
     if not isinstance(expr, sp.Expr):
         raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}): {_text(expr)} is a relation or "
                        "a logical value, not a value (ac.if_else(condition, a, b) chooses "
