@@ -24,17 +24,24 @@ _FORMAT = 1                  # of the cache entries: a new layout changes every 
 
 # -- keys -------------------------------------------------------------------------------------
 class _Hasher:
+    """The SHA-256 of records of items: each item followed by \x1f, each record by
+    \x1e.  The records are joined and hashed once, at :meth:`hexdigest` (a record is
+    short, and encoding and hashing each one cost more than the text itself)."""
+
     def __init__(self, *head):
-        self.h = hashlib.sha256()
+        self.parts = []
         self(*head)
 
     def __call__(self, *items) -> None:
-        # each item followed by \x1f, the record by \x1e: one update per record
-        text = "\x1f".join(map(str, items)) + "\x1f\x1e" if items else "\x1e"
-        self.h.update(text.encode("utf-8", "surrogatepass"))
+        parts = self.parts
+        for x in items:
+            parts.append(x if type(x) is str else str(x))
+            parts.append("\x1f")
+        parts.append("\x1e")
 
     def hexdigest(self) -> str:
-        return self.h.hexdigest()[:40]
+        text = "".join(self.parts)
+        return hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()[:40]
 
 
 _NOT_COMPILER = {"tests", "benchmarks", "docs", "__pycache__"}
@@ -107,16 +114,16 @@ def _flat_key(flat, backend: str) -> str:
         return ex(src)
 
     h = _Hasher("flat", fingerprint(), *_backend_id(backend), flat.name)
-    attrs = {}     # id -> repr: instances of a class share their declared attributes
+    attrs = {}     # id -> reference: instances of a class share their declared attributes
     for v in flat.variables:
         text = attrs.get(id(v.attrs))
         if text is None:
-            text = attrs[id(v.attrs)] = repr(v.attrs)
+            text = attrs[id(v.attrs)] = ex.ref(repr(v.attrs))
         h("v", v.name, ex(v.symbol), text, v.component, v.component_class,
-          v.kind, v.hint)
+          v.kind, ex.ref(v.hint))
     for p in flat.parameters:
-        h("p", p.name, ex(p.symbol), ex(p.value), p.unit, p.description, p.component,
-          p.component_class, ex(p.min), ex(p.max))
+        h("p", p.name, ex(p.symbol), ex(p.value), p.unit, ex.ref(p.description),
+          p.component, p.component_class, ex(p.min), ex(p.max))
     for eqs, tag in ((flat.equations, "e"), (flat.initial_equations, "i")):
         for e in eqs:
             # the residual of an equation written as Eq(lhs, rhs) is made from it by
@@ -134,19 +141,44 @@ def _flat_key(flat, backend: str) -> str:
     h("z", *flat.structural_zeros)
     h("ports", *map(repr, flat.ports))
     h("components", *map(repr, flat.components.items()))
+    h("defs", *ex.defs)
     return h.hexdigest()
 
 
 def _key_text():
-    """``ExactText(_plain)``: the same texts, with the text of a symbol's assumptions made
-    once per set of assumptions (all variables share one), not sorted and printed per
-    symbol, and the expressions walked by recursion up to a depth of 100."""
+    """``ExactText(_plain)`` with long texts that repeat (a class's name, a symbol's
+    assumptions, a variable's declared attributes) written once: each is replaced by a
+    reference, ``\x1d`` and its number in order of first use, and the texts themselves
+    are hashed at the end (``defs``).  A model's key text was 28 MB, three quarters of
+    it such repetitions, and hashing it a quarter of the key's time.  The expressions are
+    walked by recursion up to a depth of 100."""
     import sympy as sp
 
     from .symbolic import ExactText
 
     class KeyText(ExactText):
         facts: dict = {}
+
+        def __init__(self, plain):
+            super().__init__(plain)
+            self.refs = {}       # a long text -> its reference
+            self.defs = []       # the long texts, in the order of their first use
+
+        def ref(self, text: str) -> str:
+            if not text:
+                return text
+            out = self.refs.get(text)
+            if out is None:
+                out = self.refs[text] = f"\x1d{len(self.defs)}"
+                self.defs.append(text)
+            return out
+
+        def _name(self, node) -> str:
+            t = type(node)
+            name = self.names.get(t)
+            if name is None:
+                name = self.names[t] = self.ref(f"{t.__module__}.{t.__name__}")
+            return name
 
         def __call__(self, e) -> str:
             if not isinstance(e, sp.Basic):
@@ -185,7 +217,7 @@ def _key_text():
             if facts is None:
                 facts = ",".join(f"{k}={v}" for k, v in sorted(dict(key).items()))
                 self.facts[key] = facts
-            return f"{self._name(node)}[{node.name};{facts}]"
+            return f"{self._name(node)}[{node.name};{self.ref(facts)}]"
     return KeyText(_plain)
 
 
