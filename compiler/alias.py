@@ -46,24 +46,17 @@ class AliasTable:
 @gc_paused
 def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     """Return a new FlatModel without trivial equations, and the alias table."""
-    order = {v.symbol: k for k, v in enumerate(flat.variables)}
-    info = {v.symbol: v for v in flat.variables}
     syms = [v.symbol for v in flat.variables]
+    # the variables by number: the union-find, the constants and the incidence are kept
+    # on numbers (a look-up by symbol hashes it in Python, a list is indexed in C)
+    order = {s: k for k, s in enumerate(syms)}
     differentiated = set(flat.derivatives)
     params = frozenset(p.symbol for p in flat.parameters)
     # the union-find on variable numbers: up[k] is k's parent, sign[k] = +-1 with
     # x_k = sign[k] * x_up[k]; a root has up[k] == k
     up, sign_of = list(range(len(syms))), [1] * len(syms)
-    parent = _Parents(order, up, sign_of)
-    constants = {}       # root symbol -> constant expression
+    constants = {}       # root number -> constant expression
     removed = []
-
-    def find(s):
-        k = order.get(s)
-        if k is None:
-            return 1, s
-        sign, k = find_k(k)
-        return sign, syms[k]
 
     def find_k(k):
         """(sign, root number) of variable number k."""
@@ -79,38 +72,49 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
             up[q] = k
         return sign, k
 
-    def rank(s):
-        a = info[s].attrs
-        return (-STATE_SELECT[a.state_select], s not in differentiated,
-                not a.fixed, order[s])
+    def rank(k):
+        v = flat.variables[k]
+        a = v.attrs
+        return (-STATE_SELECT[a.state_select], v.symbol not in differentiated,
+                not a.fixed, k)
 
     # Removing an alias can make a neighbouring equation trivial (a node's current sum
     # that collapses to gnd.p.i = 0), so the equations of a variable whose representative
     # or value a removal changed are substituted and classified again: a worklist.
     # Invariant: an equation is rewritten in the round in which one of its variables
-    # stops being a representative, so by_symbol[r] holds every live equation that reads
+    # stops being a representative, so by_var[r] holds every live equation that reads
     # a variable of r's set; touching only the changed variables' equations (not every
     # equation sharing a variable with the removed one: the N + 1 equalities of a node
     # of N + 2 ports share one) keeps the worklist linear in the incidence.
     eqs = list(flat.equations)
     alive = [True] * len(eqs)
-    by_symbol = {}
-    for i, eq in enumerate(eqs):
-        for q in symbols_of(eq.residual):
-            by_symbol.setdefault(q, set()).add(i)
+    by_var = [None] * len(syms)      # variable number -> the equations that read it
+
+    def enter(i):
+        for q in symbols_of(eqs[i].residual):
+            k = order.get(q)
+            if k is not None:
+                readers = by_var[k]
+                if readers is None:
+                    by_var[k] = {i}
+                else:
+                    readers.add(i)
+
+    for i in range(len(eqs)):
+        enter(i)
     queue = set(range(len(eqs)))
-    none = frozenset()
     while queue:
         touched = set()
         for i in sorted(queue):
             if not alive[i]:
                 continue
-            changed = _classify(eqs[i], info, find, rank, parent, constants, params)
+            changed = _classify(eqs[i], order, find_k, rank, up, sign_of, constants, params)
             if changed is not None:
                 alive[i] = False
                 removed.append(eqs[i])
-                for q in changed:
-                    touched |= by_symbol.get(q, none)
+                for k in changed:
+                    if by_var[k]:
+                        touched |= by_var[k]
         queue = set()
         for j in touched:
             if not alive[j]:
@@ -119,14 +123,19 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
             local = _substitutions_for(symbols_of(r), order, syms, find_k, constants)
             if local:
                 eqs[j] = _with_residual(eqs[j], fast_xreplace(r, local))
-                for q in symbols_of(eqs[j].residual):
-                    by_symbol.setdefault(q, set()).add(j)
+                enter(j)
                 queue.add(j)
     kept = [eq for eq, a in zip(eqs, alive) if a]
 
-    _check_fixed_constants(flat, find, constants)
     # the union-find is final: every variable's (sign, representative), once, in order
     resolved = [(sign, syms[k]) for sign, k in map(find_k, range(len(syms)))]
+    constants = {syms[k]: value for k, value in constants.items()}   # by representative
+
+    def find(s):
+        k = order.get(s)
+        return (1, s) if k is None else resolved[k]
+
+    _check_fixed_constants(flat, find, constants)
     table = AliasTable(equations_before=len(flat.equations), removed=removed)
     subs = {}
     signs = {1: sp.Integer(1), -1: sp.Integer(-1)}
@@ -138,19 +147,6 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
             subs[v.symbol] = _signed(sign, root)
             table.aliases[v.name] = (signs[sign], root.name)
     return _rebuild(flat, kept, subs, table, find, constants, resolved), table
-
-
-class _Parents:
-    """``parent[child] = (sign, root)`` of the union-find, stored by variable number."""
-
-    __slots__ = ("order", "up", "sign")
-
-    def __init__(self, order, up, sign):
-        self.order, self.up, self.sign = order, up, sign
-
-    def __setitem__(self, child, value):
-        k = self.order[child]
-        self.sign[k], self.up[k] = value[0], self.order[value[1]]
 
 
 def _check_fixed_constants(flat, find, constants) -> None:
@@ -180,17 +176,18 @@ def _signed(sign, expr):
 
 
 def _substitutions_for(symbols, order, syms, find_k, constants) -> dict:
+    """The substitution of the symbols whose variables are no longer representatives
+    (``constants``: by representative number)."""
     out = {}
     for q in symbols:
         k = order.get(q)
         if k is None:
             continue
         sign, r = find_k(k)
-        root = syms[r]
-        if root in constants:
-            out[q] = _signed(sign, constants[root])
+        if r in constants:
+            out[q] = _signed(sign, constants[r])
         elif r != k:
-            out[q] = _signed(sign, root)
+            out[q] = _signed(sign, syms[r])
     return out
 
 
@@ -203,39 +200,40 @@ def _with_residual(eq, residual):
     return out
 
 
-def _classify(eq, info, find, rank, parent, constants, params=frozenset()):
-    """Record eq in the union-find if it is trivial.  None when it is kept; when it was
-    removed, the representatives whose resolution it changed (a set that now has a new
-    representative, or a constant value)."""
-    pattern = _alias_pattern(eq.residual, info, params)
+def _classify(eq, order, find_k, rank, up, sign_of, constants, params=frozenset()):
+    """Record eq in the union-find (on variable numbers) if it is trivial.  None when it
+    is kept; when it was removed, the numbers of the representatives whose resolution
+    it changed (a set that now has a new representative, or a constant value)."""
+    pattern = _alias_pattern(eq.residual, order, params)
     if pattern is None:
         return None
     kind, a, b, k = pattern
     if kind == "const":
-        sa, ra = find(a)
+        sa, ra = find_k(order[a])
         if ra in constants:
             return None           # a second value for the same variable: left for diagnosis
         constants[ra] = _signed(sa, k)
         return (ra,)
     k = int(k)
-    (sa, ra), (sb, rb) = find(a), find(b)
-    if ra is rb or (ra in constants and rb in constants):
+    (sa, ra), (sb, rb) = find_k(order[a]), find_k(order[b])
+    if ra == rb or (ra in constants and rb in constants):
         return None               # a redundant or contradictory loop: left for diagnosis
     # a = k*b  =>  sa*ra = k*sb*rb  (all signs are +-1, so each is its own inverse)
     if rank(ra) <= rank(rb):
         child, root, sign = rb, ra, sa * k * sb
     else:
         child, root, sign = ra, rb, sb * k * sa
-    parent[child] = (sign, root)
+    up[child], sign_of[child] = root, sign
     if child in constants:
         constants[root] = _signed(sign, constants.pop(child))
         return child, root
     return (child,)
 
 
-def _alias_pattern(residual: sp.Expr, info: dict, params: frozenset = frozenset()):
+def _alias_pattern(residual: sp.Expr, info, params: frozenset = frozenset()):
     """Classify residual: ('alias', a, b, k) for a = k*b with k = +-1; ('const', a, None, c)
-    for a = c with c a number or an expression of parameters.  None otherwise."""
+    for a = c with c a number or an expression of parameters.  None otherwise (``info``:
+    the variables, as the keys of a mapping)."""
     fast = _plain_alias(residual, info)
     if fast is not None:
         return fast
@@ -260,20 +258,20 @@ def _alias_pattern(residual: sp.Expr, info: dict, params: frozenset = frozenset(
     return None
 
 
-def _plain_alias(residual: sp.Expr, info: dict):
+def _plain_alias(residual: sp.Expr, info):
     """The pattern of the residuals connections make, read off their arguments: ``x``
     (x = 0) and ``+-a +- b``; None for anything else (which takes the general path,
     with the same result for these)."""
-    if residual in info:
-        return "const", residual, None, sp.S.Zero
+    if type(residual) is sp.Symbol:
+        return ("const", residual, None, sp.S.Zero) if residual in info else None
     if not residual.is_Add or len(residual.args) != 2:
         return None
     signs = {}
     for t in residual.args:
-        if t in info:
+        if type(t) is sp.Symbol and t in info:
             signs[t] = 1
         elif (t.is_Mul and len(t.args) == 2 and t.args[0] is sp.S.NegativeOne
-              and t.args[1] in info):
+              and type(t.args[1]) is sp.Symbol and t.args[1] in info):
             signs[t.args[1]] = -1
         else:
             return None

@@ -308,7 +308,7 @@ def _output_map(flat, aliases, index, psyms) -> dict:
                 out[v.name] = (None, float(value))
             continue
         sign, root = aliases.resolve(v.name)
-        out[v.name] = (float(sign), by_name[root])
+        out[v.name] = (float(int(sign)), by_name[root])   # +-1 (sympy's float() is slow)
     if constant:
         out.update({name: (None, f) for name, f in _parameter_functions(constant, psyms)})
     for s, k in index.items():

@@ -277,13 +277,15 @@ def _partials(e, refs) -> dict:
         out = {}
         for q, terms in by_symbol.items():
             d = sp.Add(*[_partial(term, q) for term in terms])
-            if d != 0:
+            if not d.is_Number or d != 0:
                 out[q] = d
         return out
     out = {}
     for q in wanted:
         d = _partial(e, q)
-        if d != 0:
+        # only a number can equal 0 (sympy's == is structural), and comparing anything
+        # else with 0 costs a sympify
+        if not d.is_Number or d != 0:
             out[q] = d
     return out
 
