@@ -100,11 +100,16 @@ def _shape(e, refs, leafidx, leaves) -> str:
         return text
     if not isinstance(e, _NODES):
         raise _Unsupported(type(e).__name__)
-    return type(e).__name__ + "(" + ",".join(_shape(a, refs, leafidx, leaves)
-                                             for a in e.args) + ")"
+    return type(e).__name__ + "(" + ",".join([_shape(a, refs, leafidx, leaves)
+                                              for a in e.args]) + ")"
 
 
 def _expr_statement(target, e, refs) -> _Statement:
+    if type(e) is sp.Symbol:      # a copy of a value (most outputs of expand)
+        where = refs.get(e)
+        if where is None:
+            raise _Unsupported(f"unknown symbol {e}")
+        return _Statement(target, "$0", [where], expr=(e, {e: 0}))
     leafidx, leaves = {}, []
     key = _shape(e, refs, leafidx, leaves)
     return _Statement(target, key, leaves, expr=(e, leafidx))
@@ -128,14 +133,19 @@ def _combo_statement(target, terms, refs, j) -> _Statement:
                       terms=(printed, leafidx))
 
 
-def _statements(prog, name, assigned: dict) -> list:
+def _statements(prog, name, assigned: dict, needs: dict) -> list:
     """The statements of one generated function, in an order that computes every value
     before it is read; the outputs are ``("o", i)``.  ``assigned`` keeps the statements
-    of the assigned variables, which several functions compute."""
+    of the assigned variables, which several functions compute, ``needs`` the assigned
+    variables each function's outputs need (the Jacobian's are the residual's)."""
     ids = prog.refs
-    exprs = prog.functions["residual" if name == "jacobian" else name]
+    which = "residual" if name == "jacobian" else name
+    exprs = prog.functions[which]
+    needed = needs.get(which)
+    if needed is None:
+        needed = needs[which] = prog.needed(exprs)
     out = []
-    for k in prog.needed(exprs):
+    for k in needed:
         st = assigned.get(k)
         if st is None:
             st = assigned[k] = _expr_statement(("a", k), prog.assigned[k], ids)
@@ -165,6 +175,7 @@ class _Schedule:
         # a value is computed before it is read, so an alias is entered resolved: one
         # look-up resolves any value (this loop runs once per statement and leaf)
         self.alias = alias = {}
+        self.read = read = set()        # the values the groups read (resolved)
         level = {}
         groups = {}
         for st in statements:
@@ -174,7 +185,9 @@ class _Schedule:
                 continue
             lv = 0
             for v in st.leaves:
-                n = level.get(alias.get(v, v), 0)
+                v = alias.get(v, v)
+                read.add(v)
+                n = level.get(v, 0)
                 if n > lv:
                     lv = n
             lv += 1
@@ -402,7 +415,8 @@ def inputs_read(sched, outputs, sizes) -> list:
     n_y, n_p, n_m = sizes
     starts = (("y", 0, n_y), ("p", n_y, n_p), ("m", n_y + n_p, n_m), ("t", n_y + n_p + n_m, 1))
     n_in = n_y + n_p + n_m + 1
-    read = {sched.where(v) for g in sched.groups for st in g for v in st.leaves}
+    slot = sched.slot
+    read = {slot[v] for v in sched.read}
     read.update(sched.where(o) for o in outputs)
     read = sorted(s for s in read if s < n_in)
     parts = []
@@ -426,11 +440,11 @@ def schedules(prog, minimum: int | None) -> list | None:
     printed from these."""
     _, inputs = input_layout(prog)
     n_in = len(inputs)
-    out, assigned = [], {}
+    out, assigned, needs = [], {}, {}
     for name in FUNCTIONS:
         if name not in prog.functions and name != "jacobian":
             continue
-        statements = _statements(prog, name, assigned)
+        statements = _statements(prog, name, assigned, needs)
         sched = _Schedule(statements, n_in, inputs)
         if name == "residual" and minimum is not None and \
                 too_few(len(statements), len(sched.groups), minimum):

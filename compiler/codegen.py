@@ -209,6 +209,9 @@ class Program:
 
     def _direct(self, e):
         refs = self.refs
+        if type(e) is sp.Symbol:        # an output that is a variable (expand)
+            w = refs.get(e)
+            return [w[1]] if w is not None and w[0] == "a" else []
         return [refs[q][1] for q in symbols_of(e) if refs.get(q, ("",))[0] == "a"]
 
 
