@@ -24,7 +24,7 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
     """d expr / d x."""
     if x not in _symbols(expr):
         return sp.S.Zero
-    if expr == x:
+    if expr is x or (type(expr) is sp.Symbol and expr == x):
         return sp.S.One
     if expr.is_Add:
         return _sum([partial(a, x) for a in expr.args if x in _symbols(a)])
