@@ -231,15 +231,14 @@ def plan(residuals, y_syms, params, n_modes=0, crossings=None, assignments=(), o
     refs.update({s: ("m", n_modes + j) for j, s in enumerate(discretes)})
     refs.update({sp.Symbol(f"_m{k}"): ("m", k) for k in range(n_modes)})
     refs[time] = ("t",)
-    res = [sp.sympify(r) for r in residuals]
-    assigned = [sp.sympify(e) for _, e in assignments]
+    res = _sympified(residuals)
+    assigned = _sympified(e for _, e in assignments)
     prog = Program(refs, assigned, [], {}, {}, [], [], [], n_modes)
     prog.reads = [prog._direct(e) for e in assigned]
-    prog.functions = {"residual": res,
-                      "roots": [sp.sympify(g) for g in (crossings or [])],
-                      "scales": [sp.sympify(g) for g in (scales or [])]}
+    prog.functions = {"residual": res, "roots": _sympified(crossings or []),
+                      "scales": _sympified(scales or [])}
     if outputs is not None:
-        prog.functions["expand"] = [sp.sympify(o) for o in outputs]
+        prog.functions["expand"] = _sympified(outputs)
     for k in prog.needed(res):
         prog.grads[k] = _chain(assigned[k], refs, prog.grads)
     for i, r in enumerate(res):
@@ -248,6 +247,12 @@ def plan(residuals, y_syms, params, n_modes=0, crossings=None, assignments=(), o
             prog.jac_cols.append(j)
             prog.jac.append(terms)
     return prog
+
+
+def _sympified(items) -> list:
+    """``[sympify(x) for x in items]``; an expression is its own (most items are)."""
+    basic = sp.Basic
+    return [x if isinstance(x, basic) else sp.sympify(x) for x in items]
 
 
 def _chain(e, refs, grads) -> dict:

@@ -120,7 +120,7 @@ def _solved(rest, c):
             if c is sp.S.One:     # what Mul(-1, r0, evaluate=False) makes
                 return sp.Mul._from_args((sp.S.NegativeOne, r0))
             return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
-        return -r0 / c
+        return _checked(_negated_sum_over(rest, c), -r0 / c if _CHECK else None)
     # one other term: r(x=0) is that term
     if c is sp.S.One:
         return _negated(rest[0])
@@ -145,6 +145,27 @@ def _negated(t):
         return _checked(sp.Mul._from_args((sp.S.NegativeOne, t), True),
                         -t if _CHECK else None)
     return -t
+
+
+def _negated_sum_over(rest, c):
+    """-(sum of rest) / c for a symbol c, as sympy builds it: the sum with every term
+    negated (sympy distributes -1 over it), times c**-1, the two factors in sympy's
+    order; sympy's own arithmetic where a term is not a plain product."""
+    from .fastsubs import _assemble_sum, _Fallback
+    if type(c) is not sp.Symbol or not c.is_commutative:
+        return -sp.Add._from_args(rest) / c
+    negated = [_negated(t) for t in rest]
+    if any(t.is_Add or t.is_Number for t in negated):
+        return -sp.Add._from_args(rest) / c
+    try:
+        total = _assemble_sum(negated)
+    except _Fallback:
+        return -sp.Add._from_args(rest) / c
+    if not total.is_Add or c in total.free_symbols:
+        return -sp.Add._from_args(rest) / c
+    factors = [total, sp.Pow(c, sp.S.NegativeOne)]
+    factors.sort(key=_args_sortkey)
+    return sp.Mul._from_args(factors, True)
 
 
 def _quotient(t, c):

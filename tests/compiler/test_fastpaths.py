@@ -30,7 +30,11 @@ RESIDUALS = [x + y, -x + y, 2 * x - y, x - y + z, -x + y - z, sp.Rational(1, 3) 
              # a coefficient of several factors, classified from them (_factor_kind)
              -p * q * x + y, 2 * p * x * y - z, sp.Float(0.5) * p * x - y, x * y * z,
              # a product with a sum, over which sympy's negation distributes a number
-             x - 2 * y * (z + q), p * x + 3 * y * (z - q)]
+             x - 2 * y * (z + q), p * x + 3 * y * (z - q),
+             # several other terms over a symbol coefficient (derivative._negated_sum_over)
+             p * x - y + z, p * x + y + z, p * x - y - q * z, p * x + 2 * y - z,
+             p * x - y + sp.Float(1.5) * z, p * x + y + 1, p * x - p * y + z,
+             p * x + y * (z + q) - z]
 LINEAR = [r for r in RESIDUALS if sp.degree(r, x) == 1]
 
 
