@@ -129,6 +129,7 @@ def flatten(model: Component) -> FlatModel:
     flat = FlatModel(name=type(model).__name__, variables=[], parameters=[], equations=[])
     connections = []
     with_der = set()     # ids of the flat equations whose residuals contain der()
+    known = {}           # the classes' own equation methods (inheritance.collect)
     with compiling(model), symbol_arithmetic():
         for comp in nodes:
             flat.components[comp.path] = type(comp).__name__
@@ -136,7 +137,7 @@ def flatten(model: Component) -> FlatModel:
             if isinstance(comp, Port):
                 flat.ports.append((comp.path, type(comp).__name__, comp.effort, comp.flow))
                 continue
-            for item in _read(comp, "equations"):
+            for item in _read(comp, "equations", known):
                 if isinstance(item, Connection):
                     item.owner = comp
                     connections.append(item)
@@ -145,7 +146,7 @@ def flatten(model: Component) -> FlatModel:
                     flat.whens.append(item)
                 else:
                     flat.equations.append(_flat_equation(item, comp, "equation", with_der))
-            for item in _read(comp, "initial_equations"):
+            for item in _read(comp, "initial_equations", known):
                 if not isinstance(item, Equation):
                     raise InvalidEquation(f"{comp._describe()}.initial_equations() returned "
                                           f"{item!r}; expected ac.Eq(lhs, rhs)")
@@ -170,19 +171,20 @@ def _walk(root: Component):
         stack.extend(reversed(list(comp.children().values())))
 
 
-def _read(comp: Component, method: str) -> list:
+def _read(comp: Component, method: str, known: dict) -> list:
     """The items of ``comp``'s ``method`` over its class hierarchy (``inheritance``):
-    each class's own method once, base classes first, each item checked."""
-    where = f"{comp._describe()}.{method}()"
+    each class's own method once, base classes first, each item checked (``known``:
+    the classes' own methods, found once per flattening)."""
     try:
-        parts = inheritance.collect(comp, method)
+        parts = inheritance.collect(comp, method, known)
     except ModelError as err:
-        raise in_context(err, where) from err
+        raise in_context(err, f"{comp._describe()}.{method}()") from err
     except Exception as err:  # the user's equations() raised: say where
         raise ModelError(failed_reading(method, comp._describe(), err)) from err
     items = []
     for klass, part in parts:
         if part is None:
+            where = f"{comp._describe()}.{method}()"
             whose = where if klass is type(comp) else f"{where} (of {klass.__name__})"
             raise InvalidEquation(f"{whose} returned None; it must return a list of "
                                   "equations (is a 'return' missing?)")
@@ -191,8 +193,9 @@ def _read(comp: Component, method: str) -> list:
         if not isinstance(item, (Equation, Connection, When)):
             hint = (" (a sympy relation or a truth value: acausal's equation is "
                     "ac.Eq(lhs, rhs))") if isinstance(item, (sp.Basic, bool)) else ""
-            raise InvalidEquation(f"{where} returned {item!r}{hint}; expected "
-                                  "ac.Eq(lhs, rhs), ac.connect(a, b) or ac.when(...)")
+            raise InvalidEquation(f"{comp._describe()}.{method}() returned {item!r}{hint}; "
+                                  "expected ac.Eq(lhs, rhs), ac.connect(a, b) or "
+                                  "ac.when(...)")
     return items
 
 

@@ -154,14 +154,23 @@ def own_methods(cls, name: str) -> tuple:
     return tuple((k, vars(k)[name]) for k in mro if k not in replaced)
 
 
-def collect(comp, name: str) -> list:
+def collect(comp, name: str, known: dict | None = None) -> list:
     """``(class, items)`` for each class of ``comp`` with its own ``name`` method
     (``"equations"`` or ``"initial_equations"``), most basic class first; ``items`` is
     the flat list the method returned, or None if it returned None (the caller names
-    that error).  Generators are run here, while the super() guard is active."""
+    that error).  Generators are run here, while the super() guard is active.
+    ``known``: :func:`own_methods` by (class, name), kept by the caller while the
+    classes do not change (one flattening)."""
     from .component import flatten_equation_list
     out = []
-    for klass, func in own_methods(type(comp), name):
+    cls = type(comp)
+    if known is None:
+        methods = own_methods(cls, name)
+    else:
+        methods = known.get((cls, name))
+        if methods is None:
+            methods = known[cls, name] = own_methods(cls, name)
+    for klass, func in methods:
         token = _CALLING.set((comp, name, klass))
         try:
             raw = func.__get__(comp, type(comp))()
