@@ -19,7 +19,7 @@ import sympy as sp
 
 from ..components.component import InvalidEquation, ModelError
 from .derivative import partial
-from .fastsubs import fast_xreplace, has_undefined
+from .fastsubs import fast_xreplace, has_undefined, negated
 from .flatten import FlatModel
 from .gcpause import gc_paused
 from .graph import STATE_SELECT
@@ -171,7 +171,7 @@ def _signed(sign, expr):
     if sign == 1:
         return expr
     if sign == -1:
-        return -expr
+        return negated(expr) if type(expr) is sp.Symbol else -expr
     return sign * expr
 
 

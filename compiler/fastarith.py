@@ -26,7 +26,6 @@ from sympy.core.parameters import global_parameters
 
 from ..components.symbols import der
 from . import fastsubs
-from .symbolic import negated
 
 __all__ = ["symbol_arithmetic"]
 
@@ -72,7 +71,7 @@ def _add(self, other):
 def _sub(self, other):
     if not _pair(self, other):
         return Expr.__sub__(self, other)
-    args = [self, negated(other)]
+    args = [self, fastsubs.negated(other)]
     fastsubs.sort_args(args)
     return _checked(_Add._from_args(args, True), "__sub__", self, other)
 

@@ -85,6 +85,20 @@ def _sub(e, mapping):
     return e
 
 
+def negated(q) -> sp.Expr:
+    """``-q`` of a symbol or der(symbol), as sympy builds it (``Mul(-1, q)``), made once
+    per compile: the same node serves every sum it is a term of (a port's voltage is
+    negated in its element's equation, in the connection's, and where an alias stands
+    for it), so that look-ups of it find it by identity, not by comparing two copies."""
+    out = _NEGATED.get(q)
+    if out is None:
+        out = _NEGATED[q] = _Mul._from_args((_MINUS, q), q.is_commutative)
+    return out
+
+
+_NEGATED: dict = {}       # emptied at a compile's end (symbolic.forget_expressions)
+
+
 def _signed_symbol(v):
     """(sign, symbol) of a value that is a commutative symbol or its negative; else None."""
     if type(v) is _Symbol:
@@ -155,6 +169,8 @@ def _product(e, mapping):
             raise _Fallback
     if coeff is not None and any(f.is_Add for f in factors):
         raise _Fallback
+    if coeff is _MINUS and len(factors) == 1 and type(factors[0]) is _Symbol:
+        return negated(factors[0])
     sort_args(factors)
     if coeff is not None:
         factors.insert(0, coeff)

@@ -21,7 +21,7 @@ import sympy as sp
 
 from ..components.symbols import der, time
 from .derivative import partial
-from .fastsubs import sort_args
+from .fastsubs import _NEGATED, negated, sort_args
 from .graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER, STATE_SELECT,
                     UNASSIGNED, Names, Structure)
 
@@ -370,19 +370,6 @@ def signed_terms(side, sign: int, coeffs: dict) -> bool:
             return False
         coeffs[q] = c
     return True
-
-
-def negated(q) -> sp.Expr:
-    """``-q`` of a symbol or der(symbol), as sympy builds it (``Mul(-1, q)``), made once
-    per compile: the same node serves every sum it is a term of (a port's voltage is
-    negated in its element's equation and in the connection's)."""
-    out = _NEGATED.get(q)
-    if out is None:
-        out = _NEGATED[q] = sp.Mul._from_args((_MINUS, q), q.is_commutative)
-    return out
-
-
-_NEGATED: dict = {}
 
 
 def signed_sum(coeffs: dict) -> sp.Expr:
