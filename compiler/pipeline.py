@@ -215,8 +215,9 @@ def _passes(clock, report, flat, discretes, helds, delays, backend, beside):
         prepared.append(prepare(progs))
         printing.append(_time.perf_counter() - t0)
 
+    early = backend != "numpy" and _compiler_found()
     out = clock("codegen", _assemble, system, reduction, reduced, flat, aliases, report,
-                discretes, helds, delays, programs_made if backend != "numpy" else None)
+                discretes, helds, delays, programs_made if early else None)
     clock("report", report.fill, system, reduction, out)
     from .cbackend import bind
     clock("c_backend", bind, out, backend, report, prepared[0] if prepared else None)
@@ -224,6 +225,13 @@ def _passes(clock, report, flat, discretes, helds, delays, backend, beside):
         report.timings["codegen"] -= printing[0]
         report.timings["c_backend"] += printing[0]
     return out
+
+
+def _compiler_found() -> bool:
+    """A C compiler is on the path (else the C backend's printing is left to bind,
+    which says why it cannot build)."""
+    from .cbackend import compiler_available
+    return compiler_available() is not None
 
 
 def _from_cache(found, seconds, how) -> ModelCode:

@@ -305,7 +305,7 @@ class Component(metaclass=_ComponentType):
                     "variables are named when the model is compiled (acausal.compile)")
             full = f"{self._path}.{name}" if self._path else name
             # the first symbol of a model loads sympy, not the class
-            from .symbols import real_symbol
+            from .realsymbol import real_symbol
             sym = real_symbol(full)
             self._symbols[name] = sym
         return sym

@@ -89,7 +89,7 @@ def test_partial_of_a_product_is_sympys(e):
 def test_a_variable_symbol_is_the_symbol_sympy_makes():
     """real_symbol(name) against Symbol.__xnew__(Symbol, name, real=True): equal, with the
     same hash, text and facts."""
-    from acausal.components.symbols import real_symbol
+    from acausal.components.realsymbol import real_symbol
     a, b = real_symbol("R1.v"), sp.Symbol.__xnew__(sp.Symbol, "R1.v", real=True)
     assert a == b and hash(a) == hash(b) and sp.srepr(a) == sp.srepr(b)
     assert a == sp.Symbol("R1.v", real=True)
