@@ -118,17 +118,21 @@ def _expr_statement(target, e, refs) -> _Statement:
 def _combo_statement(target, terms, refs, j) -> _Statement:
     """``target = sum of partial * gradient``: one gradient or Jacobian entry."""
     leafidx, leaves, parts, printed = {}, [], [], []
+    numbers = _NUMBERS
     for d, src in terms:
-        text = _shape(d, refs, leafidx, leaves)
-        if src is not None:
+        # a number seen before (most partials are) by its identity, as _shape finds it
+        text = numbers.get(id(d)) or _shape(d, refs, leafidx, leaves)
+        if src is None:
+            printed.append((d, None))
+        else:
             g = ("g", src, j)
             n = leafidx.get(g)
             if n is None:
                 n = leafidx[g] = len(leaves)
                 leaves.append(g)
             text += f"*${n}"
+            printed.append((d, g))
         parts.append(text)
-        printed.append((d, None if src is None else ("g", src, j)))
     return _Statement(target, "C[" + ";".join(parts) + "]", leaves,
                       terms=(printed, leafidx))
 
