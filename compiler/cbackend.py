@@ -453,6 +453,9 @@ def bind(mc, backend: str, report, prepared=None) -> None:
     try:
         finish = prepared or prepare({k: c.program for k, c in codes.items()})
         source, sizes, lib, index = finish()
+        if sizes.keys() != codes.keys():     # printed from other codes than the model's
+            raise RuntimeError(f"the C library was printed for {sorted(sizes)}, the model "
+                               f"has {sorted(codes)}")
         for prefix, code in codes.items():
             attach(code, lib, prefix, sizes[prefix], index.get(prefix))
             code.c_source = source       # one string, shared: a pickle holds it once

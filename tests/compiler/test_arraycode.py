@@ -202,8 +202,9 @@ def test_a_ladder_runs_on_looped_c(monkeypatch):
 @pytest.mark.skipif(not compiler_available(), reason="no C compiler")
 def test_looped_c_reads_its_index_arrays_at_run_time(tmp_path, monkeypatch):
     """A looped library is given its index arrays when it is loaded: two ladders alive
-    at once each compute their own exact solution, and a pickled one, its library
-    deleted, is rebuilt from its source and given its index again."""
+    at once each compute their own exact solution, also after a twin that shared one's
+    library was freed, and a pickled one, its library deleted, is rebuilt from its
+    source and given its index again."""
     import hashlib
     import os
     import pickle
@@ -222,6 +223,13 @@ def test_looped_c_reads_its_index_arrays_at_run_time(tmp_path, monkeypatch):
         assert hashlib.sha256(index.tobytes()).hexdigest()[:24] in code.c_source
         assert cbuild.flags_for(code.c_source) == cbuild.FLAGS_LOOPED
     assert first.code.library != second.code.library
+    # a second model of the same source loads the same library; freeing it leaves the
+    # first one's index in place
+    twin = ac.compile(Ladder(60), backend="c", cache=False)
+    assert twin.code.library == first.code.library
+    del twin
+    import gc
+    gc.collect()
     res, t = _against_exact(first, 60)
     _against_exact(second, 61)
     data = pickle.dumps(first)

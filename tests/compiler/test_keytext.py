@@ -42,3 +42,20 @@ def test_deep_and_unusual_expressions():
               sp.Piecewise((x, x > 0), (y, True)), 1.5, "text", None):
         key = _key_text()
         assert _expanded(key, key(e)) == ExactText(_plain)(e)
+
+
+def test_a_declared_attribute_written_once_still_changes_the_key():
+    """The key's references stand for their texts: two flat models that differ only in
+    one variable's start value, or one's description, have different keys; the same
+    model flattened twice has one."""
+    from dataclasses import replace
+
+    from acausal.compiler.cachekeys import flat_key
+    first, again = flatten(MotorDrive()), flatten(MotorDrive())
+    assert flat_key(first, "numpy") == flat_key(again, "numpy")
+    for change in ({"start": 0.125}, {"description": "another text"}):
+        changed = flatten(MotorDrive())
+        k = next(i for i, v in enumerate(changed.variables) if v.attrs.start is None)
+        v = changed.variables[k]
+        changed.variables[k] = replace(v, attrs=replace(v.attrs, **change))
+        assert flat_key(changed, "numpy") != flat_key(first, "numpy"), change
