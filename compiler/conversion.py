@@ -49,7 +49,6 @@ the SymbolicSystem and returns a :class:`ConversionResult` saying what it did.
 """
 from __future__ import annotations
 
-import heapq
 import random
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -62,6 +61,7 @@ from .blt import strongly_connected_components
 from .exact import (coefficient_oracle, exact_rank, exact_value, integer_vector,
                     left_null_vectors, parameter_values)
 from .graph import UNASSIGNED, Structure
+from .modp import full_row_rank_mod_p
 from .sigma import SigmaResult, sigma_method, signature_matrix
 from .structure import IndexReductionFailed, StructuralError, StructurallySingular
 from .symbolic import SymbolicEquation, sum_partial, symbols_of
@@ -336,80 +336,21 @@ def _matrix_text(matrix) -> str:
 
 
 # -- regular blocks, certified cheaply ---------------------------------------------------
-# the largest prime below 2**30: residues are one CPython digit and their products two
-# (with 2**61 - 1 the products were five-digit integers, a third of the elimination)
-_PRIME = 1073741789
-
-
 def _null_vectors(rows: dict) -> list:
     """:func:`left_null_vectors` of the rows, which is [] when they have full row rank;
-    that is settled first modulo a prime, where the arithmetic stays small.
-
-    Reducing rationals (with denominators prime to p) mod p is a ring homomorphism, so
-    every minor of the reduced matrix is the reduction of the rational minor: full row
-    rank mod p proves full row rank over the rationals.  Only rows that are not of full
-    rank mod p (singular, or, rarely, p divides the minors) are eliminated exactly.
-    Exact elimination of a large regular block (the capacitors of a network) spends
-    its time on the growth of its integers; mod p it is the sparse elimination alone.
+    that is settled first modulo a prime, where the arithmetic stays small
+    (:mod:`acausal.compiler.modp`).  Only rows that are not of full rank mod p
+    (singular, or, rarely, p divides the minors) are eliminated exactly.  Exact
+    elimination of a large regular block (the capacitors of a network) spends its time
+    on the growth of its integers; mod p it is the sparse elimination alone.
     """
     if len(rows) == 1:      # most blocks: one row, of full rank if an entry is not 0
         (row,) = rows.values()
         if any(row.values()):
             return []
-    elif _full_row_rank_mod_p(rows):
+    elif full_row_rank_mod_p(rows):
         return []
     return left_null_vectors(rows)
-
-
-def _full_row_rank_mod_p(rows: dict, p: int = _PRIME) -> bool:
-    """Sparse Gaussian elimination over GF(p), pivoting as :mod:`acausal.compiler.exact`
-    does (the column with the fewest non-zeros, then its shortest row)."""
-    a, col_rows = {}, {}
-    for r, vals in rows.items():
-        row = {}
-        for c, q in vals.items():
-            if q:
-                if q.denominator % p == 0:
-                    return False
-                v = q.numerator * pow(q.denominator, -1, p) % p
-                if v:
-                    row[c] = v
-                    col_rows.setdefault(c, set()).add(r)
-        a[r] = row
-    heap = [(len(rs), c) for c, rs in col_rows.items()]
-    heapq.heapify(heap)
-    done, rank = set(), 0
-    while heap:
-        count, c = heapq.heappop(heap)
-        rows_c = col_rows[c]
-        if c in done or count != len(rows_c):
-            continue                    # stale entry: the count changed since
-        done.add(c)
-        if count == 0:
-            continue
-        piv = min(rows_c, key=lambda r: (len(a[r]), r))
-        pivot_row = a.pop(piv)
-        inv = pow(pivot_row[c], -1, p)
-        prow = list(pivot_row.items())
-        for q in sorted(rows_c - {piv}):
-            qrow = a[q]
-            get = qrow.get
-            f = qrow[c] * inv % p
-            for k, v in prow:            # row_q -= f row_p: zero at c
-                x = (get(k, 0) - f * v) % p
-                if x:
-                    if k not in qrow:
-                        col_rows[k].add(q)
-                    qrow[k] = x
-                else:
-                    qrow.pop(k, None)
-                    col_rows[k].discard(q)
-        for k, _ in prow:
-            col_rows[k].discard(piv)
-            if k not in done:
-                heapq.heappush(heap, (len(col_rows[k]), k))
-        rank += 1
-    return rank == len(rows)
 
 
 # -- unused derivatives ----------------------------------------------------------------

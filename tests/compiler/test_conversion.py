@@ -311,7 +311,7 @@ def test_rank_mod_p_certifies_exact_full_rank():
     have no left null vector); rows with a dependent row are never certified."""
     import random
 
-    from acausal.compiler.conversion import _full_row_rank_mod_p
+    from acausal.compiler.modp import full_row_rank_mod_p as _full_row_rank_mod_p
     rng = random.Random(7)
     for trial in range(1500):
         n = rng.randint(1, 7)
@@ -324,6 +324,41 @@ def test_rank_mod_p_certifies_exact_full_rank():
         certified = _full_row_rank_mod_p(rows)
         assert certified == (not left_null_vectors(rows))   # no unlucky prime here
         assert not (dependent and certified)
+
+
+def test_rank_mod_p_in_the_array_phase_agrees_with_exact_elimination(monkeypatch):
+    """Once the active rows are few and filled in, the elimination mod p goes on in a
+    numpy array (compiler/modp.py); made to switch at once, and after a few sparse
+    pivots, it certifies exactly the rows that have no left null vector, square and
+    wide, with dependent rows (a multiple of another, or the sum of two) and with
+    large entries (residues of any size below the prime, whose products exceed 2**53)."""
+    import random
+
+    from acausal.compiler import modp
+    monkeypatch.setattr(modp, "DENSE_ROWS", 10**6)
+    monkeypatch.setattr(modp, "DENSE_FILL", 0.0)
+    rng = random.Random(11)
+    for trial in range(400):
+        monkeypatch.setattr(modp, "_CHECK_EVERY", rng.choice([0, 1, 3]))
+        n = rng.randint(2, 12)
+        m = rng.randint(n, 14)
+        rows = {i: {j: Fraction(rng.choice([rng.randint(-4, 4), rng.randint(-10**12, 10**12)]),
+                                rng.choice([1, 1, 2, 5]))
+                    for j in rng.sample(range(m), rng.randint(1, min(m, 4)))}
+                for i in range(n)}
+        kind = trial % 4
+        if kind == 1:
+            rows[n - 1] = {j: -3 * v for j, v in rows[rng.randrange(n - 1)].items()}
+        elif kind == 2:
+            i, k = rng.sample(range(n - 1), 2) if n > 2 else (0, 0)
+            total = dict(rows[i])
+            for j, v in rows[k].items():
+                total[j] = total.get(j, 0) + v
+            rows[n - 1] = total
+        certified = modp.full_row_rank_mod_p(rows)
+        assert certified == (not left_null_vectors(rows))
+        if kind in (1, 2):
+            assert not certified
 
 
 def test_a_one_row_block_whose_coefficient_is_zero_is_converted():
