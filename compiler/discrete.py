@@ -81,7 +81,8 @@ def freeze_integer_functions(flat) -> list:
         return e.xreplace({d: q for q, d in quiet.items()}) if quiet else e
 
     for eq in flat.equations + flat.initial_equations:
-        eq.residual = freeze(eq.residual)
+        if eq.plain is not eq.residual:      # a sum of +-symbols holds no floor()
+            eq.residual = freeze(eq.residual)
     for w in flat.whens:
         w.condition = freeze(w.condition)
         for act in w.actions:

@@ -85,6 +85,10 @@ class FlatEquation(_Located):
     component_class: str
     kind: str = "equation"       # equation | connect | unconnected | initial
     label: str | None = None
+    # the residual as flattened when it is a sum of +-symbols and +-der(symbol): while
+    # it is still the residual (``plain is residual``) it holds no function of another
+    # kind, and the passes that look for floor() or delay() need not walk it
+    plain: object = field(default=None, repr=False, compare=False)
 
     @property
     def text(self) -> str:
@@ -224,13 +228,16 @@ def _flat_equation(eq: Equation, comp: Component, kind: str, with_der: set) -> F
     """The FlatEquation of ``eq``; its id is added to ``with_der`` if it has a der()."""
     eq.origin, eq.origin_class = comp.path, type(comp).__name__
     coeffs = {}
-    if signed_terms(eq.lhs, 1, coeffs) and signed_terms(eq.rhs, -1, coeffs) and coeffs:
+    plain = signed_terms(eq.lhs, 1, coeffs) and signed_terms(eq.rhs, -1, coeffs) and coeffs
+    if plain:
         residual = signed_sum(coeffs)
         ders = any(type(q) is der for q in coeffs)
     else:
         residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
         ders = has_der(residual)
     out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+    if plain:
+        out.plain = residual
     if ders:
         with_der.add(id(out))
     return out
@@ -319,16 +326,17 @@ def _node_equations(members: list, connections: list) -> list:
         a = getattr(first, name)
         for p, _ in members[1:]:
             b = getattr(p, name)
-            diff = signed_sum({a: 1, b: -1}) if a != b else a - b
-            eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect"))
+            plain = a != b and type(a) is sp.Symbol and type(b) is sp.Symbol
+            diff = signed_sum({a: 1, b: -1}) if plain else a - b
+            eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect",
+                                    plain=diff if plain else None))
     for name in first.through():
         signed = [(getattr(p, name), 1 if role == "inside" else -1) for p, role in members]
         coeffs = dict(signed)
-        if len(coeffs) == len(signed) and all(type(q) is sp.Symbol for q in coeffs):
-            total = signed_sum(coeffs)
-        else:
-            total = sp.Add(*[c * q for q, c in signed])
-        eqs.append(FlatEquation(total, total, where, "connect", "connect"))
+        plain = len(coeffs) == len(signed) and all(type(q) is sp.Symbol for q in coeffs)
+        total = signed_sum(coeffs) if plain else sp.Add(*[c * q for q, c in signed])
+        eqs.append(FlatEquation(total, total, where, "connect", "connect",
+                                plain=total if plain else None))
     return eqs
 
 
