@@ -33,11 +33,9 @@ class _Hasher:
         self(*head)
 
     def __call__(self, *items) -> None:
-        parts = self.parts
-        for x in items:
-            parts.append(x if type(x) is str else str(x))
-            parts.append("\x1f")
-        parts.append("\x1e")
+        # one string a record: a model's key has some 40 000 records
+        self.parts.append("\x1f".join([x if type(x) is str else str(x) for x in items])
+                          + "\x1f\x1e" if items else "\x1e")
 
     def hexdigest(self) -> str:
         text = "".join(self.parts)
@@ -115,15 +113,21 @@ def _flat_key(flat, backend: str) -> str:
 
     h = _Hasher("flat", fingerprint(), *_backend_id(backend), flat.name)
     attrs = {}     # id -> reference: instances of a class share their declared attributes
-    for v in flat.variables:
+    # after its own record, a variable's or parameter's symbol is written as \x1c and
+    # its number in these records (which the key holds in order, with the symbol's whole
+    # text): the equations name each symbol some three times
+    for k, v in enumerate(flat.variables):
         text = attrs.get(id(v.attrs))
         if text is None:
             text = attrs[id(v.attrs)] = ex.ref(repr(v.attrs))
         h("v", v.name, ex(v.symbol), text, v.component, v.component_class,
           v.kind, ex.ref(v.hint))
-    for p in flat.parameters:
+        ex.memo[v.symbol] = f"\x1c{k}"
+    n = len(flat.variables)
+    for k, p in enumerate(flat.parameters):
         h("p", p.name, ex(p.symbol), ex(p.value), p.unit, ex.ref(p.description),
           p.component, p.component_class, ex(p.min), ex(p.max))
+        ex.memo[p.symbol] = f"\x1c{n + k}"
     for eqs, tag in ((flat.equations, "e"), (flat.initial_equations, "i")):
         for e in eqs:
             # the residual of an equation written as Eq(lhs, rhs) is made from it by
@@ -132,7 +136,10 @@ def _flat_key(flat, backend: str) -> str:
             # made otherwise (a connection set's sum, an equation read back from its
             # text) is hashed itself
             made = "" if isinstance(e.source, Equation) else ex(e.residual)
-            h(tag, e.kind, made, source(e), e.component, e.component_class, e.label)
+            # a connection set's equations are each located by all its ports: a long
+            # text, written once (a ground of 1000 capacitors: 1001 equations, 10 kB each)
+            where = e.component if len(e.component) < 64 else ex.ref(e.component)
+            h(tag, e.kind, made, source(e), where, e.component_class, e.label)
     for x, d in flat.derivatives.items():
         h("d", ex(x), ex(d))
     for w in flat.whens:

@@ -59,3 +59,48 @@ def test_a_declared_attribute_written_once_still_changes_the_key():
         v = changed.variables[k]
         changed.variables[k] = replace(v, attrs=replace(v.attrs, **change))
         assert flat_key(changed, "numpy") != flat_key(first, "numpy"), change
+
+
+def _key_text_length(model, monkeypatch) -> int:
+    from acausal.compiler import cachekeys
+    seen = []
+    digest = cachekeys._Hasher.hexdigest
+
+    def spy(self):
+        seen.append(sum(map(len, self.parts)))
+        return digest(self)
+
+    monkeypatch.setattr(cachekeys._Hasher, "hexdigest", spy)
+    cachekeys.flat_key(flatten(model), "numpy")
+    return seen[-1]
+
+
+def test_the_key_of_a_large_node_grows_with_its_ports(monkeypatch):
+    """A ladder's capacitors share one ground: n + 2 ports, n + 1 equations each
+    located by all of them.  The key text is linear in n (the location written once),
+    not quadratic."""
+    import sys
+    sys.path.insert(0, str(__import__("pathlib").Path(__file__).parents[2] / "benchmarks"))
+    from families import RLCLadder
+    small, large = (_key_text_length(RLCLadder(n), monkeypatch) for n in (100, 400))
+    assert large < 4.6 * small
+
+
+def test_the_key_says_which_variable_an_equation_reads():
+    """Symbols in the equations are written as their numbers in the variable records:
+    two models that differ only in which variable one equation reads have different
+    keys, and swapping the order of two variables' records changes the key."""
+    from acausal.compiler.cachekeys import flat_key
+    first = flatten(MotorDrive())
+    base = flat_key(first, "numpy")
+    changed = flatten(MotorDrive())
+    k = next(i for i, eq in enumerate(changed.equations)
+             if eq.residual.is_Add and len(eq.residual.free_symbols) >= 2)
+    a, b = sorted(changed.equations[k].residual.free_symbols, key=str)[:2]
+    eq = changed.equations[k]
+    eq.residual = eq.residual.xreplace({a: b, b: a})
+    eq.source = "swapped"
+    assert flat_key(changed, "numpy") != base
+    swapped = flatten(MotorDrive())
+    swapped.variables[0], swapped.variables[1] = swapped.variables[1], swapped.variables[0]
+    assert flat_key(swapped, "numpy") != base
