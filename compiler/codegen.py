@@ -30,6 +30,7 @@ import numpy as np
 import sympy as sp
 
 from .derivative import partial as _partial
+from .derivative import simple_partials
 from .emit import Emitter, _plain
 from .lazycode import GeneratedModule, ModuleSource
 from .symbolic import symbols_of
@@ -276,6 +277,9 @@ def _partials(e, refs) -> dict:
                     key=lambda q: refs[q])
     if not wanted:
         return {}
+    simple = simple_partials(e, wanted)
+    if simple is not None:
+        return simple
     if e.is_Add and len(e.args) > 8:
         by_symbol = {q: [] for q in wanted}
         for term in e.args:

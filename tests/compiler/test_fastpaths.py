@@ -100,3 +100,28 @@ def test_a_variable_symbol_is_the_symbol_sympy_makes():
     for fact, value in dict(a._assumptions).items():
         assert getattr(b, "is_" + fact) == value, fact
     assert pickle.loads(pickle.dumps(a)) == b
+
+
+def test_simple_partials_are_the_general_partials():
+    """The partials read off a symbol, a product of two factors and a negated sum of
+    +-symbols are partial()'s, the same objects; any other form is left to it."""
+    from acausal.compiler.derivative import partial, simple_partials
+    L, R = sp.symbols("L R", positive=True)
+    def minus(s):        # -(s), kept a product, as solve_linear builds it
+        return sp.Mul(sp.S.NegativeOne, s, evaluate=False)
+
+    read_off = [x, -x, 2 * x, sp.Float(0.5) * x, x / L, R * y, x * y, p * x, x / (L + R),
+                minus(x - y), minus(x + y - z), minus(y - x + z), minus(x + y)]
+    left = [x ** 2, 2 * x * y, minus(x - 2 * y), minus(x - y * z), x * sp.sin(x), sp.sin(x),
+            x + y, minus(x + 1), p * x * y, -(x - y)]
+    for e in read_off:
+        wanted = sorted(e.free_symbols - {L, R, p}, key=str)
+        got = simple_partials(e, wanted)
+        assert got is not None, e
+        for v in wanted:
+            ref = partial(e, v)
+            assert got[v] == ref and sp.srepr(got[v]) == sp.srepr(ref), (e, v)
+        assert list(got) == wanted
+    for e in left:
+        wanted = sorted(e.free_symbols - {p}, key=str)
+        assert simple_partials(e, wanted) is None, e
