@@ -121,7 +121,7 @@ def _eventful(exprs, kinds) -> list:
         seen, stack, found = [], [e], False
         while stack:
             node = stack.pop()
-            if node in clean:
+            if node.is_Atom or node in clean:     # no atom is of those classes
                 continue
             if isinstance(node, kinds):
                 found = True
