@@ -88,6 +88,26 @@ def test_an_error_of_the_work_reaches_the_caller_with_its_type():
         sidejobs.Beside(_raises).result()
 
 
+@pytest.mark.skipif(not os.path.exists("/proc/self/status"), reason="reads /proc")
+def test_a_child_with_a_large_result_ends_before_it_is_read():
+    """A result larger than a pipe's default 64 kB (the index as written of a large
+    model) fits the widened pipe: the child ends as soon as it has sent it, not when
+    the parent reads it (a child that lives on makes every page the parent writes a
+    copy), and the result is whole."""
+    job = sidejobs.Beside(_work, 30_000)           # some 200 kB pickled
+    deadline = time.monotonic() + 20
+    state = ""
+    while time.monotonic() < deadline:
+        with open(f"/proc/{job.pid}/status") as f:
+            state = next(line for line in f if line.startswith("State:"))
+        if "Z" in state.split()[1]:                # ended, not yet reaped
+            break
+        time.sleep(0.05)
+    assert "Z" in state.split()[1], state
+    out = job.result()
+    assert job.forked and out["squares"] == [k * k for k in range(30_000)]
+
+
 def test_a_cancelled_job_leaves_no_child():
     job = sidejobs.Beside(_work, 10)
     pid = job.pid
