@@ -25,7 +25,7 @@ from .gcpause import gc_paused
 from .graph import STATE_SELECT
 from .symbolic import symbols_of
 
-__all__ = ["AliasTable", "eliminate_aliases"]
+__all__ = ["AliasTable", "eliminate_aliases", "incidence"]
 
 
 @dataclass
@@ -44,12 +44,36 @@ class AliasTable:
 
 
 @gc_paused
-def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
-    """Return a new FlatModel without trivial equations, and the alias table."""
+def incidence(flat: FlatModel) -> tuple:
+    """The first step of :func:`eliminate_aliases`, which a caller may take ahead (the
+    pipeline does while it waits for the cache key): each variable's number, and for
+    each number the indices of the equations that read it (None for none)."""
+    order = {v.symbol: k for k, v in enumerate(flat.variables)}
+    by_var = [None] * len(order)
+    for i, eq in enumerate(flat.equations):
+        for q in symbols_of(eq.residual):
+            k = order.get(q)
+            if k is not None:
+                readers = by_var[k]
+                if readers is None:
+                    by_var[k] = {i}
+                else:
+                    readers.add(i)
+    return order, by_var, [eq.residual for eq in flat.equations]
+
+
+@gc_paused
+def eliminate_aliases(flat: FlatModel, known: tuple | None = None) -> tuple[FlatModel,
+                                                                          AliasTable]:
+    """Return a new FlatModel without trivial equations, and the alias table
+    (``known``: what :func:`incidence` returned for ``flat`` as it is now)."""
     syms = [v.symbol for v in flat.variables]
     # the variables by number: the union-find, the constants and the incidence are kept
     # on numbers (a look-up by symbol hashes it in Python, a list is indexed in C)
-    order = {s: k for k, s in enumerate(syms)}
+    if known is None or len(known[2]) != len(flat.equations) or any(
+            r is not eq.residual for r, eq in zip(known[2], flat.equations)):
+        known = incidence(flat)
+    order, by_var, _ = known
     differentiated = set(flat.derivatives)
     params = frozenset(p.symbol for p in flat.parameters)
     # the union-find on variable numbers: up[k] is k's parent, sign[k] = +-1 with
@@ -88,7 +112,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     # of N + 2 ports share one) keeps the worklist linear in the incidence.
     eqs = list(flat.equations)
     alive = [True] * len(eqs)
-    by_var = [None] * len(syms)      # variable number -> the equations that read it
+    # by_var: variable number -> the equations that read it
 
     def enter(i):
         for q in symbols_of(eqs[i].residual):
@@ -100,8 +124,6 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
                 else:
                     readers.add(i)
 
-    for i in range(len(eqs)):
-        enter(i)
     queue = set(range(len(eqs)))
     while queue:
         touched = set()

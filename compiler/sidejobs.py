@@ -141,6 +141,11 @@ class Beside:
         """True while a forked child does the work."""
         return self.pid is not None
 
+    def ready(self) -> bool:
+        """Whether :meth:`result` would return without waiting for the child (it has
+        begun to send its result, or ended, or there is none)."""
+        return self.pid is None or bool(select.select([self.fd], [], [], 0)[0])
+
     def result(self):
         """What ``fn(*args)`` returned: the child's, or computed here when the child
         ended without it or has not sent it within ``PATIENCE`` (the time the caller

@@ -108,6 +108,21 @@ def test_a_child_with_a_large_result_ends_before_it_is_read():
     assert job.forked and out["squares"] == [k * k for k in range(30_000)]
 
 
+def _slow(seconds):
+    time.sleep(seconds)
+    return "slept"
+
+
+def test_ready_says_whether_the_result_would_wait():
+    job = sidejobs.Beside(_slow, 0.5)
+    assert not job.ready()                 # still sleeping
+    deadline = time.monotonic() + 20
+    while not job.ready() and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert job.ready() and job.result() == "slept" and job.forked
+    assert sidejobs.Beside(_slow, 0.0, fork=False).ready()
+
+
 def test_a_cancelled_job_leaves_no_child():
     job = sidejobs.Beside(_work, 10)
     pid = job.pid
