@@ -326,8 +326,8 @@ def _node_equations(members: list, connections: list) -> list:
         a = getattr(first, name)
         for p, _ in members[1:]:
             b = getattr(p, name)
+            diff = signed_sum({a: 1, b: -1}) if a != b else a - b
             plain = a != b and type(a) is sp.Symbol and type(b) is sp.Symbol
-            diff = signed_sum({a: 1, b: -1}) if plain else a - b
             eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect",
                                     plain=diff if plain else None))
     for name in first.through():

@@ -130,7 +130,8 @@ def _compile(model, backend, cache, check_units, stores) -> ModelCode:
                 front = _front(clock, report, flat, check_units)
                 if not job.ready():
                     # the key is not hashed yet: alias elimination's first step
-                    # meanwhile (a hit wastes it, but no more than the wait)
+                    # meanwhile (a hit wastes it, in time the compile would mostly
+                    # have waited: 0.05-0.1 s on the 1000-section ladder)
                     t2 = _time.perf_counter()
                     from .alias import incidence
                     ahead = incidence(flat)
