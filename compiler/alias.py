@@ -25,7 +25,7 @@ from .gcpause import gc_paused
 from .graph import STATE_SELECT
 from .symbolic import symbols_of
 
-__all__ = ["AliasTable", "eliminate_aliases", "incidence"]
+__all__ = ["AliasTable", "eliminate_aliases"]
 
 
 @dataclass
@@ -43,11 +43,9 @@ class AliasTable:
         return self.aliases.get(name, (1, name))
 
 
-@gc_paused
-def incidence(flat: FlatModel) -> tuple:
-    """The first step of :func:`eliminate_aliases`, which a caller may take ahead (the
-    pipeline does while it waits for the cache key): each variable's number, and for
-    each number the indices of the equations that read it (None for none)."""
+def _incidence(flat: FlatModel) -> tuple:
+    """Each variable's number, and for each number the indices of the equations that
+    read it (None for none)."""
     order = {v.symbol: k for k, v in enumerate(flat.variables)}
     by_var = [None] * len(order)
     for i, eq in enumerate(flat.equations):
@@ -59,21 +57,16 @@ def incidence(flat: FlatModel) -> tuple:
                     by_var[k] = {i}
                 else:
                     readers.add(i)
-    return order, by_var, [eq.residual for eq in flat.equations]
+    return order, by_var
 
 
 @gc_paused
-def eliminate_aliases(flat: FlatModel, known: tuple | None = None) -> tuple[FlatModel,
-                                                                          AliasTable]:
-    """Return a new FlatModel without trivial equations, and the alias table
-    (``known``: what :func:`incidence` returned for ``flat`` as it is now)."""
+def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
+    """Return a new FlatModel without trivial equations, and the alias table."""
     syms = [v.symbol for v in flat.variables]
     # the variables by number: the union-find, the constants and the incidence are kept
     # on numbers (a look-up by symbol hashes it in Python, a list is indexed in C)
-    if known is None or len(known[2]) != len(flat.equations) or any(
-            r is not eq.residual for r, eq in zip(known[2], flat.equations)):
-        known = incidence(flat)
-    order, by_var, _ = known
+    order, by_var = _incidence(flat)
     differentiated = set(flat.derivatives)
     params = frozenset(p.symbol for p in flat.parameters)
     # the union-find on variable numbers: up[k] is k's parent, sign[k] = +-1 with
@@ -260,10 +253,12 @@ def _alias_pattern(residual: sp.Expr, info, params: frozenset = frozenset()):
     if fast is not None:
         return fast
     free = symbols_of(residual)
-    syms = [s for s in free if s in info]
-    others = free - set(syms)
+    # set operations on sets and dicts compare the hashes the sets keep (a look-up of
+    # each symbol would hash it again, in Python)
+    others = free.difference(info)
     if others - params:
         return None        # der(), time or unknown symbols: not a trivial equation
+    syms = list(free - others)
     if len(syms) == 1:
         a = syms[0]
         ca = partial(residual, a)

@@ -113,52 +113,58 @@ def _compile(model, backend, cache, check_units, stores) -> ModelCode:
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
     from .unitcheck import check_units as unit_check
+    from .unitcheck import complain
     report.derived_parameters = dict(flat.derived)
     front = None         # what the passes before alias elimination found, once run
-    key = None
-    ahead, ahead_s = None, 0.0   # alias elimination's first step, if taken early
+    key = units = aliased = None
     if use_cache:
-        # a large model's key is hashed beside the first passes, which a hit wastes
-        # (they take about half the key's time) and a miss needs
+        # a large model's key is hashed, and its units checked, beside the first passes
+        # and alias elimination, which a hit wastes (in time the compile would mostly
+        # have waited) and a miss needs
         t1 = _time.perf_counter()
-        job = sidejobs.Beside(store.flat_key, flat, backend, fork=_large(flat))
+        if _large(flat) and sidejobs.available():
+            job = sidejobs.Beside(_key_and_units, flat, backend, check_units, model)
+        else:
+            job = sidejobs.Beside(_key_alone, flat, backend, fork=False)
         try:
-            # the report's table of the components' modes, made while the key is
-            # hashed (0.06 s for 6000 components; a hit takes the stored report's)
-            report.modes = mode_structures(model)
             if job.running:
-                front = _front(clock, report, flat, check_units)
-                if not job.ready():
-                    # the key is not hashed yet: alias elimination's first step
-                    # meanwhile (a hit wastes it, in time the compile would mostly
-                    # have waited: 0.05-0.1 s on the 1000-section ladder)
-                    t2 = _time.perf_counter()
-                    from .alias import incidence
-                    ahead = incidence(flat)
-                    ahead_s = _time.perf_counter() - t2
+                front, aliased = _ahead(clock, report, flat, job, check_units)
+            else:
+                report.modes = mode_structures(model)
             t_front = _time.perf_counter() - t1 if front is not None else 0.0
-            key = job.result()
+            key, units, modes = job.result()
         finally:
             job.cancel()
+        if modes is not None:
+            report.modes = modes
         found = store.lookup(key) if key is not None else None
         if found is not None:
             if tree is not None:
                 store.store_index(tree, key)
-            found[0].report.units = report.units if front is not None else \
-                unit_check(flat, check_units, found[0].report.units)
+            if units is not None:
+                found[0].report.units = complain(units, check_units)
+            else:
+                found[0].report.units = report.units if front is not None else \
+                    unit_check(flat, check_units, found[0].report.units)
             lookup = _time.perf_counter() - t1 + report.timings["flatten"] + t_tree
             return _from_cache(found, lookup, "its flat model")
         # the time the key cost beyond the passes that ran beside it (timed themselves)
         report.timings["cache_key"] = _time.perf_counter() - t1 - t_front + t_tree
+        if units is not None:
+            report.units = complain(units, check_units)
+            report.timings["units"] = units.seconds
+            report.notes.append(f"the units were checked in a second process, beside the "
+                                f"passes up to alias elimination ({units.seconds:.2f} s)")
     else:
         report.modes = mode_structures(model)
-    discretes, helds, delays = front or _front(clock, report, flat, check_units)
+    discretes, helds, delays = front or _front(clock, report, flat,
+                                               None if units is not None else check_units)
     # the index as written reads the flat model as it is now; on a large model it is
     # computed beside the passes that follow (sidejobs), its result taken below
     beside = sidejobs.Beside(as_written, flat, fork=_large(flat))
     try:
         out = _passes(clock, report, flat, discretes, helds, delays, backend, beside,
-                      ahead, ahead_s)
+                      aliased)
     finally:
         beside.cancel()
     if key is not None:
@@ -174,6 +180,38 @@ def _store(report, key, out, tree, large: bool) -> None:
     report.timings["cache_store"] = _time.perf_counter() - t0    # not in the entry
 
 
+def _key_and_units(flat, backend, check_units, model) -> tuple:
+    """The side job of a large compile: the cache key of ``flat``, its unit check (whose
+    findings the parent reports, :func:`acausal.compiler.unitcheck.complain`) and the
+    report's table of the components' modes (0.06 s for 6000 components)."""
+    from . import cache as store
+    from .unitcheck import check_units as unit_check
+    return (store.flat_key(flat, backend), unit_check(flat, check_units, quiet=True),
+            mode_structures(model))
+
+
+def _key_alone(flat, backend) -> tuple:
+    from . import cache as store
+    return store.flat_key(flat, backend), None, None
+
+
+def _ahead(clock, report, flat, job, check_units) -> tuple:
+    """While ``job`` hashes the key and checks the units: the front passes, and alias
+    elimination if the key is not ready after them; returns (front, aliased or None).
+    An error of these passes is raised after the units' verdict, as in a compile that
+    checks the units first."""
+    from .alias import eliminate_aliases
+    try:
+        front = _front(clock, report, flat, None)
+        aliased = None if job.ready() else clock("alias", eliminate_aliases, flat)
+        return front, aliased
+    except Exception:
+        _, units, _ = job.result()
+        from .unitcheck import complain
+        complain(units, check_units)
+        raise
+
+
 def _front(clock, report, flat, check_units) -> tuple:
     """The passes before alias elimination: units, discrete, sampled, delays (the last
     three change ``flat``); returns what alias elimination needs of them."""
@@ -181,7 +219,8 @@ def _front(clock, report, flat, check_units) -> tuple:
     from .discrete import freeze_integer_functions
     from .sampled import declare_discrete_variables
     from .unitcheck import check_units as unit_check
-    report.units = clock("units", unit_check, flat, check_units)
+    if check_units is not None:         # None: checked in a side job (_ahead)
+        report.units = clock("units", unit_check, flat, check_units)
     discretes = clock("discrete", freeze_integer_functions, flat)
     helds = clock("sampled", declare_discrete_variables, flat)
     delays = clock("delays", extract_delays, flat)
@@ -209,15 +248,14 @@ def _large(flat) -> bool:
     return len(flat.equations) >= SIDE_JOBS_FROM
 
 
-def _passes(clock, report, flat, discretes, helds, delays, backend, beside, ahead=None,
-            ahead_s=0.0):
+def _passes(clock, report, flat, discretes, helds, delays, backend, beside, aliased=None):
     from .alias import eliminate_aliases
     from .balance import check_balance
     from .conversion import convert_model
     from .reduction import reduce_index
     from .sampled import explain_overdetermined, pre_after_aliases
-    reduced, aliases = clock("alias", eliminate_aliases, flat, ahead)
-    report.timings["alias"] += ahead_s
+    # aliased: alias elimination taken while the cache key was hashed (_ahead)
+    reduced, aliases = aliased or clock("alias", eliminate_aliases, flat)
     _resolve_aliases_in(list(discretes) + list(delays), flat, aliases)
     pre_after_aliases(reduced, aliases, helds)
     report.aliases = aliases

@@ -33,7 +33,7 @@ from ..components.units import (DIMENSIONLESS, MODES, UnitCheck, UnitError, Unit
                                  dimension_text, parse_unit)
 from .gcpause import gc_paused
 
-__all__ = ["check_units", "UnitCheck", "MODES"]
+__all__ = ["check_units", "complain", "UnitCheck", "MODES"]
 
 _TIME = (0, 0, 1, 0, 0, 0, 0)
 
@@ -66,12 +66,15 @@ class _Mismatch(Exception):
 
 
 @gc_paused
-def check_units(flat, mode: str = "warn", known: UnitCheck | None = None) -> UnitCheck:
+def check_units(flat, mode: str = "warn", known: UnitCheck | None = None,
+                quiet: bool = False) -> UnitCheck:
     """Check every equation of ``flat`` (a FlatModel); see the module docstring.
 
     ``known``: the check of the same flat model found in the compile cache (the flat key
     covers every unit and expression the check reads); its findings are reported in this
-    ``mode`` without checking again, so a cache hit does not load sympy's units."""
+    ``mode`` without checking again, so a cache hit does not load sympy's units.
+    ``quiet``: the findings are returned, not reported (:func:`complain` reports them
+    where the check ran in a side job, :mod:`acausal.compiler.pipeline`)."""
     import time
     if mode not in MODES:
         raise ValueError(f"check_units must be one of {MODES}, not {mode!r}")
@@ -82,7 +85,7 @@ def check_units(flat, mode: str = "warn", known: UnitCheck | None = None) -> Uni
         return result
     if known is not None and known.mode != "off":
         result.checked, result.mismatches = known.checked, list(known.mismatches)
-        _complain(result, mode)
+        complain(result, mode)
         return result
     t0 = time.perf_counter()
     dims = _symbol_dimensions(flat)
@@ -106,12 +109,13 @@ def check_units(flat, mode: str = "warn", known: UnitCheck | None = None) -> Uni
         if isinstance(p.value, sp.Basic) and not p.value.is_number and p.unit:
             _check_binding(p, walker, dims, result)
     result.seconds = time.perf_counter() - t0
-    _complain(result, mode)
+    if not quiet:
+        complain(result, mode)
     return result
 
 
-def _complain(result: UnitCheck, mode: str) -> None:
-    """Raise (``"error"``) or warn at the mismatches found."""
+def complain(result: UnitCheck, mode: str) -> UnitCheck:
+    """Raise (``"error"``) or warn at the mismatches found; returns ``result``."""
     if result.mismatches:
         more = len(result.mismatches) - 1
         text = result.mismatches[0] + (f" (and {more} more inconsistent equation(s): "
@@ -120,6 +124,7 @@ def _complain(result: UnitCheck, mode: str) -> None:
             raise UnitError(text + ". Fix the units, or compile with check_units='warn'")
         for msg in result.mismatches:
             warnings.warn(msg, UnitWarning, stacklevel=5)
+    return result
 
 
 def _check_equation(eq, walker) -> None:

@@ -53,29 +53,3 @@ def test_variable_fixed_to_a_parameter_is_a_constant_and_tunable():
     assert np.max(np.abs(res["J.phi"] - (0.1 + 0.4 * np.cos(np.sqrt(10) * t)))) < 1e-7
 
 
-def test_the_incidence_taken_ahead_gives_the_same_reduction(monkeypatch):
-    """The pipeline may take alias elimination's first step (the incidence) while it
-    waits for the cache key; the reduction given it is the reduction without it, and
-    an incidence taken before a residual was replaced is not used but made again."""
-    from acausal.compiler import alias
-    from acausal.library.examples.motor_drive import MotorDrive
-
-    made = []
-    real = alias.incidence
-    monkeypatch.setattr(alias, "incidence", lambda flat: made.append(1) or real(flat))
-
-    def reduced(ahead=False, change=False):
-        flat = flatten(MotorDrive())
-        known = real(flat) if ahead else None
-        if change:        # a residual replaced (by an equal copy) after the incidence
-            eq = next(e for e in flat.equations if e.residual.args)
-            eq.residual = eq.residual.func(*eq.residual.args)
-        made.clear()
-        out, table = eliminate_aliases(flat, known)
-        return ([str(e.residual) for e in out.equations], dict(table.aliases),
-                dict(table.constants)), len(made)
-
-    plain, n_plain = reduced()
-    assert n_plain == 1
-    assert reduced(ahead=True) == (plain, 0)
-    assert reduced(ahead=True, change=True) == (plain, 1)

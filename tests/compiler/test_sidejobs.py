@@ -223,3 +223,44 @@ def test_children_reaped_by_the_system_are_no_error(tmp_path):
         assert not sidejobs._detached
     finally:
         signal.signal(signal.SIGCHLD, old)
+
+
+def test_units_checked_beside_are_reported_as_in_a_compile_that_does_not_fork(
+        fresh_cache, monkeypatch):
+    """Forked, a large compile checks the units beside the front passes and alias
+    elimination: the same mismatch is warned or raised, and a model that also has an
+    error alias elimination finds (an equation that repeats a connection) still fails
+    on its units first, as when the units are checked before the other passes."""
+    import re
+    import warnings
+
+    from acausal.components.units import UnitError, UnitWarning
+    from tests.components.test_units import WRONG, Oscillator
+
+    class Repeated(Oscillator):
+        def equations(self):
+            return [ac.Eq(self.spring.flange_b.phi, self.mass.flange_a.phi)]
+
+    def compile_(model, mode, forked):
+        monkeypatch.setattr(pipeline, "SIDE_JOBS_FROM", 0 if forked else 10**9)
+        return pipeline.compile_model(model, "numpy", cache=True, check_units=mode)
+
+    outcomes = []
+    for forked in (False, True):
+        monkeypatch.setenv("ACAUSAL_CACHE", str(fresh_cache / str(forked)))
+        with pytest.warns(UnitWarning, match=re.escape(WRONG)):
+            out = compile_(Oscillator(), "warn", forked)
+        assert out.report.units.mismatches == [WRONG]
+        assert forked == any("units were checked in a second process" in n
+                             for n in out.report.notes)
+        with pytest.raises(UnitError, match=re.escape(WRONG)):
+            compile_(Oscillator(), "error", forked)
+        with pytest.raises(UnitError, match=re.escape(WRONG)):
+            compile_(Repeated(), "error", forked)
+        with warnings.catch_warnings(record=True) as seen:
+            warnings.simplefilter("always")
+            with pytest.raises(ac.ModelError, match="is redundant") as err:
+                compile_(Repeated(), "warn", forked)
+        assert not isinstance(err.value, UnitError)
+        outcomes.append([str(w.message) for w in seen if w.category is UnitWarning])
+    assert outcomes[0] == outcomes[1] == [WRONG]
