@@ -163,13 +163,8 @@ def _statements(prog, name, assigned: dict, needs: dict) -> list:
     return out
 
 
-def _copy_of(st):
-    """The value a statement only copies, or None."""
-    if st.key == "$0":
-        return st.leaves[0]
-    if st.key == "C[#1.0*$0]" or st.key == "C[$0]":
-        return st.leaves[0]
-    return None
+#: the shapes of statements that only copy their one leaf
+_COPIES = frozenset(("$0", "C[#1.0*$0]", "C[$0]"))
 
 
 class _Schedule:
@@ -182,9 +177,10 @@ class _Schedule:
         self.read = read = set()        # the values the groups read (resolved)
         level = {}
         groups = {}
+        copies = _COPIES
         for st in statements:
-            src = _copy_of(st)
-            if src is not None:
+            if st.key in copies:
+                src = st.leaves[0]
                 alias[st.target] = alias.get(src, src)
                 continue
             lv = 0
@@ -204,10 +200,17 @@ class _Schedule:
             for st in g:
                 slot[st.target] = n
                 n += 1
-        self.slot, self.size = slot, n
+        self.size = n
+        # a copy's place is its original's: then slot answers where() for any value
+        for a, src in alias.items():
+            where = slot.get(src)
+            if where is not None:
+                slot[a] = where
+        self.slot = slot
 
     def where(self, v) -> int:
-        return self.slot[self.alias.get(v, v)]
+        """The position in ``V`` of the value ``v`` (a copy's is its original's)."""
+        return self.slot[v]
 
 
 # numpy's names where they differ from C's (numpy < 2 has no asin, ...), and floor and

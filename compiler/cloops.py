@@ -133,14 +133,15 @@ def _loop(group, sched, arrays) -> list:
     linear, rest = _linear_part(rep)
     lines, body = [], []
     used = range(len(rep.leaves)) if rest is None else _leaves_read(rep, rest)
+    slot = sched.slot           # sched.where, looked up once
     for k in used:
-        pos = _index([sched.where(st.leaves[k]) for st in group], f"I{k}", lines, arrays)
+        pos = _index([slot[st.leaves[k]] for st in group], f"I{k}", lines, arrays)
         body.append(f"double x{k} = w[{pos}];")
     temps, text = _print_group(rep, rest, lambda ref: Emitter("c", ref))
     body += temps
     if linear:
         coefs = ", ".join(repr(c) for c, _ in linear)
-        slots = [sched.where(st.leaves[k]) for _, k in linear for st in group]
+        slots = [slot[st.leaves[k]] for _, k in linear for st in group]
         lines.append(f"static const double C[{len(linear)}] = {{{coefs}}};")
         pos = _index(slots, "J", lines, arrays, i=f"k*{n} + i")
         body.append("double s = 0.0;")
