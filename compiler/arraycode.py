@@ -284,11 +284,17 @@ LONG_SUM = 32
 
 
 def _linear_part(st):
-    """([(coefficient, leaf number)], remaining terms or None) of a long sum: its terms
-    c*x with a number c and a leaf x (a node balance) are one dot product, not one
-    operation each; ``([], None)`` when the statement is not such a sum."""
+    """([(coefficient, leaf number)], remaining terms or None) of a long sum or of a
+    negated one (a node balance solved for one of its currents: ``-(i1 + ... + in)``):
+    its terms c*x with a number c and a leaf x are one dot product, not one operation
+    each (a negation goes into the coefficients and the remaining terms, which is exact
+    in floating point); ``([], None)`` when the statement is not such a sum."""
+    sign = 1
     if st.expr is not None:
         e, leafidx = st.expr
+        if e.is_Mul and len(e.args) == 2 and e.args[0] is sp.S.NegativeOne \
+                and e.args[1].is_Add:
+            e, sign = e.args[1], -1
         if not e.is_Add or len(e.args) <= LONG_SUM:
             return [], None
         terms = [(a, None) for a in e.args]
@@ -300,9 +306,9 @@ def _linear_part(st):
     for d, g in terms:
         c, x = (d, g) if g is not None else _coefficient_leaf(d)
         if x is not None and c is not None and c.is_Number and c.is_finite:
-            linear.append((float(c), leafidx[x]))
+            linear.append((sign * float(c), leafidx[x]))
         else:
-            rest.append((d, g))
+            rest.append((d if sign == 1 else -d, g))
     if len(linear) <= LONG_SUM:
         return [], None
     return linear, rest

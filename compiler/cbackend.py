@@ -5,7 +5,8 @@ from is printed as C99 (:mod:`acausal.compiler.emit`: the same operations in the
 order, so both backends agree to rounding), compiled by the system C compiler into a
 shared library named by the hash of its source and the flags, and loaded with ctypes.
 Every generated function keeps the contract ``f(t, y, p, m, out) -> out``.  The
-compiler runs in a thread of its own while the pipeline goes on (:func:`prepare`), and
+compiler is started as soon as the source is printed and runs while the pipeline goes
+on, a thread waiting for it (:func:`prepare`), and
 a looped program's index arrays are given to the library when it is loaded, not
 compiled (:func:`c_source`).
 
@@ -47,8 +48,8 @@ import numpy as np
 from ..errors import BackendError
 from . import cbuild
 
-__all__ = ["BackendError", "c_source", "build", "attach", "reattach", "compiler_available",
-           "cache_dir", "programs", "prepare"]
+__all__ = ["BackendError", "c_source", "build", "start_build", "attach", "reattach",
+           "compiler_available", "cache_dir", "programs", "prepare"]
 
 PIECE = 100               # lines per piece of a function compiled at -O2
 PIECE_LARGE = 400         # and at -O0
@@ -249,23 +250,45 @@ def build(source: str, cached_only: bool = False,
     translation units of about ``unit_size`` characters (:mod:`acausal.compiler.cbuild`),
     as many compiled at once as there are processors.  The split does not enter the
     name of the library: every split of a source gives the same functions."""
+    if cached_only:
+        lib = _library_path(source)
+        return lib if os.path.exists(lib) else None
+    return start_build(source, unit_size)()
+
+
+def _library_path(source: str) -> str:
     cc = compiler_available()
     if cc is None:
         raise BackendError("no C compiler found (set CC, or install cc/gcc/clang)")
     flags = cbuild.flags_for(source)
     key = hashlib.sha256((source + " ".join([os.path.basename(cc)] + flags)).encode())
-    root = cache_dir()
-    lib = os.path.join(root, f"model_{key.hexdigest()[:24]}.so")
+    return os.path.join(cache_dir(), f"model_{key.hexdigest()[:24]}.so")
+
+
+def start_build(source: str, unit_size: int | None = None):
+    """:func:`build` begun: the compilers are started now, by this thread; returns
+    ``wait()``, which returns the library's path (it may be called from another
+    thread)."""
+    lib = _library_path(source)
     if os.path.exists(lib):
-        return lib
-    if cached_only:
-        return None
+        return lambda: lib
+    cc, flags = compiler_available(), cbuild.flags_for(source)
     units = cbuild.split(source, unit_size or cbuild.UNIT_SIZE, cbuild.jobs()) \
         if len(source) > cbuild.LARGE or unit_size else [source]
-    with cbuild.temporary_dir(root) as tmp:
-        out = cbuild.compile_library(cc, units, flags, tmp)
-        os.replace(out, lib)          # atomic: a concurrent build finds a whole file
-    return lib
+    tmp = cbuild.temporary_dir(cache_dir())
+    try:
+        job = cbuild.Compilation(cc, units, flags, tmp.name)
+    except BaseException:
+        tmp.cleanup()
+        raise
+
+    def wait() -> str:
+        try:
+            os.replace(job.wait(), lib)   # atomic: a concurrent build finds a whole file
+        finally:
+            tmp.cleanup()
+        return lib
+    return wait
 
 
 class _CFunction:
@@ -399,8 +422,8 @@ def programs(code, initial, whens=None, delays=None) -> dict:
 
 
 def prepare(progs: dict):
-    """Print the C source of ``progs`` ({prefix: Program}) now and compile it in a
-    thread; returns ``finish()``, which waits for the compiler and returns the source,
+    """Print the C source of ``progs`` ({prefix: Program}) now, start its compiler, and
+    wait for it in a thread; returns ``finish()``, which waits for the compiler and returns the source,
     its work sizes ({prefix: size}), the library's path and the index arrays
     ({prefix: array}, :func:`c_source`), or raises what printing or building raised.
 
@@ -409,13 +432,14 @@ def prepare(progs: dict):
     outcome, index = {}, {}
     try:
         source, sizes = c_source(progs, index)
+        wait = start_build(source)      # the compiler starts now, not when a thread can
     except Exception as exc:          # noqa: BLE001 - raised where the library is wanted
         outcome["error"] = exc
         return functools.partial(_finish, outcome, None)
 
     def compile_it():
         try:
-            outcome["lib"] = build(source)
+            outcome["lib"] = wait()
         except BaseException as exc:  # noqa: BLE001 - raised by finish()
             outcome["error"] = exc
 

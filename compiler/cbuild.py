@@ -21,9 +21,12 @@ what costs (M1 at ``-O2``: some 15 s more of the compiler).  Hence:
   at ``-O1`` when it has looped programs (:mod:`acausal.compiler.cloops`, marked
   :data:`LOOPED`).  Their loops read index arrays, and on those ``-O1`` gives what
   ``-O2`` gives for less of the compiler's time.  The 1000-section RLC ladder's looped
-  source, 43.6 kB with its index arrays read at run time, compiles in 0.08-0.12 s at
-  ``-O0``, 0.13-0.19 s at ``-O1`` and 0.22-0.28 s at ``-O2``; the model simulates to
-  0.1 s (rtol 1e-6) in a median of 37-45 ms, 17-20 ms and 16-20 ms of 7 runs;
+  source, 12.7 kB with its index arrays read at run time and its ground's current (a
+  sum of 1001 terms) a loop over coefficients, compiles in 0.06-0.07 s at ``-O0``,
+  0.09-0.13 s at ``-O1`` and 0.13-0.15 s at ``-O2`` (means of 8), and the model
+  simulates to 0.1 s (rtol 1e-6) in a median of 26 ms at ``-O0`` and 17-18 ms at
+  ``-O1`` of 9 runs (with a 43.6 kB source that printed the sum term by term: 0.08-0.12,
+  0.13-0.19 and 0.22-0.28 s of gcc; 37-45, 17-20 and 16-20 ms);
 * a larger one is compiled at ``-O0`` in units of at most about :data:`UNIT_SIZE`
   characters, their number a multiple of the processors this process may use, that
   many compilers at a time, and linked into one library (a few units per processor
@@ -45,7 +48,7 @@ import time
 from ..errors import BackendError
 
 __all__ = ["LARGE", "LOOPED", "UNIT", "UNIT_SIZE", "FLAGS", "FLAGS_LARGE", "FLAGS_LOOPED",
-           "flags_for", "jobs", "split", "compile_library", "last_build"]
+           "flags_for", "jobs", "split", "compile_library", "Compilation", "last_build"]
 
 FLAGS = ["-O2", "-fPIC", "-ffp-contract=off"]
 FLAGS_LARGE = ["-O0", "-fPIC", "-ffp-contract=off"]
@@ -102,67 +105,101 @@ def compile_library(cc: str, units: list, flags: list, out_dir: str) -> str:
     """Compile ``units`` (C sources) with ``flags``, at most :func:`jobs` at a time, and
     link them into ``out_dir/model.so``; returns that path.  The first compiler that
     fails stops the others and raises :class:`BackendError` with its message."""
-    t0 = time.perf_counter()
-    n_jobs = min(jobs(), len(units))
-    objects = [os.path.join(out_dir, f"model{k}.o") for k in range(len(units))]
-    todo = list(range(len(units)))[::-1]
-    lock = threading.Lock()
-    running, errors = {}, []
+    return Compilation(cc, units, flags, out_dir).wait()
 
-    def worker():
+
+class Compilation:
+    """:func:`compile_library` in two steps: the compilers of the first units are
+    started when this is made (by the caller's thread: a thread of its own would wait
+    for the interpreter's lock while the caller runs Python, 30-45 ms on the 1000-section
+    ladder), and :meth:`wait` compiles the rest and links (it may run in another
+    thread: the compilers are processes, waited for without the lock)."""
+
+    def __init__(self, cc: str, units: list, flags: list, out_dir: str):
+        self.t0 = time.perf_counter()
+        self.cc, self.units, self.flags, self.out_dir = cc, units, flags, out_dir
+        self.n_jobs = min(jobs(), len(units))
+        self.objects = [os.path.join(out_dir, f"model{k}.o") for k in range(len(units))]
+        self.todo = list(range(len(units)))[::-1]
+        self.lock = threading.Lock()
+        self.running, self.errors = {}, []
+        self.first = []
+        for _ in range(self.n_jobs):
+            started = self._launch(self.todo.pop())
+            if started is None:
+                break
+            self.first.append(started)
+        if self.errors:
+            raise BackendError(self.errors[0])
+
+    def _launch(self, k):
+        """Start the compiler of unit k: (k, process), or None (the error recorded and
+        the other compilers stopped)."""
+        src = os.path.join(self.out_dir, f"model{k}.c")
+        with open(src, "w") as f:
+            f.write(self.units[k])
+        with self.lock:
+            if self.errors:
+                return None
+            try:
+                proc = subprocess.Popen([self.cc, *self.flags, "-c", "-o", self.objects[k],
+                                         src], stdout=subprocess.PIPE,
+                                        stderr=subprocess.PIPE, text=True)
+            except OSError as exc:
+                self.errors.append(f"the C compiler {self.cc} could not be started: {exc}")
+                _stop(self.running)
+                return None
+            self.running[k] = proc
+        return k, proc
+
+    def _worker(self, started) -> None:
+        """Wait for one compiler, then start the next unit, until none is left."""
+        k, proc = started
         while True:
-            with lock:
-                if errors or not todo:
-                    return
-                k = todo.pop()
-            src = os.path.join(out_dir, f"model{k}.c")
-            with open(src, "w") as f:
-                f.write(units[k])
-            with lock:
-                if errors:
-                    return
-                try:
-                    proc = subprocess.Popen([cc, *flags, "-c", "-o", objects[k], src],
-                                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                            text=True)
-                except OSError as exc:
-                    errors.append(f"the C compiler {cc} could not be started: {exc}")
-                    _stop(running)
-                    return
-                running[k] = proc
             _, err = proc.communicate()
-            with lock:
-                del running[k]
-                if proc.returncode != 0 and not errors:
-                    errors.append(_failure(cc, err, k, len(units)))
-                    _stop(running)        # what they compile would be thrown away
+            with self.lock:
+                del self.running[k]
+                if proc.returncode != 0 and not self.errors:
+                    self.errors.append(_failure(self.cc, err, k, len(self.units)))
+                    _stop(self.running)       # what they compile would be thrown away
+                if self.errors or not self.todo:
+                    return
+                k = self.todo.pop()
+            started = self._launch(k)
+            if started is None:
+                return
+            k, proc = started
 
-    threads = [threading.Thread(target=worker, name=f"acausal-cc-{k}", daemon=True)
-               for k in range(n_jobs)]
-    try:
-        for th in threads:
-            th.start()
-        for th in threads:
-            th.join()
-    except BaseException:
-        # interrupted: no compiler outlives the build directory
-        with lock:
-            errors.append("interrupted")
-            _stop(running)
-        raise
-    if errors:
-        raise BackendError(errors[0])
-    t1 = time.perf_counter()
-    lib = os.path.join(out_dir, "model.so")
-    proc = subprocess.run([cc, "-shared", "-o", lib, *objects, "-lm"],
-                          capture_output=True, text=True)
-    if proc.returncode != 0:
-        raise BackendError(f"linking the generated model failed:\n{proc.stderr[-2000:]}")
-    last_build.clear()
-    last_build.update(units=len(units), jobs=n_jobs, flags=" ".join(flags),
-                      characters=sum(map(len, units)), compile_s=t1 - t0,
-                      link_s=time.perf_counter() - t1)
-    return lib
+    def wait(self) -> str:
+        """Compile what is left, link, and return the library's path."""
+        threads = [threading.Thread(target=self._worker, args=(s,), name=f"acausal-cc-{k}",
+                                    daemon=True) for k, s in enumerate(self.first[1:])]
+        try:
+            for th in threads:
+                th.start()
+            if self.first:
+                self._worker(self.first[0])
+            for th in threads:
+                th.join()
+        except BaseException:
+            # interrupted: no compiler outlives the build directory
+            with self.lock:
+                self.errors.append("interrupted")
+                _stop(self.running)
+            raise
+        if self.errors:
+            raise BackendError(self.errors[0])
+        t1 = time.perf_counter()
+        lib = os.path.join(self.out_dir, "model.so")
+        proc = subprocess.run([self.cc, "-shared", "-o", lib, *self.objects, "-lm"],
+                              capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise BackendError(f"linking the generated model failed:\n{proc.stderr[-2000:]}")
+        last_build.clear()
+        last_build.update(units=len(self.units), jobs=self.n_jobs, flags=" ".join(self.flags),
+                          characters=sum(map(len, self.units)), compile_s=t1 - self.t0,
+                          link_s=time.perf_counter() - t1)
+        return lib
 
 
 def _stop(running: dict) -> None:

@@ -199,6 +199,41 @@ def test_a_ladder_runs_on_looped_c(monkeypatch):
     res, t = _against_exact(compiled, n)
 
 
+def test_a_negated_long_sum_is_one_dot_product(monkeypatch):
+    """The ground shared by a 40-section ladder's capacitors has a current that is the
+    negated sum of the others, -(i_1 + ... + i_41) (a node balance solved for it):
+    the array code and the looped C read its terms as one dot product, not one
+    operation (and one C line) each, and compute what the scalar code computes."""
+    from acausal.compiler.arraycode import LONG_SUM, _expr_statement, _linear_part
+    n = 40
+    compiled = ac.compile(Ladder(n), backend="numpy", cache=False)
+    prog = compiled.code.program
+    negated = [e for e in prog.assigned if e.is_Mul and e.args[0] == -1
+               and e.args[1].is_Add and len(e.args[1].args) > LONG_SUM]
+    assert len(negated) == 1
+    e = negated[0]
+    st = _expr_statement(("a", 0), e, {q: ("y", k) for k, q in
+                                       enumerate(sorted(e.free_symbols, key=str))})
+    linear, rest = _linear_part(st)
+    assert len(linear) == n + 1 and rest == []
+    # the dot product is the expression: at random values of its leaves
+    rng = np.random.default_rng(1)
+    leaves = {q: rng.uniform(-1, 1) for q in e.free_symbols}
+    by_number = {k: leaves[q] for q, k in st.expr[1].items()}
+    dot = sum(c * by_number[k] for c, k in linear)
+    assert abs(dot - float(e.xreplace(leaves))) <= 1e-13 * sum(map(abs, leaves.values()))
+    _compare(compiled.code, compiled.p, np.random.default_rng(3))
+    if compiler_available():
+        monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
+        looped = ac.compile(Ladder(n), backend="c", cache=False)
+        source = looped.code.c_source
+        assert f"for (int k = 0; k < {n + 1}; ++k) s += C[k]*w[" in source
+        code = looped.code
+        _compare(code, looped.p, np.random.default_rng(5), arrays={
+            name: getattr(code, name) for name in
+            ("residual", "jacobian", "roots", "scales", "expand")})
+
+
 @pytest.mark.skipif(not compiler_available(), reason="no C compiler")
 def test_looped_c_reads_its_index_arrays_at_run_time(tmp_path, monkeypatch):
     """A looped library is given its index arrays when it is loaded: two ladders alive

@@ -63,7 +63,8 @@ def test_a_split_build_computes_bitwise_what_one_unit_does(model_class, t_end, t
     # the same source in units of about 600 characters, in a cache of its own (the
     # library's name does not depend on the split)
     monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path / "split"))
-    monkeypatch.setattr(cbackend, "build", functools.partial(cbackend.build, unit_size=600))
+    monkeypatch.setattr(cbackend, "start_build",
+                        functools.partial(cbackend.start_build, unit_size=600))
     split = ac.compile(model_class(), backend="c", cache=False)
     assert cbuild.last_build["units"] >= 4
     assert split.code.c_source == one.code.c_source
@@ -116,7 +117,8 @@ def test_auto_falls_back_to_numpy_when_a_unit_fails_and_c_raises(tmp_path, monke
         return source + BROKEN, sizes
 
     monkeypatch.setattr(cbackend, "c_source", broken_source)
-    monkeypatch.setattr(cbackend, "build", functools.partial(cbackend.build, unit_size=600))
+    monkeypatch.setattr(cbackend, "start_build",
+                        functools.partial(cbackend.start_build, unit_size=600))
     compiled = ac.compile(LimitedHeater(), backend="auto", cache=False)
     assert compiled.backend == "numpy"
     note = [n for n in compiled.report.notes if "C backend is not available" in n]
