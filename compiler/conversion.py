@@ -404,6 +404,10 @@ def convert(system, structure: Structure | None = None, values: dict | None = No
         steps, numeric = [], []
         for rows in blocks:
             exact, symbolic = _block_matrix(system, rows, tight, res, chains, values, cache)
+            if len(rows) == 1 and len(exact) == 1:
+                (row,) = exact.values()
+                if len(row) == 1 and next(iter(row.values())) != 0:
+                    continue     # one equation, one non-zero constant: regular
             key = tuple((i, tuple(sorted(row.items()))) for i, row in sorted(exact.items()))
             if key not in nulls:             # blocks untouched by a round keep their answer
                 nulls[key] = _null_vectors(exact) if exact else []
