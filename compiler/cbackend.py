@@ -423,9 +423,10 @@ def programs(code, initial, whens=None, delays=None) -> dict:
 
 def prepare(progs: dict):
     """Print the C source of ``progs`` ({prefix: Program}) now, start its compiler, and
-    wait for it in a thread; returns ``finish()``, which waits for the compiler and returns the source,
-    its work sizes ({prefix: size}), the library's path and the index arrays
-    ({prefix: array}, :func:`c_source`), or raises what printing or building raised.
+    wait for it in a thread; returns ``finish()``, which waits for the compiler and
+    returns the source, its work sizes ({prefix: size}), the library's path and the
+    index arrays ({prefix: array}, :func:`c_source`), or raises what printing or
+    building raised.
 
     The compiler is a process of its own: while it runs, this one goes on with the rest
     of the compile (the pipeline calls this as soon as the Programs are made)."""
