@@ -43,30 +43,13 @@ class AliasTable:
         return self.aliases.get(name, (1, name))
 
 
-def _incidence(flat: FlatModel) -> tuple:
-    """Each variable's number, and for each number the indices of the equations that
-    read it (None for none)."""
-    order = {v.symbol: k for k, v in enumerate(flat.variables)}
-    by_var = [None] * len(order)
-    for i, eq in enumerate(flat.equations):
-        for q in symbols_of(eq.residual):
-            k = order.get(q)
-            if k is not None:
-                readers = by_var[k]
-                if readers is None:
-                    by_var[k] = {i}
-                else:
-                    readers.add(i)
-    return order, by_var
-
-
 @gc_paused
 def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     """Return a new FlatModel without trivial equations, and the alias table."""
     syms = [v.symbol for v in flat.variables]
     # the variables by number: the union-find, the constants and the incidence are kept
     # on numbers (a look-up by symbol hashes it in Python, a list is indexed in C)
-    order, by_var = _incidence(flat)
+    order = {v.symbol: k for k, v in enumerate(flat.variables)}
     differentiated = set(flat.derivatives)
     params = frozenset(p.symbol for p in flat.parameters)
     # the union-find on variable numbers: up[k] is k's parent, sign[k] = +-1 with
@@ -105,7 +88,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     # of N + 2 ports share one) keeps the worklist linear in the incidence.
     eqs = list(flat.equations)
     alive = [True] * len(eqs)
-    # by_var: variable number -> the equations that read it
+    by_var = [None] * len(order)     # variable number -> the equations that read it
 
     def enter(i):
         for q in symbols_of(eqs[i].residual):
@@ -117,6 +100,8 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
                 else:
                     readers.add(i)
 
+    for i in range(len(eqs)):
+        enter(i)
     queue = set(range(len(eqs)))
     while queue:
         touched = set()
