@@ -5,7 +5,7 @@ PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 TEST_STAMP := $(VENV)/.installed-test
 
-.PHONY: demo test bench docs clean
+.PHONY: demo test test-msl bench docs clean
 
 $(STAMP): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -24,6 +24,10 @@ demo: $(STAMP)
 # one worker per core (pytest-xdist): the suite takes half the time on two
 test: $(TEST_STAMP)
 	$(PY) -m pytest -q -n auto
+
+# every MSL example against its reference result (make test runs a subset of them)
+test-msl: $(TEST_STAMP)
+	$(PY) -m pytest -q -n auto -m "" tests/msl
 
 bench: $(TEST_STAMP)
 	$(PY) benchmarks/run_all.py

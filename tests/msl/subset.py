@@ -1,0 +1,7 @@
+"""The MSL examples that ``make test`` compares with their references: one or a few of
+each package, chosen to reach every kind of component and event handling the examples
+use; ``make test-msl`` (and CI) compares all of them."""
+
+QUICK = {
+    "Modelica.Mechanics.Rotational.Examples.First",
+}
