@@ -24,7 +24,8 @@ _EXPORTS = {
                     "Variable", "When", "assign", "connect", "delay", "der", "if_else",
                     "no_event", "pre", "ref", "reinit", "replaces", "sample", "sign", "time",
                     "when"),
-    ".errors": ("BackendError", "InitializationFailed", "SimulationError"),
+    ".errors": ("BackendError", "CacheError", "CacheWarning", "InitializationFailed",
+                "SimulationError"),
     ".result": ("Result",),
     ".runtime": ("CompiledModel",),
     ".simulation": ("compile", "initial_values", "simulate"),
@@ -49,7 +50,8 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "SimulationError", "InitializationFailed", "UnitError", "UnitWarning",
            "linearize", "linearize_grid", "linearize_symbolic", "StateSpace", "steady_state",
            "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
-           "energy_balance", "is_passive", "estimate", "BackendError", "export_fmu",
+           "energy_balance", "is_passive", "estimate", "BackendError", "CacheError",
+           "CacheWarning", "export_fmu",
            "load_result", "animate", "sweep", "ensemble", "sqrt", "exp", "log", "log10", "sin", "cos",
            "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi"]
 # ac.abs, ac.min and ac.max exist too, but not in __all__: `import *` must not shadow builtins

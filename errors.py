@@ -7,7 +7,8 @@ from __future__ import annotations
 
 from typing import Sequence
 
-__all__ = ["SimulationError", "InitializationFailed", "BackendError"]
+__all__ = ["SimulationError", "InitializationFailed", "BackendError", "CacheError",
+           "CacheWarning"]
 
 
 class SimulationError(RuntimeError):
@@ -49,3 +50,13 @@ class InitializationFailed(RuntimeError):
 class BackendError(RuntimeError):
     """``backend="c"`` was asked for and the generated C cannot be built (no C compiler,
     or the compiler failed); ``backend="auto"`` falls back to numpy instead."""
+
+
+class CacheError(ValueError):
+    """The compile cache is configured wrongly (a malformed ``ACAUSAL_CACHE_SIZE``)."""
+
+
+class CacheWarning(UserWarning):
+    """The compile cache was skipped or repaired: a directory that cannot be created,
+    written or trusted (compiling and running go on without it), or an entry or library
+    that failed its checksum (removed, and compiled or built again)."""

@@ -24,7 +24,8 @@ over the backend (and C compiler) and the :func:`fingerprint` of the compiler:
   tree before flattening, without sympy: each instance's path, class, modifications,
   constructor arguments and plain attributes (structural parameters); every class's
   plain attributes; the source files of the model's own modules and, transitively, of
-  the project modules they reference (with their plain constants).  ``<cache>/models/tree-<key>`` names the flat key it led
+  the modules they reference (with their plain constants), installed component
+  libraries included; other installed packages they reach by their versions.  ``<cache>/models/tree-<key>`` names the flat key it led
   to.  No tree key (only the flat one) when a part has no description that is the same
   in every process: a class without a source file (a notebook, ``python -c``), a local
   class, a value whose repr is an address.  Not seen by a tree key: equations reading
@@ -36,9 +37,14 @@ ports, the model library, the model functions) and the versions of Python, numpy
 sympy (sympy's release file, found without importing it).
 
 Writes are atomic (temporary file, then ``os.replace``): processes compiling at once each
-find a whole entry or none.  An unreadable entry is removed and compiled again.  The
-cache is pruned to ``$ACAUSAL_CACHE_SIZE`` bytes (default 512 MiB), least recently used
-entries and C libraries first; ``$ACAUSAL_COMPILE_CACHE=0`` switches it off.
+find a whole entry or none.  Every entry, side file and index is sealed with the SHA-256
+of its bytes, and every C library has its checksum beside it, checked before anything is
+unpickled or loaded; a damaged one is removed, with one line saying so, and compiled
+again.  The cache directory is private, and a file that is not this user's is not read
+(:mod:`acausal.compiler.cachefiles`, which also skips a cache that cannot be created or
+written, with one warning).  The cache is pruned to ``$ACAUSAL_CACHE_SIZE`` bytes
+(default 512 MiB), least recently used entries and C libraries first;
+``$ACAUSAL_COMPILE_CACHE=0`` switches the entries off.
 """
 from __future__ import annotations
 
@@ -48,12 +54,12 @@ import marshal
 import math
 import os
 import pickle
-import tempfile
 import time as _time
 from dataclasses import fields, is_dataclass, replace
 
 import numpy as np
 
+from . import cachefiles as files
 from .cachekeys import fingerprint, flat_key, tree_key
 from .lazycode import GeneratedModule, ModuleSource, install_array_code
 
@@ -61,7 +67,7 @@ __all__ = ["LoadedCode", "ParameterFunction", "portable", "load_notes", "flat_ke
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
            "models_dir"]
 
-DEFAULT_SIZE = 512 * 2**20
+DEFAULT_SIZE = files.DEFAULT_SIZE
 _MAGIC = importlib.util.MAGIC_NUMBER
 
 
@@ -249,10 +255,12 @@ def _codes(mc) -> dict:
 
 
 def _load_program(path: str, which: str):
-    """The Program of one code from an entry's side file, or None (pruned, unreadable)."""
+    """The Program of one code from an entry's side file, or None (pruned, damaged)."""
+    data = files.read_sealed(path, "side file")
+    if data is None:
+        return None
     try:
-        with open(path, "rb") as f:
-            return pickle.load(f).get(which)
+        return pickle.loads(data).get(which)
     except Exception:      # noqa: BLE001 - without it only what needs a Program fails
         return None
 
@@ -297,49 +305,59 @@ def load_notes(mc) -> list:
 
 # -- the store ----------------------------------------------------------------------------------
 def enabled() -> bool:
-    return os.environ.get("ACAUSAL_COMPILE_CACHE", "1").strip().lower() not in (
-        "0", "no", "off", "false")
+    """Whether models are kept in the compile cache (``$ACAUSAL_COMPILE_CACHE``); a
+    malformed ``$ACAUSAL_CACHE_SIZE`` is an error here, before anything is compiled."""
+    if os.environ.get("ACAUSAL_COMPILE_CACHE", "1").strip().lower() in (
+            "0", "no", "off", "false"):
+        return False
+    files.size_limit()
+    return True
 
 
-def models_dir() -> str:
-    from .cbackend import cache_dir
-    path = os.path.join(cache_dir(), "models")
-    os.makedirs(path, exist_ok=True)
-    return path
+def models_dir() -> str | None:
+    """``<cache>/models``, or None when the cache cannot be used (warned once,
+    :mod:`acausal.compiler.cachefiles`)."""
+    return files.subdir("models")
 
 
 def _read_index(tree: str) -> str | None:
-    try:
-        with open(os.path.join(models_dir(), f"tree-{tree}")) as f:
-            key = f.read().strip()
-    except OSError:
+    """The flat key the tree key ``tree`` leads to, from its sealed index file (which
+    names the tree key it was written for: an index copied from another is refused)."""
+    where = models_dir()
+    data = None if where is None else files.read_sealed(
+        os.path.join(where, f"tree-{tree}"), "index")
+    if data is None:
         return None
-    return key if key.isalnum() else None
+    named, _, key = data.decode("ascii", "replace").partition("\n")
+    if named != tree or not key.isalnum():
+        files.discard(os.path.join(where, f"tree-{tree}"), "index", "names another tree key")
+        return None
+    return key
 
 
 def lookup(key: str | None = None, tree: str | None = None):
     """The cached ModelCode for a flat key or a tree key (tried in that order), or None.
-    Returns (ModelCode, seconds spent loading).  An unreadable entry is removed.
-    Entries this process is still storing beside its work (:mod:`sidejobs`) are
-    waited for first."""
+    Returns (ModelCode, seconds spent loading).  An entry is unpickled only when its
+    checksum holds (a damaged one is removed, with one line saying so, and compiled
+    again).  Entries this process is still storing beside its work (:mod:`sidejobs`)
+    are waited for first."""
     from .sidejobs import settle
     settle()
     if key is None and tree is not None:
         key = _read_index(tree)
-    if key is None:
+    where = models_dir() if key is not None else None
+    if where is None:
         return None
-    path = os.path.join(models_dir(), f"{key}.pkl")
+    path = os.path.join(where, f"{key}.pkl")
     t0 = _time.perf_counter()
-    try:
-        with open(path, "rb") as f:
-            data = f.read()
-    except OSError:
+    data = files.read_sealed(path)
+    if data is None:
         return None
     try:
         mc = pickle.loads(data)
         if not (is_dataclass(mc) and {f.name for f in fields(mc)} >= {"code", "report"}):
             raise ValueError("not a compiled model")
-    except Exception:       # noqa: BLE001 - a corrupt or foreign entry: compile again
+    except Exception:       # noqa: BLE001 - a foreign entry (whole, but not ours): compile again
         _remove(path)
         return None
     side = _side_file(path)
@@ -357,24 +375,27 @@ def lookup(key: str | None = None, tree: str | None = None):
 
 def store(key: str, mc, tree: str | None = None) -> None:
     """Write the portable form of ``mc`` under ``key`` (and the index for ``tree``),
-    atomically; a cache that cannot be written is skipped, never an error."""
+    sealed (:func:`acausal.compiler.cachefiles.seal`) and atomically; a cache that
+    cannot be written is skipped with one warning, never an error."""
+    root = models_dir()
+    if root is None:
+        return
     try:
-        root = models_dir()
         path = os.path.join(root, f"{key}.pkl")
         # the side file first: an entry whose fallback sources are printed from its
         # Programs is only found with them (a concurrent lookup finds both or neither)
         programs = {w: getattr(c, "program", None) for w, c in _codes(mc).items()}
         try:
-            _atomic_write(_side_file(path),
-                          pickle.dumps(programs, protocol=pickle.HIGHEST_PROTOCOL))
-            sided = True
+            sided = files.write_sealed(_side_file(path), pickle.dumps(
+                programs, protocol=pickle.HIGHEST_PROTOCOL))
         except Exception:      # noqa: BLE001 - then the entry keeps every source printed
             sided = False
-        _atomic_write(path, pickle.dumps(portable(mc, entry=sided),
-                                         protocol=pickle.HIGHEST_PROTOCOL))
+        if not files.write_sealed(path, pickle.dumps(portable(mc, entry=sided),
+                                                     protocol=pickle.HIGHEST_PROTOCOL)):
+            return
         if tree is not None:
             store_index(tree, key)
-        _prune(os.path.dirname(root))
+        files.prune(os.path.dirname(root))
     except Exception:      # noqa: BLE001 - the cache saves time; it never fails a compile
         return
 
@@ -387,21 +408,9 @@ def _side_file(path: str) -> str:
 
 def store_index(tree: str, key: str) -> None:
     """Record that the tree key ``tree`` leads to the flat key ``key``."""
-    try:
-        _atomic_write(os.path.join(models_dir(), f"tree-{tree}"), key.encode())
-    except OSError:
-        return
-
-
-def _atomic_write(path: str, data: bytes) -> None:
-    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(path), prefix=".tmp-")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        _remove(tmp)
-        raise
+    where = models_dir()
+    if where is not None:
+        files.write_sealed(os.path.join(where, f"tree-{tree}"), f"{tree}\n{key}".encode())
 
 
 def _remove(path: str) -> None:
@@ -410,30 +419,5 @@ def _remove(path: str) -> None:
 
 
 def _prune(root: str) -> None:
-    """Remove least recently used entries and libraries until the cache fits its size;
-    an entry's side file goes with it (and counts with it)."""
-    limit = int(os.environ.get("ACAUSAL_CACHE_SIZE", DEFAULT_SIZE))
-    items = []
-    for d in (root, os.path.join(root, "models")):
-        for entry in os.scandir(d):
-            name = entry.name
-            if name.endswith(".programs.pkl"):
-                continue
-            if name.endswith((".so", ".pkl")) or name.startswith("tree-"):
-                try:
-                    st = entry.stat()
-                except OSError:
-                    continue
-                size, paths = st.st_size, [entry.path]
-                if name.endswith(".pkl"):
-                    paths.append(_side_file(entry.path))
-                    with contextlib.suppress(OSError):
-                        size += os.stat(paths[1]).st_size
-                items.append((st.st_mtime, paths, size))
-    total = sum(s for _, _, s in items)
-    for _, paths, size in sorted(items):
-        if total <= limit:
-            break
-        for p in paths:     # a library still named by an entry is rebuilt on load
-            _remove(p)
-        total -= size
+    """:func:`acausal.compiler.cachefiles.prune`."""
+    files.prune(root)

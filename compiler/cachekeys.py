@@ -250,11 +250,19 @@ def _file_hash(path: str) -> str:
     return known[2]
 
 
-def _outside_project(path: str) -> bool:
-    """Installed code (the standard library, site-packages): versioned elsewhere."""
+_INSTALLED = ("site-packages", "dist-packages")
+
+
+def _where(path: str) -> str:
+    """``"installed"`` (a package in site-packages), ``"python"`` (the standard
+    library, versioned with the interpreter) or ``"project"`` (anything else)."""
     path = os.path.abspath(path)
+    if any(part in _INSTALLED for part in path.split(os.sep)):
+        return "installed"
     prefixes = {sys.prefix, sys.base_prefix, sys.exec_prefix}
-    return any(path.startswith(os.path.abspath(p) + os.sep) for p in prefixes)
+    if any(path.startswith(os.path.abspath(p) + os.sep) for p in prefixes):
+        return "python"
+    return "project"
 
 
 def _plain(x, depth=0) -> str:
@@ -300,10 +308,20 @@ def _fingerprinted(name: str) -> bool:
                                      or f"{parts[1]}.py" in _COMPILER_FILES)
 
 
-def _module_closure(modules: list) -> list:
-    """The project modules (not installed ones) that ``modules`` reference through their
-    globals, transitively: the code an ``equations()`` can call."""
-    seen, order, stack = set(), [], list(modules)
+def _module_closure(modules: list) -> tuple[list, list]:
+    """(modules, packages): the modules that ``modules`` (those of the model's classes)
+    reference through their globals, transitively -- the code an ``equations()`` can
+    call -- whose sources the key covers; and the installed packages outside them that
+    they reach, which the key covers by their versions.
+
+    Covered by their sources: the project's modules and every module of an installed
+    package that one of the model's classes comes from (a component library in
+    site-packages).  Not followed: the standard library (the interpreter's version is in
+    the key), acausal's own compiler and library (its :func:`fingerprint`), and other
+    installed packages (their version: a change inside them that keeps the version is
+    not seen)."""
+    own = {m.split(".")[0] for m in modules}
+    seen, order, stack, packages = set(), [], list(modules), set()
     while stack:
         name = stack.pop()
         if name in seen:
@@ -317,8 +335,12 @@ def _module_closure(modules: list) -> list:
                     "built-in", "frozen"):
                 continue
             raise _Unstable(f"module {name} has no source file")
-        if _outside_project(path) or _fingerprinted(name):
-            continue          # installed code has versions; the package, a fingerprint
+        where = _where(path)
+        if where == "python" or _fingerprinted(name):
+            continue          # versioned with the interpreter; the package, a fingerprint
+        if where == "installed" and name.split(".")[0] not in own:
+            packages.add(name.split(".")[0])
+            continue
         order.append(name)
         for v in vars(mod).values():
             if isinstance(v, types.ModuleType):
@@ -329,7 +351,17 @@ def _module_closure(modules: list) -> list:
             elif isinstance(v, (types.FunctionType, type)) and isinstance(
                     getattr(v, "__module__", None), str):
                 stack.append(v.__module__)
-    return sorted(order)
+    return sorted(order), sorted(packages)
+
+
+def _describe_package(name: str, h) -> None:
+    """An installed package by its version (or its ``__init__``'s source)."""
+    mod = sys.modules.get(name)
+    version = getattr(mod, "__version__", None)
+    if not isinstance(version, str):
+        path = getattr(mod, "__file__", None)
+        version = _file_hash(path) if path else "unknown"
+    h("package", name, version)
 
 
 def _describe_module(name: str, h) -> None:
@@ -389,8 +421,11 @@ def tree_key(model, backend: str) -> str | None:
                 stack.append((f"{path}.{name}" if path else name, child))
         for c in classes:
             h("class", c.__module__, c.__qualname__, *_class_attributes(c))
-        for name in _module_closure(sorted(modules)):
+        described, packages = _module_closure(sorted(modules))
+        for name in described:
             _describe_module(name, h)
+        for name in packages:
+            _describe_package(name, h)
         return h.hexdigest()
     except (_Unstable, OSError, AttributeError):
         return None

@@ -41,12 +41,13 @@ import functools
 import hashlib
 import os
 import shutil
+import tempfile
 import threading
 
 import numpy as np
 
 from ..errors import BackendError
-from . import cbuild
+from . import cachefiles, cbuild
 
 __all__ = ["BackendError", "c_source", "build", "start_build", "attach", "reattach",
            "compiler_available", "cache_dir", "programs", "prepare"]
@@ -69,11 +70,10 @@ def compiler_available() -> str | None:
     return None
 
 
-def cache_dir() -> str:
-    root = os.environ.get("ACAUSAL_CACHE") or os.path.join(
-        os.path.expanduser("~"), ".cache", "acausal")
-    os.makedirs(root, exist_ok=True)
-    return root
+def cache_dir() -> str | None:
+    """The compile cache's directory, or None when it cannot be used (then a library is
+    built in a temporary directory and loaded from there, :mod:`.cachefiles`)."""
+    return cachefiles.root()
 
 
 # -- printing ------------------------------------------------------------------------------
@@ -252,41 +252,58 @@ def build(source: str, cached_only: bool = False,
     name of the library: every split of a source gives the same functions."""
     if cached_only:
         lib = _library_path(source)
-        return lib if os.path.exists(lib) else None
+        return lib if cachefiles.library_ok(lib) else None
     return start_build(source, unit_size)()
 
 
 def _library_path(source: str) -> str:
+    """Where the library of ``source`` is kept: in the cache, or (no cache) a name that
+    :func:`acausal.compiler.cachefiles.load_library` knows for this process only."""
     cc = compiler_available()
     if cc is None:
         raise BackendError("no C compiler found (set CC, or install cc/gcc/clang)")
     flags = cbuild.flags_for(source)
     key = hashlib.sha256((source + " ".join([os.path.basename(cc)] + flags)).encode())
-    return os.path.join(cache_dir(), f"model_{key.hexdigest()[:24]}.so")
+    name = f"model_{key.hexdigest()[:24]}.so"
+    root = cache_dir()
+    return os.path.join(root, name) if root is not None else \
+        os.path.join(tempfile.gettempdir(), "acausal-no-cache", name)
 
 
 def start_build(source: str, unit_size: int | None = None):
     """:func:`build` begun: the compilers are started now, by this thread; returns
     ``wait()``, which returns the library's path (it may be called from another
-    thread)."""
+    thread).  A library found in the cache is taken once its checksum holds
+    (:func:`acausal.compiler.cachefiles.library_ok`; a damaged one is built again)."""
     lib = _library_path(source)
-    if os.path.exists(lib):
+    if cachefiles.library_ok(lib):
         return lambda: lib
     cc, flags = compiler_available(), cbuild.flags_for(source)
     units = cbuild.split(source, unit_size or cbuild.UNIT_SIZE, cbuild.jobs()) \
         if len(source) > cbuild.LARGE or unit_size else [source]
-    tmp = cbuild.temporary_dir(cache_dir())
+    root = cache_dir()
+    if root is None:          # no cache: built aside, loaded, and the directory removed
+        tmp = cachefiles.transient_build_dir()
+        where = tmp.__enter__()
+        cleanup = functools.partial(tmp.__exit__, None, None, None)
+    else:
+        tmp = cbuild.temporary_dir(root)
+        where, cleanup = tmp.name, tmp.cleanup
     try:
-        job = cbuild.Compilation(cc, units, flags, tmp.name)
+        job = cbuild.Compilation(cc, units, flags, where)
     except BaseException:
-        tmp.cleanup()
+        cleanup()
         raise
 
     def wait() -> str:
         try:
-            os.replace(job.wait(), lib)   # atomic: a concurrent build finds a whole file
+            built = job.wait()
+            if root is None:
+                cachefiles.load_transient(lib, built)
+            else:     # atomic, its checksum first: a concurrent build finds a whole file
+                cachefiles.publish_library(built, lib)
         finally:
-            tmp.cleanup()
+            cleanup()
         return lib
     return wait
 
@@ -341,7 +358,7 @@ def attach(code, lib_path: str, prefix: str, n_work: int, index=None):
                 n_out[name] = len(prog.functions[name])
     code.c_layout = {"prefix": prefix, "n_work": n_work, "sizes": sizes, "n_out": n_out,
                      "index": index}
-    _wrap(code, ctypes.CDLL(lib_path), code.c_layout)
+    _wrap(code, cachefiles.load_library(lib_path), code.c_layout)
     code.library = lib_path
     return code
 
@@ -384,14 +401,13 @@ def reattach(code, lib_path: str, source: str, layout: dict) -> str:
     (another machine, a cleaned cache).  Returns the path of the library in use; raises
     :class:`BackendError` when it can be neither loaded nor built."""
     try:
-        if not os.path.exists(lib_path):
-            # dlopen would hand back a deleted library still mapped in this process
-            raise OSError(f"{lib_path} is gone")
-        lib = ctypes.CDLL(lib_path)
+        # verified first (a damaged library is removed); and dlopen would hand back a
+        # deleted library still mapped in this process
+        lib = cachefiles.load_library(lib_path)
     except OSError:
         lib_path = build(source)
         try:
-            lib = ctypes.CDLL(lib_path)
+            lib = cachefiles.load_library(lib_path)
         except OSError as exc:
             raise BackendError(f"the rebuilt library {lib_path} does not load: {exc}") from exc
     _wrap(code, lib, layout)

@@ -139,7 +139,8 @@ def _load(cached_only: bool) -> None:
             path = build(source)
         if path is None:
             return
-        lib = ctypes.CDLL(path)
+        from ..compiler.cachefiles import load_library
+        lib = load_library(path)
     except (BackendError, OSError):
         _lib, _failed_with = False, compiler_available()
         return

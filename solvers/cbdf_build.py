@@ -45,7 +45,9 @@ def build_in_background() -> None:
         if _builder is not None or library(cached_only=True) is not None:
             return
         from ..compiler.cbackend import cache_dir, compiler_available
-        if compiler_available() is None or _building(os.path.join(cache_dir(), _MARKER)):
+        root = cache_dir()       # None: no cache to build into (a run builds in the call)
+        if root is None or compiler_available() is None or \
+                _building(os.path.join(root, _MARKER)):
             return
         _builder = _spawn_builder()
 
@@ -128,7 +130,10 @@ def _build_detached() -> None:
         except OSError:
             pass
     from ..compiler.cbackend import cache_dir
-    marker = os.path.join(cache_dir(), _MARKER)
+    root = cache_dir()
+    if root is None:
+        return
+    marker = os.path.join(root, _MARKER)
     for _ in range(2):
         try:
             fd = os.open(marker, os.O_CREAT | os.O_EXCL | os.O_WRONLY)
