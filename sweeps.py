@@ -10,11 +10,15 @@ per name, the swept parameters as coordinates along ``run``, and per run ``succe
 and ``message``.  A run that fails keeps what it computed (NaN after the failure) and
 never loses the others.
 
-Executors: ``None`` (serial, in this process), ``"processes"`` (local processes,
-:mod:`concurrent.futures`), a :class:`concurrent.futures.Executor`, or a
-``dask.distributed.Client`` (any cluster).  The compiled model travels to the workers by
-``pickle``, once per worker, not once per run; for local processes on a platform that
-forks, a model that cannot be pickled is inherited by the forked workers instead.
+Executors: ``None`` (serial, in this process), ``"processes"`` (local worker processes,
+:mod:`acausal.sweepworkers`: new interpreters, never forked), a
+:class:`concurrent.futures.Executor`, or a ``dask.distributed.Client`` (any cluster).
+The compiled model travels to the workers by ``pickle``, once per worker, not once per
+run.  A worker that dies (killed, out of memory, a crash) costs only its own runs: they
+come back failed with the reason (``message`` starts with ``WorkerDied:`` for local
+processes), the others with their data; ``retries=n`` runs a lost run again, up to n
+times.  On dask the model is scattered under a key of its own per sweep, so sweeps one
+after another on one Client never share (and never lose) it.
 """
 from __future__ import annotations
 
@@ -34,13 +38,15 @@ _CHUNKS_PER_WORKER = 4     # tasks per worker: few enough to keep overhead low, 
 
 def sweep(model, parameters: dict, *, grid: str = "product", t_end: float,
           t_eval=None, n_points: int | None = None, executor=None, names=None,
-          progress: bool | None = None, max_workers: int | None = None, **simulate_kwargs):
+          progress: bool | None = None, max_workers: int | None = None, retries: int = 0,
+          **simulate_kwargs):
     """Simulate ``model`` over a grid of parameter values; see the module docstring.
 
     ``parameters``: ``{name: values}``; ``grid="product"``: every combination (the last
     name varies fastest), ``"zip"``: the i-th value of each (equal lengths).  ``names``:
-    the variables to keep (default: all).  Other keywords go to :func:`acausal.simulate`.
-    Returns an ``xarray.Dataset``."""
+    the variables to keep (default: all).  ``retries``: how often a run whose worker
+    died is run again.  Other keywords go to :func:`acausal.simulate`.  Returns an
+    ``xarray.Dataset``."""
     if not isinstance(parameters, dict) or not parameters:
         raise ValueError("sweep: parameters must be a non-empty dict {name: values}")
     keys = list(parameters)
@@ -58,12 +64,12 @@ def sweep(model, parameters: dict, *, grid: str = "product", t_end: float,
     runs = [{k: float(v) for k, v in zip(keys, combo)} for combo in combos]
     return ensemble(model, runs, t_end=t_end, t_eval=t_eval, n_points=n_points,
                     executor=executor, names=names, progress=progress,
-                    max_workers=max_workers, **simulate_kwargs)
+                    max_workers=max_workers, retries=retries, **simulate_kwargs)
 
 
 def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = None,
              executor=None, names=None, progress: bool | None = None,
-             max_workers: int | None = None, **simulate_kwargs):
+             max_workers: int | None = None, retries: int = 0, **simulate_kwargs):
     """Simulate ``model`` once per parameter dict in ``runs``; see the module docstring."""
     from .simulation import _output_times, _time, compile
     runs = [dict(r) for r in runs]
@@ -86,7 +92,7 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
         raise KeyError(f"ensemble: no variables {missing} in the model")
     job = {"t_end": float(t_end), "t_start": t_start, "t_eval": times, "names": names,
            "kwargs": simulate_kwargs}
-    outcomes = _execute(compiled, runs, job, executor, progress, max_workers)
+    outcomes = _execute(compiled, runs, job, executor, progress, max_workers, retries)
     return _dataset(compiled, runs, times, names, outcomes)
 
 
@@ -119,21 +125,18 @@ def _run_one(compiled, base, values, job):
     return out, bool(res.success), str(res.message), int(res.stats.get("steps", 0))
 
 
+def _failed(job, reason):
+    """The outcome of a run that did not run (its worker died): NaN, and the reason."""
+    if job.get("task") is not None:
+        return None, False, reason, 0
+    return np.full((len(job["names"]), len(job["t_eval"])), np.nan), False, reason, 0
+
+
 def _run_chunk(compiled, base, chunk, job):
     return [(index, *_run_one(compiled, base, values, job)) for index, values in chunk]
 
 
-_WORKER = {}     # in a worker process: the model it was given, by key
-
-
-def _worker_init(key, blob, inherited=None):
-    _WORKER[key] = inherited if inherited is not None else pickle.loads(blob)
-
-
-def _worker_chunk(key, base, chunk, job):
-    return _run_chunk(_WORKER[key], base, chunk, job)
-
-
+_WORKER = {}     # on a dask worker: the models it was given, by key
 _KEPT = 16       # models a long-lived dask worker keeps between sweeps
 
 
@@ -155,7 +158,13 @@ def _fresh_chunk(blob, base, chunk, job):
 
 
 # -- executors ------------------------------------------------------------------------------
-def _execute(compiled, runs, job, executor, progress, max_workers) -> list:
+def _execute(compiled, runs, job, executor, progress, max_workers, retries=0) -> list:
+    if isinstance(retries, bool) or not isinstance(retries, (int, np.integer)) or retries < 0:
+        raise ValueError(f"ensemble: retries must be a whole number >= 0, got {retries!r}")
+    if max_workers is not None and (isinstance(max_workers, bool) or not isinstance(
+            max_workers, (int, np.integer)) or max_workers < 1):
+        raise ValueError(f"ensemble: max_workers must be a whole number >= 1, "
+                         f"got {max_workers!r}")
     base = compiled.p.copy()
     indexed = list(enumerate(runs))
     bar = _RunsBar.make(progress, len(runs))
@@ -166,11 +175,14 @@ def _execute(compiled, runs, job, executor, progress, max_workers) -> list:
                 results += _run_chunk(compiled, base, [item], job)
                 bar.update(1)
         elif _is_dask(executor):
-            results = _on_dask(executor, compiled, base, indexed, job, bar)
+            results = _on_dask(executor, compiled, base, indexed, job, bar, retries)
         elif executor == "processes":
-            results = _on_processes(compiled, base, indexed, job, bar, max_workers)
+            from .sweepworkers import run_on_processes
+            workers = int(max_workers or os.cpu_count() or 1)
+            results = run_on_processes(_blob(compiled), base, job, indexed, workers,
+                                       int(retries), bar.update)
         elif hasattr(executor, "submit"):
-            results = _on_futures(executor, compiled, base, indexed, job, bar)
+            results = _on_futures(executor, compiled, base, indexed, job, bar, retries)
         else:
             raise ValueError(f"ensemble: executor must be None, 'processes', a "
                              f"concurrent.futures Executor or a dask Client, "
@@ -195,43 +207,54 @@ def _blob(compiled):
                         f"which failed: {type(err).__name__}: {err}") from err
 
 
-def _on_processes(compiled, base, indexed, job, bar, max_workers):
-    import multiprocessing as mp
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-    workers = max_workers or os.cpu_count() or 1
-    key = id(compiled)
-    try:
-        init = (key, _blob(compiled), None)
-        context = None
-    except TypeError:
-        if "fork" not in mp.get_all_start_methods():
-            raise
-        # forked workers inherit the model: nothing is pickled on the way there
-        init, context = (key, None, compiled), mp.get_context("fork")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=context,
-                             initializer=_worker_init, initargs=init) as pool:
-        futures = [pool.submit(_worker_chunk, key, base, chunk, job)
-                   for chunk in _chunks(indexed, workers)]
-        return _gather(futures, as_completed, bar)
-
-
-def _on_futures(executor, compiled, base, indexed, job, bar):
-    from concurrent.futures import as_completed
+def _on_futures(executor, compiled, base, indexed, job, bar, retries):
+    from concurrent.futures import wait
     blob = _blob(compiled)
     workers = getattr(executor, "_max_workers", None) or os.cpu_count() or 1
-    futures = [executor.submit(_fresh_chunk, blob, base, chunk, job)
-               for chunk in _chunks(indexed, workers)]
-    return _gather(futures, as_completed, bar)
+
+    def submit(chunk):
+        return executor.submit(_fresh_chunk, blob, base, chunk, job)
+    return _gather(submit, _chunks(indexed, workers), lambda fs: wait(
+        fs, return_when="FIRST_COMPLETED")[0], job, bar, retries)
 
 
-def _gather(futures, as_completed, bar) -> list:
-    """The chunks' (index, outcome) records as they complete, counted on the bar."""
-    results = []
-    for fut in as_completed(futures):
-        part = fut.result()
-        results += part
-        bar.update(len(part))
+def _gather(submit, chunks, completed, job, bar, retries) -> list:
+    """The (index, outcome) records of ``chunks`` submitted by ``submit(chunk)``, as
+    they complete (``completed(futures)``: some that have), counted on the bar.  A chunk
+    whose future fails (its worker died, the cluster lost it) costs only its own runs;
+    the other chunks' results are kept.  The lost runs are run again up to ``retries``
+    times, one at a time (a run that kills its worker then takes no other run with it),
+    and then come back failed with the reason."""
+    results, lost = [], []
+    running = {submit(c): c for c in chunks}
+    while running:
+        for fut in completed(list(running)):
+            chunk = running.pop(fut)
+            part = _outcome(fut, chunk, lost)
+            results += part
+            bar.update(len(part))
+    for _ in range(retries):
+        again, lost = lost, []
+        for item, _reason in again:
+            fut = submit([item])
+            completed([fut])
+            part = _outcome(fut, [item], lost)
+            results += part
+            bar.update(len(part))
+    for item, reason in lost:
+        results.append((item[0], *_failed(job, reason)))
+        bar.update(1)
     return results
+
+
+def _outcome(fut, chunk, lost) -> list:
+    """The chunk's records, or [] with its runs added to ``lost`` with the reason."""
+    try:
+        return fut.result()
+    except Exception as err:  # noqa: BLE001 - one chunk's loss is its runs' result
+        reason = f"{type(err).__name__}: {str(err)[:300]}"
+        lost += [(item, reason) for item in chunk]
+        return []
 
 
 def _is_dask(executor) -> bool:
@@ -239,13 +262,21 @@ def _is_dask(executor) -> bool:
         hasattr(executor, "scatter")
 
 
-def _on_dask(client, compiled, base, indexed, job, bar):
-    from distributed import as_completed
-    blob = client.scatter(_blob(compiled), broadcast=True)
-    workers = max(1, len(client.scheduler_info().get("workers", {})))
-    futures = [client.submit(_dask_chunk, blob, base, chunk, job, pure=False)
-               for chunk in _chunks(indexed, workers)]
-    return _gather(futures, as_completed, bar)
+def _on_dask(client, compiled, base, indexed, job, bar, retries):
+    from distributed import wait
+    # a key of its own (hash=False): scattered under the hash of its bytes, a model
+    # swept twice shared one key, which the scheduler could release for the first sweep
+    # while the second's tasks depended on it ("lost dependencies")
+    blob = client.scatter(_blob(compiled), broadcast=True, hash=False)
+    try:
+        workers = max(1, len(client.scheduler_info().get("workers", {})))
+
+        def submit(chunk):
+            return client.submit(_dask_chunk, blob, base, chunk, job, pure=False)
+        return _gather(submit, _chunks(indexed, workers), lambda fs: wait(
+            fs, return_when="FIRST_COMPLETED").done, job, bar, retries)
+    finally:
+        blob.release()
 
 
 class _RunsBar:

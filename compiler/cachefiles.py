@@ -19,8 +19,8 @@ is removed, with one line saying so, and the model is compiled again.
 SHA-256 of its bytes, written before the library is renamed into place, both
 atomically: gcc builds the same bytes from the same source wherever the build directory
 is, so concurrent builds of one source agree).  :func:`load_library` loads a library
-only when its bytes have that checksum; a library that fails, or has no checksum, is
-removed (with one line saying so) and the caller builds it again.  A flipped byte,
+only when its bytes have that checksum; a library that fails is removed (with one line
+saying so; one without a checksum, quietly) and the caller builds it again.  A flipped byte,
 a truncated library or a foreign one is therefore rebuilt, never mapped: a library that
 dlopen would accept could compute wrong numbers, and a truncated one crashes the process
 on first use (SIGBUS), which no exception handler survives.
@@ -236,9 +236,9 @@ def library_ok(path: str) -> bool:
         return True
     _remove(path)
     _remove(path + _SUM)
-    _say(f"the C library {path} in the compile cache "
-         f"{'has no checksum' if recorded is None else 'failed its checksum'}; removed, "
-         "building it again")
+    if recorded is not None:      # without one: written before checksums were kept
+        _say(f"the C library {path} in the compile cache failed its checksum; removed, "
+             "building it again")
     return False
 
 
