@@ -106,7 +106,7 @@ def run(cache, env=None, module="acausal.library.examples.motor_drive", cls="Mot
 
 def _libraries(cache) -> tuple:
     """(the model's library, the step loop's) in the cache."""
-    from acausal.compiler.cbackend import _library_path
+    from acausal.compiler.backends.cbackend import _library_path
     from acausal.solvers.cbdf import _source
     os.environ["ACAUSAL_CACHE"] = str(cache)
     loop = _library_path(_source())

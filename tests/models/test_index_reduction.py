@@ -5,7 +5,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.compiler.structure import StructuralError
+from acausal.compiler.structure.matching import StructuralError
 from acausal.library import rotational as rot
 from acausal.library.electrical import (Capacitor, ConstantVoltage, Ground, Inductor,
                                         OnePort, Resistor, SineVoltage)

@@ -18,8 +18,8 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler import cache as store
-from acausal.compiler import cachefiles, cachekeys
+from acausal.compiler.cache import files as cachefiles
+from acausal.compiler.cache import keys as cachekeys
 from acausal.compiler.pipeline import compile_model
 from acausal.runtime import CompiledModel
 
@@ -35,7 +35,7 @@ def cache_dir(fresh_cache):
 
 
 def _needs_cc():
-    from acausal.compiler.cbackend import compiler_available
+    from acausal.compiler.backends.cbackend import compiler_available
     if compiler_available() is None:
         pytest.skip("no C compiler")
 
@@ -308,7 +308,7 @@ def test_a_damaged_step_loop_library_is_built_again(cache_dir):
     _needs_cc()
     v, loop, said = eval(run_python(LOOP, cache_dir).strip().splitlines()[-1])  # noqa: S307
     assert loop == "c" and not said
-    from acausal.compiler.cbackend import _library_path
+    from acausal.compiler.backends.cbackend import _library_path
     from acausal.solvers.cbdf import _source
     lib = _library_path(_source())
     assert os.path.exists(lib)
