@@ -25,7 +25,7 @@ _EXPORTS = {
                     "no_event", "pre", "ref", "reinit", "replaces", "sample", "sign", "time",
                     "when"),
     ".errors": ("BackendError", "CacheError", "CacheWarning", "InitializationFailed",
-                "SimulationError"),
+                "InvalidArgument", "SimulationError"),
     ".result": ("Result",),
     ".runtime": ("CompiledModel",),
     ".simulation": ("compile", "initial_values", "simulate"),
@@ -51,7 +51,7 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "linearize", "linearize_grid", "linearize_symbolic", "StateSpace", "steady_state",
            "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
            "energy_balance", "is_passive", "estimate", "BackendError", "CacheError",
-           "CacheWarning", "export_fmu",
+           "CacheWarning", "InvalidArgument", "export_fmu",
            "load_result", "animate", "sweep", "ensemble", "sqrt", "exp", "log", "log10", "sin", "cos",
            "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi"]
 # ac.abs, ac.min and ac.max exist too, but not in __all__: `import *` must not shadow builtins

@@ -8,7 +8,7 @@ from __future__ import annotations
 from typing import Sequence
 
 __all__ = ["SimulationError", "InitializationFailed", "BackendError", "CacheError",
-           "CacheWarning"]
+           "CacheWarning", "InvalidArgument"]
 
 
 class SimulationError(RuntimeError):
@@ -60,3 +60,9 @@ class CacheWarning(UserWarning):
     """The compile cache was skipped or repaired: a directory that cannot be created,
     written or trusted (compiling and running go on without it), or an entry or library
     that failed its checksum (removed, and compiled or built again)."""
+
+
+class InvalidArgument(ValueError):
+    """An argument of a call that cannot mean anything (``simulate(..., rtol=5)``,
+    ``atol=0``, ``t_end`` before ``t_start``, ``n_points=1``), named with the value
+    given; raised before any work is done."""

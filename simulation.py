@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .components.component import Component, ModelError
-from .errors import SimulationError
+from .errors import InvalidArgument, SimulationError
 from .result import Event, Result
 
 if TYPE_CHECKING:
@@ -143,7 +143,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              max_step: float = np.inf, parameters: dict | None = None,
              max_order: int = 5, raise_on_failure: bool = False,
              backend: str = "auto", progress: bool | None = None,
-             step_loop: str = "auto", check_units: str = "warn") -> Result:
+             step_loop: str = "auto", check_units: str = "warn",
+             nonfinite: str = "stop") -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -162,20 +163,31 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     qualifies and the loop's library is built, on either backend, see
     :mod:`acausal.solvers.cbdf`), "c" or "python".
     ``check_units``: as in :func:`compile`, for a Component compiled here.
+    ``nonfinite``: a variable that is NaN or inf at an output point ends the run with
+    ``success=False``, naming the variable, its equation and the time (``"stop"``), or
+    only warns and the run goes on (``"warn"``).
     """
     t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
     if not t_end > t_start:
-        raise ValueError(f"simulate: t_end = {t_end} must be after t_start = {t_start}")
-    rtol = _positive("rtol", rtol)
-    atol = rtol if atol is None else _positive("atol", atol, allow_zero=True)
+        raise InvalidArgument(f"simulate: t_end = {t_end} must be after t_start = {t_start}")
+    rtol = _tolerance(rtol)
     max_step = _positive("max_step", max_step, allow_inf=True)
     if isinstance(max_order, bool) or not isinstance(max_order, (int, np.integer)) \
             or not 1 <= max_order <= 5:
-        raise ValueError(f"simulate: max_order must be an integer from 1 to 5, got {max_order!r}")
+        raise InvalidArgument(f"simulate: max_order must be an integer from 1 to 5, "
+                              f"got {max_order!r}")
+    from .solvers.driver import NONFINITE
+    if nonfinite not in NONFINITE:
+        raise InvalidArgument(f"simulate: nonfinite must be one of "
+                              f"{', '.join(map(repr, NONFINITE))}, got {nonfinite!r}")
+    if parameters is not None and not isinstance(parameters, dict):
+        raise InvalidArgument(f"simulate: parameters must be a dict {{name: value}}, "
+                              f"got {type(parameters).__name__}")
+    if atol is not None and not isinstance(atol, dict):
+        _positive("atol", atol)
     t_eval = _output_times(t_eval, n_points, t_start, t_end)
     compiled = compile(model, backend, check_units=check_units)
-    if parameters and not isinstance(parameters, dict):
-        raise ValueError("simulate: parameters must be a dict {name: value}")
+    atol = _absolute_tolerance(compiled, atol, rtol)
     # the values hold for this run only (as in sweeps and estimation): a later run of the
     # same compiled model starts again from the values it had before
     saved = compiled.p.copy()
@@ -183,7 +195,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         if parameters:
             compiled.set_parameters(parameters)
         return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
-                    raise_on_failure, progress, step_loop)
+                    raise_on_failure, progress, step_loop, nonfinite)
     finally:
         compiled.p[:] = saved
         if compiled.backend in ("c", "numpy"):
@@ -194,7 +206,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
 
 
 def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
-         raise_on_failure, progress, step_loop) -> Result:
+         raise_on_failure, progress, step_loop, nonfinite="stop") -> Result:
     """One run of a compiled model at its current parameter values."""
     y0, yp0 = compiled.initialize(t_start)
     from .runtime.clocked import has_discrete_events, run_between_events
@@ -214,15 +226,24 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         if compiled.delays is not None:
             from .runtime.delays import explicit_values
             delayed = explicit_values(compiled, compiled.delays, t)
-        return Result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], True,
-                      "no states: evaluated explicitly", delay_values=delayed)
+        success, message = True, "no states: evaluated explicitly"
+        bad = _first_nonfinite(compiled, t) if compiled.delays is None else None
+        if bad is not None:       # a variable undefined there (runtime contract item 11)
+            k, what = bad
+            message = f"a value is not finite at an output point: {what}"
+            if nonfinite == "stop":
+                success, t = False, t[:k]
+            warnings.warn(f"simulate: {message}", RuntimeWarning, stacklevel=3)
+        return Result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], success,
+                      message, delay_values=delayed)
     from .solvers import integrate
     marks = _log_marks(compiled)
     bar = _Progress.make(progress, t_start, t_end)
     try:
         out = integrate(compiled, (t_start, t_end), y0, yp0, rtol=rtol, atol=atol,
                         t_eval=t_eval, max_step=max_step, max_order=int(max_order),
-                        initialize=False, progress=bar, step_loop=step_loop)
+                        initialize=False, progress=bar, step_loop=step_loop,
+                        nonfinite=nonfinite)
     except SimulationError as err:
         partial = err.partial
         start = _singular_start(compiled, t_start)
@@ -244,6 +265,9 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
     start = _singular_start(compiled, t_start) if not out.success else None
     if start and start not in message:
         message = f"{message}; {start}"
+    if getattr(out, "nonfinite", None):
+        message = f"{message}; {out.nonfinite} (the run went on: nonfinite='warn')"
+        warnings.warn(f"simulate: {out.nonfinite}", RuntimeWarning, stacklevel=3)
     missed = out.stats.interpolated_outputs
     if missed:
         # the algebraic values there could not be solved from the states: said, not hidden
@@ -370,53 +394,116 @@ class _Progress:
             self.bar.close()
 
 
+def _first_nonfinite(compiled, t):
+    """(k, what) of the first time of ``t`` at which a checked output of a model without
+    states is not finite (runtime contract item 11), or None."""
+    check = getattr(compiled, "check_point", None)
+    if check is None:
+        return None
+    z = np.zeros(0)
+    with np.errstate(all="ignore"):
+        for k, tk in enumerate(t):
+            if k and not check.every_point:
+                break
+            compiled.init_modes(tk, z)
+            what = check(float(tk), z, every=k == 0)
+            if what is not None:
+                return k, what
+    return None
+
+
+def _number(name, value) -> float:
+    if isinstance(value, bool) or value is None:
+        raise InvalidArgument(f"simulate: {name} must be a number, got {value!r}")
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise InvalidArgument(f"simulate: {name} must be a number, got {value!r}") from None
+
+
 def _time(name, value) -> float:
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"simulate: {name} must be a number, got {value!r}") from None
+    x = _number(name, value)
     if not math.isfinite(x):
-        raise ValueError(f"simulate: {name} must be finite, got {value!r}")
+        raise InvalidArgument(f"simulate: {name} must be finite, got {value!r}")
     return x
 
 
-def _positive(name, value, allow_zero=False, allow_inf=False) -> float:
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"simulate: {name} must be a number, got {value!r}") from None
-    if math.isnan(x) or (math.isinf(x) and not allow_inf) or x < 0 or (x == 0 and not allow_zero):
-        raise ValueError(f"simulate: {name} must be {'>= 0' if allow_zero else '> 0'}"
-                         f"{'' if allow_inf else ' and finite'}, got {value!r}")
+def _positive(name, value, allow_inf=False) -> float:
+    x = _number(name, value)
+    if math.isnan(x) or (math.isinf(x) and not allow_inf) or x <= 0:
+        raise InvalidArgument(f"simulate: {name} must be > 0"
+                              f"{'' if allow_inf else ' and finite'}, got {value!r}")
     return x
+
+
+def _tolerance(rtol) -> float:
+    """rtol, a fraction: in (0, 1) (a relative error of 1 or more bounds nothing)."""
+    x = _number("rtol", rtol)
+    if not 0.0 < x < 1.0:
+        raise InvalidArgument(f"simulate: rtol is a relative error and must be in (0, 1), "
+                              f"e.g. 1e-6; got {rtol!r}")
+    return x
+
+
+def _absolute_tolerance(compiled, atol, rtol):
+    """atol > 0 as the integrator takes it (scaled by each unknown's nominal value): a
+    number, or ``{name: atol}`` for some of the unknowns the integrator controls (the
+    others take rtol), as an array in their order."""
+    if atol is None:
+        return rtol
+    if not isinstance(atol, dict):
+        return _positive("atol", atol)
+    out = np.full(compiled.n, rtol)
+    index = {n: k for k, n in enumerate(compiled.names)}
+    for name, value in atol.items():
+        x = _positive(f"atol[{name!r}]", value)
+        if name in index:
+            out[index[name]] = x
+            continue
+        from .components.validation import suggestion
+        if name in compiled.outputs:
+            raise InvalidArgument(
+                f"simulate: atol[{name!r}]: {name} is computed from the unknowns the "
+                f"integrator controls, which are {_listed(compiled.names)}")
+        raise InvalidArgument(f"simulate: atol[{name!r}]: the model has no variable "
+                              f"{name!r}{suggestion(name, compiled.outputs)}")
+    return out
+
+
+def _listed(names, n=8) -> str:
+    """``a, b, c and 5 more``: a list of names of bounded length."""
+    names = list(names)
+    head = ", ".join(names[:n])
+    return head + (f" and {len(names) - n} more" if len(names) > n else "")
 
 
 def _output_times(t_eval, n_points, t_start, t_end):
     """The requested output times, checked: nothing is dropped silently."""
     if t_eval is not None and n_points is not None:
-        raise ValueError("simulate: give t_eval or n_points, not both")
+        raise InvalidArgument("simulate: give t_eval or n_points, not both")
     if n_points is not None:
         if isinstance(n_points, bool) or not isinstance(n_points, (int, np.integer)) \
                 or n_points < 2:
-            raise ValueError(f"simulate: n_points must be an integer >= 2, got {n_points!r}")
+            raise InvalidArgument(f"simulate: n_points must be an integer >= 2, "
+                                  f"got {n_points!r}")
         return np.linspace(t_start, t_end, int(n_points))
     if t_eval is None:
         return None
     try:
         te = np.asarray(t_eval, dtype=float).ravel()
     except (TypeError, ValueError):
-        raise ValueError("simulate: t_eval must be a sequence of numbers") from None
+        raise InvalidArgument("simulate: t_eval must be a sequence of numbers") from None
     if te.size == 0:
-        raise ValueError("simulate: t_eval is empty")
+        raise InvalidArgument("simulate: t_eval is empty")
     if not np.all(np.isfinite(te)):
-        raise ValueError(f"simulate: t_eval has non-finite entries at positions "
+        raise InvalidArgument(f"simulate: t_eval has non-finite entries at positions "
                          f"{np.flatnonzero(~np.isfinite(te))[:5].tolist()}")
     if np.any(np.diff(te) < 0):
         k = int(np.flatnonzero(np.diff(te) < 0)[0])
-        raise ValueError(f"simulate: t_eval must be sorted (t_eval[{k}] = {te[k]} > "
+        raise InvalidArgument(f"simulate: t_eval must be sorted (t_eval[{k}] = {te[k]} > "
                          f"t_eval[{k + 1}] = {te[k + 1]})")
     outside = (te < t_start) | (te > t_end)
     if outside.any():
-        raise ValueError(f"simulate: t_eval has {int(outside.sum())} time(s) outside "
+        raise InvalidArgument(f"simulate: t_eval has {int(outside.sum())} time(s) outside "
                          f"[t_start, t_end] = [{t_start}, {t_end}], e.g. {te[outside][0]}")
     return te

@@ -218,40 +218,67 @@ def _on_futures(executor, compiled, base, indexed, job, bar, retries):
         fs, return_when="FIRST_COMPLETED")[0], job, bar, retries)
 
 
-def _gather(submit, chunks, completed, job, bar, retries) -> list:
+_RESENT = 3      # times a run is sent again because the cluster lost what it needed
+
+
+def _gather(submit, chunks, completed, job, bar, retries, refresh=None) -> list:
     """The (index, outcome) records of ``chunks`` submitted by ``submit(chunk)``, as
     they complete (``completed(futures)``: some that have), counted on the bar.  A chunk
     whose future fails (its worker died, the cluster lost it) costs only its own runs;
     the other chunks' results are kept.  The lost runs are run again up to ``retries``
     times, one at a time (a run that kills its worker then takes no other run with it),
-    and then come back failed with the reason."""
-    results, lost = [], []
+    and then come back failed with the reason.  A chunk cancelled because the cluster
+    lost the model (the workers that held it died) is no fault of its runs: the model is
+    sent again (``refresh()``) and they are run again, up to :data:`_RESENT` times."""
+    results, lost, resent = [], [], {}
     running = {submit(c): c for c in chunks}
     while running:
         for fut in completed(list(running)):
             chunk = running.pop(fut)
             part = _outcome(fut, chunk, lost)
-            results += part
-            bar.update(len(part))
+            if part is None and refresh is None:
+                lost += [(item, "the executor lost it") for item in chunk]
+            elif part is None:
+                again = [item for item in chunk
+                         if resent.setdefault(item[0], 0) < _RESENT]
+                for item in again:
+                    resent[item[0]] += 1
+                refresh()
+                running.update({submit([item]): [item] for item in again})
+                lost += [(item, "the cluster lost the model") for item in chunk
+                         if item not in again]
+                continue
+            results += part or []
+            bar.update(len(part or []))
     for _ in range(retries):
         again, lost = lost, []
         for item, _reason in again:
-            fut = submit([item])
-            completed([fut])
-            part = _outcome(fut, [item], lost)
-            results += part
-            bar.update(len(part))
+            while True:
+                fut = submit([item])
+                completed([fut])
+                part = _outcome(fut, [item], lost)
+                if part is not None or refresh is None or resent.get(item[0], 0) >= _RESENT:
+                    break
+                resent[item[0]] = resent.get(item[0], 0) + 1
+                refresh()
+            if part is None:
+                lost.append((item, "the cluster lost the model"))
+            results += part or []
+            bar.update(len(part or []))
     for item, reason in lost:
         results.append((item[0], *_failed(job, reason)))
         bar.update(1)
     return results
 
 
-def _outcome(fut, chunk, lost) -> list:
-    """The chunk's records, or [] with its runs added to ``lost`` with the reason."""
+def _outcome(fut, chunk, lost):
+    """The chunk's records; or [] with its runs added to ``lost`` with the reason; or
+    None when the cluster cancelled it for lost dependencies (no fault of its runs)."""
     try:
         return fut.result()
     except Exception as err:  # noqa: BLE001 - one chunk's loss is its runs' result
+        if "lost dependencies" in str(err):
+            return None
         reason = f"{type(err).__name__}: {str(err)[:300]}"
         lost += [(item, reason) for item in chunk]
         return []
@@ -264,19 +291,32 @@ def _is_dask(executor) -> bool:
 
 def _on_dask(client, compiled, base, indexed, job, bar, retries):
     from distributed import wait
+    data = _blob(compiled)
     # a key of its own (hash=False): scattered under the hash of its bytes, a model
     # swept twice shared one key, which the scheduler could release for the first sweep
     # while the second's tasks depended on it ("lost dependencies")
-    blob = client.scatter(_blob(compiled), broadcast=True, hash=False)
+    blob = [client.scatter(data, broadcast=True, hash=False)]
+
+    def refresh():
+        # the workers that held it may have died with the runs that killed them
+        if blob[0].status != "finished":
+            blob[0].release()
+            blob[0] = client.scatter(data, broadcast=True, hash=False)
+
+    def submit(chunk):
+        return client.submit(_dask_chunk, blob[0], base, chunk, job, pure=False)
+
+    def completed(futures):
+        try:
+            return wait(futures, return_when="FIRST_COMPLETED").done
+        except Exception:  # noqa: BLE001 - a cancelled future: its result says why
+            return [f for f in futures if f.done()] or futures
     try:
         workers = max(1, len(client.scheduler_info().get("workers", {})))
-
-        def submit(chunk):
-            return client.submit(_dask_chunk, blob, base, chunk, job, pure=False)
-        return _gather(submit, _chunks(indexed, workers), lambda fs: wait(
-            fs, return_when="FIRST_COMPLETED").done, job, bar, retries)
+        return _gather(submit, _chunks(indexed, workers), completed, job, bar, retries,
+                       refresh)
     finally:
-        blob.release()
+        blob[0].release()
 
 
 class _RunsBar:

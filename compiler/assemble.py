@@ -110,6 +110,11 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms),
               "derived_parameters": dict(flat.derived)})
+    # the outputs nothing checks while integrating, checked at every output point
+    from .backends.domains import output_checks
+    out.meta["output_checks"] = output_checks(
+        code.program, out.meta["assigned_names"],
+        lambda k: system.equations[caus.assignments[k][1]].name(system))
     # the declared unit and description of every name of a result
     out.meta["units"], out.meta["descriptions"] = output_tables(
         {**{v.name: v.attrs.unit for v in flat.variables},

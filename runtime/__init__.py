@@ -48,6 +48,11 @@ What the runtime provides (numbered, so the code can cite it)
    where the error test leaves algebraic unknowns out (self-scaled derivatives), they
    are solved from G(t, z) = 0 at the interpolated states instead of interpolated
    (:func:`.initial.consistent_output`); a failed solve is counted and said.
+11. Outputs the integrator does not see (computed only for the results, through an
+   operation that can leave the finite numbers: ``sqrt``, ``log``, a division) are
+   checked at every output point (``check_point``, solver contract item 18,
+   :mod:`.diagnostics`): one that is NaN or inf ends the run, naming the variable, its
+   equation and the time.
 """
 from .. import _lazy_exports
 

@@ -32,7 +32,7 @@ from ..components.component import InvalidValue, NotInModel
 from ..solvers.base import DAEProblem, unbounded
 from ..solvers.linalg import assemble
 from .delays import DelayLines, FilledCode
-from .diagnostics import DOMAIN_ERRORS, failing_statement
+from .diagnostics import DOMAIN_ERRORS, OutputCheck, failing_statement
 from .dynamic import DynamicStateSelection
 from .events import WhenClauses, iterate_event
 from .initial import InitialConditions, consistent_output, initialize, reinitialize
@@ -104,6 +104,8 @@ class CompiledModel(DAEProblem):
         self._res_entries = code.jac_rows < self.n_res
         self._der_entries = ~self._res_entries
         self.evaluation_errors = []        # what failed in the generated code, in words
+        # the outputs integrating does not check, checked at every output point (item 11)
+        self.check_point = OutputCheck.of(self)
         self.resolution = 0.0             # how precisely the driver locates crossings
         self._z_ref = self.start.copy()    # a point for time-event predictions
         self._list_params = isinstance(code.residual, types.FunctionType) and \

@@ -92,6 +92,12 @@ What a problem provides (numbered, so integrators can cite it)
    components the error test does not bound between steps (item 6) from its
    equations.  None: it could not, the interpolated value is kept and counted
    (``SolverStats.interpolated_outputs``).
+18. ``check_point(t, y, m, every=False) -> str | None`` (optional, may be None): whether
+   the values the problem computes from an output point (y, in the discrete state
+   ``m``) are finite -- all of them with ``every`` (the first point of a run), else
+   those that need it (its ``every_point`` False: none); a sentence saying which is
+   not ends the run as a failure (``nonfinite="warn"``: said, and the run goes on).
+   The driver itself checks that y is finite at every output point.
 
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton

@@ -43,7 +43,9 @@ from .bdf import BDF, StepFailure
 from .failures import failure_message
 from .initialization import consistent_initial, reinitialize
 
-__all__ = ["integrate"]
+__all__ = ["integrate", "NONFINITE"]
+
+NONFINITE = ("stop", "warn")     # what a NaN or inf at an output point does
 
 _ROOT_RTOL = 1e-12       # event-time tolerance, relative to max(|t|, t_end - t0)
 _ZENO_INTERVALS = 10     # geometric shrinking over this many event intervals ...
@@ -59,7 +61,8 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
               first_step: float | None = None, suppress_alg: bool = False,
               max_steps: int = 500000, initialize: bool = True,
               max_event_iterations: int = 20, max_order: int = 5,
-              stald: bool = False, progress=None, step_loop: str = "auto") -> SolverOutput:
+              stald: bool = False, progress=None, step_loop: str = "auto",
+              nonfinite: str = "stop") -> SolverOutput:
     """Integrate the DAE ``problem`` over ``t_span`` with the variable-order BDF.
 
     Parameters
@@ -104,6 +107,11 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
         (:mod:`acausal.solvers.cbdf`) when the problem qualifies (a compiled model on
         the C backend, at most 200 unknowns, no delay, no ``stald``)
         and a C compiler works, else the Python loop; "c" and "python" force one.
+    nonfinite : {"stop", "warn"}
+        A NaN or inf at an output point -- in y, or in what the problem computes from it
+        (``problem.check_point``, contract item 18) -- ends the run as a failure naming
+        it ("stop"), or is said in the output's ``nonfinite`` (the first such point)
+        while the run goes on ("warn").
 
     Returns
     -------
@@ -120,8 +128,12 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     InitializationFailed
         If no consistent initial values are found.
     """
+    if nonfinite not in NONFINITE:
+        raise ValueError(f"nonfinite must be one of {', '.join(map(repr, NONFINITE))}, "
+                         f"got {nonfinite!r}")
     run = _Run(problem, t_span, t_eval, rtol, atol, max_step, suppress_alg, max_steps,
                max_event_iterations)
+    run.nonfinite = nonfinite
     run.bdf_options = {"max_order": max_order, "stald": stald}
     from .cbdf import choose_step_loop
     run.mode = choose_step_loop(problem, step_loop, stald)
@@ -168,6 +180,8 @@ class _Run:
         self.commit = getattr(problem, "commit", None)
         self.point_values = getattr(problem, "point_values", None)
         self.output_point = getattr(problem, "output_point", None)      # item 17
+        self.check_point = getattr(problem, "check_point", None)        # item 18
+        self.nonfinite, self.nonfinite_seen = "stop", None
         self.values = []
 
     # ------------------------------------------------------------------ main loop
@@ -246,13 +260,12 @@ class _Run:
             self.i_eval = s.i_eval
             for k in range(len(ts)):       # interpolated in C, in this discrete state
                 ys[k] = self._consistent(ts[k], ys[k])
-        if len(ts):
-            # a block of points as one (k, n) array: _output stacks blocks and rows
-            self.ts.extend(ts.tolist())
-            self.ys.append(ys)
-            self.yps.append(yps)
-        if self.keeps_discrete:
-            self.snapshot_of.extend([len(self.snapshots) - 1] * len(ts))
+        bad = self._nonfinite_block(ts, ys)
+        if bad is not None:                # the points before it are kept
+            k, bad = bad
+            self._keep_block(ts[:k], ys[:k], yps[:k])
+            raise self._error(*bad)
+        self._keep_block(ts, ys, yps)
         if code == R_FAIL:
             raise self._step_failure(s.failure())
         if code == R_FULL and s.pending:
@@ -262,6 +275,16 @@ class _Run:
         if s.reselect:        # the loop found the choice of states degraded
             self._after_step(s)
         return None
+
+    def _keep_block(self, ts, ys, yps) -> None:
+        """The output points of a return of the compiled loop, in this discrete state."""
+        if len(ts):
+            # a block of points as one (k, n) array: _output stacks blocks and rows
+            self.ts.extend(ts.tolist())
+            self.ys.append(ys)
+            self.yps.append(yps)
+        if self.keeps_discrete:
+            self.snapshot_of.extend([len(self.snapshots) - 1] * len(ts))
 
     def _accepted(self, s):
         """After an accepted step: events, output, the problem's after-step hook."""
@@ -335,7 +358,53 @@ class _Run:
                 self._append(self.t_eval[self.i_eval], self.solver.y, self.solver.yp)
                 self.i_eval += 1
 
+    def _nonfinite(self, t, y, snapshot=None):
+        """None, or (message, t, variables) for a NaN or inf at the output point (t, y):
+        in y itself, or in what the problem computes from it (item 18; at the first
+        point all of it).  With ``nonfinite="warn"`` the first is kept for the output,
+        and None returned."""
+        what, variables = None, []
+        if not np.all(np.isfinite(y)):
+            variables = [self.problem.names[i] for i in np.flatnonzero(~np.isfinite(y))]
+            what = (f"{', '.join(variables[:3])}{' ...' if len(variables) > 3 else ''} "
+                    f"not finite at t = {t:.10g}")
+        elif self.check_point is not None:
+            m = None
+            if snapshot is not None and self.keeps_discrete:
+                m = self.snapshots[snapshot]
+            what = self.check_point(float(t), y, m, every=not self.ts)
+        if what is None:
+            return None
+        message = f"a value is not finite at an output point: {what}"
+        if self.nonfinite == "warn":
+            if self.nonfinite_seen is None:
+                self.nonfinite_seen = message
+            return None
+        return message, float(t), variables
+
+    def _nonfinite_block(self, ts, ys):
+        """(k, (message, t, variables)) for the first output point of a block at which
+        :meth:`_nonfinite` stops the run, or None (y is tested for the whole block at
+        once; the problem's own check, where it has one, point by point)."""
+        if not len(ts):
+            return None
+        if self.check_point is None or not getattr(self.check_point, "every_point", True):
+            finite = np.isfinite(ys).all(axis=1)
+            if finite.all():
+                return None
+            k = int(np.argmin(finite))
+            bad = self._nonfinite(ts[k], ys[k])
+            return None if bad is None else (k, bad)
+        for k in range(len(ts)):
+            bad = self._nonfinite(ts[k], ys[k])
+            if bad is not None:
+                return k, bad
+        return None
+
     def _append(self, t, y, yp, snapshot=None) -> None:
+        bad = self._nonfinite(t, y, snapshot)
+        if bad is not None:
+            raise self._error(*bad)
         # the solver hands out fresh arrays for every point, so no copies are needed
         self.ts.append(float(t))
         self.ys.append(y)
@@ -368,6 +437,7 @@ class _Run:
                            list(self.snapshot_of))
         out.event_log = list(self.event_log)
         out.point_values = list(self.values)
+        out.nonfinite = self.nonfinite_seen
         return out
 
     # ------------------------------------------------------------------ failures

@@ -48,10 +48,48 @@ def failure_message(problem, solver, exc: StepFailure) -> tuple:
             "error_test": "repeated local error test failures",
             "newton": "repeated corrector (Newton) convergence failures"}.get(
                 exc.kind, exc.kind)
+    ahead = _undefined_ahead(problem, solver, exc.h)
+    if ahead is not None:
+        msg = (f"{what} at t={exc.t:.10g} (h={exc.h:.3g}): just after it the model is "
+               f"undefined ({ahead}); the solution leaves the domain of a function there")
+        return msg, exc.t, variables
     msg = (f"{what} at t={exc.t:.10g} (h={exc.h:.3g}); the largest weighted errors "
            f"are in {variables}. The solution may blow up, be non-smooth, or the "
            f"model may switch without an event there")
     return msg, exc.t, variables
+
+
+def _undefined_ahead(problem, solver, h) -> str | None:
+    """What fails when the residual is evaluated a little past the last accepted point,
+    along its derivative (a function outside its domain: log of a negative, the
+    equation named by ``problem.evaluation_errors``), or None.  The step that failed
+    tried such points; the compiled loop's C code computes NaN there without a word."""
+    errors = getattr(problem, "evaluation_errors", None)
+    if solver is None or errors is None:
+        return None
+    t0, y, yp = solver.t, np.asarray(solver.y, float), np.asarray(solver.yp, float)
+    dt = max(abs(h), 8 * np.finfo(float).eps * max(1.0, abs(t0)))
+    # the notes of the failed step may say the same words: set them aside to see these
+    kept = list(errors)
+    errors.clear()
+    try:
+        for _ in range(12):
+            try:
+                with np.errstate(all="ignore"):
+                    r = np.asarray(problem.residual(t0 + dt, y + dt * yp, yp), float)
+            except Exception:  # noqa: BLE001 - the failure is reported as it was
+                return None
+            if errors:
+                return errors[-1]
+            if not np.all(np.isfinite(r)):
+                rows = [equation_label(problem, i) for i in np.flatnonzero(~np.isfinite(r))]
+                return f"equations {rows[:3]} are not finite at t = {t0 + dt:.10g}"
+            dt *= 10.0
+            if dt > 1e-6 * max(1.0, abs(t0)):
+                break
+        return None
+    finally:
+        errors[:] = kept + [e for e in errors if e not in kept]
 
 
 def _non_finite_residuals(problem, solver) -> list:
