@@ -30,6 +30,7 @@ import importlib.util
 import json
 import math
 import os
+import re
 import sys
 import traceback
 import warnings
@@ -160,33 +161,41 @@ def _select_model(module, script: str, name: str | None):
 
 
 # -- argument types ------------------------------------------------------------------------
-def _number(text: str, allow_zero: bool) -> float:
+# Whether a number is in range (rtol in (0, 1), atol > 0, t_end > 0, n_points >= 2) is
+# the API's to say: its InvalidArgument reaches the command line as itself.
+def _real(text: str) -> float:
     try:
-        x = float(text)
+        return float(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
-    if not (math.isfinite(x) and (x > 0 or (allow_zero and x == 0))):
-        raise argparse.ArgumentTypeError(f"{text} must be {'>= 0' if allow_zero else '> 0'} "
-                                         "and finite")
-    return x
 
 
-def _positive(text: str) -> float:
-    return _number(text, allow_zero=False)
-
-
-def _nonnegative(text: str) -> float:
-    return _number(text, allow_zero=True)
-
-
-def _points(text: str) -> int:
+def _whole(text: str) -> int:
     try:
-        n = int(text)
+        return int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not an integer") from None
-    if n < 2:
-        raise argparse.ArgumentTypeError(f"{n}: at least 2 output points")
-    return n
+        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
+
+
+_NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^[-+]?(inf|nan)$", re.I)
+_NUMERIC_OPTIONS = ("--t-end", "--rtol", "--atol", "--n-points")
+
+
+def _negative_numbers(argv: list) -> list:
+    """``--rtol -1e-6`` as ``--rtol=-1e-6``: argparse takes a value that starts with a
+    minus sign for an option unless it looks like a plain number (``-1e-6`` does not),
+    and said "expected one argument" instead of what is wrong with the number."""
+    out, k = [], 0
+    while k < len(argv):
+        a = argv[k]
+        if a in _NUMERIC_OPTIONS and k + 1 < len(argv) and argv[k + 1].startswith("-") \
+                and _NUMBER.match(argv[k + 1]):
+            out.append(f"{a}={argv[k + 1]}")
+            k += 2
+            continue
+        out.append(a)
+        k += 1
+    return out
 
 
 def parse_assignments(items) -> dict:
@@ -215,6 +224,9 @@ def _cmd_run(args) -> int:
     values = parse_assignments(args.set)
     for option, path in (("--csv", args.csv), ("--plot", args.plot[0] if args.plot else None)):
         _check_writable(option, path)          # before the run, not after it
+    from .simulation import check_arguments
+    check_arguments(1.0 if args.t_end is None else args.t_end, rtol=args.rtol,
+                    atol=args.atol, n_points=args.n_points)    # before the model is made
     model, module = load_model(args.script)
     t_end = args.t_end if args.t_end is not None else getattr(model, "stop_time", None)
     if t_end is None:
@@ -419,14 +431,14 @@ def build_parser() -> argparse.ArgumentParser:
                          usage="%(prog)s SCRIPT[:MODEL] [options]", help="simulate a model",
                          description="Compile and simulate a model; print a summary and "
                                      "the final values of its states (or of --print).")
-    run.add_argument("--t-end", type=_positive, metavar="T",
+    run.add_argument("--t-end", type=_real, metavar="T",
                      help="end time (default: the model's stop_time, if it has one)")
-    run.add_argument("--rtol", type=_positive, default=1e-6, metavar="R",
+    run.add_argument("--rtol", type=_real, default=1e-6, metavar="R",
                      help="relative tolerance (default 1e-6)")
-    run.add_argument("--atol", type=_nonnegative, metavar="A",
+    run.add_argument("--atol", type=_real, metavar="A",
                      help="absolute tolerance, scaled by each variable's nominal value "
                           "(default: rtol)")
-    run.add_argument("--n-points", type=_points, metavar="N",
+    run.add_argument("--n-points", type=_whole, metavar="N",
                      help="N evenly spaced output points (default: every step)")
     run.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE",
                      help="change tunable parameters, e.g. --set motor.R=2 load.J=0.02")
@@ -464,10 +476,10 @@ def build_parser() -> argparse.ArgumentParser:
                      help="the .fmu file to write (default: MODEL.fmu)")
     fmu.add_argument("--type", choices=tuple(_FMI_TYPES), default="me",
                      help="me: Model Exchange (default), cs: Co-Simulation")
-    fmu.add_argument("--t-end", type=_positive, metavar="T",
+    fmu.add_argument("--t-end", type=_real, metavar="T",
                      help="the default experiment's stop time (default: the model's "
                           "stop_time, if it has one)")
-    fmu.add_argument("--rtol", type=_positive, metavar="R",
+    fmu.add_argument("--rtol", type=_real, metavar="R",
                      help="the default experiment's tolerance (Co-Simulation integrates "
                           "with it unless the importer sets another)")
     fmu.set_defaults(handler=_cmd_fmu)
@@ -482,13 +494,16 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _exit_status(err) -> int | None:
-    """1 for the typed failures of a model or a run, 2 for usage; None: not expected."""
+    """1 for the typed failures of a model or a run, 2 for usage (a number given on the
+    command line that the API refuses among them); None: not expected."""
+    from .compiler.structure.matching import StructuralError
     from .components import ModelError
-    from .errors import BackendError, InitializationFailed, SimulationError
-    if isinstance(err, UsageError):
+    from .errors import (BackendError, CacheError, InitializationFailed, InvalidArgument,
+                         SimulationError)
+    if isinstance(err, (UsageError, InvalidArgument)):
         return 2
     if isinstance(err, (_Failed, ModelError, SimulationError, InitializationFailed,
-                        BackendError, OSError)):
+                        BackendError, CacheError, StructuralError, OSError)):
         return 1
     return None
 
@@ -497,7 +512,8 @@ def main(argv=None) -> int:
     """Run the command line on ``argv`` (default ``sys.argv[1:]``); the exit status."""
     parser = build_parser()
     try:
-        args = parser.parse_args(argv)
+        args = parser.parse_args(_negative_numbers(list(sys.argv[1:] if argv is None
+                                                        else argv)))
     except SystemExit as stop:           # --help, --version, or argparse's usage error
         return stop.code if isinstance(stop.code, int) else (0 if stop.code is None else 2)
     try:

@@ -22,7 +22,7 @@ from .result import Event, Result
 if TYPE_CHECKING:
     from .runtime import CompiledModel
 
-__all__ = ["compile", "simulate", "initial_values"]
+__all__ = ["compile", "simulate", "initial_values", "check_arguments"]
 
 
 def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
@@ -167,10 +167,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     ``success=False``, naming the variable, its equation and the time (``"stop"``), or
     only warns and the run goes on (``"warn"``).
     """
-    t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
-    if not t_end > t_start:
-        raise InvalidArgument(f"simulate: t_end = {t_end} must be after t_start = {t_start}")
-    rtol = _tolerance(rtol)
+    check_arguments(t_end, t_start, rtol, atol, n_points)
+    t_start, t_end, rtol = _time("t_start", t_start), _time("t_end", t_end), float(rtol)
     max_step = _positive("max_step", max_step, allow_inf=True)
     if isinstance(max_order, bool) or not isinstance(max_order, (int, np.integer)) \
             or not 1 <= max_order <= 5:
@@ -183,8 +181,6 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     if parameters is not None and not isinstance(parameters, dict):
         raise InvalidArgument(f"simulate: parameters must be a dict {{name: value}}, "
                               f"got {type(parameters).__name__}")
-    if atol is not None and not isinstance(atol, dict):
-        _positive("atol", atol)
     t_eval = _output_times(t_eval, n_points, t_start, t_end)
     compiled = compile(model, backend, check_units=check_units)
     atol = _absolute_tolerance(compiled, atol, rtol)
@@ -410,6 +406,18 @@ def _first_nonfinite(compiled, t):
             if what is not None:
                 return k, what
     return None
+
+
+def check_arguments(t_end, t_start=0.0, rtol=1e-6, atol=None, n_points=None) -> None:
+    """The checks :func:`simulate` makes of these arguments before anything is compiled
+    (the command line makes them before it loads the model): InvalidArgument."""
+    t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
+    if not t_end > t_start:
+        raise InvalidArgument(f"simulate: t_end = {t_end} must be after t_start = {t_start}")
+    _tolerance(rtol)
+    if atol is not None and not isinstance(atol, dict):
+        _positive("atol", atol)
+    _output_times(None, n_points, t_start, t_end)
 
 
 def _number(name, value) -> float:

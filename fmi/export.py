@@ -31,6 +31,7 @@ is refused.
 from __future__ import annotations
 
 import hashlib
+import math
 import os
 import re
 import shutil
@@ -41,7 +42,7 @@ import zipfile
 
 import numpy as np
 
-from ..errors import BackendError
+from ..errors import BackendError, InvalidArgument
 from .description import FmiVariable, model_description
 from .ccode import build_binary, model_c
 from .structure import Reads, solved_dependencies
@@ -73,7 +74,9 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
     """
     kind = _fmi_type(fmi_type)
     if rtol is not None and not (0 < float(rtol) < 1):
-        raise ValueError(f"rtol must be in (0, 1), got {rtol!r}")
+        raise InvalidArgument(f"export_fmu: rtol must be in (0, 1), got {rtol!r}")
+    if t_end is not None and not (math.isfinite(float(t_end)) and float(t_end) > 0):
+        raise InvalidArgument(f"export_fmu: t_end must be > 0 and finite, got {t_end!r}")
     from ..compiler.backends.cbackend import compiler_available
     cc = compiler_available()
     if cc is None:

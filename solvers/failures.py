@@ -50,8 +50,9 @@ def failure_message(problem, solver, exc: StepFailure) -> tuple:
                 exc.kind, exc.kind)
     ahead = _undefined_ahead(problem, solver, exc.h)
     if ahead is not None:
-        msg = (f"{what} at t={exc.t:.10g} (h={exc.h:.3g}): just after it the model is "
-               f"undefined ({ahead}); the solution leaves the domain of a function there")
+        msg = (f"{what} at t={exc.t:.10g} (h={exc.h:.3g}); the largest weighted errors "
+               f"are in {variables}. Just after it the model is undefined ({ahead}): the "
+               f"solution leaves the domain of a function there")
         return msg, exc.t, variables
     msg = (f"{what} at t={exc.t:.10g} (h={exc.h:.3g}); the largest weighted errors "
            f"are in {variables}. The solution may blow up, be non-smooth, or the "

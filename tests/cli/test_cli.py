@@ -358,7 +358,14 @@ def test_list_domain_json_ports_and_parameters(capsys):
     (["run", f"{SHOWCASE}:Nope", "--t-end", "1"], 2, ["no 'Nope'", "MotorDrive"]),
     (["run", f"{SHOWCASE}:main", "--t-end", "1"], 2, ["not a model"]),
     (["run", SHOWCASE], 2, ["--t-end", "stop_time"]),
-    (["run", SHOWCASE, "--t-end", "-1"], 2, ["must be > 0"]),
+    (["run", SHOWCASE, "--t-end", "-1"], 2, ["InvalidArgument", "t_end = -1.0 must be after"]),
+    (["run", SHOWCASE, "--t-end", "1", "--rtol", "-1e-6"], 2,
+     ["InvalidArgument", "rtol", "(0, 1)", "-1e-06"]),
+    (["run", SHOWCASE, "--t-end", "1", "--rtol", "5"], 2, ["InvalidArgument", "rtol"]),
+    (["run", SHOWCASE, "--t-end", "1", "--atol", "0"], 2, ["InvalidArgument", "atol", "> 0"]),
+    (["run", SHOWCASE, "--t-end", "1", "--atol", "-1E-3"], 2, ["InvalidArgument", "atol"]),
+    (["run", SHOWCASE, "--t-end", "1", "--n-points", "-3"], 2, ["InvalidArgument", "n_points"]),
+    (["run", SHOWCASE, "--t-end", "1", "--n-points", "2.5"], 2, ["not a whole number"]),
     (["run", "--print", "load.w", SHOWCASE, "--t-end", "1"], 2, ["SCRIPT[:MODEL] is missing"]),
     (["run", SHOWCASE, "--t-end", "1", "--csv", "/no/such/dir/out.csv"], 2,
      ["does not exist"]),
@@ -438,3 +445,25 @@ def test_check_units_error_refuses_a_model_whose_units_differ(capsys, tmp_path):
     code, out, err = run_cli(capsys, "report", f"{path}:Oscillator", "--check-units", "off",
                              "--backend", "numpy")
     assert code == 0, err
+
+
+UNDERDETERMINED = """
+import acausal as ac
+
+
+class Loose(ac.Component):
+    x = ac.Variable(start=1.0)
+    y = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), -self.x + self.y)]
+"""
+
+
+def test_a_structural_error_reaches_the_command_line_as_itself(capsys, tmp_path):
+    script = tmp_path / "loose.py"
+    script.write_text(UNDERDETERMINED)
+    code, out, err = run_cli(capsys, "run", str(script), "--t-end", "1")
+    assert code == 1
+    assert "UnderdeterminedModel: under-determined" in err
+    assert "unexpected" not in err and "Traceback" not in err

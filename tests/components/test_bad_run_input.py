@@ -46,13 +46,44 @@ def _raises(exc, text):
     (dict(t_eval=[0.0, 2.0]), "t_eval has 1 time(s) outside [t_start, t_end]"),
     (dict(t_eval=[0.0, 0.06, 0.03]), "t_eval must be sorted"),
     (dict(t_eval=[0.0, math.nan, 0.1]), "t_eval has non-finite entries at positions [1]"),
-    (dict(rtol=-1.0), "rtol must be > 0"),
+    (dict(rtol=-1.0), "rtol is a relative error and must be in (0, 1), e.g. 1e-6; got -1.0"),
+    (dict(rtol=1), "rtol is a relative error and must be in (0, 1), e.g. 1e-6; got 1"),
+    (dict(rtol=5.0), "must be in (0, 1), e.g. 1e-6; got 5.0"),
+    (dict(rtol=True), "rtol must be a number, got True"),
+    (dict(atol=0.0), "atol must be > 0 and finite, got 0.0"),
+    (dict(atol=-1e-8), "atol must be > 0 and finite, got -1e-08"),
+    (dict(atol={"C1.vv": 1e-9}), "atol['C1.vv']: the model has no variable 'C1.vv' "
+                                 "(did you mean 'C1.v'?)"),
+    (dict(atol={"C1.v": 0.0}), "atol['C1.v'] must be > 0 and finite, got 0.0"),
+    (dict(max_step=0.0), "max_step must be > 0, got 0.0"),
+    (dict(max_order=6), "max_order must be an integer from 1 to 5, got 6"),
+    (dict(n_points=1.5), "n_points must be an integer >= 2, got 1.5"),
     (dict(t_start=0.2), "t_end = 0.1 must be after t_start = 0.2"),
+    (dict(t_start=math.inf), "t_start must be finite, got inf"),
+    (dict(nonfinite="ignore"), "nonfinite must be one of 'stop', 'warn', got 'ignore'"),
+    (dict(parameters=[("R1.R", 2.0)]), "parameters must be a dict {name: value}, got list"),
 ], ids=["n_points=0", "t_eval outside", "t_eval unsorted", "t_eval NaN", "rtol<0",
-        "t_end<t_start"])
+        "rtol=1", "rtol=5", "rtol=True", "atol=0", "atol<0", "atol unknown name",
+        "atol=0 by name", "max_step=0", "max_order=6", "n_points=1.5", "t_end<t_start",
+        "t_start=inf", "nonfinite", "parameters list"])
 def test_bad_simulate_arguments_are_refused_by_name(kwargs, text):
-    with _raises(ValueError, text):
+    with _raises(ac.InvalidArgument, text):
         ac.simulate(RC(), t_end=0.1, **kwargs)
+
+
+def test_an_absolute_tolerance_per_unknown():
+    # C1.v = 1 - exp(-t / (R C)), R C = 10 ms: a tight atol on it alone holds it there
+    compiled = ac.compile(RC())
+    assert "C1.v" in compiled.names
+    res = ac.simulate(compiled, t_end=0.05, rtol=1e-3, atol={"C1.v": 1e-10})
+    loose = ac.simulate(compiled, t_end=0.05, rtol=1e-3)
+    exact = 1.0 - np.exp(-res.t / 0.01)
+    assert np.max(np.abs(res["C1.v"] - exact)) < 1e-3
+    assert res.stats["steps"] >= loose.stats["steps"]
+    others = [n for n in compiled.outputs if n not in compiled.names and n != "C1.v"]
+    with _raises(ac.InvalidArgument, f"atol['{others[0]}']: {others[0]} is computed from "
+                                     "the unknowns the integrator controls"):
+        ac.simulate(compiled, t_end=0.05, atol={others[0]: 1e-9})
 
 
 @pytest.mark.parametrize("value, exc, text", [
