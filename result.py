@@ -60,10 +60,14 @@ class Event(float):
                         self.reinits))
 
     def __repr__(self):
-        what = [f"{t}: {_fmt(a)} -> {_fmt(b)}" for t, a, b in self.changes]
+        """One line of bounded length: each relation's text shortened, at most a few
+        changes (the whole texts are in ``relations`` and ``changes``)."""
+        from .words import shortened
+        what = [f"{shortened(t, 100)}: {_fmt(a)} -> {_fmt(b)}" for t, a, b in self.changes]
         what += [f"reinit({v}): {_fmt(a)} -> {_fmt(b)}" for v, a, b in self.reinits]
+        more = f"; and {len(what) - 4} more" if len(what) > 4 else ""
         return f"Event(t={self.time:.10g}, {self.kind}" + \
-            (f"; {'; '.join(what)})" if what else ")")
+            (f"; {'; '.join(what[:4])}{more})" if what else ")")
 
 
 def _fmt(x) -> str:
@@ -192,9 +196,13 @@ class Result:
 
     @staticmethod
     def _missing(name, known) -> str:
-        close = [n for n in known if name.split(".")[-1] in n][:8]
-        return (f"no variable '{name}' in the result"
-                + (f"; similar: {', '.join(close)}" if close else ""))
+        from .components.validation import suggestion
+        from .words import listed
+        hint = suggestion(str(name), _nearby(str(name), known))
+        leaf = str(name).split(".")[-1]
+        close = [n for n in known if leaf and n.split(".")[-1] == leaf]
+        return (f"no variable '{name}' in the result{hint}"
+                + (f"; variables named {leaf}: {listed(close)}" if close else ""))
 
     def at(self, name: str, t: float) -> float:
         """The value of ``name`` at time t (linear interpolation between output points)."""
@@ -294,6 +302,20 @@ class Result:
         span = f"t = {self.t[0]:g} .. {self.t[-1]:g}, " if len(self.t) else ""
         return (f"<Result {len(self.t)} points, {span}{n_vars} variables, "
                 f"{len(self.events)} events, {status}>")
+
+
+def _nearby(name: str, known) -> list:
+    """The names worth comparing ``name`` with: those of its component (and its
+    parent's) in a large model, else all."""
+    if len(known) <= 2000:
+        return list(known)
+    prefix = name.rsplit(".", 1)[0] + "." if "." in name else ""
+    while prefix:
+        found = [n for n in known if n.startswith(prefix)]
+        if found:
+            return found
+        prefix = prefix[:-1].rsplit(".", 1)[0] + "." if "." in prefix[:-1] else ""
+    return [n for n in known if "." not in n] or list(known)[:2000]
 
 
 def _signal_name(name, known):

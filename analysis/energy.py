@@ -257,20 +257,29 @@ class EnergyBalance:
         scale (for a decaying system, the initial energy)."""
         return float(np.max(np.abs(self.residual)) / max(np.max(np.abs(self.E)), 1e-300))
 
+    def __repr__(self) -> str:
+        """The summary (bounded: the arrays and whole lists are in the attributes)."""
+        return (f"<EnergyBalance of {len(self.t)} points: "
+                f"{'ok' if self.ok else 'not ok'}>\n{self.summary()}")
+
     def summary(self) -> str:
-        """The audit in words: the balance, each role, each violation."""
+        """The audit in words: the balance, each role, each violation (lists of names
+        end with "and N more")."""
+        from ..words import listed, shortened
         lines = [f"energy balance: max |dE/dt - (P_in + P_created - P_diss)| = "
                  f"{np.max(np.abs(self.residual), initial=0.0):.3g} W, power scale "
                  f"{self.power_scale:.3g} W ({'closes' if self.balance_closes else 'FAILS'})"]
         for role in ROLES:
             paths = [p for p, r in self.roles.items() if r == role]
             if paths:
-                lines.append(f"  {role}: {', '.join(paths)}")
+                lines.append(f"  {role}: {listed(paths, 12)}")
         if self.created:
             lines.append(f"  created by model equations (no exact energy function): "
-                         f"{', '.join(self.created)}, up to "
+                         f"{listed(self.created, 12)}, up to "
                          f"{np.max(np.abs(self.P_created), initial=0.0):.3g} W")
-        lines += [f"  VIOLATION {v}" for v in self.violations]
+        lines += [f"  VIOLATION {shortened(v, 300)}" for v in self.violations[:8]]
+        if len(self.violations) > 8:
+            lines.append(f"  and {len(self.violations) - 8} more violations")
         return "\n".join(lines)
 
 
@@ -404,6 +413,11 @@ class Passivity:
 
     def __bool__(self):
         return self.passive
+
+    def __repr__(self) -> str:
+        worst = float(np.min(self.margin, initial=0.0))
+        return (f"<Passivity: {'passive' if self.passive else 'not passive'} over "
+                f"{len(self.t)} points, least margin {worst:.3g} W>")
 
 
 def is_passive(result, model: Component, component: str, *, tol: float = 1e-6) -> Passivity:

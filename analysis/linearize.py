@@ -288,11 +288,21 @@ def _input_column(plant, name, t, z):
         return k, 1.0
     c = plant.compiled
     internal = plant.internal(name)
+    if internal in c.meta.get("structural_zeros", ()):
+        from ..components import NotInModel
+        raise NotInModel(f"input '{name}' was 0 when the model was compiled, so it is a "
+                         "structural zero (its terms were removed, it is not tunable): "
+                         "pass the Component to linearize, which compiles it tunable, or "
+                         f"compile the model with a non-zero {name}")
     if internal not in c.outputs:
         raise KeyError(f"no parameter, input or variable named '{name}'{_inside(plant, name)}")
     sign, idx = c.outputs[internal]
     if sign is None and not callable(idx):
-        raise ValueError(f"'{name}' is a constant of the model, it cannot be an input")
+        from ..compiler.index.balance import zero_causes
+        zeros = zero_causes(c.meta.get("structural_zeros", ()), [internal.rsplit(".", 1)[0]])
+        raise ValueError(f"'{name}' is a constant of the model, it cannot be an input"
+                         + (f" ({zeros}; or take the parameter that is 0 as the input, "
+                            "passing the Component)" if zeros else ""))
     if sign is None:        # fixed to a function of the parameters by the compiler
         return _driving_parameter(plant, name, lambda k: _dconst_dp(c, idx, [(k, 1.0)])[0])
     if idx in {c.outputs[c.names[j]][1] for j in range(c.n)}:

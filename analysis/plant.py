@@ -220,8 +220,10 @@ def _drive_parameters(root, probe, paths):
             continue
         fresh = _find(root, owner_path)
         args, kwargs = fresh._init_call
-        extra = {f"{name}_value": float(value), f"{name}_rate": 1.0, f"{name}_accel": 1.0,
-                 f"{name}_t_ref": 1.0}
+        # compiled as 1 when it is 0 (a 0 would be a structural zero, not tunable); its
+        # value is set after the compile (compile_plant)
+        extra = {f"{name}_value": float(value) or 1.0, f"{name}_rate": 1.0,
+                 f"{name}_accel": 1.0, f"{name}_t_ref": 1.0}
         new = driven_class(type(fresh), name)(*args, **{**kwargs, **extra})
         if not owner_path:
             root = new

@@ -368,10 +368,14 @@ def _initial_rows(system, reduced, reduction, caus):
             fixed.add(k)
     if len(rows) > needed:
         from ..errors import InitializationFailed
+        from ..words import listed
+        from .index.balance import zero_causes
+        places = [w.rsplit("[", 1)[-1].split(" (")[0] for w in text]
+        cause = zero_causes(reduced.structural_zeros, places)
         raise InitializationFailed(
             f"the initial problem is over-specified: {len(rows)} initial conditions for "
-            f"{needed} states ({', '.join(system.symbols[v].name for v in reduction.states)}); "
-            "conditions: " + "; ".join(text))
+            f"{needed} states ({listed(system.symbols[v].name for v in reduction.states)}"
+            f"); conditions: {listed(text, 6)}" + (f"; {cause}" if cause else ""))
     n_mandatory = len(rows)
     for v in reduction.states:
         if v not in fixed:

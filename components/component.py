@@ -573,6 +573,12 @@ def flatten_equation_list(items) -> list:
     if type(items) is list and all(type(i) in _PLAIN_ITEMS for i in items):
         return list(items)       # the common case: a list of equations, already flat
     kinds = tuple(_PLAIN_ITEMS)
+    if isinstance(items, kinds) or not (items is None or isinstance(items, (list, tuple))
+                                        or hasattr(items, "__iter__")):
+        from ..words import shortened
+        raise InvalidEquation(f"returned {shortened(repr(items), 100)} "
+                              f"({type(items).__name__}), not a list of equations: return "
+                              "a list, e.g. [ac.Eq(lhs, rhs)]")
     out = []
     stack = [iter(items if items is not None else [])]
     while stack:

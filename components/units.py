@@ -341,18 +341,31 @@ def output_tables(units: dict, descriptions: dict, names) -> tuple[dict, dict]:
 
 
 def with_derivatives(units: dict, names) -> dict:
-    """``units`` completed with ``der(x)`` for each such name: x's unit per second."""
+    """``units`` completed with ``der(x)`` for each such name: x's unit per second, and
+    so on for ``der(der(x))`` (m, m/s, m/s2); no unit where x has none."""
     out = dict(units)
+
+    def unit_of(n):
+        if n in out:
+            return out[n]
+        if n.startswith("der(") and n.endswith(")"):
+            return per_second(unit_of(n[4:-1]))
+        return ""
     for n in names:
         if n.startswith("der(") and n.endswith(")") and n not in out:
-            out[n] = per_second(units.get(n[4:-1], ""))
+            out[n] = unit_of(n)
     return out
 
 
+_PER_S = re.compile(r"/s(\d*)$")
+
+
 def per_second(unit: str) -> str:
-    """A unit divided by seconds, in Modelica's unit syntax ("m/s" -> "m/s2")."""
+    """A unit divided by seconds, in Modelica's unit syntax ("m" -> "m/s" -> "m/s2" ->
+    "m/s3"); "" (no unit declared) stays "" -- a unit is not made up."""
     if not unit:
-        return "1/s"
-    if unit.endswith("/s"):
-        return unit + "2"
+        return ""
+    m = _PER_S.search(unit)
+    if m and "(" not in unit[m.start():]:
+        return f"{unit[:m.start()]}/s{int(m.group(1) or 1) + 1}"
     return f"{unit}/s" if "/" not in unit else f"({unit})/s"

@@ -22,16 +22,39 @@ def library_domains() -> list:
 
 def describe_domain(domain: str) -> dict:
     """``{"doc", "components": {name: {"module", "doc", "ports", "parameters"}}}`` for the
-    Component classes a domain exports (its ``__all__``, in that order; ports excluded)."""
-    from ..components import Component, Port
+    Component classes a domain exports (its ``__all__``, in that order), and those of
+    the sub-modules it exports (``translational.KarnoppFriction``, named with the
+    sub-module where the domain itself does not export them); not ports, not the
+    partial base classes (``Partial...``: what components are built from, not what a
+    model places), each class once."""
     package = importlib.import_module(f"{__package__}.{domain}")
-    components = {}
-    for name in getattr(package, "__all__", ()):
-        cls = getattr(package, name, None)
-        if isinstance(cls, type) and issubclass(cls, Component) and not issubclass(cls, Port):
-            components[name] = {"module": cls.__module__, "doc": _first_line(cls),
-                                "ports": _ports(cls), "parameters": _parameters(cls)}
+    components, seen = {}, set()
+    _collect(package, "", components, seen, depth=0)
     return {"doc": _first_line(package), "components": components}
+
+
+def _collect(module, prefix, components, seen, depth) -> None:
+    """The components ``module`` exports into ``components``; then, one level down,
+    those of the sub-modules it exports."""
+    import types
+
+    from ..components import Component, Port
+    names = list(getattr(module, "__all__", ()))
+    subs = []
+    for name in names:
+        obj = getattr(module, name, None)
+        if isinstance(obj, types.ModuleType):
+            subs.append((name, obj))
+        elif isinstance(obj, type) and issubclass(obj, Component) \
+                and not issubclass(obj, Port) and not name.startswith("Partial") \
+                and obj not in seen:
+            seen.add(obj)
+            components[prefix + name] = {"module": obj.__module__, "doc": _first_line(obj),
+                                         "ports": _ports(obj),
+                                         "parameters": _parameters(obj)}
+    if depth < 2:
+        for name, sub in subs:
+            _collect(sub, f"{prefix}{name}.", components, seen, depth + 1)
 
 
 def _first_line(obj) -> str:

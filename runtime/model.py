@@ -443,12 +443,7 @@ class CompiledModel(DAEProblem):
         p = self.p.copy()
         for name, value in _by_element(values, self.param_names).items():
             if name not in self.param_names:
-                zeros = self.meta.get("structural_zeros", ())
-                why = (" (it was 0 at compile time and was evaluated as a structural zero: "
-                       "compile with a non-zero value to tune it)") if name in zeros else ""
-                close = [n for n in self.param_names if n.split(".")[-1] == name.split(".")[-1]]
-                hint = f"; parameters with that name: {', '.join(close[:6])}" if close else ""
-                raise NotInModel(f"the model has no tunable parameter '{name}'{why}{hint}")
+                raise NotInModel(self._no_parameter(name))
             x = _real_value(name, value)
             lo, hi = self.meta.get("parameter_bounds", {}).get(name, (None, None))
             if (lo is not None and x < lo) or (hi is not None and x > hi):
@@ -465,6 +460,30 @@ class CompiledModel(DAEProblem):
                                    f"[{'-inf' if lo is None else lo}, "
                                    f"{'inf' if hi is None else hi}]")
         self.p[:] = p
+
+    def _no_parameter(self, name) -> str:
+        return _no_parameter_message(self, name)
+
+
+def _no_parameter_message(model, name) -> str:
+    """Why ``name`` cannot be set: a structural zero, a derived parameter, a variable,
+    or a name the model does not have (with "did you mean")."""
+    from ..components.validation import suggestion
+    from ..words import listed
+    zeros = model.meta.get("structural_zeros", ())
+    if name in zeros:
+        why = (" (it was 0 at compile time and was evaluated as a structural zero: "
+               "compile with a non-zero value to tune it)")
+    elif name in model.derived_parameters:
+        why = " (it is bound to other parameters by an expression: change those)"
+    elif name in model.outputs:
+        why = " (it is a variable, not a parameter)"
+    else:
+        why = suggestion(str(name), model.param_names)
+    leaf = str(name).split(".")[-1]
+    close = [n for n in model.param_names if n.split(".")[-1] == leaf and n != name]
+    hint = f"; parameters named {leaf}: {listed(close, 6)}" if close else ""
+    return f"the model has no tunable parameter '{name}'{why}{hint}"
 
 
 def _by_element(values: dict, names: list) -> dict:

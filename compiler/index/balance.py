@@ -11,7 +11,7 @@ from __future__ import annotations
 from ..structure.graph import Structure
 from ..structure.matching import StructuralError, check_structure
 
-__all__ = ["check_balance"]
+__all__ = ["check_balance", "zero_causes"]
 
 
 def check_balance(system, structure: Structure, flat, aliases=None, n_flat=None) -> None:
@@ -33,8 +33,29 @@ def check_balance(system, structure: Structure, flat, aliases=None, n_flat=None)
         removed = _removed_for(aliases, involved)
         if removed:
             extra += "\n  trivial equations already used for these variables: " + "; ".join(removed)
+        zeros = zero_causes(getattr(flat, "structural_zeros", ()),
+                            [n.split(" [")[1].split(" (")[0] for n in involved if " [" in n])
+        if zeros:
+            extra += f"\n  {zeros}"
         err.args = (str(err) + extra,) + err.args[1:]
         raise
+
+
+def zero_causes(zeros, components) -> str:
+    """A sentence naming the parameters given exactly 0 (structural zeros: the terms
+    they multiply were removed, derivatives with them) of the ``components`` an error
+    is about, or of the model when none of those has one; "" when there are none."""
+    if not zeros:
+        return ""
+    from ...words import listed
+    places = {c for c in components if c}
+    near = [z for z in zeros if z.rsplit(".", 1)[0] in places
+            or any(z.startswith(c + ".") for c in places)]
+    named = near or list(zeros)
+    where = "of these components " if near else ""
+    return (f"the parameters {where}given 0 are structural zeros, which removed the terms "
+            f"they multiply (a derivative with them): {listed(named)}; give them a "
+            "non-zero value if that is not meant")
 
 
 def _removed_for(aliases, involved_names) -> list:

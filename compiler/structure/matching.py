@@ -341,12 +341,13 @@ class StructuralDiagnosis:
                 "singular": "structurally singular"}[self.kind]
         en = dict(zip(self.equations, self.eq_names))
         vn = dict(zip(self.variables, self.var_names))
+        from ...words import listed      # a message of bounded length: lists end "and N more"
         msg = f"{head}: {self.n_equations} equations, {self.n_unknowns} unknowns"
         if self.over_equations:
             msg += ("\n  too many equations for their variables: "
-                    + ", ".join(en[e] for e in self.over_equations))
+                    + listed(en[e] for e in self.over_equations))
             if self.over_variables:
-                msg += "\n    (they involve only: " + ", ".join(
+                msg += "\n    (they involve only: " + listed(
                     vn[v] for v in self.over_variables) + ")"
             else:
                 # left without unknowns by the aliases and constants: a quantity imposed
@@ -356,9 +357,9 @@ class StructuralDiagnosis:
                         "voltage, speed or position; remove one of them)")
         if self.under_variables:
             msg += ("\n  variables not determined: "
-                    + ", ".join(vn[v] for v in self.under_variables))
+                    + listed(vn[v] for v in self.under_variables))
             if self.under_equations:
-                msg += "\n    (occurring in: " + ", ".join(
+                msg += "\n    (occurring in: " + listed(
                     en[e] for e in self.under_equations) + ")"
             if self.over_equations:
                 # both parts at once usually have one cause

@@ -47,6 +47,15 @@ class KarnoppFriction(_Karnopp, PartialRotationalFriction):
     der(w) = sa.  A body that enters the band is stopped there (reinit of w to 0),
     so it sticks with w = 0 exactly, and breaks away when |F_a| exceeds F_s.  Band
     edges and |sa| = F_s are events; no chattering.
+
+    The band is not free.  Every breakaway starts at w = 0 inside it, and the body
+    leaves it only when w reaches dv, pushed by the net torque F_a - F_s, which grows
+    from zero at the rate F' at which the applied torque passes F_s: J der(w) = F' t,
+    so each breakaway is late by about sqrt(2 J dv / F') (J the inertia it
+    moves; 1 kg.m2, dv = 1e-6 rad/s and F' = 1e3 N.m/s: 45 us, which a stick-slip
+    cycle repeats, and which adds up over many cycles).  Keep dv small against the
+    speeds that matter, and the absolute tolerance of w (atol times its nominal
+    value) below dv: the integrator must resolve the band to stop in it.
     """
 
     F_c = ac.Parameter(1.0, unit="N.m", min=0, description="Coulomb friction level")

@@ -47,6 +47,15 @@ class KarnoppFriction(_Karnopp, PartialTranslationalFriction):
     der(v) = sa.  A body that enters the band is stopped there (reinit of v to 0),
     so it sticks with v = 0 exactly, and breaks away when |F_a| exceeds F_s.  Band
     edges and |sa| = F_s are events; no chattering.
+
+    The band is not free.  Every breakaway starts at v = 0 inside it, and the body
+    leaves it only when v reaches dv, pushed by the net force F_a - F_s, which grows
+    from zero at the rate F' at which the applied force passes F_s: m der(v) = F' t,
+    so each breakaway is late by about sqrt(2 m dv / F') (m the inertia it
+    moves; 1 kg, dv = 1e-6 m/s and F' = 1e3 N/s: 45 us, which a stick-slip
+    cycle repeats, and which adds up over many cycles).  Keep dv small against the
+    speeds that matter, and the absolute tolerance of v (atol times its nominal
+    value) below dv: the integrator must resolve the band to stop in it.
     """
 
     F_c = ac.Parameter(1.0, unit="N", min=0, description="Coulomb friction level")

@@ -97,7 +97,8 @@ def test_bad_parameter_values_at_run_time(value, exc, text):
 
 
 def test_unknown_parameter_names_the_ones_that_exist():
-    with _raises(NotInModel, "no tunable parameter 'R9.R'; parameters with that name: R1.R"):
+    with _raises(NotInModel, "no tunable parameter 'R9.R' (did you mean 'R1.R'?); "
+                             "parameters named R: R1.R"):
         ac.simulate(RC(), t_end=0.1, parameters={"R9.R": 1.0})
 
 
