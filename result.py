@@ -131,6 +131,8 @@ class Result:
         meta = getattr(compiled, "meta", None) or {}
         self.units = dict(meta.get("units", {}))
         self.descriptions = dict(meta.get("descriptions", {}))
+        self._cols = {}          # the outputs read so far, by their column of expand
+        self._kept = None        # the outputs a run kept (simulate(..., outputs=)), or all
 
     @classmethod
     def from_table(cls, t, columns: dict, **fields) -> "Result":
@@ -138,7 +140,9 @@ class Result:
         res = cls(None, t, np.zeros((len(t), 0)), fields.pop("stats", None),
                   fields.pop("events", ()), fields.pop("success", True),
                   fields.pop("message", ""))
-        res._table = {n: np.asarray(v, dtype=float) for n, v in columns.items()}
+        # a dict of arrays, or a mapping that reads each when first asked for (a file)
+        res._table = {n: np.asarray(v, dtype=float) for n, v in columns.items()} \
+            if isinstance(columns, dict) else columns
         for key, value in fields.items():
             setattr(res, key, value)
         return res
@@ -147,7 +151,15 @@ class Result:
     def names(self) -> list:
         if self._table is not None:
             return sorted(self._table)
+        if self._kept is not None:
+            return sorted(self._kept)
         return sorted(self.compiled.outputs)
+
+    def _keep(self, names) -> None:
+        """Keep only the outputs ``names`` (``simulate(..., outputs=)``), computed now."""
+        outputs = self.compiled.outputs
+        self._columns([outputs[n][1] for n in names if outputs[n][0] is not None])
+        self._kept = set(names)
 
     @property
     def event_times(self) -> np.ndarray:
@@ -166,11 +178,13 @@ class Result:
         return {n: float(v) for n, v in zip(self.parameter_names, self.parameters)}
 
     def __contains__(self, name) -> bool:
-        known = self._table if self._table is not None else self.compiled.outputs
+        known = self._table if self._table is not None else (
+            self._kept if self._kept is not None else self.compiled.outputs)
         return name in known or _signal_name(name, known) is not None
 
     def __getitem__(self, name: str) -> np.ndarray:
-        known = self._table if self._table is not None else self.compiled.outputs
+        known = self._table if self._table is not None else (
+            self._kept if self._kept is not None else self.compiled.outputs)
         if name not in known and isinstance(name, str):
             array = _array_elements(name, known)
             if array is not None:     # an array variable: time x its shape
@@ -183,16 +197,45 @@ class Result:
             if name not in self._table:
                 raise KeyError(self._missing(name, self._table))
             return self._table[name].copy()
+        if self._kept is not None and name not in self._kept:
+            raise KeyError(self._missing(name, self._kept)
+                           + "; the run kept only the outputs asked for (outputs=)")
         try:
             sign, k = self.compiled.outputs[name]
         except KeyError:
             raise KeyError(self._missing(name, self.compiled.outputs)) from None
         if sign is None:
             return np.full(len(self.t), k(self.parameters) if callable(k) else k)
-        if self._y is None:
-            self._y = _expand(self.compiled, self.t, self._z, self.parameters,
-                              self._discrete, self._discrete_index, self._delayed)
-        return sign * self._y[:, k]
+        return sign * self._columns([k])[0]
+
+    def _columns(self, cols) -> list:
+        """The outputs ``cols`` (columns of the model's ``expand``) at every point:
+        computed for these only, once (:mod:`acausal.runtime.outputs`), and kept."""
+        missing = [c for c in dict.fromkeys(cols) if c not in self._cols]
+        if missing:
+            if self._y is None and not self._vectorized():
+                # no modes recorded for the points: each point settles its own, as before
+                self._y = _expand(self.compiled, self.t, self._z, self.parameters,
+                                  self._discrete, self._discrete_index, self._delayed)
+            if self._y is not None:
+                self._cols.update({c: self._y[:, c] for c in missing})
+            else:
+                self._cols.update(zip(missing, self._evaluate(missing)))
+        return [self._cols[c] for c in cols]
+
+    def _vectorized(self) -> bool:
+        c = self.compiled
+        known = len(self._discrete_index) == len(self.t) and bool(self._discrete)
+        delays_kept = getattr(c, "delays", None) is None or (
+            self._delayed is not None and len(self._delayed) == len(self.t))
+        return c.code.expand is None or (known and delays_kept) or (
+            not len(self.t) and delays_kept)
+
+    def _evaluate(self, cols) -> list:
+        """:meth:`_columns` computed (:func:`acausal.runtime.outputs.evaluate`)."""
+        from .runtime.outputs import evaluate
+        return evaluate(self.compiled, cols, self.t, self._z, self.parameters,
+                        self._discrete, self._discrete_index, self._delayed)
 
     @staticmethod
     def _missing(name, known) -> str:
@@ -298,7 +341,8 @@ class Result:
 
     def __repr__(self):
         status = "ok" if self.success else f"FAILED: {self.message}"
-        n_vars = len(self._table) if self._table is not None else len(self.compiled.outputs)
+        n_vars = len(self._table) if self._table is not None else (
+            len(self._kept) if self._kept is not None else len(self.compiled.outputs))
         span = f"t = {self.t[0]:g} .. {self.t[-1]:g}, " if len(self.t) else ""
         return (f"<Result {len(self.t)} points, {span}{n_vars} variables, "
                 f"{len(self.events)} events, {status}>")

@@ -143,7 +143,13 @@ def _h5py():
 
 
 def save_result(res: Result, path) -> None:
-    """Everything :func:`load_result` needs, in one HDF5 file."""
+    """Everything :func:`load_result` needs, in one HDF5 file: a result of a compiled
+    model in :mod:`acausal.results_store`'s layout (one row per series, written a block
+    of points at a time, read one variable at a time); a loaded one as it holds it."""
+    if res.compiled is not None:
+        from .results_store import write
+        write(res, path)
+        return
     h5py = _h5py()
     names = res.names
     values = np.column_stack([res[n] for n in names]) if names else \
@@ -204,6 +210,11 @@ def load_result(path) -> Result:
     with h5py.File(path, "r") as fh:
         if fh.attrs.get("format") != _FORMAT:
             raise ValueError(f"{path}: not a result saved by acausal (Result.save)")
+        version = int(fh.attrs.get("version", 1))
+    if version >= 2:
+        from .results_store import read
+        return read(path)
+    with h5py.File(path, "r") as fh:
         t = fh["time"][()]
         values = fh["values"][()]
         names = _strings(fh["names"])

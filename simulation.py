@@ -144,7 +144,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              max_order: int = 5, raise_on_failure: bool = False,
              backend: str = "auto", progress: bool | None = None,
              step_loop: str = "auto", check_units: str = "warn",
-             nonfinite: str = "stop") -> Result:
+             nonfinite: str = "stop", outputs=None, store=None) -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -166,6 +166,11 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     ``nonfinite``: a variable that is NaN or inf at an output point ends the run with
     ``success=False``, naming the variable, its equation and the time (``"stop"``), or
     only warns and the run goes on (``"warn"``).
+    ``outputs``: the variables to keep (default: every one, each computed when first
+    read); the result holds the states' values and these.  ``store``: a file
+    (``"run.h5"``, HDF5) the run writes as it goes, a block of points at a time, instead
+    of holding its points: the result returned reads its variables from the file when
+    asked (:mod:`acausal.results_store`; with ``outputs``, only those are written).
     """
     check_arguments(t_end, t_start, rtol, atol, n_points)
     t_start, t_end, rtol = _time("t_start", t_start), _time("t_end", t_end), float(rtol)
@@ -187,12 +192,17 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     # the values hold for this run only (as in sweeps and estimation): a later run of the
     # same compiled model starts again from the values it had before
     saved = compiled.p.copy()
+    keeping = None
     try:
         if parameters:
             compiled.set_parameters(parameters)
+        from .results_store import Keeping
+        keeping = Keeping.make(compiled, outputs, store)
         return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
-                    raise_on_failure, progress, step_loop, nonfinite)
+                    raise_on_failure, progress, step_loop, nonfinite, keeping)
     finally:
+        if keeping is not None:
+            keeping.abandon()          # a run that raised: the file is closed
         compiled.p[:] = saved
         if compiled.backend in ("c", "numpy"):
             # for the next runs (either backend's model runs in the compiled loop): this
@@ -202,8 +212,12 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
 
 
 def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
-         raise_on_failure, progress, step_loop, nonfinite="stop") -> Result:
-    """One run of a compiled model at its current parameter values."""
+         raise_on_failure, progress, step_loop, nonfinite="stop", keeping=None) -> Result:
+    """One run of a compiled model at its current parameter values (``keeping``: what
+    it keeps, :class:`acausal.results_store.Keeping`)."""
+    if keeping is None:
+        from .results_store import Keeping
+        keeping = Keeping()
     y0, yp0 = compiled.initialize(t_start)
     from .runtime.clocked import has_discrete_events, run_between_events
     if compiled.n == 0 and has_discrete_events(compiled):
@@ -211,9 +225,9 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         marks = _log_marks(compiled)
         out = run_between_events(compiled, t_start, t_end, t_eval)
         events, _ = _event_records(compiled, out, marks)
-        return Result(compiled, out.t, np.zeros((len(out.t), 0)), out.stats, events, True,
-                      "no states: run from event to event", out.point_states,
-                      list(range(len(out.t))))
+        return keeping.result(compiled, out.t, np.zeros((len(out.t), 0)), out.stats, events,
+                              True, "no states: run from event to event", out.point_states,
+                              list(range(len(out.t))))
     if compiled.n == 0:
         # nothing to integrate: every variable is an explicit function of time, and each
         # point is evaluated with the relations as they hold there
@@ -230,8 +244,8 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
             if nonfinite == "stop":
                 success, t = False, t[:k]
             warnings.warn(f"simulate: {message}", RuntimeWarning, stacklevel=3)
-        return Result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], success,
-                      message, delay_values=delayed)
+        return keeping.result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], success,
+                              message, delayed=delayed)
     from .solvers import integrate
     marks = _log_marks(compiled)
     bar = _Progress.make(progress, t_start, t_end)
@@ -239,7 +253,7 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         out = integrate(compiled, (t_start, t_end), y0, yp0, rtol=rtol, atol=atol,
                         t_eval=t_eval, max_step=max_step, max_order=int(max_order),
                         initialize=False, progress=bar, step_loop=step_loop,
-                        nonfinite=nonfinite)
+                        nonfinite=nonfinite, sink=keeping.sink)
     except SimulationError as err:
         partial = err.partial
         start = _singular_start(compiled, t_start)
@@ -247,8 +261,8 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
             # what failed first: the structure found at compile time does not hold here
             err.args = (f"{err}; {start}",)
             err.reason = str(err)
-        res = _result(compiled, partial, False, str(err), marks) \
-            if partial is not None and len(partial.t) else None
+        res = _result(compiled, partial, False, str(err), marks, keeping) \
+            if partial is not None and getattr(partial, "points", len(partial.t)) else None
         if raise_on_failure or res is None:
             err.partial = res
             raise
@@ -270,7 +284,7 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         message = (f"{message}; at {missed} requested output time(s) the algebraic "
                    "unknowns without an error bound are interpolated, not solved")
         warnings.warn(f"simulate: {message}", RuntimeWarning, stacklevel=3)
-    return _result(compiled, out, out.success, message, marks)
+    return _result(compiled, out, out.success, message, marks, keeping)
 
 
 def _singular_start(compiled, t_start) -> str | None:
@@ -284,11 +298,14 @@ def _singular_start(compiled, t_start) -> str | None:
     return None
 
 
-def _result(compiled, out, success, message, marks=(0, 0, "")) -> Result:
+def _result(compiled, out, success, message, marks=(0, 0, ""), keeping=None) -> Result:
     events, switches = _event_records(compiled, out, marks)
-    return Result(compiled, out.t, out.y, out.stats, events, success, message,
-                  out.discrete_states, out.discrete_index, state_switches=switches,
-                  delay_values=getattr(out, "point_values", ()))
+    if keeping is None:
+        from .results_store import Keeping
+        keeping = Keeping()
+    return keeping.result(compiled, out.t, out.y, out.stats, events, success, message,
+                          out.discrete_states, out.discrete_index, switches,
+                          getattr(out, "point_values", ()))
 
 
 def _log_marks(compiled) -> tuple:

@@ -46,6 +46,7 @@ from .initialization import consistent_initial, reinitialize
 __all__ = ["integrate", "NONFINITE"]
 
 NONFINITE = ("stop", "warn")     # what a NaN or inf at an output point does
+_SINK_BLOCK = 4096               # output points held before they go to a sink
 
 _ROOT_RTOL = 1e-12       # event-time tolerance, relative to max(|t|, t_end - t0)
 _ZENO_INTERVALS = 10     # geometric shrinking over this many event intervals ...
@@ -62,7 +63,7 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
               max_steps: int = 500000, initialize: bool = True,
               max_event_iterations: int = 20, max_order: int = 5,
               stald: bool = False, progress=None, step_loop: str = "auto",
-              nonfinite: str = "stop") -> SolverOutput:
+              nonfinite: str = "stop", sink=None) -> SolverOutput:
     """Integrate the DAE ``problem`` over ``t_span`` with the variable-order BDF.
 
     Parameters
@@ -112,6 +113,12 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
         (``problem.check_point``, contract item 18) -- ends the run as a failure naming
         it ("stop"), or is said in the output's ``nonfinite`` (the first such point)
         while the run goes on ("warn").
+    sink : optional
+        Where the output points go as the run makes them, in blocks, instead of the
+        output (a file: ``simulate(..., store=)``): ``sink.add(t, y, index, values,
+        snapshots)`` with the points' times, y (a row each), the discrete state of
+        each (``snapshots[index[k]]``) and the values recorded with each (item 16);
+        y' is not kept.  The output then holds no points (``points`` counts them).
 
     Returns
     -------
@@ -134,12 +141,20 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     run = _Run(problem, t_span, t_eval, rtol, atol, max_step, suppress_alg, max_steps,
                max_event_iterations)
     run.nonfinite = nonfinite
+    run.sink = sink
     run.bdf_options = {"max_order": max_order, "stald": stald}
     from .cbdf import choose_step_loop
     run.mode = choose_step_loop(problem, step_loop, stald)
     run.progress = progress
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         return run.go(y0, yp0, first_step, initialize)
+
+
+def _finite_sum(y) -> bool:
+    """Whether y is finite, from its sum (NaN and inf propagate; an overflow of a
+    finite sum only sends the caller to the exact test)."""
+    s = float(np.add.reduce(y, axis=None)) if len(y) else 0.0
+    return s - s == 0.0
 
 
 class _Run:
@@ -182,6 +197,7 @@ class _Run:
         self.output_point = getattr(problem, "output_point", None)      # item 17
         self.check_point = getattr(problem, "check_point", None)        # item 18
         self.nonfinite, self.nonfinite_seen = "stop", None
+        self.sink, self.flushed = None, 0     # where the points go, and how many went
         self.values = []
 
     # ------------------------------------------------------------------ main loop
@@ -282,9 +298,20 @@ class _Run:
             # a block of points as one (k, n) array: _output stacks blocks and rows
             self.ts.extend(ts.tolist())
             self.ys.append(ys)
-            self.yps.append(yps)
+            if self.sink is None:
+                self.yps.append(yps)
         if self.keeps_discrete:
             self.snapshot_of.extend([len(self.snapshots) - 1] * len(ts))
+        if self.sink is not None and len(self.ts) >= _SINK_BLOCK:
+            self._flush()
+
+    def _flush(self) -> None:
+        """Hand the points held to the sink (``integrate(..., sink=)``) and let them go."""
+        if self.ts:
+            self.sink.add(np.array(self.ts), np.vstack(self.ys), self.snapshot_of,
+                          self.values, self.snapshots)
+            self.flushed += len(self.ts)
+            self.ts, self.ys, self.yps, self.snapshot_of, self.values = [], [], [], [], []
 
     def _accepted(self, s):
         """After an accepted step: events, output, the problem's after-step hook."""
@@ -364,6 +391,11 @@ class _Run:
         point all of it).  With ``nonfinite="warn"`` the first is kept for the output,
         and None returned."""
         what, variables = None, []
+        check = self.check_point
+        first = not self.ts and not self.flushed
+        if (check is None or not (getattr(check, "every_point", True) or first)) \
+                and _finite_sum(y):
+            return None                   # the common case, in a microsecond
         if not np.all(np.isfinite(y)):
             variables = [self.problem.names[i] for i in np.flatnonzero(~np.isfinite(y))]
             what = (f"{', '.join(variables[:3])}{' ...' if len(variables) > 3 else ''} "
@@ -372,7 +404,7 @@ class _Run:
             m = None
             if snapshot is not None and self.keeps_discrete:
                 m = self.snapshots[snapshot]
-            what = self.check_point(float(t), y, m, every=not self.ts)
+            what = self.check_point(float(t), y, m, every=first)
         if what is None:
             return None
         message = f"a value is not finite at an output point: {what}"
@@ -408,13 +440,16 @@ class _Run:
         # the solver hands out fresh arrays for every point, so no copies are needed
         self.ts.append(float(t))
         self.ys.append(y)
-        self.yps.append(yp)
+        if self.sink is None:
+            self.yps.append(yp)
         if self.keeps_discrete:
             self.snapshot_of.append(len(self.snapshots) - 1 if snapshot is None else snapshot)
         if self.point_values is not None:
             v = self.point_values(float(t))
             if v is not None:
                 self.values.append(v)
+        if self.sink is not None and len(self.ts) >= _SINK_BLOCK:
+            self._flush()
 
     def _snapshot(self) -> None:
         """Record the problem's discrete state (it may have changed at an event)."""
@@ -425,6 +460,8 @@ class _Run:
 
     def _output(self, success: bool, message: str) -> SolverOutput:
         n = self.problem.n
+        if self.sink is not None:     # every point went there; the output holds none
+            self._flush()
         lin = getattr(getattr(self, "solver", None), "lin", None)
         if self.stats.step_loop == "c":
             self.stats.linear_solver = "sparse" if self.solver.sparse else "dense"
@@ -438,6 +475,7 @@ class _Run:
         out.event_log = list(self.event_log)
         out.point_values = list(self.values)
         out.nonfinite = self.nonfinite_seen
+        out.points = self.flushed + len(self.ts)
         return out
 
     # ------------------------------------------------------------------ failures
