@@ -155,6 +155,14 @@ class Result:
             return sorted(self._kept)
         return sorted(self.compiled.outputs)
 
+    def _prefetch(self, names) -> None:
+        """Compute the outputs ``names`` (of a result of a compiled model) together:
+        the statements they share run once."""
+        if self._table is None and self._kept is None:
+            outputs = self.compiled.outputs
+            self._columns([outputs[n][1] for n in names
+                           if n in outputs and outputs[n][0] is not None])
+
     def _keep(self, names) -> None:
         """Keep only the outputs ``names`` (``simulate(..., outputs=)``), computed now."""
         outputs = self.compiled.outputs
@@ -262,6 +270,7 @@ class Result:
     def to_csv(self, path, names=None) -> None:
         """Columns ``time`` and each variable (default: all, sorted by name)."""
         names = self._names(names)
+        self._prefetch(names)
         with open(path, "w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow(["time"] + names)
@@ -285,6 +294,7 @@ class Result:
             raise ImportError("Result.to_pandas needs pandas: pip install 'acausal[io]'") \
                 from err
         names, rows = self._names(names), self._rows(unique)
+        self._prefetch(names)
         df = pd.DataFrame({n: self[n][rows] for n in names},
                           index=pd.Index(self.t[rows], name="time"), columns=names)
         df.attrs["units"] = {n: self.units.get(n, "") for n in names}
@@ -302,6 +312,7 @@ class Result:
             raise ImportError("Result.to_xarray needs xarray: pip install 'acausal[io]'") \
                 from err
         names, rows = self._names(names), self._rows(unique)
+        self._prefetch(names)
         data = {n: ("time", self[n][rows], {"units": self.units.get(n, ""),
                                       "description": self.descriptions.get(n, "")})
                 for n in names}

@@ -87,6 +87,7 @@ def _mat_layout(res: Result, names):
     series, constants, entries = [t], [np.array([t[0], t[-1]])], [("time", "Time [s]", 0, 1)]
     by_key = {}
     outputs = res.compiled.outputs if res.compiled is not None else None
+    res._prefetch(names)
     for name, value in res.parameter_values.items():
         constants.append(np.array([value, value]))
         entries.append((name, _description(res, name), 1, len(constants)))

@@ -120,6 +120,7 @@ def _run_one(compiled, base, values, job):
     finally:
         compiled.p[:] = base
     k = len(res.t)              # output at t_eval: a failed run's points are the first k
+    res._prefetch(job["names"])
     for i, n in enumerate(job["names"]):
         out[i, :k] = res[n]
     return out, bool(res.success), str(res.message), int(res.stats.get("steps", 0))
