@@ -348,7 +348,7 @@ class StructuralDiagnosis:
                     + listed(en[e] for e in self.over_equations))
             if self.over_variables:
                 msg += "\n    (they involve only: " + listed(
-                    vn[v] for v in self.over_variables) + ")"
+                    (vn[v] for v in self.over_variables), limit=1000) + ")"
             else:
                 # left without unknowns by the aliases and constants: a quantity imposed
                 # twice (two voltage sources in parallel, two motions on one flange)
@@ -356,8 +356,9 @@ class StructuralDiagnosis:
                         "equations already fix, e.g. two sources imposing the same "
                         "voltage, speed or position; remove one of them)")
         if self.under_variables:
+            # a variable's name carries its port's hint whole (what to connect)
             msg += ("\n  variables not determined: "
-                    + listed(vn[v] for v in self.under_variables))
+                    + listed((vn[v] for v in self.under_variables), limit=1000))
             if self.under_equations:
                 msg += "\n    (occurring in: " + listed(
                     en[e] for e in self.under_equations) + ")"
