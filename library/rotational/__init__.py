@@ -11,7 +11,7 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "RackAndPinion", "ElastoBacklash", "ElasticGearWithDeadzone", "GearWithBacklash",
            "Clutch", "Brake", "OneWayClutch", "BearingFriction", "PartialFriction",
            "ConstantTorque",
-           "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
+           "TorqueStep", "Torque", "Torque2", "LinearSpeedDependentTorque",
            "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate", "Position",
            "AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
            "RelAccSensor", "TorqueSensor", "PowerSensor", "MultiSensor"]
@@ -34,5 +34,5 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                  "RelAngleSensor", "RelSpeedSensor", "SpeedSensor", "TorqueSensor"),
     ".sources": ("Accelerate", "ConstantSpeed", "ConstantTorque",
                  "LinearSpeedDependentTorque", "Position", "QuadraticSpeedDependentTorque",
-                 "Speed", "StepTorque", "Torque", "Torque2"),
+                 "Speed", "TorqueStep", "Torque", "Torque2"),
 })

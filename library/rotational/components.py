@@ -130,8 +130,8 @@ class IdealGear(PartialElementaryTwoFlangesAndSupport):
     """Ideal gear without inertia (Egeland & Gravdahl 3.2.3, (3.1)-(3.4); MSL
     Rotational.Components.IdealGear), with the angles taken from its housing:
 
-        flange_a.phi - phi_support = n (flange_b.phi - phi_support)
-        0 = n flange_a.tau + flange_b.tau,   support.tau = -flange_a.tau - flange_b.tau
+        flange_a.phi - phi_support = ratio (flange_b.phi - phi_support)
+        0 = ratio flange_a.tau + flange_b.tau,   support.tau = -flange_a.tau - flange_b.tau
 
     ``IdealGear(useSupport=True)`` mounts it on a ``support`` flange (a gearbox on a
     moving or elastic housing, which then takes the reaction torque); by default the
@@ -139,14 +139,14 @@ class IdealGear(PartialElementaryTwoFlangesAndSupport):
     between two states: index 3, which index reduction handles.
     """
 
-    n = ac.Parameter(1.0, description="gear ratio flange_a.phi / flange_b.phi")
+    ratio = ac.Parameter(1.0, description="transmission ratio flange_a.phi / flange_b.phi")
 
     energy_role = "lossless"  # an ideal transformer of motion: power in = power out
 
     def equations(self):
         phi_s = self.phi_support()
-        return [ac.Eq(self.flange_a.phi - phi_s, self.n * (self.flange_b.phi - phi_s)),
-                ac.Eq(0, self.n * self.flange_a.tau + self.flange_b.tau)]
+        return [ac.Eq(self.flange_a.phi - phi_s, self.ratio * (self.flange_b.phi - phi_s)),
+                ac.Eq(0, self.ratio * self.flange_a.tau + self.flange_b.tau)]
 
 
 class IdealPlanetary(ac.Component):
@@ -290,7 +290,7 @@ class ElasticGearWithDeadzone(PartialTwoFlanges):
         tau = K (phi + delta)  if phi < -delta,   K (phi - delta)  if phi > delta,   else 0
         flange_a.tau = tau,   flange_b.tau = -n tau
 
-    Here n = flange_a.phi / flange_b.phi as in IdealGear; the book's ratio is 1/n
+    Here n = flange_a.phi / flange_b.phi as IdealGear's ratio; the book's ratio is 1/n
     (its phi = theta_m - theta_L/n_book, T_gL = T_gm/n_book).  The corners of the
     dead zone are events.
     """
@@ -325,7 +325,7 @@ class GearWithBacklash(PartialTwoFlanges):
     Parameters
     ----------
     n : float
-        Gear ratio flange_a.phi / flange_b.phi in contact, as in ``IdealGear``; the
+        Gear ratio flange_a.phi / flange_b.phi in contact, as ``IdealGear.ratio``; the
         book's ratio is n_b = 1/n.
     delta : float
         Half width of the dead zone, measured on the output (flange_b) side [rad].

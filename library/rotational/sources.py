@@ -13,7 +13,7 @@ from acausal.ports import RealInput
 from ..blocks import signals
 from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
-__all__ = ["ConstantTorque", "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
+__all__ = ["ConstantTorque", "TorqueStep", "Torque", "Torque2", "LinearSpeedDependentTorque",
            "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate",
            "Position"]
 
@@ -33,7 +33,7 @@ class ConstantTorque(PartialElementaryOneFlangeAndSupport):
         return [ac.Eq(self.flange.tau, -self.tau_constant)]
 
 
-class StepTorque(PartialElementaryOneFlangeAndSupport):
+class TorqueStep(PartialElementaryOneFlangeAndSupport):
     """Torque step:  flange.tau = -(offsetTorque + (stepTorque if time >= startTime))."""
 
     stepTorque = ac.Parameter(1.0, unit="N.m", description="height of the step")

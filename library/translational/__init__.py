@@ -5,7 +5,7 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "Rod", "MassWithStop",
-           "Spring", "Damper", "SpringDamper", "ConstantForce", "StepForce", "Force", "Force2",
+           "Spring", "Damper", "SpringDamper", "ConstantForce", "ForceStep", "Force", "Force2",
            "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "ConstantSpeed",
            "Speed", "Accelerate", "Position", "PositionSensor", "SpeedSensor", "AccSensor",
            "RelPositionSensor", "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor"]
@@ -22,5 +22,5 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                  "RelPositionSensor", "RelSpeedSensor", "SpeedSensor"),
     ".sources": ("Accelerate", "ConstantForce", "ConstantSpeed", "Force", "Force2",
                  "LinearSpeedDependentForce", "Position", "QuadraticSpeedDependentForce",
-                 "Speed", "StepForce"),
+                 "Speed", "ForceStep"),
 })

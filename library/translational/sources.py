@@ -12,7 +12,7 @@ from acausal.ports import RealInput
 from ..blocks import signals
 from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
-__all__ = ["ConstantForce", "StepForce", "Force", "Force2", "LinearSpeedDependentForce",
+__all__ = ["ConstantForce", "ForceStep", "Force", "Force2", "LinearSpeedDependentForce",
            "QuadraticSpeedDependentForce", "ConstantSpeed", "Speed", "Accelerate", "Position"]
 
 
@@ -27,7 +27,7 @@ class ConstantForce(PartialElementaryOneFlangeAndSupport):
         return [ac.Eq(self.flange.f, -self.f_constant)]
 
 
-class StepForce(PartialElementaryOneFlangeAndSupport):
+class ForceStep(PartialElementaryOneFlangeAndSupport):
     """Force step:  flange.f = -(offsetForce + (stepForce if time >= startTime else 0))."""
 
     stepForce = ac.Parameter(1.0, unit="N", description="height of the step")
