@@ -1,14 +1,15 @@
 """1-D translational mechanics."""
 from ... import _lazy_exports
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
-           "PartialElementaryOneFlange",
+__all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
+           "PartialCompliantWithRelativeStates", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "Rod", "MassWithStop",
            "Spring", "Damper", "SpringDamper", "ConstantForce", "ForceStep", "Force", "Force2",
            "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "ConstantSpeed",
            "Speed", "Accelerate", "Position", "PositionSensor", "SpeedSensor", "AccSensor",
-           "RelPositionSensor", "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor"]
+           "RelPositionSensor", "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor",
+           "MultiSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Rod", "Spring",
@@ -17,9 +18,9 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "PartialCompliantWithRelativeStates",
                     "PartialElementaryOneFlange", "PartialElementaryOneFlangeAndSupport",
                     "PartialRelativeSensor",
-                    "PartialTwoFlanges"),
-    ".sensors": ("AccSensor", "ForceSensor", "PositionSensor", "PowerSensor", "RelAccSensor",
-                 "RelPositionSensor", "RelSpeedSensor", "SpeedSensor"),
+                    "PartialRigid", "PartialTwoFlanges"),
+    ".sensors": ("AccSensor", "ForceSensor", "MultiSensor", "PositionSensor", "PowerSensor",
+                 "RelAccSensor", "RelPositionSensor", "RelSpeedSensor", "SpeedSensor"),
     ".sources": ("Accelerate", "ConstantForce", "ConstantSpeed", "Force", "Force2",
                  "LinearSpeedDependentForce", "Position", "QuadraticSpeedDependentForce",
                  "Speed", "ForceStep"),

@@ -5,7 +5,7 @@ from acausal._sympy import sympy as sp
 import acausal as ac
 
 from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
-                         PartialElementaryOneFlange, PartialTwoFlanges)
+                         PartialElementaryOneFlange, PartialRigid, PartialTwoFlanges)
 
 __all__ = ["Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "MassWithStop"]
 
@@ -21,14 +21,14 @@ class Fixed(PartialElementaryOneFlange):
         return [ac.Eq(self.flange.s, self.s0)]
 
 
-class Mass(PartialTwoFlanges):
-    """Sliding mass (Newton's second law):
+class Mass(PartialRigid):
+    """Sliding mass with inertia (MSL Translational.Components.Mass), its centre at s and
+    its flanges L/2 either side (``PartialRigid``):
 
-        s = flange_a.s = flange_b.s,   v = der(s),   m der(v) = flange_a.f + flange_b.f
+        v = der(s),   a = der(v),   m a = flange_a.f + flange_b.f
     """
 
-    m = ac.Parameter(1.0, unit="kg", min=0, description="mass")
-    s = ac.Variable(start=0.0, unit="m", description="absolute position")
+    m = ac.Parameter(1.0, unit="kg", min=0, description="mass of the sliding mass")
     v = ac.Variable(start=0.0, unit="m/s", description="absolute velocity")
     a = ac.Variable(unit="m/s2", description="absolute acceleration")
 
@@ -37,28 +37,22 @@ class Mass(PartialTwoFlanges):
         return self.m * self.v**2 / 2
 
     def equations(self):
-        return [ac.Eq(self.s, self.flange_a.s),
-                ac.Eq(self.s, self.flange_b.s),
-                ac.Eq(self.v, ac.der(self.s)),
+        return [ac.Eq(self.v, ac.der(self.s)),
                 ac.Eq(self.a, ac.der(self.v)),
                 ac.Eq(self.m * self.a, self.flange_a.f + self.flange_b.f)]
 
 
-class Rod(PartialTwoFlanges):
-    """Massless rigid rod of length L (MSL Translational.Components.Rod), its centre at s:
+class Rod(PartialRigid):
+    """Rod without inertia (MSL Translational.Components.Rod), its centre at s and its
+    flanges L/2 either side (``PartialRigid``):
 
-        flange_a.s = s - L/2,   flange_b.s = s + L/2,   0 = flange_a.f + flange_b.f
+        0 = flange_a.f + flange_b.f
     """
-
-    L = ac.Parameter(0.0, unit="m", min=0, description="length of the rod")
-    s = ac.Variable(start=0.0, unit="m", description="position of the centre")
 
     energy_role = "lossless"  # rigid and massless
 
     def equations(self):
-        return [ac.Eq(self.flange_a.s, self.s - self.L / 2),
-                ac.Eq(self.flange_b.s, self.s + self.L / 2),
-                ac.Eq(0, self.flange_a.f + self.flange_b.f)]
+        return [ac.Eq(0, self.flange_a.f + self.flange_b.f)]
 
 
 class Spring(PartialCompliant):

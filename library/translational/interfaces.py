@@ -5,8 +5,8 @@ from acausal.ports import TranslationalFlange
 from ..relative_states import LinearAcceleration, RelativeStatesMixin
 from ..support import SupportMixin
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
-           "PartialElementaryOneFlange",
+__all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
+           "PartialCompliantWithRelativeStates", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
            "PartialElementaryOneFlangeAndSupport"]
 
@@ -16,6 +16,22 @@ class PartialTwoFlanges(ac.Component):
 
     flange_a = TranslationalFlange()
     flange_b = TranslationalFlange()
+
+
+class PartialRigid(PartialTwoFlanges):
+    """A rigid body of length L between its flanges, its centre at s (MSL Translational
+    PartialRigid):
+
+        flange_a.s = s - L/2,   flange_b.s = s + L/2
+    """
+
+    L = ac.Parameter(0.0, unit="m",
+                     description="length of the component, flange_b.s - flange_a.s")
+    s = ac.Variable(start=0.0, unit="m", description="absolute position of the centre")
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.s, self.s - self.L / 2),
+                ac.Eq(self.flange_b.s, self.s + self.L / 2)]
 
 
 class PartialCompliant(PartialTwoFlanges):
