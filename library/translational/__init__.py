@@ -4,7 +4,8 @@ from ... import _lazy_exports
 __all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
            "PartialCompliantWithRelativeStates", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
-           "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "Rod", "MassWithStop",
+           "PartialElementaryOneFlangeAndSupport", "Fixed", "Mass", "Rod", "ElastoGap",
+           "MassWithStop",
            "Spring", "Damper", "SpringDamper", "ConstantForce", "ForceStep", "Force", "Force2",
            "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "ConstantSpeed",
            "Speed", "Accelerate", "Position", "PositionSensor", "SpeedSensor", "AccSensor",
@@ -12,7 +13,7 @@ __all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
            "MultiSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".components": ("Damper", "Fixed", "Mass", "MassWithStop", "Rod", "Spring",
+    ".components": ("Damper", "ElastoGap", "Fixed", "Mass", "MassWithStop", "Rod", "Spring",
                     "SpringDamper"),
     ".interfaces": ("PartialAbsoluteSensor", "PartialCompliant",
                     "PartialCompliantWithRelativeStates",

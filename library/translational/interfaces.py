@@ -59,7 +59,8 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
 
     ``stateSelect`` is the state priority of s_rel and v_rel: "prefer" for a stiff
     coupling; by default ("default") the states of ``PartialCompliant`` (see
-    ``acausal.library.relative_states``).
+    ``acausal.library.relative_states``).  ``s_nominal`` (1e-4 m) is the nominal value
+    of s_rel, which scales its error tolerance.
     """
 
     s_rel = ac.Variable(start=0.0, unit="m", nominal=1e-4,
@@ -69,10 +70,11 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
 
     _relative_states = ("s_rel", "v_rel")
     _acceleration = LinearAcceleration
+    _nominal_name = "s_nominal"
 
-    def __init__(self, *, stateSelect="default", **modifications):
+    def __init__(self, *, stateSelect="default", s_nominal=1e-4, **modifications):
         super().__init__(**modifications)
-        self._select(stateSelect)
+        self._select(stateSelect, s_nominal)
 
     def equations(self):
         return [ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s),

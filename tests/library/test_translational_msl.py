@@ -31,3 +31,72 @@ def test_a_mass_of_length_L_is_pushed_at_its_left_flange_and_the_multisensor_rea
     assert np.max(np.abs(res["sensor.f"] - F)) < 1e-9 * F
     assert np.max(np.abs(res["sensor.v"] - v)) < 1e-9 * np.ptp(v)
     assert np.max(np.abs(res["sensor.power"] - F * v)) < 1e-9 * F * np.ptp(v)
+
+
+def bouncer(gap):
+    class Bouncer(ac.Component):
+        """A mass moving at V0 towards a wall through an elasto-gap (s_rel0 = G)."""
+
+        wall = tr.Fixed()
+        gap_ = gap
+        mass = tr.Mass(m=M, s={"start": 0.0, "fixed": True}, v={"start": -V0, "fixed": True})
+        E_loss = ac.Variable(start=0.0, fixed=True, unit="J", description="energy dissipated")
+
+        def equations(self):
+            return [ac.connect(self.wall.flange, self.gap_.flange_a),
+                    ac.connect(self.gap_.flange_b, self.mass.flange_a),
+                    ac.Eq(ac.der(self.E_loss), self.gap_.lossPower)]
+
+    return Bouncer()
+
+
+V0, G, CG, DG = 1.0, -0.2, 400.0, 6.0
+
+
+def test_an_undamped_elasto_gap_with_a_power_law_gives_back_the_energy_it_took():
+    from acausal.analysis import energy_balance
+    t = np.linspace(0, 1.0, 201)
+    model = bouncer(tr.ElastoGap(c=CG, d=0.0, n=2.0, s_rel0=G))
+    res = ac.simulate(model, t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    x = np.minimum(res["mass.s"] - G, 0.0)                  # penetration, <= 0
+    E = M * res["mass.v"]**2 / 2 + CG * np.abs(x)**3 / 3
+    E0 = M * V0**2 / 2
+    assert np.min(x) < -0.1 * (3 * E0 / CG)**(1 / 3)        # it went into contact
+    assert np.max(np.abs(E - E0)) < 1e-7 * E0
+    assert abs(res["mass.v"][-1] - V0) < 1e-6 * V0          # back out at the speed it came
+    assert np.all(res["gap_.f"] <= 1e-12 * CG)              # it only pushes
+    assert not energy_balance(res, model).violations
+
+
+def test_a_damped_elasto_gap_against_dop853_on_the_hand_written_law():
+    from scipy.integrate import solve_ivp
+
+    def force(s, v):                                  # the force of the gap on the mass
+        x = s - G
+        if x >= 0:
+            return 0.0
+        f_c, f_d2 = -CG * abs(x), DG * v
+        return -(f_c + min(max(f_d2, f_c), -f_c))
+
+    edge = lambda t, y: y[0] - G                       # noqa: E731
+    edge.terminal = True
+    t = np.linspace(0, 1.0, 201)
+    pieces, t0, y0 = [], 0.0, [0.0, -V0]
+    while t0 < 1.0:
+        sol = solve_ivp(lambda t, y: [y[1], force(*y) / M], (t0, 1.0), y0, method="DOP853",
+                        rtol=1e-11, atol=1e-13, events=edge, dense_output=True)
+        pieces.append((t0, sol.t[-1], sol.sol))
+        t0, y0 = sol.t[-1], sol.y[:, -1] + np.array([np.sign(sol.y[1, -1]) * 1e-14, 0.0])
+        if sol.status == 0:
+            break
+    ref = np.concatenate([p[2](t[(t >= p[0]) & (t <= p[1]) & ~((t == p[0]) & (k > 0))])[0]
+                          for k, p in enumerate(pieces)])
+    model = bouncer(tr.ElastoGap(c=CG, d=DG, s_rel0=G))
+    res = ac.simulate(model, t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    assert len(ref) == len(t) and len(res.events) >= 2
+    assert np.max(np.abs(res["mass.s"] - ref)) < 1e-7 * V0
+    # kinetic + spring energy + what lossPower took = the initial kinetic energy
+    x = np.minimum(res["mass.s"] - G, 0.0)
+    E = M * res["mass.v"]**2 / 2 + CG * x**2 / 2 + res["E_loss"]
+    assert np.max(np.abs(E - M * V0**2 / 2)) < 1e-7 * M * V0**2 / 2
+    assert res["E_loss"][-1] > 0.05 * M * V0**2 / 2
