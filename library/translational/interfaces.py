@@ -8,7 +8,7 @@ from ..support import SupportMixin
 __all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
            "PartialCompliantWithRelativeStates", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
-           "PartialElementaryOneFlangeAndSupport"]
+           "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport"]
 
 
 class PartialTwoFlanges(ac.Component):
@@ -131,3 +131,27 @@ class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFla
         if not self.supported("support"):
             return []
         return [ac.Eq(self.support.f, -self.flange.f)]
+
+
+class PartialElementaryTwoFlangesAndSupport(SupportMixin, PartialTwoFlanges):
+    """Two flanges acting against a support (MSL Translational
+    PartialElementaryTwoFlangesAndSupport2), force-free as a whole:
+
+        support.f = -flange_a.f - flange_b.f
+
+    ``useSupport=True`` creates the flange ``support``; without it s_support = 0.
+    """
+
+    _supports = {"support": "useSupport"}
+
+    def __init__(self, *, useSupport=False, **modifications):
+        super().__init__(**modifications)
+        self._mount({"support": TranslationalFlange}, {"useSupport": useSupport})
+
+    def s_support(self):
+        return self.support_position("support", "s")
+
+    def equations(self):
+        if not self.supported("support"):
+            return []
+        return [ac.Eq(self.support.f, -self.flange_a.f - self.flange_b.f)]

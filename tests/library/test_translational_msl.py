@@ -100,3 +100,83 @@ def test_a_damped_elasto_gap_against_dop853_on_the_hand_written_law():
     E = M * res["mass.v"]**2 / 2 + CG * x**2 / 2 + res["E_loss"]
     assert np.max(np.abs(E - M * V0**2 / 2)) < 1e-7 * M * V0**2 / 2
     assert res["E_loss"][-1] > 0.05 * M * V0**2 / 2
+
+
+def test_a_translational_brake_stops_a_mass_and_its_support_takes_the_force():
+    from acausal.library.blocks import Constant
+    V, FN, MU = 2.0, 4.0, 0.5
+
+    class Braked(ac.Component):
+        mass = tr.Mass(m=M, s={"start": 0.0, "fixed": True}, v={"start": V, "fixed": True})
+        brake = tr.Brake(fn_max=FN, useSupport=True, v={"start": V})
+        ground = tr.Fixed()
+        press = Constant(k=1.0)
+
+        def equations(self):
+            return [ac.connect(self.mass.flange_b, self.brake.flange_a),
+                    ac.connect(self.brake.support, self.ground.flange),
+                    ac.connect(self.press.y, self.brake.f_normalized)]
+
+    t = np.linspace(0, 3, 61)
+    res = ac.simulate(Braked(), t_end=3.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    d = MU * FN / M                                      # deceleration while sliding
+    t_star = V / d
+    v = np.where(t < t_star, V - d * t, 0.0)
+    s = np.where(t < t_star, V * t - d * t**2 / 2, V**2 / (2 * d))
+    assert np.max(np.abs(res["mass.v"] - v)) < 1e-8 * V
+    assert np.max(np.abs(res["mass.s"] - s)) < 1e-8 * V * t_star
+    sliding = t < t_star - 0.05
+    assert np.max(np.abs(res["brake.f"][sliding] - MU * FN)) < 1e-8 * MU * FN
+    assert np.max(np.abs(res["ground.flange.f"] - res["brake.f"])) < 1e-9 * MU * FN
+
+
+def test_support_friction_holds_a_mass_until_a_ramped_force_exceeds_its_peak():
+    F0, PEAK, K = 2.0, 1.5, 4.0
+
+    class Pushed(ac.Component):
+        push = tr.Force()
+        mass = tr.Mass(m=M, s={"start": 0.0, "fixed": True}, v={"start": 0.0, "fixed": True})
+        friction = tr.SupportFriction(f_pos=[[0, F0], [10, F0]], peak=PEAK)
+
+        def equations(self):
+            return [ac.connect(self.push.flange, self.mass.flange_a),
+                    ac.connect(self.mass.flange_b, self.friction.flange_a),
+                    ac.Eq(self.push.f, K * ac.time)]
+
+    t = np.linspace(0, 2, 41)
+    res = ac.simulate(Pushed(), t_end=2.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    t_star = PEAK * F0 / K                  # breaks away at the peak, then slides on F0
+    # m a = K t - F0 from t_star:  v = K (t^2 - t*^2)/(2m) - F0 (t - t*)/m
+    v = np.where(t > t_star, (K * (t**2 - t_star**2) / 2 - F0 * (t - t_star)) / M, 0.0)
+    assert np.max(np.abs(res["mass.v"] - v)) < 1e-7 * np.max(v)
+    assert np.min(np.abs(np.asarray(res.events) - t_star)) < 1e-8
+
+
+def test_a_mass_with_stop_and_friction_stops_at_its_stop_and_stays():
+    FC, V0, LEN, SMAX = 1.0, 2.0, 1.0, 1.0
+
+    class Stopped(ac.Component):
+        mass = tr.MassWithStopAndFriction(m=1.0, L=LEN, smax=SMAX, smin=-SMAX, F_prop=0.0,
+                                          F_Coulomb=FC, F_Stribeck=0.0,
+                                          s={"start": 0.0, "fixed": True},
+                                          v={"start": V0, "fixed": True})
+
+    t = np.linspace(0, 1, 51)
+    res = ac.simulate(Stopped(), t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    # s = V0 t - FC t^2 / 2 until the right end reaches SMAX (s = SMAX - LEN/2)
+    t_hit = (V0 - np.sqrt(V0**2 - 2 * FC * (SMAX - LEN / 2))) / FC
+    s = np.where(t < t_hit, V0 * t - FC * t**2 / 2, SMAX - LEN / 2)
+    v = np.where(t < t_hit, V0 - FC * t, 0.0)
+    assert np.min(np.abs(np.asarray(res.events) - t_hit)) < 1e-8
+    assert np.max(np.abs(res["mass.s"] - s)) < 1e-8
+    assert np.max(np.abs(res["mass.v"] - v)[np.abs(t - t_hit) > 1e-6]) < 1e-8
+
+
+def test_the_stribeck_table_of_the_friction_example():
+    from acausal.library.translational.examples.msl.utilities import \
+        GenerateStribeckFrictionTable
+    table = GenerateStribeckFrictionTable(F_prop=1, F_Coulomb=5, F_Stribeck=10, fexp=2,
+                                          v_max=12, nTable=50)
+    assert table.shape == (50, 2) and table[0, 0] == 0 and table[-1, 0] == 12
+    assert np.allclose(table[:, 1], 5 + table[:, 0] + 10 * np.exp(-2 * table[:, 0]),
+                       rtol=1e-15)
