@@ -13,7 +13,7 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "Clutch", "Brake", "OneWayClutch", "BearingFriction", "PartialFriction", "LossyGear",
            "ConstantTorque",
            "TorqueStep", "Torque", "Torque2", "LinearSpeedDependentTorque",
-           "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate", "Position",
+           "QuadraticSpeedDependentTorque", "SignTorque", "EddyCurrentTorque", "ConstantSpeed", "Speed", "Accelerate", "Position",
            "AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
            "RelAccSensor", "TorqueSensor", "PowerSensor", "MultiSensor"]
 
@@ -34,7 +34,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "PartialTwoFlanges"),
     ".sensors": ("AccSensor", "AngleSensor", "MultiSensor", "PowerSensor", "RelAccSensor",
                  "RelAngleSensor", "RelSpeedSensor", "SpeedSensor", "TorqueSensor"),
-    ".sources": ("Accelerate", "ConstantSpeed", "ConstantTorque",
+    ".sources": ("Accelerate", "SignTorque", "EddyCurrentTorque", "ConstantSpeed", "ConstantTorque",
                  "LinearSpeedDependentTorque", "Position", "QuadraticSpeedDependentTorque",
                  "Speed", "TorqueStep", "Torque", "Torque2"),
 })

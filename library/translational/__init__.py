@@ -8,7 +8,7 @@ __all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
            "PartialFriction", "Fixed", "Mass", "Rod", "ElastoGap", "MassWithStop",
            "Spring", "Damper", "SpringDamper", "Brake", "SupportFriction",
            "MassWithStopAndFriction", "ConstantForce", "ForceStep", "Force", "Force2",
-           "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "ConstantSpeed",
+           "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "SignForce", "EddyCurrentForce", "ConstantSpeed",
            "Speed", "Accelerate", "Position", "PositionSensor", "SpeedSensor", "AccSensor",
            "RelPositionSensor", "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor",
            "MultiSensor"]
@@ -24,7 +24,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "PartialRigid", "PartialTwoFlanges"),
     ".sensors": ("AccSensor", "ForceSensor", "MultiSensor", "PositionSensor", "PowerSensor",
                  "RelAccSensor", "RelPositionSensor", "RelSpeedSensor", "SpeedSensor"),
-    ".sources": ("Accelerate", "ConstantForce", "ConstantSpeed", "Force", "Force2",
+    ".sources": ("Accelerate", "SignForce", "EddyCurrentForce", "ConstantForce", "ConstantSpeed", "Force", "Force2",
                  "LinearSpeedDependentForce", "Position", "QuadraticSpeedDependentForce",
                  "Speed", "ForceStep"),
 })

@@ -50,3 +50,47 @@ def test_a_brake_on_a_free_housing_conserves_the_angular_momentum_of_the_pair():
     w_shaft = np.where(t < t_star, W0 - 0.5 * FN / J1 * t, w_common)
     assert np.max(np.abs(res["shaft.w"] - w_shaft)) < 1e-8 * W0
     assert np.max(np.abs(res["brake.w"] - (res["shaft.w"] - res["housing.w"]))) < 1e-9 * W0
+
+
+def _braked(source, w0, J=2.0):
+    class Braked(ac.Component):
+        wheel = rot.Inertia(J=J, phi={"start": 0.0, "fixed": True},
+                            w={"start": w0, "fixed": True})
+        brake = source
+
+        def equations(self):
+            return [ac.connect(self.brake.flange, self.wheel.flange_a)]
+
+    return Braked()
+
+
+def test_an_eddy_current_brake_follows_its_invariant_and_its_loss_is_the_kinetic_energy():
+    import numpy as np
+    from acausal.analysis import energy_balance
+    J, W0, TN, WN, A20, T, TREF = 2.0, 20.0, 100.0, 10.0, 0.0039, 353.15, 293.15
+    model = _braked(rot.EddyCurrentTorque(tau_nominal=TN, w_nominal=WN, alpha20=A20, T=T,
+                                          TRef=TREF), W0, J)
+    t = np.linspace(0, 1, 51)
+    res = ac.simulate(model, t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    # J w' = -2 TN (w/wn)/(1 + (w/wn)^2), wn = WN (1 + alpha (T - TRef)):
+    # ln w + w^2/(2 wn^2) + 2 TN t/(J wn) is constant
+    alpha = A20 / (1 + A20 * (TREF - 293.15))
+    wn = WN * (1 + alpha * (T - TREF))
+    w = res["wheel.w"]
+    inv = np.log(w) + w**2 / (2 * wn**2) + 2 * TN * t / (J * wn)
+    assert np.max(np.abs(inv - inv[0])) < 1e-8 * abs(inv[0])
+    assert w[-1] < 0.2 * W0
+    assert not energy_balance(res, model).violations
+
+
+def test_a_sign_torque_with_linear_regularization_brakes_linearly_then_exponentially():
+    import numpy as np
+    J, W0, T0, WR = 2.0, 3.0, 4.0, 0.5
+    model = _braked(rot.SignTorque(tau_nominal=-T0, w0=WR, reg="Linear"), W0, J)
+    t = np.linspace(0, 2, 81)
+    res = ac.simulate(model, t_end=2.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    t1 = (W0 - WR) * J / T0                       # constant torque down to w0
+    w = np.where(t < t1, W0 - T0 / J * t, WR * np.exp(-T0 * (t - t1) / (J * WR)))
+    assert np.max(np.abs(res["wheel.w"] - w)) < 1e-8 * W0
+    with pytest.raises(ac.ModelError, match="reg must be one of"):
+        rot.SignTorque(reg="Cubic")

@@ -180,3 +180,40 @@ def test_the_stribeck_table_of_the_friction_example():
     assert table.shape == (50, 2) and table[0, 0] == 0 and table[-1, 0] == 12
     assert np.allclose(table[:, 1], 5 + table[:, 0] + 10 * np.exp(-2 * table[:, 0]),
                        rtol=1e-15)
+
+
+def test_a_sign_force_with_sine_regularization_against_its_closed_form():
+    V, F, VR = 2.0, 3.0, 0.4
+
+    class Slowed(ac.Component):
+        mass = tr.Mass(m=M, s={"start": 0.0, "fixed": True}, v={"start": V, "fixed": True})
+        load = tr.SignForce(f_nominal=-F, v0=VR, reg="Sine")
+
+        def equations(self):
+            return [ac.connect(self.load.flange, self.mass.flange_a)]
+
+    t = np.linspace(0, 3, 61)
+    res = ac.simulate(Slowed(), t_end=3.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    t1 = (V - VR) * M / F                          # constant force down to v0, then
+    k = np.pi / (2 * VR)                           # m v' = -F sin(k v):
+    late = 2 / k * np.arctan(np.exp(-F / M * k * (t - t1)))   # tan(k v/2) = e^(-a k t)
+    v = np.where(t < t1, V - F / M * t, late)
+    assert np.max(np.abs(res["mass.v"] - v)) < 1e-8 * V
+
+
+def test_a_translational_eddy_current_brake_against_its_invariant():
+    V, FN, VN = 20.0, 100.0, 10.0
+
+    class Braked(ac.Component):
+        mass = tr.Mass(m=M, s={"start": 0.0, "fixed": True}, v={"start": V, "fixed": True})
+        brake = tr.EddyCurrentForce(f_nominal=FN, v_nominal=VN)
+
+        def equations(self):
+            return [ac.connect(self.brake.flange, self.mass.flange_a)]
+
+    t = np.linspace(0, 1, 51)
+    res = ac.simulate(Braked(), t_end=1.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    v = res["mass.v"]
+    inv = np.log(v) + v**2 / (2 * VN**2) + 2 * FN * t / (M * VN)
+    assert np.max(np.abs(inv - inv[0])) < 1e-8 * abs(inv[0])
+    assert np.max(np.abs(res["brake.lossPower"] - res["brake.f"] * v)) < 1e-9 * FN * V
