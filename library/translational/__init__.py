@@ -11,7 +11,7 @@ __all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
            "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "SignForce", "EddyCurrentForce", "ConstantSpeed",
            "Speed", "Accelerate", "Position", "PositionSensor", "SpeedSensor", "AccSensor",
            "RelPositionSensor", "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor",
-           "MultiSensor"]
+           "MultiSensor", "RollingResistance", "Vehicle"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".components": ("Damper", "ElastoGap", "Fixed", "Mass", "MassWithStop", "Rod", "Spring",
@@ -22,6 +22,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "PartialElementaryOneFlange", "PartialElementaryOneFlangeAndSupport",
                     "PartialElementaryTwoFlangesAndSupport", "PartialRelativeSensor",
                     "PartialRigid", "PartialTwoFlanges"),
+    ".vehicle": ("RollingResistance", "Vehicle"),
     ".sensors": ("AccSensor", "ForceSensor", "MultiSensor", "PositionSensor", "PowerSensor",
                  "RelAccSensor", "RelPositionSensor", "RelSpeedSensor", "SpeedSensor"),
     ".sources": ("Accelerate", "SignForce", "EddyCurrentForce", "ConstantForce", "ConstantSpeed", "Force", "Force2",

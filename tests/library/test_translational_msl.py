@@ -217,3 +217,44 @@ def test_a_translational_eddy_current_brake_against_its_invariant():
     inv = np.log(v) + v**2 / (2 * VN**2) + 2 * FN * t / (M * VN)
     assert np.max(np.abs(inv - inv[0])) < 1e-8 * abs(inv[0])
     assert np.max(np.abs(res["brake.lossPower"] - res["brake.f"] * v)) < 1e-9 * FN * V
+
+
+def _driven_vehicle(T, **vehicle):
+    from acausal.library import rotational as rot
+    from acausal.library.blocks import Constant
+    inputs = {k: vehicle.pop(k) for k in ("useInclinationInput",) if k in vehicle}
+
+    class Driven(ac.Component):
+        car = tr.Vehicle(s={"start": 0.0, "fixed": True}, v={"start": 5.0, "fixed": True},
+                         **inputs, **vehicle)
+        drive = rot.ConstantTorque(tau_constant=T)
+        slope = Constant(k=0.1)
+
+        def equations(self):
+            eqs = [ac.connect(self.drive.flange, self.car.flangeR)]
+            if inputs.get("useInclinationInput"):
+                eqs.append(ac.connect(self.slope.y, self.car.inclination))
+            return eqs
+
+    return Driven()
+
+
+def test_a_vehicle_climbs_at_the_acceleration_of_its_forces_and_its_equivalent_mass():
+    m, J, R, T, Cr, g = 80.0, 2.0, 0.5, 300.0, 0.02, 9.80665
+    t = np.linspace(0, 2, 21)
+    angle = np.arctan(0.1)
+    a = (T / R - Cr * m * g * np.cos(angle) - m * g * np.sin(angle)) / (m + J / R**2)
+    for inputs in ({"inclinationConstant": 0.1}, {"useInclinationInput": True}):
+        model = _driven_vehicle(T, m=m, J=J, R=R, Cd=0.0, CrConstant=Cr, **inputs)
+        res = ac.simulate(model, t_end=2.0, rtol=1e-10, atol=1e-12, t_eval=t)
+        assert np.max(np.abs(res["car.v"] - (5.0 + a * t))) < 1e-8 * abs(a) * 2
+        assert np.max(np.abs(res["car.fRoll.f"] - Cr * m * g * np.cos(angle))) < 1e-9 * m
+
+
+def test_a_coasting_vehicle_slows_down_by_its_air_drag():
+    m, Cd, A, rho = 80.0, 0.4, 2.0, 1.2
+    t = np.linspace(0, 10, 41)
+    model = _driven_vehicle(0.0, m=m, J=0.0, Cd=Cd, A=A, rho=rho, CrConstant=0.0)
+    res = ac.simulate(model, t_end=10.0, rtol=1e-10, atol=1e-12, t_eval=t)
+    k = Cd * A * rho / 2                         # m v' = -k v^2
+    assert np.max(np.abs(res["car.v"] - 5.0 / (1 + k * 5.0 * t / m))) < 1e-8 * 5.0
