@@ -156,7 +156,7 @@ class IdealPlanetary(ac.Component):
     The three torques sum to zero (no housing) and so do the powers.
     """
 
-    ratio = ac.Parameter(2.0, min=0, description="number of ring teeth / sun teeth")
+    ratio = ac.Parameter(2.0, description="number of ring teeth / sun teeth")
     sun = RotationalFlange()
     carrier = RotationalFlange()
     ring = RotationalFlange()
