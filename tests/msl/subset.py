@@ -4,4 +4,7 @@ use; ``make test-msl`` (and CI) compares all of them."""
 
 QUICK = {
     "Modelica.Mechanics.Rotational.Examples.First",
+    "Modelica.Mechanics.Rotational.Examples.Backlash",
+    "Modelica.Mechanics.Translational.Examples.ElastoGap",
+    "Modelica.Mechanics.Translational.Examples.Vehicle",
 }
