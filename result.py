@@ -233,6 +233,10 @@ class Result:
 
     def _vectorized(self) -> bool:
         c = self.compiled
+        if c.code.expand is not None and getattr(c, "_vector_outputs", None) is None:
+            from .runtime.outputs import source_at_hand
+            if source_at_hand(c.code) is None:
+                return False
         known = len(self._discrete_index) == len(self.t) and bool(self._discrete)
         delays_kept = getattr(c, "delays", None) is None or (
             self._delayed is not None and len(self._delayed) == len(self.t))

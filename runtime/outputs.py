@@ -23,7 +23,7 @@ import functools
 
 import numpy as np
 
-__all__ = ["VectorOutputs", "evaluate"]
+__all__ = ["VectorOutputs", "evaluate", "source_at_hand"]
 
 _CACHED = 64            # compiled selections kept per model
 
@@ -153,6 +153,19 @@ class VectorOutputs:
 _CHUNK = 1 << 22     # values (points x outputs) computed at once, at most
 
 
+def source_at_hand(code) -> str | None:
+    """The generated Python source of ``code`` if it is printed, or can be printed
+    without importing sympy (a model compiled in this process); None for a model
+    loaded behind its C library, whose Python source is printed from its Program only
+    when needed (:mod:`acausal.compiler.cache.entries`): reading its results then
+    takes its C ``expand`` point by point rather than load sympy for the Program."""
+    import sys
+    module = getattr(code, "module", None)
+    if module is None or getattr(module, "printed", True) or "sympy" in sys.modules:
+        return code.source
+    return None
+
+
 def evaluate(compiled, cols, t, z, parameters, discrete, index, delayed=None) -> list:
     """The outputs ``cols`` (columns of ``compiled``'s ``expand``) at the points
     ``t`` (unknowns ``z``, one row a point), each point in the discrete state
@@ -164,7 +177,12 @@ def evaluate(compiled, cols, t, z, parameters, discrete, index, delayed=None) ->
         return [np.array(z[:, k], dtype=float) for k in cols]
     vec = getattr(compiled, "_vector_outputs", None)
     if vec is None:
-        vec = compiled._vector_outputs = VectorOutputs(compiled.code.source)
+        source = source_at_hand(compiled.code)
+        if source is None:            # the model's own expand, point by point
+            from ..result import _expand
+            y = _expand(compiled, t, z, parameters, list(discrete), list(index), delayed)
+            return [y[:, k] for k in cols]
+        vec = compiled._vector_outputs = VectorOutputs(source)
     table = np.array(discrete, dtype=float).reshape(len(discrete), -1)
     index = np.asarray(index, dtype=np.int64)
     params = [float(x) for x in parameters]

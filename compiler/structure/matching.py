@@ -341,14 +341,15 @@ class StructuralDiagnosis:
                 "singular": "structurally singular"}[self.kind]
         en = dict(zip(self.equations, self.eq_names))
         vn = dict(zip(self.variables, self.var_names))
-        from ...words import listed      # a message of bounded length: lists end "and N more"
+        # a message of bounded length: lists end "and N more", every component named
+        # before a second item of one, and a port's hint said once
         msg = f"{head}: {self.n_equations} equations, {self.n_unknowns} unknowns"
         if self.over_equations:
             msg += ("\n  too many equations for their variables: "
-                    + listed(en[e] for e in self.over_equations))
+                    + _names(en[e] for e in self.over_equations))
             if self.over_variables:
-                msg += "\n    (they involve only: " + listed(
-                    (vn[v] for v in self.over_variables), limit=1000) + ")"
+                msg += "\n    (they involve only: " + _names(
+                    vn[v] for v in self.over_variables) + ")"
             else:
                 # left without unknowns by the aliases and constants: a quantity imposed
                 # twice (two voltage sources in parallel, two motions on one flange)
@@ -356,18 +357,38 @@ class StructuralDiagnosis:
                         "equations already fix, e.g. two sources imposing the same "
                         "voltage, speed or position; remove one of them)")
         if self.under_variables:
-            # a variable's name carries its port's hint whole (what to connect)
-            msg += ("\n  variables not determined: "
-                    + listed((vn[v] for v in self.under_variables), limit=1000))
+            msg += "\n  variables not determined: " + _names(
+                vn[v] for v in self.under_variables)
             if self.under_equations:
-                msg += "\n    (occurring in: " + listed(
-                    en[e] for e in self.under_equations) + ")"
+                msg += "\n    (occurring in: " + _names(
+                    (en[e] for e in self.under_equations), 12) + ")"
             if self.over_equations:
                 # both parts at once usually have one cause
                 msg += ("\n    (with equations too many, these are usually the flows "
                         "between two elements that impose the same quantity: remove one "
                         "of them before adding a ground or a connection)")
         return msg
+
+
+def _names(items, n: int = 30) -> str:
+    """Equation or variable names for a message: ``x [comp (Class)] -- hint`` items
+    spread over their components (each component's first item, then the second ...),
+    at most ``n`` of them, each hint said once, after them."""
+    from ...words import listed
+    groups, hints = {}, []
+    for item in items:
+        text, _, hint = str(item).partition(" -- ")
+        where = text.rsplit(" [", 1)[-1] if " [" in text else ""
+        groups.setdefault(where, []).append(text)
+        if hint and hint not in hints:
+            hints.append(hint)
+    spread, depth = [], 0
+    while len(spread) < sum(map(len, groups.values())):
+        spread += [g[depth] for g in groups.values() if depth < len(g)]
+        depth += 1
+    out = listed(spread, n)
+    return out + "".join(f"\n      -- {h}" for h in hints[:4]) + (
+        f"\n      (and {len(hints) - 4} more hints)" if len(hints) > 4 else "")
 
 
 def diagnose(s: Structure) -> StructuralDiagnosis:

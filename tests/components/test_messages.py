@@ -3,6 +3,8 @@ bounded length, "did you mean" for result and parameter names, a structural zero
 as the cause of the error it causes, ``equations()`` that does not return a list,
 ``linearize`` of an input that is a structural zero, and ``acausal list`` of a domain
 whose components live in sub-modules."""
+import re
+
 import numpy as np
 import pytest
 
@@ -132,7 +134,8 @@ def test_a_structural_error_of_a_large_model_is_of_bounded_length():
     with pytest.raises(UnderdeterminedModel) as err:
         ac.compile(LadderWithInput())
     text = str(err.value)
-    assert "u.signal" in text and "and 793 more" in text
+    assert "u.signal" in text and re.search(r"and \d+ more", text)
+    assert text.count("an input signal is not connected") == 1
     assert len(text) < 4000         # was 76 kB: every variable and equation listed
 
 
