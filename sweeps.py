@@ -30,6 +30,8 @@ import warnings
 
 import numpy as np
 
+from .errors import InvalidArgument
+
 __all__ = ["sweep", "ensemble"]
 
 _CHUNKS_PER_WORKER = 4     # tasks per worker: few enough to keep overhead low, enough to
@@ -48,7 +50,7 @@ def sweep(model, parameters: dict, *, grid: str = "product", t_end: float,
     died is run again.  Other keywords go to :func:`acausal.simulate`.  Returns an
     ``xarray.Dataset``."""
     if not isinstance(parameters, dict) or not parameters:
-        raise ValueError("sweep: parameters must be a non-empty dict {name: values}")
+        raise InvalidArgument("sweep: parameters must be a non-empty dict {name: values}")
     keys = list(parameters)
     columns = [np.atleast_1d(np.asarray(parameters[k], dtype=float)) for k in keys]
     if grid == "product":
@@ -56,11 +58,11 @@ def sweep(model, parameters: dict, *, grid: str = "product", t_end: float,
     elif grid == "zip":
         lengths = {len(c) for c in columns}
         if len(lengths) != 1:
-            raise ValueError(f"sweep: grid='zip' needs lists of equal length, got "
+            raise InvalidArgument(f"sweep: grid='zip' needs lists of equal length, got "
                              f"{dict(zip(keys, (len(c) for c in columns)))}")
         combos = list(zip(*columns))
     else:
-        raise ValueError(f"sweep: grid must be 'product' or 'zip', not {grid!r}")
+        raise InvalidArgument(f"sweep: grid must be 'product' or 'zip', not {grid!r}")
     runs = [{k: float(v) for k, v in zip(keys, combo)} for combo in combos]
     return ensemble(model, runs, t_end=t_end, t_eval=t_eval, n_points=n_points,
                     executor=executor, names=names, progress=progress,
@@ -71,17 +73,20 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
              executor=None, names=None, progress: bool | None = None,
              max_workers: int | None = None, retries: int = 0, **simulate_kwargs):
     """Simulate ``model`` once per parameter dict in ``runs``; see the module docstring."""
-    from .simulation import _output_times, _time, compile
+    from .simulation import _output_times, _time, check_arguments, compile
     runs = [dict(r) for r in runs]
     if not runs:
-        raise ValueError("ensemble: no runs")
+        raise InvalidArgument("ensemble: no runs")
     if t_eval is None and n_points is None:
-        raise ValueError("ensemble: give t_eval or n_points (the common output grid)")
+        raise InvalidArgument("ensemble: give t_eval or n_points (the common output grid)")
     t_start = _time("t_start", simulate_kwargs.pop("t_start", 0.0))
     times = _output_times(t_eval, n_points, t_start, _time("t_end", t_end))
-    for key in ("parameters", "raise_on_failure", "n_points", "t_eval"):
+    for key in ("parameters", "raise_on_failure", "n_points", "t_eval", "store"):
         if key in simulate_kwargs:
-            raise ValueError(f"ensemble: {key} is set per run, not as a keyword")
+            raise InvalidArgument(f"ensemble: {key} is set per run, not as a keyword")
+    # a mistake in the call is said now, not by every run
+    check_arguments(t_end, t_start, simulate_kwargs.get("rtol", 1e-6),
+                    simulate_kwargs.get("atol"))
     compiled = compile(model, simulate_kwargs.pop("backend", "auto"))
     unknown = sorted({k for r in runs for k in r} - set(compiled.param_names))
     if unknown:                  # a mistake in the call, not a failed run: say it now
@@ -89,7 +94,10 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
     names = sorted(compiled.outputs) if names is None else list(names)
     missing = [n for n in names if n not in compiled.outputs]
     if missing:
-        raise KeyError(f"ensemble: no variables {missing} in the model")
+        from .components.validation import suggestion
+        raise KeyError(f"ensemble: no variable {missing[0]!r} in the model"
+                       f"{suggestion(missing[0], compiled.outputs)}"
+                       + (f" (and {len(missing) - 1} more)" if len(missing) > 1 else ""))
     job = {"t_end": float(t_end), "t_start": t_start, "t_eval": times, "names": names,
            "kwargs": simulate_kwargs}
     outcomes = _execute(compiled, runs, job, executor, progress, max_workers, retries)
@@ -161,10 +169,11 @@ def _fresh_chunk(blob, base, chunk, job):
 # -- executors ------------------------------------------------------------------------------
 def _execute(compiled, runs, job, executor, progress, max_workers, retries=0) -> list:
     if isinstance(retries, bool) or not isinstance(retries, (int, np.integer)) or retries < 0:
-        raise ValueError(f"ensemble: retries must be a whole number >= 0, got {retries!r}")
+        raise InvalidArgument(f"ensemble: retries must be a whole number >= 0, "
+                              f"got {retries!r}")
     if max_workers is not None and (isinstance(max_workers, bool) or not isinstance(
             max_workers, (int, np.integer)) or max_workers < 1):
-        raise ValueError(f"ensemble: max_workers must be a whole number >= 1, "
+        raise InvalidArgument(f"ensemble: max_workers must be a whole number >= 1, "
                          f"got {max_workers!r}")
     base = compiled.p.copy()
     indexed = list(enumerate(runs))
@@ -185,7 +194,7 @@ def _execute(compiled, runs, job, executor, progress, max_workers, retries=0) ->
         elif hasattr(executor, "submit"):
             results = _on_futures(executor, compiled, base, indexed, job, bar, retries)
         else:
-            raise ValueError(f"ensemble: executor must be None, 'processes', a "
+            raise InvalidArgument(f"ensemble: executor must be None, 'processes', a "
                              f"concurrent.futures Executor or a dask Client, "
                              f"not {executor!r}")
     finally:

@@ -128,3 +128,11 @@ def test_retries_and_workers_are_checked(compiled):
     with pytest.raises(ValueError, match="max_workers"):
         ac.sweep(compiled, {"R1.R": [1.0]}, t_end=1.0, n_points=3, executor="processes",
                  max_workers=0)
+
+
+def test_a_mistake_in_the_call_is_said_once_not_by_every_run(compiled):
+    with pytest.raises(ac.InvalidArgument, match="rtol"):
+        ac.sweep(compiled, {"R1.R": [1.0, 2.0]}, t_end=1.0, n_points=3, rtol=5.0)
+    with pytest.raises(KeyError, match=r"no variable 'C1.vv' in the model \(did you mean "
+                                       r"'C1.v'\?\)"):
+        ac.sweep(compiled, {"R1.R": [1.0]}, t_end=1.0, n_points=3, names=["C1.vv"])
