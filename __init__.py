@@ -23,7 +23,7 @@ _EXPORTS = {
                     "Parameter", "Port", "Signal", "Through", "UnitError", "UnitWarning",
                     "Variable", "When", "assign", "connect", "delay", "der", "if_else",
                     "no_event", "pre", "ref", "reinit", "replaces", "sample", "sign", "time",
-                    "when"),
+                    "when", "edge", "change", "initial", "integer"),
     ".errors": ("BackendError", "InitializationFailed", "SimulationError"),
     ".result": ("Result",),
     ".runtime": ("CompiledModel",),
@@ -41,7 +41,7 @@ _EXPORTS = {
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
            "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre",
-           "sample", "assign",
+           "sample", "assign", "edge", "change", "initial", "integer",
            "Connection", "if_else", "no_event", "delay", "sign", "time", "replaces",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
            "ModelError", "InvalidValue", "InvalidEquation", "InvalidConnection",

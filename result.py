@@ -127,6 +127,8 @@ class Result:
         meta = getattr(compiled, "meta", None) or {}
         self.units = dict(meta.get("units", {}))
         self.descriptions = dict(meta.get("descriptions", {}))
+        # "Boolean" or "Integer" by name; every other variable is Real
+        self.value_types = dict(meta.get("value_types", {}))
 
     @classmethod
     def from_table(cls, t, columns: dict, **fields) -> "Result":
@@ -178,17 +180,27 @@ class Result:
         if self._table is not None:
             if name not in self._table:
                 raise KeyError(self._missing(name, self._table))
-            return self._table[name].copy()
+            return self._typed(name, self._table[name].copy())
         try:
             sign, k = self.compiled.outputs[name]
         except KeyError:
             raise KeyError(self._missing(name, self.compiled.outputs)) from None
         if sign is None:
-            return np.full(len(self.t), k(self.parameters) if callable(k) else k)
+            return self._typed(name, np.full(len(self.t), k(self.parameters)
+                                             if callable(k) else k))
         if self._y is None:
             self._y = _expand(self.compiled, self.t, self._z, self.parameters,
                               self._discrete, self._discrete_index, self._delayed)
-        return sign * self._y[:, k]
+        return self._typed(name, sign * self._y[:, k])
+
+    def _typed(self, name, values) -> np.ndarray:
+        """A Boolean variable's values as a bool array, an Integer's as int64."""
+        kind = self.value_types.get(name)
+        if kind == "Boolean":
+            return np.asarray(values, dtype=float) > 0.5
+        if kind == "Integer":
+            return np.rint(np.asarray(values, dtype=float)).astype(np.int64)
+        return values
 
     @staticmethod
     def _missing(name, known) -> str:

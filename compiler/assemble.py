@@ -24,6 +24,7 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     can print and compile them meanwhile (:mod:`acausal.compiler.pipeline`)."""
     import sympy as sp
     from types import SimpleNamespace
+    from ..components.symbols import INITIAL
     from .causalize import causalize, full_form
     from .codegen import extract_relations, generate
     from .numeric import CoefficientValues
@@ -33,6 +34,7 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
         caus = full_form(reduction, len(syms), len(system.equations))
     else:
         held_items = [SimpleNamespace(symbol=s) for h in helds for s in (h.symbol, h.pre)]
+        held_items.append(SimpleNamespace(symbol=INITIAL))
         values = CoefficientValues(system, reduced.parameters, list(discretes) + held_items)
         caus = causalize(reduction, values)
         untorn = [b for b in caus.blocks if b.get("not_torn")]
@@ -56,8 +58,14 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     when_rows, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
     delay_rows = [d.argument for d in delays]
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
+    everything = [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows
+    uses_initial = bool(getattr(flat, "uses_initial", False))
+    # m: relation values, floor values, then held(y) and pre(y) of the discrete
+    # variables, then initial() if the model reads it
+    dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + \
+        [h.pre for h in helds] + ([INITIAL] if uses_initial else [])
     exprs, crossings, modes, origin = extract_relations(
-        [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows)
+        everything, _frozen(reduced, dsyms, assigned))
     parts = np.split(np.array(exprs, dtype=object), np.cumsum(sizes)[:-1])
     assigned = [(a, e) for (a, _), e in zip(assigned, parts[0])]
     rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
@@ -65,8 +73,6 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     zeros = set(reduced.structural_zeros)
     params = [p for p in reduced.parameters if is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
-    # m: relation values, floor values, then held(y) and pre(y) of the discrete variables
-    dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + [h.pre for h in helds]
     # the delayed values are read from p after the tunable parameters (runtime/delays.py)
     inputs = psyms + [d.symbol for d in delays]
     rel_list = list(modes.values())
@@ -90,6 +96,7 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
         nominal=[_relation_nominal(system, g, assigned) for g in crossings],
         discrete_texts=[d.text for d in discretes],
         held_names=[h.name for h in helds], held_start=[h.start for h in helds],
+        has_initial=uses_initial, held_types=_type_names(flat, helds),
         time_linear=_time_linear(crossings + [d.argument for d in discretes], assigned,
                                  set(psyms) | set(dsyms)))
     initial = InitialCode(init_code, init_text, choose_initial_rows(
@@ -109,7 +116,8 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms),
-              "derived_parameters": dict(flat.derived)})
+              "derived_parameters": dict(flat.derived),
+              "value_types": _value_types(flat)})
     # the declared unit and description of every name of a result
     out.meta["units"], out.meta["descriptions"] = output_tables(
         {**{v.name: v.attrs.unit for v in flat.variables},
@@ -124,10 +132,45 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
             set(z_syms) | {a for a, _ in assigned} | set(inputs) | set(dsyms) | set(modes),
             feeds_back(system, delays))
     if reduced.whens:
-        out.whens = WhenCode(whens_code, len(reduced.whens), texts=[
-            f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} ({w.origin_class})]"
+        out.whens = WhenCode(whens_code, len(when_layout["cond_owners"]), texts=[
+            (f"when {sp.sstr(w.condition)}" if w.equation is None else w.equation)
+            + f" [{w.origin or '(model)'} ({w.origin_class})]"
             for w in reduced.whens], **when_layout)
     return out
+
+
+def _frozen(reduced, dsyms, assigned):
+    """The symbols whose values change only at events: parameters, frozen and held values,
+    Boolean and Integer variables, and the assigned variables computed from them alone.
+    A relation of these that reads a Boolean, an Integer, a held value or initial() is
+    evaluated where it is read, not an event (it cannot cross between events); a relation
+    of parameters alone stays an item of the discrete state, as it always was."""
+    from .codegen import FrozenSymbols
+    from .symbolic import symbols_of
+    typed = {v.symbol for v in reduced.variables
+             if getattr(v.attrs, "type", float) is not float}
+    discrete = typed | set(dsyms)
+    if not discrete:
+        return None
+    frozen = {p.symbol for p in reduced.parameters} | discrete
+    for a, e in assigned:
+        if symbols_of(e) <= frozen:
+            frozen.add(a)
+            discrete.add(a)
+    return FrozenSymbols(frozen, discrete)
+
+
+def _value_types(flat) -> dict:
+    """The Boolean and Integer variables of a result, by name (aliases included)."""
+    from ..components.declarations import TYPE_NAMES
+    return {v.name: TYPE_NAMES[v.attrs.type] for v in flat.variables
+            if getattr(v.attrs, "type", float) is not float}
+
+
+def _type_names(flat, helds) -> list:
+    from ..components.declarations import TYPE_NAMES
+    types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables}
+    return [TYPE_NAMES[types.get(h.name, float)] for h in helds]
 
 
 def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -> str:
@@ -142,7 +185,7 @@ def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -
     elif i - n_a - n_r - (len(caus.z[: caus.n_states]) if caus.causal else 0) < len(init_text):
         where = "initial conditions"
     else:
-        where = "a when-clause"
+        where = "a when-clause or a Boolean/Integer equation"
     return f"{sp.sstr(rel)}  in {where}"
 
 

@@ -26,7 +26,7 @@ from ..components.component import (Component, Connection, InvalidConnection,
                                      InvalidEquation, InvalidValue, ModelError, NotInModel,
                                      Port, compiling, in_context)
 from ..components.declarations import Parameter, VariableAttributes, bound_violation
-from ..components.symbols import Equation, When, der, text, time
+from ..components.symbols import INITIAL, Equation, When, der, text, time
 from .fastarith import symbol_arithmetic
 from .fastsubs import fast_difference, fast_xreplace, has_undefined
 from .flatder import check_der_arguments, expand_derivatives, has_der
@@ -89,6 +89,9 @@ class FlatEquation(_Located):
     # it is still the residual (``plain is residual``) it holds no function of another
     # kind, and the passes that look for floor() or delay() need not walk it
     plain: object = field(default=None, repr=False, compare=False)
+    # the variable alone on the left of ``ac.Eq`` as written (a Boolean or Integer
+    # variable's equation gives its value: compiler/sampled.py), else None
+    defines: object = field(default=None, repr=False, compare=False)
 
     @property
     def text(self) -> str:
@@ -115,6 +118,7 @@ class FlatModel:
     ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
     components: dict = field(default_factory=dict)    # path -> class name
     derived: dict = field(default_factory=dict)       # bound parameter -> (binding, value)
+    uses_initial: bool = False                        # an equation reads initial()
 
     def variable(self, name: str) -> FlatVariable:
         for v in self.variables:
@@ -155,6 +159,7 @@ def flatten(model: Component) -> FlatModel:
                     raise InvalidEquation(f"{comp._describe()}.initial_equations() returned "
                                           f"{item!r}; expected ac.Eq(lhs, rhs)")
                 flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
+    flat.uses_initial = bool(getattr(model, "_uses_initial", False))
     _check_connections(connections, model)
     flat.equations.extend(_connection_equations(connections, nodes))
     _check_symbols(flat, with_der)
@@ -236,6 +241,8 @@ def _flat_equation(eq: Equation, comp: Component, kind: str, with_der: set) -> F
         residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
         ders = has_der(residual)
     out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+    if type(eq.lhs) is sp.Symbol:
+        out.defines = eq.lhs
     if plain:
         out.plain = residual
     if ders:
@@ -347,7 +354,7 @@ def _check_symbols(flat: FlatModel, with_der: set) -> None:
     equations with der(), whose arguments are checked)."""
     var_syms = {v.symbol for v in flat.variables}
     par_syms = {p.symbol for p in flat.parameters}
-    allowed = var_syms | par_syms | {time}
+    allowed = var_syms | par_syms | {time, INITIAL}
     for p in flat.parameters:
         if isinstance(p.value, sp.Basic) and not p.value.is_number:
             _check_binding(p, p.value.free_symbols, var_syms, allowed)

@@ -17,10 +17,11 @@ __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidV
            "InvalidIndex", "InvalidInheritance", "UnitError", "UnitWarning", "replaces",
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
            "der", "if_else", "no_event", "delay", "when", "When", "reinit", "pre", "sign",
-           "time", "sample", "assign"]
+           "time", "sample", "assign", "edge", "change", "initial", "integer"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".arrays": ("InvalidIndex",),
     ".symbols": ("Eq", "Equation", "When", "delay", "der", "if_else", "no_event", "pre",
-                 "reinit", "sign", "time", "when", "sample", "assign"),
+                 "reinit", "sign", "time", "when", "sample", "assign", "edge", "change",
+                 "initial", "integer"),
 })

@@ -232,6 +232,10 @@ class Component(metaclass=_ComponentType):
         """Name this tree (pre-order, so a parent's modifications reach its children
         before they are bound); a cycle or an instance held twice is an error."""
         seen = {}                       # id -> path of the instances named so far
+        # the Boolean and Integer symbols of the model, by symbol (filled as they are
+        # made, read by the equations' vocabulary: a Boolean is a condition)
+        object.__setattr__(self, "_value_types", {})
+        object.__setattr__(self, "_uses_initial", False)
         stack = [(self, path, parent)]
         while stack:
             comp, where, above = stack.pop()
@@ -265,7 +269,7 @@ class Component(metaclass=_ComponentType):
                     check_array_value(mod, shape_of(decls[key], self, key),
                                       f"parameter {key}")
                 else:
-                    check_parameter_value(mod, f"parameter {key}")
+                    check_parameter_value(mod, f"parameter {key}", decls[key].type)
             except InvalidValue:
                 raise
             except ValueError as err:
@@ -308,6 +312,9 @@ class Component(metaclass=_ComponentType):
             from .realsymbol import real_symbol
             sym = real_symbol(full)
             self._symbols[name] = sym
+            typ = getattr(_declarations(type(self)).get(name), "type", float)
+            if typ is not float and self._root is not None:
+                self._root._value_types[sym] = typ
         return sym
 
     # -- what the compiler reads -------------------------------------------------------
@@ -338,7 +345,8 @@ class Component(metaclass=_ComponentType):
             if isinstance(value, ref):
                 return self._referenced(name, value)
         try:
-            check_parameter_value(value, f"parameter {name}")
+            check_parameter_value(value, f"parameter {name}",
+                                  _declarations(type(self))[name].type)
         except ValueError as err:
             raise InvalidValue(f"{self._describe()}: {err}") from None
         return value
@@ -471,8 +479,12 @@ def _port_name(p: Port) -> str:
 
 
 def _connection_type(self):
-    """Ports connect when they carry the same across/through variable names."""
-    return (tuple(self.across()), tuple(self.through()))
+    """Ports connect when they carry the same across/through variable names, of the same
+    value types (a Boolean signal does not connect to a Real one)."""
+    decls = self.declarations()
+    across = tuple(self.across())
+    types = tuple(getattr(decls[n], "type", float).__name__ for n in across)
+    return (across, tuple(self.through()), types)
 
 
 Port.connection_type = _connection_type

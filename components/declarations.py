@@ -29,9 +29,41 @@ COMPILING = contextvars.ContextVar("acausal_compiling", default=None)
 
 __all__ = ["Parameter", "Variable", "Across", "Through", "Signal", "VariableAttributes", "ref",
            "real_number", "check_parameter_value", "check_structural_value",
-           "bound_violation", "is_symbolic"]
+           "bound_violation", "is_symbolic", "typed_value", "TYPE_NAMES"]
 
 _STATE_SELECT = ("never", "avoid", "default", "prefer", "always")
+
+# The value types of Modelica's simple types: Real (a float), Boolean and Integer.  A
+# Boolean or Integer variable is discrete by nature: it changes only at events.
+TYPE_NAMES = {float: "Real", bool: "Boolean", int: "Integer"}
+
+
+def _value_type(typ, what: str = "type"):
+    """``typ`` checked: float, bool or int (the Python types of Real, Boolean, Integer)."""
+    if typ not in TYPE_NAMES:
+        raise ValueError(f"{what} = {typ!r} must be float (Real), bool (Boolean) or int "
+                         "(Integer)")
+    return typ
+
+
+def typed_value(value, typ, what: str):
+    """``value`` as the Python value of type ``typ`` (float, bool or int), or a
+    ValueError that starts with ``what = value``.  A Boolean is True or False (not 0 or
+    1); an Integer is a whole number that is not a bool (3 or 3.0, not 3.5)."""
+    if typ is float:
+        return real_number(value, what)
+    if typ is bool:
+        if isinstance(value, (bool, np.bool_)):
+            return bool(value)
+        raise ValueError(f"{what} = {value!r} is not a Boolean (True or False)")
+    if isinstance(value, (bool, np.bool_)):
+        raise ValueError(f"{what} = {value!r} is a bool, not an Integer")
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    x = real_number(value, what)
+    if math.isfinite(x) and x == int(x):
+        return int(x)
+    raise ValueError(f"{what} = {value!r} is not an Integer (a whole number)")
 
 
 def is_symbolic(value) -> bool:
@@ -63,10 +95,15 @@ def real_number(value, what: str) -> float:
     return x
 
 
-def check_parameter_value(value, what: str) -> None:
-    """A parameter value is a real number, ``ref``, function of the component or sympy
+def check_parameter_value(value, what: str, typ=float) -> None:
+    """A parameter value is a real number (of a Boolean parameter True or False, of an
+    Integer parameter a whole number), ``ref``, function of the component or sympy
     expression of other parameters (whose symbols flattening checks); else ValueError."""
     if value is None or isinstance(value, ref):
+        return
+    if typ is not float and not is_symbolic(value) and (
+            not callable(value) or isinstance(value, (numbers.Number, np.generic))):
+        typed_value(value, typ, what)
         return
     if isinstance(value, (np.ndarray, list, tuple)):
         raise ValueError(f"{what} = {value!r} is not a real number (it is a "
@@ -138,6 +175,7 @@ class VariableAttributes:
     state_select: str = "default"
     description: str = ""
     discrete: bool = False   # changes only in when-clauses (Modelica's ``discrete`` prefix)
+    type: type = float       # float (Real), bool (Boolean) or int (Integer)
 
     def modified(self, mod) -> "VariableAttributes":
         """A checked copy with a modification applied: a number sets start, a dict any
@@ -158,6 +196,9 @@ class VariableAttributes:
 
         start is finite; fixed is True, False or None; nominal is finite and positive
         (it scales error weights); min <= max; start lies in [min, max]."""
+        typ = _value_type(self.type)
+        if typ is not float:
+            return self._checked_discrete(typ)
         start = None if self.start is None else _finite(self.start, "start")
         nominal = None if self.nominal is None else _finite(self.nominal, "nominal")
         if nominal is not None and nominal <= 0:
@@ -183,6 +224,34 @@ class VariableAttributes:
             raise ValueError(f"discrete = {self.discrete!r} must be True or False")
         _check_state_select(self.state_select)
         return replace(self, start=start, fixed=fixed, nominal=nominal, min=lo, max=hi)
+
+    def _checked_discrete(self, typ) -> "VariableAttributes":
+        """A Boolean or Integer variable: its start (and an Integer's min and max) of its
+        type; no unit, nominal or state selection (it is never a state)."""
+        name = TYPE_NAMES[typ]
+        for attr, default in (("nominal", None), ("state_select", "default")):
+            if getattr(self, attr) != default:
+                raise ValueError(f"{attr} = {getattr(self, attr)!r}: a {name} variable has "
+                                 f"no {attr} (it is never a state)")
+        if typ is bool and (self.min is not None or self.max is not None or self.unit):
+            raise ValueError("a Boolean variable has no unit, min or max")
+        start = None if self.start is None else typed_value(self.start, typ, "start")
+        lo = None if self.min is None else typed_value(self.min, typ, "min")
+        hi = None if self.max is None else typed_value(self.max, typ, "max")
+        if lo is not None and hi is not None and lo > hi:
+            raise ValueError(f"min = {self.min!r} is greater than max = {self.max!r}")
+        if start is not None and bound_violation(start, lo, hi):
+            raise ValueError(f"start = {self.start!r} lies outside "
+                             f"[min, max] = [{self.min!r}, {self.max!r}]")
+        for attr in ("unit", "description"):
+            if not isinstance(getattr(self, attr), str):
+                raise ValueError(f"{attr} = {getattr(self, attr)!r} must be a string")
+        if self.fixed is not None and not isinstance(self.fixed, (bool, np.bool_)):
+            raise ValueError(f"fixed = {self.fixed!r} must be True or False")
+        if not isinstance(self.discrete, (bool, np.bool_)):
+            raise ValueError(f"discrete = {self.discrete!r} must be True or False")
+        return replace(self, start=start, min=lo, max=hi,
+                       fixed=None if self.fixed is None else bool(self.fixed))
 
 
 def _check_state_select(value):
@@ -233,6 +302,11 @@ class Parameter(_Declaration):
     An array value (``Parameter(np.eye(2))``) or ``shape=`` declares an array of
     parameters, one tunable parameter per element (:mod:`acausal.components.arrays`).
 
+    ``type=bool`` declares a Boolean parameter (True or False; a bool default declares
+    one: ``Parameter(False)``), ``type=int`` an Integer parameter (a whole number).  In
+    equations they are 1/0 and the whole number; a Boolean parameter is a condition
+    (``ac.if_else(self.use_limit, ...)``).
+
     ``structural=True`` declares a parameter that shapes the model rather than entering
     its equations (a number of segments, the coefficients of a transfer function): its
     value is a plain Python value (a number or a bool, or a list or tuple of them)
@@ -243,8 +317,11 @@ class Parameter(_Declaration):
 
     def __init__(self, value=None, unit: str = "", description: str = "",
                  min: float | None = None, max: float | None = None, shape=None,
-                 structural: bool = False):
+                 structural: bool = False, type=None):
         structural = bool(structural)
+        if type is None:
+            type = bool if isinstance(value, (bool, np.bool_)) and not structural else float
+        self.type = type
         if shape is None and not structural and isinstance(value, (np.ndarray, list, tuple)):
             shape = np.shape(value)      # a matrix parameter: its shape from its value
         self.shape = _declared_shape(shape)
@@ -265,6 +342,8 @@ class Parameter(_Declaration):
         args = [repr(shown_value(self.value))]
         args += [f"{k}={getattr(self, k)!r}" for k in ("unit", "min", "max", "description")
                  if getattr(self, k) not in (None, "")]
+        if self.type is int:
+            args.append("type=int")
         if self.shape is not None and not isinstance(self.value, (np.ndarray, list, tuple)):
             args.append(f"shape={self.shape!r}")
         return f"Parameter({', '.join(args)})"
@@ -274,6 +353,10 @@ class Parameter(_Declaration):
         if self.structural:
             check_structural_value(self.value, "default value", self.min, self.max)
             return
+        _value_type(self.type)
+        if self.type is not float and self.shape is not None:
+            raise ValueError(f"a {TYPE_NAMES[self.type]} parameter is a scalar (arrays of "
+                             "them are not supported)")
         if self.shape is not None:
             from .arrays import check_array_declaration
             check_array_declaration(self)    # value, min and max element by element
@@ -284,7 +367,9 @@ class Parameter(_Declaration):
                 raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
 
     def _check_scalar(self) -> None:
-        check_parameter_value(self.value, "default value")
+        check_parameter_value(self.value, "default value", self.type)
+        if self.type is bool and (self.min is not None or self.max is not None or self.unit):
+            raise ValueError("a Boolean parameter has no unit, min or max")
         lo = None if self.min is None else real_number(self.min, "min")
         hi = None if self.max is None else real_number(self.max, "max")
         if lo is not None and hi is not None and lo > hi:
@@ -308,6 +393,13 @@ class Variable(_Declaration):
     (``VariableAttributes.checked``).  ``shape=(n,)`` declares an array of variables,
     each attribute a scalar for every element or an array
     (:mod:`acausal.components.arrays`).
+
+    ``type=bool`` declares a Boolean variable, ``type=int`` an Integer one (Modelica's
+    ``Boolean`` and ``Integer``): discrete by nature, they keep their value between
+    events and change only at events, either by an equation ``ac.Eq(y, expr)`` that
+    has the variable alone on its left (evaluated at every event, relations in it
+    generating events) or by ``ac.assign`` in a when-clause.  Their start value
+    (``False``, ``0`` by default) is ``pre(y)`` at the start.
     """
 
     kind = "variable"
@@ -315,15 +407,24 @@ class Variable(_Declaration):
     def __init__(self, start: float | None = None, fixed: bool | None = None, unit: str = "",
                  nominal: float | None = None, min: float | None = None,
                  max: float | None = None, state_select: str = "default",
-                 description: str = "", discrete: bool = False, shape=None):
+                 description: str = "", discrete: bool = False, shape=None, type=float):
         self.shape = _declared_shape(shape)
+        if type is not float and self.shape is not None:
+            raise ValueError("Boolean and Integer variables are scalars (arrays of them "
+                             "are not supported)")
         if self.shape is not None:
             from .arrays import ArrayAttributes as attributes   # per-element attributes
         else:
             attributes = VariableAttributes
         self.attributes = attributes(
             start=start, fixed=fixed, unit=unit, nominal=nominal, min=min, max=max,
-            state_select=state_select, description=description, discrete=discrete)
+            state_select=state_select, description=description, discrete=discrete,
+            **({} if type is float else {"type": type}))
+
+    @property
+    def type(self):
+        """float, bool or int: the variable's value type (Real, Boolean, Integer)."""
+        return getattr(self.attributes, "type", float)
 
     def __repr__(self):
         a, default = self.attributes, VariableAttributes()
@@ -457,6 +558,8 @@ def _kind(decl) -> str:
     parameter."""
     if getattr(decl, "structural", False):
         return "structural"
+    if getattr(decl, "type", float) is not float:
+        return decl.type.__name__
     return "float" if decl.shape is None else f"array {_shape(decl.shape)}"
 
 
@@ -492,7 +595,8 @@ def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
                      f"state_select {a.state_select}" if a.state_select != "default" else ""]
             extra = ", ".join(e for e in extra if e)
             shape = "" if v.shape is None else f" array {_shape(v.shape)}"
-            lines.append(f"{name} : {v.kind}{shape}{_unit(a.unit)}"
+            typ = "" if v.type is float else f" {TYPE_NAMES[v.type]}"
+            lines.append(f"{name} : {v.kind}{typ}{shape}{_unit(a.unit)}"
                          + (f", {extra}" if extra else ""))
             if a.description:
                 lines.append(f"    {a.description}")

@@ -22,8 +22,9 @@ from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
-           "sympify_value", "When", "when", "reinit", "pre", "text", "sample", "Sample",
-           "assign", "Assign"]
+           "sympify_value", "When", "when", "reinit", "pre", "Pre", "text", "sample",
+           "Sample", "assign", "Assign", "as_condition", "value_type", "edge", "change",
+           "initial", "INITIAL", "integer", "is_logical"]
 
 time = sp.Symbol("time", real=True)
 _ONE_ARGUMENT = sp.FiniteSet(1)     # der's nargs, as Function makes it uniform
@@ -64,6 +65,8 @@ class Equation:
     def __init__(self, lhs, rhs=0, label: str | None = None):
         self.lhs = _side(lhs, lhs, rhs)
         self.rhs = _side(rhs, lhs, rhs)
+        if _logical_side(lhs) or _logical_side(rhs):
+            _check_boolean_equation(self.lhs, self.rhs, lhs, rhs)
         _check_not_trivial(self.lhs, self.rhs)
         if label is not None and not isinstance(label, str):
             raise _invalid(f"the label of ac.Eq({_text(lhs)}, {_text(rhs)}) must be a "
@@ -361,11 +364,16 @@ def _text(value) -> str:
 
 
 def _side(value, lhs, rhs) -> sp.Expr:
-    """One side of an equation: a finite value, not a relation or a logical value."""
+    """One side of an equation: a finite value; a condition (the value of a Boolean
+    variable, ``ac.Eq(self.y, self.u > 1)``) is its value 1 or 0."""
     if type(value) is sp.Symbol:          # a variable: a value, finite
         return value
     # Eq(0, ...), written for every balance, without sympify
     expr = S.Zero if type(value) is int and value == 0 else sympify_value(value)
+    if isinstance(expr, Sample):        # y = sample(start, period): true at the ticks
+        return sp.Piecewise((S.One, expr), (S.Zero, True))
+    if is_logical(expr):
+        return boolean_value(expr)
     if not isinstance(expr, sp.Expr):
         raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}): {_text(expr)} is a relation or "
                        "a logical value, not a value (ac.if_else(condition, a, b) chooses "
@@ -374,6 +382,26 @@ def _side(value, lhs, rhs) -> sp.Expr:
         raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}) contains a value that is not a "
                        f"finite number ({_text(expr)})")
     return expr
+
+
+def _logical_side(value) -> bool:
+    if isinstance(value, (bool, np.bool_)):
+        return True
+    return isinstance(value, sp.Basic) and not isinstance(value, sp.Expr)
+
+
+def _check_boolean_equation(lhs, rhs, given_lhs, given_rhs) -> None:
+    """A condition is the value of a Boolean: the other side is a Boolean variable."""
+    logical = given_lhs if _logical_side(given_lhs) else given_rhs
+    other = rhs if logical is given_lhs else lhs
+    if type(other) is sp.Symbol and value_type(other) in (bool, None):
+        return
+    what = (f"{other.name} is a{'n Integer' if value_type(other) is int else ' Real'} "
+            "variable" if type(other) is sp.Symbol else f"{_text(other)} is not a variable")
+    raise _invalid(f"ac.Eq({_text(given_lhs)}, {_text(given_rhs)}): {_text(logical)} is a "
+                   f"relation or a logical value, not a value, and {what} "
+                   "(ac.if_else(condition, a, b) chooses between values; a Boolean "
+                   "variable, type=bool, takes the truth of a condition)")
 
 
 def _check_not_trivial(lhs: sp.Expr, rhs: sp.Expr) -> None:
@@ -395,25 +423,104 @@ def if_else(condition, then, otherwise):
     the integrator steps and switched only at located events.
     """
     cond = _condition(condition, "if_else()")
-    return sp.Piecewise((sympify_value(then), cond), (sympify_value(otherwise), True))
+    return sp.Piecewise((_branch(then), cond), (_branch(otherwise), True))
+
+
+def _branch(value):
+    """A branch of if_else: a value; a condition as its value 1 or 0 (a Boolean)."""
+    expr = sympify_value(value)
+    return boolean_value(expr) if is_logical(expr) else expr
 
 
 def _condition(condition, where: str):
-    """A relation or a logical combination of relations (a Python bool is one too)."""
-    if isinstance(condition, bool) or isinstance(condition, sp.Basic):
-        cond = sp.sympify(condition)
-        if _is_logical(cond):
-            return cond
-    raise _invalid(f"{where} takes a condition such as x > 0 (a relation), "
-                   f"not {_text(condition)}")
+    """A relation, a Boolean variable or parameter, or a logical combination of them (a
+    Python bool is one too), in the form :func:`as_condition` gives it."""
+    try:
+        return as_condition(condition)
+    except _NotACondition as err:
+        raise _invalid(f"{where} takes a condition such as x > 0 (a relation), not "
+                       f"{_text(condition)}{err.why or ' (nor a Boolean)'}") from None
 
 
-def _is_logical(cond) -> bool:
-    # a sympy Symbol is also a Boolean, but a variable is not a condition
-    if isinstance(cond, (sp.core.relational.Relational, sp.logic.boolalg.BooleanAtom)):
+class _NotACondition(Exception):
+    def __init__(self, why=""):
+        super().__init__(why)
+        self.why = why
+
+
+_HALF = S.Half
+
+
+def value_type(expr):
+    """The value type (float, bool or int) of a variable or parameter symbol of the
+    model being compiled; float for anything else, None outside a compile (where the
+    types are not known)."""
+    from .declarations import COMPILING
+    types = getattr(COMPILING.get(), "_value_types", None)
+    if types is None:
+        return None
+    return types.get(expr, float)
+
+
+def is_logical(value) -> bool:
+    """True for a truth value: a relation, True/False, or a logical combination (a
+    sympy Symbol is a Boolean to sympy, but a variable is not a truth value)."""
+    if isinstance(value, (bool, np.bool_)):
         return True
-    return (isinstance(cond, sp.logic.boolalg.BooleanFunction)
-            and all(_is_logical(a) for a in cond.args))
+    if isinstance(value, (sp.core.relational.Relational, sp.logic.boolalg.BooleanAtom)):
+        return True
+    return isinstance(value, sp.logic.boolalg.BooleanFunction) and not isinstance(
+        value, Sample)
+
+
+def as_condition(value):
+    """``value`` as a condition in the one form the compiler reads: relations and And,
+    Or, Not of them.  A Boolean variable or parameter y (its value is 1 or 0) is the
+    relation ``y > 1/2``, and so is ``pre(y)``; Xor, Equivalent and ITE are written with
+    And, Or and Not.  A relation whose sides change only at events (Booleans, Integers,
+    parameters) is evaluated directly, one of time or of a continuous variable is an
+    event (:func:`acausal.compiler.codegen.extract_relations`).  Raises
+    ``InvalidEquation`` for what is not a condition (a Real variable, a number)."""
+    if isinstance(value, (bool, np.bool_)):
+        return sp.true if value else sp.false
+    if not isinstance(value, sp.Basic):
+        if not hasattr(value, "_sympy_"):
+            raise _NotACondition()
+        value = value._sympy_()
+    return _as_condition(value)
+
+
+def _as_condition(e):
+    logic = sp.logic.boolalg
+    if isinstance(e, (sp.core.relational.Relational, logic.BooleanAtom)):
+        return e
+    if type(e) is sp.Symbol or isinstance(e, Pre):
+        typ = value_type(e.args[0] if isinstance(e, Pre) else e)
+        if typ in (bool, None):
+            return sp.StrictGreaterThan(e, _HALF)
+        name = text(e)
+        raise _NotACondition(f" ({name} is a{'n Integer' if typ is int else ' Real'} "
+                             f"variable; compare it, e.g. {name} > 0)")
+    if isinstance(e, (logic.And, logic.Or, logic.Not)):
+        return type(e)(*[_as_condition(a) for a in e.args])
+    if isinstance(e, logic.Xor):
+        out = _as_condition(e.args[0])
+        for a in e.args[1:]:
+            b = _as_condition(a)
+            out = (out & ~b) | (~out & b)
+        return out
+    if isinstance(e, logic.Equivalent):
+        args = [_as_condition(a) for a in e.args]
+        return sp.And(*args) | sp.And(*[~a for a in args])
+    if isinstance(e, logic.ITE):
+        c, a, b = (_as_condition(x) for x in e.args)
+        return (c & a) | (~c & b)
+    raise _NotACondition()
+
+
+def boolean_value(cond):
+    """A condition as the value of a Boolean: 1 where it holds, else 0."""
+    return sp.Piecewise((S.One, as_condition(cond)), (S.Zero, True))
 
 
 def sign(x):
@@ -467,6 +574,63 @@ class pre(sp.Function):
     the same instant assign it; elsewhere pre(x) is x."""
 
     nargs = 1
+
+
+Pre = pre        # the class (``isinstance(e, Pre)``, ``e.has(Pre)``); ``pre`` is below
+
+
+def pre(x):
+    """``pre(x)``: the value of x just before the event (Modelica's ``pre``; see
+    :class:`Pre`).  Of a Boolean it is a condition (``~ac.pre(self.y) & self.u``), of
+    anything else a value."""
+    value = Pre(sympify_value(x))
+    return as_condition(value) if _boolean_symbol(value.args[0]) else value
+
+
+def _boolean_symbol(x) -> bool:
+    return type(x) is sp.Symbol and value_type(x) is bool
+
+
+def _discrete_symbol(x, what: str):
+    x = sympify_value(x)
+    if type(x) is not sp.Symbol:
+        raise _invalid(f"{what}({_text(x)}) takes a Boolean or Integer variable (its value "
+                       "before the event is kept), not an expression")
+    return x
+
+
+def edge(b):
+    """``edge(b)``: b became true at this event, ``b and not pre(b)`` (Modelica's
+    ``edge``; b a Boolean variable)."""
+    x = _discrete_symbol(b, "edge")
+    return as_condition(x) & ~as_condition(Pre(x))
+
+
+def change(v):
+    """``change(v)``: v changed at this event, ``v <> pre(v)`` (Modelica's ``change``; v
+    a Boolean or Integer variable)."""
+    x = _discrete_symbol(v, "change")
+    return sp.Ne(x, Pre(x))
+
+
+# true while the initial values are found (Modelica's initial()); the runtime holds it
+INITIAL = sp.Symbol("initial()", real=True)
+
+
+def initial():
+    """``initial()``: true at the initialization (a when-clause with it fires once the
+    initial values are found), false afterwards (Modelica's ``initial()``)."""
+    from .declarations import COMPILING
+    root = COMPILING.get()
+    if root is not None:
+        object.__setattr__(root, "_uses_initial", True)   # m keeps its value
+    return sp.StrictGreaterThan(INITIAL, _HALF)
+
+
+def integer(x):
+    """``integer(x)``: the largest whole number not above x (Modelica's ``integer``,
+    floor): a value that changes at events, where x crosses a whole number."""
+    return sp.floor(sympify_value(x))
 
 
 class Sample(sp.logic.boolalg.BooleanFunction):
@@ -542,6 +706,8 @@ class Assign:
     def __init__(self, variable, value):
         self.variable = sympify_value(variable)
         self.value = sympify_value(value)
+        if is_logical(self.value):          # the value of a Boolean: 1 or 0
+            self.value = boolean_value(self.value)
         if not isinstance(self.variable, sp.Symbol):
             raise _invalid(f"assign() takes a variable, got {_text(variable)}")
         if not isinstance(self.value, sp.Expr) or self.value.has(*_NON_FINITE):
@@ -570,10 +736,22 @@ class When:
     ``pre(y)`` for the value before it.
     """
 
-    __slots__ = ("condition", "actions", "origin", "origin_class")
+    __slots__ = ("condition", "actions", "origin", "origin_class", "equation", "pulse")
 
     def __init__(self, condition, *actions):
-        self.condition = condition if isinstance(condition, Sample) else \
+        # the text of the equation of a Boolean or Integer variable that this clause
+        # stands for (evaluated at every event: compiler/sampled.py), else None
+        self.equation = None
+        # y = sample(start, period): the clause sets y at each tick, and y is false
+        # again once the instant is over
+        self.pulse = False
+        if isinstance(condition, (list, tuple)):
+            # Modelica's when {c1, c2, ...}: fires when any of them becomes true
+            if not condition:
+                raise _invalid("when([]) needs at least one condition")
+            conds = [_condition(c, "when()") for c in condition]
+            condition = conds[0] if len(conds) == 1 else sp.Tuple(*conds)
+        self.condition = condition if isinstance(condition, (Sample, sp.Tuple)) else \
             _condition(condition, "when()")
         if not isinstance(self.condition, Sample) and self.condition.has(Sample):
             raise _invalid(f"when({_text(condition)}): sample() must be the whole "
@@ -586,6 +764,14 @@ class When:
         self.origin_class = None
 
     @property
+    def conditions(self) -> list:
+        """The conditions, each firing the clause when it becomes true (one, or those
+        of ``when([c1, c2, ...])``)."""
+        if isinstance(self.condition, sp.Tuple):
+            return list(self.condition.args)
+        return [self.condition]
+
+    @property
     def clock(self):
         """The ``sample(start, period)`` of a clocked clause, else None."""
         return self.condition if isinstance(self.condition, Sample) else None
@@ -596,5 +782,7 @@ class When:
 
 def when(condition, *actions) -> When:
     """``ac.when(self.h < 0, ac.reinit(self.v, -e*ac.pre(self.v)))``, or a sampled
-    assignment ``ac.when(ac.sample(0, T), ac.assign(self.y, self.u))``."""
+    assignment ``ac.when(ac.sample(0, T), ac.assign(self.y, self.u))``.  A list of
+    conditions, ``ac.when([c1, c2], ...)``, fires when any of them becomes true
+    (Modelica's ``when {c1, c2}``)."""
     return When(condition, *actions)

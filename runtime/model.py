@@ -379,16 +379,24 @@ class CompiledModel(DAEProblem):
         once the initial values are found (:mod:`.events`); with delays, the history
         before t0 agrees with the solution at t0."""
         self.discrete.reset_held()
+        self.discrete.set_initial(True)
         if self.whens is not None:
             self.whens.reset_clocks(t0, self.start, self.p, self.m)
         if self.delays is not None:
             z, zp = self.delays.initialize(self, t0, initialize)
         else:
             z, zp = initialize(self, t0)
-        if self.whens is not None and self.whens.due(t0).any():
-            action = iterate_event(self, t0, z, zp, np.zeros(self.n_roots, dtype=bool))
+        # the event that ends the initialization: clocks that tick at t0 and clauses
+        # made true by initial() fire, and the Boolean and Integer equations iterate
+        # with pre() taking their initial values (Modelica's event iteration at t0)
+        ends = self.whens is not None and (self.whens.has_equations or
+                                           self.discrete.has_initial)
+        if ends or (self.whens is not None and self.whens.due(t0).any()):
+            action = iterate_event(self, t0, z, zp, np.zeros(self.n_roots, dtype=bool),
+                                   initial=ends)
             if action.changed:
                 z, zp = reinitialize(self, t0, z if action.y is None else action.y, zp)
+        self.discrete.set_initial(False)
         return z, zp
 
     def reinitialize(self, t, z, zp, rtol=1e-6, atol=1e-6):
