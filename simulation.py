@@ -36,10 +36,10 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
     ``$ACAUSAL_CACHE`` or ``~/.cache/acausal``, found by its flattened equations and
     parameter values; ``"tree"`` also by its instance tree, without flattening or
     importing sympy (for models whose equations read nothing but their classes, modules
-    and parameters); ``False`` always compiles (see :mod:`acausal.compiler.cache`).
+    and parameters); ``False`` always compiles (see :mod:`acausal.compiler.cache.entries`).
     ``check_units``: ``"warn"`` (default) warns (``UnitWarning``) at an equation whose
     terms have different dimensions, ``"error"`` raises ``UnitError``, ``"off"`` skips
-    the check (:mod:`acausal.compiler.unitcheck`); ``compiled.report.units`` says what
+    the check (:mod:`acausal.compiler.frontend.unitcheck`); ``compiled.report.units`` says what
     was checked and lists the variables declared without a unit."""
     # imported here: the compiler brings sympy and the runtime scipy, which importing
     # acausal (or this module, for its names) does not need

@@ -1,16 +1,16 @@
 """The ``assemble`` and ``codegen`` passes: the index-reduced system put in the form the
-solver sees (full or causal, :mod:`acausal.compiler.causalize`), its relations, initial
+solver sees (full or causal, :mod:`acausal.compiler.structure.causalize`), its relations, initial
 equations, when-clauses and delays, and the generated code of each
-(:mod:`acausal.compiler.codegen`), gathered in a :class:`ModelCode`.
+(:mod:`acausal.compiler.backends.codegen`), gathered in a :class:`ModelCode`.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from ..components.units import output_tables
-from .graph import UNASSIGNED
+from .structure.graph import UNASSIGNED
 from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
-from .numeric import is_number
+from .index.numeric import is_number
 from .report import EquationNames
 
 __all__ = ["assemble", "choose_initial_rows", "solve_linear"]
@@ -19,16 +19,16 @@ __all__ = ["assemble", "choose_initial_rows", "solve_linear"]
 def assemble(system, reduction, reduced, flat, aliases, report, discretes,
              helds=(), delays=(), programs_made=None) -> ModelCode:
     """The ModelCode of the index-reduced ``system``.  ``programs_made``, if given, is
-    called with the generated Programs by prefix (:func:`acausal.compiler.cbackend.programs`)
+    called with the generated Programs by prefix (:func:`acausal.compiler.backends.cbackend.programs`)
     as soon as they are all made, before the rest of the ModelCode: the C backend
     can print and compile them meanwhile (:mod:`acausal.compiler.pipeline`)."""
     import sympy as sp
     from types import SimpleNamespace
     from ..components.symbols import INITIAL
-    from .causalize import causalize, full_form
-    from .codegen import extract_relations, generate
-    from .numeric import CoefficientValues
-    from .sampled import when_rows as clause_rows
+    from .structure.causalize import causalize, full_form
+    from .backends.codegen import extract_relations, generate
+    from .index.numeric import CoefficientValues
+    from .frontend.sampled import when_rows as clause_rows
     syms = system.symbols
     if reduction.dynamic:
         caus = full_form(reduction, len(syms), len(system.equations))
@@ -86,7 +86,7 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     whens_code = generate(when_rows, z_syms, inputs, len(modes), None, assigned,
                          discretes=dsyms) if reduced.whens else None
     if programs_made is not None:
-        from .cbackend import programs
+        from .backends.cbackend import programs
         programs_made(programs(code, init_code, whens_code, delays_code))
     names = [q.name for q in z_syms]
     relations = RelationInfo(
@@ -126,7 +126,7 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
          **{p.name: p.description for p in flat.parameters}},
         list(out.outputs) + list(out.param_names))
     if delays:
-        from .delays import delay_code, feeds_back
+        from .frontend.delays import delay_code, feeds_back
         out.delays = delay_code(
             delays, delay_rows, delays_code, reduced.parameters, psyms,
             set(z_syms) | {a for a, _ in assigned} | set(inputs) | set(dsyms) | set(modes),
@@ -145,8 +145,8 @@ def _frozen(reduced, dsyms, assigned):
     A relation of these that reads a Boolean, an Integer, a held value or initial() is
     evaluated where it is read, not an event (it cannot cross between events); a relation
     of parameters alone stays an item of the discrete state, as it always was."""
-    from .codegen import FrozenSymbols
-    from .symbolic import symbols_of
+    from .backends.codegen import FrozenSymbols
+    from .algebra.symbolic import symbols_of
     typed = {v.symbol for v in reduced.variables
              if getattr(v.attrs, "type", float) is not float}
     discrete = typed | set(dsyms)
@@ -213,7 +213,7 @@ def _time_linear(items, assigned, frozen) -> list:
     next zero is known before the integrator gets there (exact time events)."""
     import sympy as sp
     from ..components.symbols import time
-    from .symbolic import symbols_of
+    from .algebra.symbolic import symbols_of
     explicit = {}
     known = set(frozen) | {time}              # grows with explicit: one set, not one a row
     for a, e in assigned:                     # assignments that depend on time alone
@@ -239,7 +239,7 @@ def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z
     that complete a perfect matching of [G; initial rows] onto z (Modelica's rule: start
     values fix the states that nothing else determines)."""
     from ..errors import InitializationFailed
-    from .structure import _match
+    from .structure.matching import _match
     keep = model_code.jac_rows < n_res
     adj = _adjacency(model_code.jac_rows[keep], model_code.jac_cols[keep], n_res)
     i_adj = _adjacency(init_code.jac_rows, init_code.jac_cols, init_code.n_rows)
@@ -296,8 +296,8 @@ def _adjacency(rows, cols, n_rows) -> list:
 
 
 def solve_linear(residual, x):
-    """x from residual(x) = 0 when x enters linearly (:func:`acausal.compiler.derivative.solve_linear`)."""
-    from .derivative import solve_linear as solve
+    """x from residual(x) = 0 when x enters linearly (:func:`acausal.compiler.algebra.derivative.solve_linear`)."""
+    from .algebra.derivative import solve_linear as solve
     return solve(residual, x)
 
 
@@ -378,9 +378,9 @@ def _derived_bounds(parameters, psyms) -> list:
 
 def _parameter_functions(exprs: dict, psyms):
     """f(p) for each expression of parameters, each from its own generated source (a
-    :class:`~acausal.compiler.cache.ParameterFunction`: picklable)."""
-    from .cache import ParameterFunction
-    from .emit import Emitter
+    :class:`~acausal.compiler.cache.entries.ParameterFunction`: picklable)."""
+    from .cache.entries import ParameterFunction
+    from .backends.emit import Emitter
     pos = {q: k for k, q in enumerate(psyms)}
     em = Emitter("py", lambda q: f"p[{pos[q]}]")
     out = []

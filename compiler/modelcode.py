@@ -9,7 +9,7 @@ The solver vector ``z`` (see the README's design section): in the causal form th
 (first ``n_states`` entries) and the tearing variables; in the full form every variable.
 ``m`` is the discrete state: ``n_relations`` relation values (1.0 true, 0.0 false) followed
 by ``n_discrete`` frozen floor values, then held(y) and pre(y) of each of the ``n_held``
-discrete variables (:mod:`acausal.compiler.sampled`).
+discrete variables (:mod:`acausal.compiler.frontend.sampled`).
 """
 from __future__ import annotations
 
@@ -114,7 +114,7 @@ class InitialCode:
 
 @dataclass
 class DelayCode:
-    """The delays of a model (:mod:`acausal.compiler.delays`): row j of ``code``'s
+    """The delays of a model (:mod:`acausal.compiler.frontend.delays`): row j of ``code``'s
     residual is the delayed expression of delay j, whose value the generated functions
     read from ``p[n_params + j]``; ``times[j]`` is its delay time, a float or a function
     of the tunable parameters ``f(p)``; ``texts``/``wheres`` name it and its component;

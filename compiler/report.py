@@ -252,7 +252,7 @@ class IndexReport:
             lines.append(f"  BLT: {len(sizes)} blocks, largest {max(sizes)}, {torn} torn")
         kept = getattr(self, "kept_for_fill", [])
         if kept:
-            from .causalize import FILL_LIMIT
+            from .structure.causalize import FILL_LIMIT
             lines.append(f"  fill: {len(kept)} assigned variable(s) kept as unknowns (gradient "
                          f"over {FILL_LIMIT} entries and its equation's), e.g. "
                          + ", ".join(kept[:3]))
@@ -401,7 +401,7 @@ def names_of(system, variables) -> list:
 
 
 def _times_differentiated(s, e) -> int:
-    from .graph import UNASSIGNED
+    from .structure.graph import UNASSIGNED
     k = 0
     while e < len(s.eq_to_diff) and s.eq_to_diff[e] is not UNASSIGNED:
         e = s.eq_to_diff[e]

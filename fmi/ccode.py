@@ -31,7 +31,7 @@ def _array(ctype, name, values) -> str:
 
 def model_c(mc, p, layout, variables, rtol) -> str:
     """The generated C of the model (f_, i_, w_ functions) and its ac_model record."""
-    from ..compiler.cbackend import c_source
+    from ..compiler.backends.cbackend import c_source
     codes = {"f_": mc.code, "i_": mc.initial.code}
     if mc.whens is not None:
         codes["w_"] = mc.whens.code
@@ -117,7 +117,7 @@ def model_c(mc, p, layout, variables, rtol) -> str:
 
 def build_binary(cc, src, binary, size) -> None:
     """The translation units compiled at once, then linked."""
-    from ..compiler.cbackend import LARGE
+    from ..compiler.backends.cbackend import LARGE
     model_flags = (["-O0"] + FLAGS[1:]) if size > LARGE else FLAGS
     with tempfile.TemporaryDirectory() as tmp:
         objects, procs = [], []

@@ -1,5 +1,5 @@
 /* Discrete-time variables and sample() clocks of an exported model (runtime/events.py,
-   WhenClauses; compiler/sampled.py): the held values held(y) and pre(y) of the discrete
+   WhenClauses; compiler/frontend/sampled.py): the held values held(y) and pre(y) of the discrete
    variables follow the relation and floor items in m; the when-clauses' code has the
    conditions, the reinit values, the assigned values and, last, start and period of
    each clock.  The engine (engine.c) fires clocks at their ticks and calls ac_assign

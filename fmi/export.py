@@ -3,7 +3,7 @@
 What goes into the FMU (FMI 2.0, sec. 2.3 "FMU distribution"):
 
 * ``modelDescription.xml`` (:mod:`.description`), the GUID a hash of the C sources;
-* ``sources/``: ``model.c`` (the generated C of the model, :mod:`acausal.compiler.cbackend`,
+* ``sources/``: ``model.c`` (the generated C of the model, :mod:`acausal.compiler.backends.cbackend`,
   and its data: sizes, the Jacobian patterns, the relations, the variables), the engine
   of this package (``acausal_fmu.h``, ``engine.c``, ``discrete.c``, ``cosim.c``,
   ``fmu.c``) and the FMI
@@ -74,7 +74,7 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
     kind = _fmi_type(fmi_type)
     if rtol is not None and not (0 < float(rtol) < 1):
         raise ValueError(f"rtol must be in (0, 1), got {rtol!r}")
-    from ..compiler.cbackend import compiler_available
+    from ..compiler.backends.cbackend import compiler_available
     cc = compiler_available()
     if cc is None:
         raise BackendError("exporting an FMU needs a C compiler (set CC, or install "
@@ -208,7 +208,7 @@ def _has_programs(mc) -> bool:
 
 
 class _compile_cache_off:
-    """ACAUSAL_COMPILE_CACHE=0 for the duration (:mod:`acausal.compiler.cache`)."""
+    """ACAUSAL_COMPILE_CACHE=0 for the duration (:mod:`acausal.compiler.cache.entries`)."""
 
     def __enter__(self):
         self.before = os.environ.get("ACAUSAL_COMPILE_CACHE")
@@ -223,7 +223,7 @@ class _compile_cache_off:
 
 def _metadata(model):
     """Units and descriptions by flat name, from the declarations of a fresh instance."""
-    from ..compiler.flatten import flatten
+    from ..compiler.frontend.flatten import flatten
     args, kwargs = model._init_call
     flat = flatten(type(model)(*args, **kwargs))
     variables = {v.name: (v.attrs.unit or "", getattr(v.attrs, "description", "") or "")

@@ -36,7 +36,7 @@ discrete state before and after the event, goes from false to true; a clocked cl
 (``sample(start, period)``) fires at each tick, exact time events at start + k period,
 including a tick at t0 (after the initial values are found; otherwise no clause fires
 at initialization).  ``assign(y, e)`` writes the held value of the discrete variable y
-(:mod:`acausal.compiler.sampled`), the clauses' assignments in data-flow order.
+(:mod:`acausal.compiler.frontend.sampled`), the clauses' assignments in data-flow order.
 """
 from __future__ import annotations
 

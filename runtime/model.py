@@ -17,7 +17,7 @@ path (:mod:`.initial`) are all reached from here, through the items of the solve
 contract (:mod:`acausal.solvers.base`) and the runtime's own, in ``acausal.runtime``.
 
 A CompiledModel pickles as its ModelCode in portable form
-(:func:`acausal.compiler.cache.portable`: the generated sources, executed again on
+(:func:`acausal.compiler.cache.entries.portable`: the generated sources, executed again on
 load; the C library loaded again or rebuilt) with its parameter values, discrete state
 and current choice of dummy derivatives.
 """
@@ -114,13 +114,13 @@ class CompiledModel(DAEProblem):
 
     # -- pickling -----------------------------------------------------------------------
     def __getstate__(self):
-        from ..compiler.cache import portable
+        from ..compiler.cache.entries import portable
         return {"model_code": portable(self.model_code), "p": self.p.copy(),
                 "m": self.discrete.m.copy(), "dummies": sorted(self.dummies),
                 "switches": list(self.dynamic.switches) if self.dynamic is not None else []}
 
     def __setstate__(self, state):
-        from ..compiler.cache import load_notes
+        from ..compiler.cache.entries import load_notes
         mc = state["model_code"]
         notes = load_notes(mc)
         if notes and mc.report is not None:

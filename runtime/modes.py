@@ -3,7 +3,7 @@
 Modelica semantics (Modelica Language Specification 3.6, sec. 8.5): a relation in an
 if-expression keeps the value it had at the last event while the integrator steps; it
 changes only at an event, located where its zero-crossing function ``g = lhs - rhs``
-crosses zero.  The same holds for ``floor(u)`` (:mod:`acausal.compiler.discrete`), held at
+crosses zero.  The same holds for ``floor(u)`` (:mod:`acausal.compiler.frontend.discrete`), held at
 an integer ``n`` until ``u`` leaves ``[n, n+1)``.
 
 Each relation is judged on its *own* scale, never on another one's: its value is "at zero"
@@ -336,7 +336,7 @@ class DiscreteState:
             return self.info.held_names[j]
         return f"pre({self.info.held_names[j - self.n_held]})"
 
-    # -- discrete variables (acausal.compiler.sampled) -----------------------------------
+    # -- discrete variables (acausal.compiler.frontend.sampled) -----------------------------------
     @property
     def held(self) -> slice:
         """Where held(y) of the discrete variables lives in m."""

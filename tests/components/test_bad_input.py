@@ -16,7 +16,7 @@ import pytest
 import sympy as sp
 
 import acausal as ac
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.flatten import flatten
 from acausal.components import (InvalidConnection, InvalidEquation, InvalidHierarchy,
                                 InvalidValue, NotInModel)
 from acausal.library.blocks import PI

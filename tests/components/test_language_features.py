@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.flatten import flatten
 from acausal.library import blocks as bl
 from acausal.library import rotational as rot
 

@@ -8,7 +8,7 @@ import pytest
 from scipy.integrate import cumulative_simpson, solve_ivp
 
 import acausal as ac
-from acausal.compiler.structure import UnderdeterminedModel
+from acausal.compiler.structure.matching import UnderdeterminedModel
 from acausal.library import multibody3d as mb
 from acausal.library.blocks import Constant
 from acausal.library.multibody.examples.pendulums import DoublePendulum as PlanarDoublePendulum

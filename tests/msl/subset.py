@@ -4,4 +4,9 @@ use; ``make test-msl`` (and CI) compares all of them."""
 
 QUICK = {
     "Modelica.Mechanics.Rotational.Examples.First",
+    "Modelica.Mechanics.Rotational.Examples.Backlash",
+    "Modelica.Mechanics.Translational.Examples.ElastoGap",
+    "Modelica.Mechanics.Translational.Examples.Vehicle",
+    "Modelica.Blocks.Examples.BooleanNetwork1",
+    "Modelica.Blocks.Examples.IntegerNetwork1",
 }

@@ -51,7 +51,7 @@ class First(ac.Component):
     sine = bl.Sine(amplitude=10.0, f=5.0)
     torque = ro.Torque()
     inertia1 = ro.Inertia(J=0.1)
-    gear = ro.IdealGear(n=10.0)
+    gear = ro.IdealGear(ratio=10.0)
     inertia2 = ro.Inertia(J=2.0, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
     spring = ro.Spring(c=1e4)
     inertia3 = ro.Inertia(J=2.0, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
