@@ -137,6 +137,7 @@ class Result:
                   fields.pop("events", ()), fields.pop("success", True),
                   fields.pop("message", ""))
         res._table = {n: np.asarray(v, dtype=float) for n, v in columns.items()}
+        res.value_types = dict(fields.pop("value_types", {}))
         for key, value in fields.items():
             setattr(res, key, value)
         return res
@@ -237,8 +238,10 @@ class Result:
         return np.flatnonzero(np.append(self.t[1:] != self.t[:-1], True))
 
     def to_pandas(self, names=None, unique: bool = False):
-        """A ``pandas.DataFrame``: index ``time``, one column per variable (default: all);
-        ``df.attrs["units"]`` and ``df.attrs["descriptions"]`` by column name.  An event
+        """A ``pandas.DataFrame``: index ``time``, one column per variable (default: all;
+        a Boolean a bool column, an Integer an int64 one); ``df.attrs["units"]``,
+        ``df.attrs["descriptions"]`` and ``df.attrs["types"]`` (Real, Boolean, Integer)
+        by column name.  An event
         time appears twice (before and after it) unless ``unique=True`` (after only)."""
         try:
             import pandas as pd
@@ -250,11 +253,14 @@ class Result:
                           index=pd.Index(self.t[rows], name="time"), columns=names)
         df.attrs["units"] = {n: self.units.get(n, "") for n in names}
         df.attrs["descriptions"] = {n: self.descriptions.get(n, "") for n in names}
+        # Booleans and Integers are bool and int64 columns; their Modelica types
+        df.attrs["types"] = {n: self.value_types.get(n, "Real") for n in names}
         return df
 
     def to_xarray(self, names=None, unique: bool = False):
         """An ``xarray.Dataset`` with dimension ``time``, one variable per name (default:
-        all) with attributes ``units`` and ``description``; the run's parameters, success
+        all) with attributes ``units``, ``description`` and ``type`` (Real, Boolean or
+        Integer: bool and int64 data); the run's parameters, success
         and message are dataset attributes.  ``unique=True``: each event time once (the
         point after it), so that ``ds.sel(time=..., method="nearest")`` works."""
         try:
@@ -264,7 +270,8 @@ class Result:
                 from err
         names, rows = self._names(names), self._rows(unique)
         data = {n: ("time", self[n][rows], {"units": self.units.get(n, ""),
-                                      "description": self.descriptions.get(n, "")})
+                                      "description": self.descriptions.get(n, ""),
+                                      "type": self.value_types.get(n, "Real")})
                 for n in names}
         attrs = {"success": int(bool(self.success)), "message": str(self.message)}
         attrs.update({f"parameter {k}": v for k, v in self.parameter_values.items()})

@@ -91,7 +91,8 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     names = [q.name for q in z_syms]
     relations = RelationInfo(
         ops=[type(r).__name__ for r in rel_list],
-        texts=[_relation_text(r, k, origin, system, caus, assigned, init_text, reduced)
+        texts=[_relation_text(r, k, origin, system, caus, assigned, init_text, reduced,
+                              (len(init_rows), when_layout, helds))
                for k, r in enumerate(rel_list)],
         nominal=[_relation_nominal(system, g, assigned) for g in crossings],
         discrete_texts=[d.text for d in discretes],
@@ -117,7 +118,9 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms),
               "derived_parameters": dict(flat.derived),
-              "value_types": _value_types(flat)})
+              "value_types": _value_types(flat),
+              "parameter_types": {p.name: _TYPE_NAME[p.type] for p in params
+                                  if getattr(p, "type", float) is not float}})
     # the declared unit and description of every name of a result
     out.meta["units"], out.meta["descriptions"] = output_tables(
         {**{v.name: v.attrs.unit for v in flat.variables},
@@ -160,6 +163,9 @@ def _frozen(reduced, dsyms, assigned):
     return FrozenSymbols(frozen, discrete)
 
 
+_TYPE_NAME = {float: "Real", bool: "Boolean", int: "Integer"}
+
+
 def _value_types(flat) -> dict:
     """The Boolean and Integer variables of a result, by name (aliases included)."""
     from ..components.declarations import TYPE_NAMES
@@ -173,8 +179,11 @@ def _type_names(flat, helds) -> list:
     return [TYPE_NAMES[types.get(h.name, float)] for h in helds]
 
 
-def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -> str:
-    """The relation as written, with the equation it is part of."""
+def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced,
+                   clauses=None) -> str:
+    """The relation as written, with the equation it is part of (``clauses``: the number
+    of initial rows, the when-clauses' layout and the held values, which tell a
+    when-clause's condition from a Boolean's or Integer's equation)."""
     import sympy as sp
     i = origin[k]
     n_a, n_r = len(assigned), len(caus.residual_eqs)
@@ -185,7 +194,14 @@ def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -
     elif i - n_a - n_r - (len(caus.z[: caus.n_states]) if caus.causal else 0) < len(init_text):
         where = "initial conditions"
     else:
-        where = "a when-clause or a Boolean/Integer equation"
+        where = "a when-clause"
+        if clauses is not None:
+            n_init, layout, helds = clauses
+            j = i - n_a - n_r - (caus.n_states if caus.causal else 0) - n_init
+            a = j - len(layout["cond_owners"]) - len(layout["targets"])
+            if 0 <= a < len(layout["assign_slots"]) and \
+                    layout["assign_owners"][a] in set(layout["always"]):
+                where = f"the equation of {helds[layout['assign_slots'][a]].name}"
     return f"{sp.sstr(rel)}  in {where}"
 
 

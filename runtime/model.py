@@ -455,7 +455,7 @@ class CompiledModel(DAEProblem):
                 close = [n for n in self.param_names if n.split(".")[-1] == name.split(".")[-1]]
                 hint = f"; parameters with that name: {', '.join(close[:6])}" if close else ""
                 raise NotInModel(f"the model has no tunable parameter '{name}'{why}{hint}")
-            x = _real_value(name, value)
+            x = _real_value(name, value, self.meta.get("parameter_types", {}).get(name))
             lo, hi = self.meta.get("parameter_bounds", {}).get(name, (None, None))
             if (lo is not None and x < lo) or (hi is not None and x > hi):
                 raise InvalidValue(f"parameter '{name}' = {x!r} is outside its range "
@@ -492,7 +492,16 @@ def _by_element(values: dict, names: list) -> dict:
     return out
 
 
-def _real_value(name, value) -> float:
+def _real_value(name, value, kind=None) -> float:
+    """A parameter's new value as the float p holds: a Boolean parameter's True/False as
+    1/0, an Integer's whole number, a Real's real number."""
+    if kind in ("Boolean", "Integer"):
+        from ..components.declarations import typed_value
+        try:
+            return float(typed_value(value, bool if kind == "Boolean" else int,
+                                     f"parameter '{name}'"))
+        except ValueError as err:
+            raise InvalidValue(str(err)) from None
     if isinstance(value, (bool, np.bool_, complex, np.complexfloating)) or \
             not isinstance(value, (int, float, np.number)):
         raise InvalidValue(f"parameter '{name}' must be a real number, got {value!r} "

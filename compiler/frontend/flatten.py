@@ -68,6 +68,7 @@ class FlatParameter(_Located):
     component_class: str = ""
     min: float | None = None
     max: float | None = None
+    type: object = float      # float, bool or int (Real, Boolean, Integer)
 
     def describe(self) -> str:
         """``'R1' (Resistor): parameter R``, as the component's own errors say it."""
@@ -221,7 +222,8 @@ def _collect_declarations(comp: Component, flat: FlatModel) -> None:
                 raise ModelError(f"parameter '{sym.name}' of {comp._describe()} has no value")
             flat.parameters.append(FlatParameter(sym.name, sym, value, decl.unit,
                                                  decl.description, comp.path,
-                                                 type(comp).__name__, decl.min, decl.max))
+                                                 type(comp).__name__, decl.min, decl.max,
+                                                 decl.type))
         else:
             hint = comp.hint if isinstance(comp, Port) else ""
             flat.variables.append(FlatVariable(sym.name, sym, comp.variable_attributes(name),
@@ -416,8 +418,10 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     against its declared [min, max].
     """
     resolved = _resolve_bindings(flat)
+    # (a Boolean or Integer parameter stays tunable at 0: false, or a count of none)
     zeros = {p.symbol: sp.Integer(0) for p in flat.parameters
-             if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")}
+             if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")
+             and p.type is float}
     bound = {k: v.xreplace(zeros) for k, v in resolved.items()}
     bound.update(zeros)
     _check_bounds(flat, resolved)
