@@ -36,6 +36,7 @@ from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
 from . import inheritance
+from .conditional import Conditional
 from .declarations import (COMPILING, Parameter, Variable, check_parameter_value,
                            check_structural_value, declaration_doc, is_symbolic,
                            parameter_signature, ref, shown_value)
@@ -45,7 +46,7 @@ if TYPE_CHECKING:
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
-           "InvalidInheritance"]
+           "InvalidInheritance", "AbsentComponent"]
 
 
 class ModelError(ValueError):
@@ -76,6 +77,11 @@ class InvalidInheritance(ModelError):
     """An ``equations()`` (or ``initial_equations()``) that calls its base's, which the
     framework already includes, or an ``@ac.replaces`` naming a class that is not a base
     with equations of its own."""
+
+
+class AbsentComponent(ModelError, AttributeError):
+    """A conditional port or sub-component (``ac.Conditional``) read or connected while
+    the structural flag that makes it is False."""
 
 
 class NotInModel(ModelError):
@@ -113,6 +119,8 @@ def _describe_class(cls) -> None:
                 variables[name] = value
             elif isinstance(value, Component):
                 children[name] = value
+            elif isinstance(value, Conditional):
+                children[name] = value
     own_doc = vars(cls).get("__doc__")
     cls.__signature__ = parameter_signature(cls, params)
     if own_doc:
@@ -146,6 +154,9 @@ class Component(metaclass=_ComponentType):
                 value = copy.deepcopy(modifications.pop(name))
                 if hasattr(value, "tolist"):        # a numpy array of coefficients
                     value = value.tolist()
+                if isinstance(decl.value, bool) and not isinstance(value, bool):
+                    raise InvalidValue(f"{type(self).__name__}: {name} must be True or "
+                                       f"False, not {value!r}")
                 try:
                     check_structural_value(value, f"structural parameter {name}",
                                            decl.min, decl.max)
@@ -163,6 +174,13 @@ class Component(metaclass=_ComponentType):
         object.__setattr__(self, "_var_attrs", {})
         for name, decl in _class_children(type(self)).items():
             setattr(self, name, decl._clone())
+        for name, cond in _class_conditionals(type(self)).items():
+            use = structural.get(cond.flag, _structurals(type(self))[cond.flag].value)
+            if not isinstance(use, bool):
+                raise InvalidValue(f"{type(self).__name__}: {cond.flag} must be True or "
+                                   f"False, not {use!r}")
+            if use == cond.when:
+                setattr(self, name, cond.component._clone())
         self.build()
 
     def build(self) -> None:
@@ -178,6 +196,12 @@ class Component(metaclass=_ComponentType):
             if isinstance(decl, (Parameter, Variable)):
                 try:
                     decl.check()
+                except ValueError as err:
+                    raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
+        for name, decl in vars(cls).items():
+            if isinstance(decl, Conditional):
+                try:
+                    decl.check(cls)
                 except ValueError as err:
                     raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
         inheritance.prepare_class(cls)
@@ -490,6 +514,7 @@ def _connection_type(self):
 Port.connection_type = _connection_type
 
 _CHILD_CACHE: dict = {}
+_CONDITIONAL_CACHE: dict = {}
 _DECL_CACHE: dict = {}
 _STRUCTURAL_CACHE: dict = {}
 
@@ -504,6 +529,20 @@ def _class_children(cls) -> dict:
                     out[name] = value
         _CHILD_CACHE[cls] = out
     return _CHILD_CACHE[cls]
+
+
+def _class_conditionals(cls) -> dict:
+    """The ``ac.Conditional`` declarations over the MRO, base classes first."""
+    if cls not in _CONDITIONAL_CACHE:
+        out = {}
+        for klass in reversed(cls.__mro__):
+            for name, value in vars(klass).items():
+                if isinstance(value, Conditional):
+                    out[name] = value
+                elif name in out:
+                    del out[name]          # redeclared as something else
+        _CONDITIONAL_CACHE[cls] = out
+    return _CONDITIONAL_CACHE[cls]
 
 
 def _constructor_arguments(cls) -> set:

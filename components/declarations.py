@@ -603,6 +603,9 @@ def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
         sections.append("\n".join(lines))
     if children:
         lines = [SECTION_HEADINGS[2], "-" * len(SECTION_HEADINGS[2])]
-        lines += [f"{name} : {type(c).__name__}" for name, c in children.items()]
+        lines += [f"{name} : {type(c.component).__name__} (if "
+                  f"{'' if c.when else 'not '}{c.flag})"
+                  if hasattr(c, "flag") else f"{name} : {type(c).__name__}"
+                  for name, c in children.items()]
         sections.append("\n".join(lines))
     return "\n\n".join(s for s in [text, *sections] if s)

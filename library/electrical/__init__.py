@@ -1,7 +1,7 @@
 """Electrical domain: pins, one-ports, basic components, sources and sensors."""
 from ... import _lazy_exports
 
-__all__ = ["OnePort", "TwoPin", "TwoPort", "Ground", "Resistor", "Conductor", "Capacitor",
+__all__ = ["OnePort", "TwoPin", "TwoPort", "ConditionalHeatPort", "Ground", "Resistor", "Conductor", "Capacitor",
            "Inductor", "HeatingResistor", "VariableResistor", "VariableConductor",
            "VariableCapacitor", "VariableInductor", "Potentiometer", "Transformer",
            "Gyrator", "IdealTransformer", "VCV", "VCC", "CCV", "CCC", "IdealOpAmp",
@@ -18,7 +18,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                "Inductor", "Potentiometer", "Resistor", "Transformer", "VariableCapacitor",
                "VariableConductor", "VariableInductor", "VariableResistor"),
     ".controlled": ("CCC", "CCV", "VCC", "VCV"),
-    ".interfaces": ("OnePort", "TwoPin", "TwoPort"),
+    ".interfaces": ("OnePort", "TwoPin", "TwoPort", "ConditionalHeatPort"),
     ".semiconductors": ("Diode", "IdealDiode"),
     ".sensors": ("CurrentSensor", "PotentialSensor", "PowerSensor", "VoltageSensor"),
     ".sources": ("ConstantCurrent", "ConstantVoltage", "CosineVoltage", "ExpSineVoltage",

@@ -1,6 +1,6 @@
 """Basic electrical components (Modelica.Electrical.Analog.Basic)."""
 import acausal as ac
-from acausal.ports import HeatPort, Pin, RealInput
+from acausal.ports import BooleanInput, HeatPort, Pin, RealInput
 
 from .interfaces import OnePort, TwoPort
 
@@ -204,14 +204,9 @@ class Potentiometer(ac.Component):
     Rp = ac.Variable(unit="Ohm", description="resistance between pin_p and contact")
     Rn = ac.Variable(unit="Ohm", description="resistance between contact and pin_n")
 
-    def __init__(self, *, useRinput=False, **modifications):
-        super().__init__(**modifications)
-        if not isinstance(useRinput, bool):
-            raise ac.ModelError(f"Potentiometer: useRinput must be True or False, not "
-                                f"{useRinput!r}")
-        object.__setattr__(self, "useRinput", useRinput)
-        if useRinput:
-            self.r = RealInput()
+    useRinput = ac.Parameter(False, structural=True,
+                             description="the contact position is the input r")
+    r = ac.Conditional(RealInput(), "useRinput")
 
     def loss_power(self):
         """Rp pin_p.i^2 + Rn pin_n.i^2."""
@@ -306,16 +301,28 @@ class _IdealSwitch(OnePort):
         v = s (Ron if closed else 1),   i = s (1 if closed else Goff)
 
     ``control`` is a signal; the switch changes state when it crosses 0.5 (an event).
+    With ``booleanControl=True`` it is a ``BooleanInput`` (the MSL's Ideal switches):
+    true closes an IdealClosingSwitch and opens an IdealOpeningSwitch.
     """
 
     Ron = ac.Parameter(1e-5, unit="Ohm", min=0, description="resistance when closed")
     Goff = ac.Parameter(1e-5, unit="S", min=0, description="conductance when open")
+    booleanControl = ac.Parameter(False, structural=True,
+                                  description="control is a BooleanInput (else a Real signal)")
     control = RealInput()
     s = ac.Variable(start=0.0, description="curve parameter (i when closed, v when open)")
 
     def loss_power(self):
         """P_loss = v i = s^2 Ron (closed), s^2 Goff (open)."""
         return self.v * self.i
+
+    def build(self):
+        if self.booleanControl:
+            self.control = BooleanInput()
+
+    def on(self):
+        """The control's condition: true, or a Real signal above 0.5."""
+        return self.control if self.booleanControl else self.control.signal > 0.5
 
     def closed(self):
         raise NotImplementedError
@@ -327,14 +334,14 @@ class _IdealSwitch(OnePort):
 
 
 class IdealClosingSwitch(_IdealSwitch):
-    """Ideal switch, closed while control > 0.5."""
+    """Ideal switch, closed while control > 0.5 (or true)."""
 
     def closed(self):
-        return self.control.signal > 0.5
+        return self.on()
 
 
 class IdealOpeningSwitch(_IdealSwitch):
-    """Ideal switch, open while control > 0.5."""
+    """Ideal switch, open while control > 0.5 (or true)."""
 
     def closed(self):
-        return self.control.signal <= 0.5
+        return ~self.on()

@@ -1,8 +1,8 @@
 """Partial models of the electrical domain (Modelica.Electrical.Analog.Interfaces)."""
 import acausal as ac
-from acausal.ports import NegativePin, PositivePin
+from acausal.ports import HeatPort, NegativePin, PositivePin
 
-__all__ = ["OnePort", "TwoPin", "TwoPort"]
+__all__ = ["OnePort", "TwoPin", "TwoPort", "ConditionalHeatPort"]
 
 
 class TwoPin(ac.Component):
@@ -52,3 +52,30 @@ class TwoPort(ac.Component):
                 ac.Eq(self.i1, self.p1.i),
                 ac.Eq(self.v2, self.p2.v - self.n2.v), ac.Eq(0, self.p2.i + self.n2.i),
                 ac.Eq(self.i2, self.p2.i)]
+
+
+class ConditionalHeatPort(ac.Component):
+    """A conditional heat port through which an electrical component's losses leave
+    (Modelica.Electrical.Analog.Interfaces.ConditionalHeatPort):
+
+        useHeatPort:      heatPort.T = T_heatPort,   heatPort.Q_flow = -LossPower
+        not useHeatPort:  T_heatPort = T   (the device at the fixed temperature T)
+
+    The component gives ``LossPower`` by an equation (``LossPower = v i``) and may read
+    ``T_heatPort`` (a temperature-dependent resistance).  ``useHeatPort`` is fixed where
+    the component is made (``ac.Conditional``).
+    """
+
+    useHeatPort = ac.Parameter(False, structural=True, description="enable the heat port")
+    T = ac.Parameter(293.15, unit="K", description="fixed device temperature if "
+                                                   "useHeatPort = false")
+    heatPort = ac.Conditional(HeatPort(), "useHeatPort")
+    LossPower = ac.Variable(unit="W", description="loss power leaving the component via "
+                                                  "heatPort")
+    T_heatPort = ac.Variable(unit="K", description="temperature of heatPort")
+
+    def equations(self):
+        if self.useHeatPort:
+            return [ac.Eq(self.heatPort.T, self.T_heatPort),
+                    ac.Eq(self.heatPort.Q_flow, -self.LossPower)]
+        return [ac.Eq(self.T_heatPort, self.T)]

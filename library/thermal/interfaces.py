@@ -30,3 +30,4 @@ class PartialElementaryOnePort(ac.Component):
     """One heat port, named port."""
 
     port = HeatPort()
+
