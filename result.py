@@ -335,6 +335,11 @@ def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
     compiled.p[:] = p
     known = len(index) == len(t) and discrete
     lines = getattr(compiled, "delays", None)
+    # the recorded values: the delayed ones, then those of inputs that varied
+    n_delayed = lines.n if lines is not None else 0
+    inputs = getattr(compiled, "inputs", None)
+    varied = inputs is not None and delayed is not None and len(delayed) == len(t) \
+        and np.ndim(delayed) == 2 and delayed.shape[1] > n_delayed
     if lines is not None and (delayed is None or len(delayed) != len(t)):
         raise ValueError("the values of this result's delay() expressions were not "
                          "recorded (a result of a model with delays needs the values the "
@@ -343,7 +348,9 @@ def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
         rows = []
         for k, (tk, zk) in enumerate(zip(t, z)):
             if lines is not None:
-                lines.held = delayed[k]
+                lines.held = delayed[k][:n_delayed]
+            if varied:
+                compiled.p[inputs.slots] = delayed[k][n_delayed:]
             if known:
                 compiled.m[:] = discrete[index[k]]
             else:                      # a result without its modes: take them from the point

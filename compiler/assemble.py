@@ -74,7 +74,9 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     params = [p for p in reduced.parameters if is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
     # the delayed values are read from p after the tunable parameters (runtime/delays.py)
-    inputs = psyms + [d.symbol for d in delays]
+    # then the top-level inputs' values, written by the runtime (runtime/inputs.py)
+    model_inputs = list(getattr(flat, "inputs", ()))
+    inputs = psyms + [d.symbol for d in delays] + [i.symbol for i in model_inputs]
     rel_list = list(modes.values())
     code = generate(rows, z_syms, inputs, len(modes),
                     crossings + [d.argument for d in discretes], assigned, outputs=syms,
@@ -134,6 +136,10 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
             delays, delay_rows, delays_code, reduced.parameters, psyms,
             set(z_syms) | {a for a, _ in assigned} | set(inputs) | set(dsyms) | set(modes),
             feeds_back(system, delays))
+    if model_inputs:
+        from .modelcode import InputCode
+        out.inputs = InputCode([i.name for i in model_inputs], [i.type for i in model_inputs],
+                               [i.start for i in model_inputs])
     if reduced.whens:
         out.whens = WhenCode(whens_code, len(when_layout["cond_owners"]), texts=[
             (f"when {sp.sstr(w.condition)}" if w.equation is None else w.equation)

@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["ModelCode", "RelationInfo", "WhenCode", "DynamicSets", "InitialCode", "DelayCode"]
+__all__ = ["ModelCode", "RelationInfo", "WhenCode", "DynamicSets", "InitialCode", "DelayCode",
+           "InputCode"]
 
 
 @dataclass
@@ -128,6 +129,17 @@ class DelayCode:
 
 
 @dataclass
+class InputCode:
+    """The top-level inputs of a model (:mod:`acausal.compiler.frontend.inputs`): input j,
+    ``names[j]``, is read from ``p[n_params + n_delays + j]``; ``types[j]`` is Real,
+    Boolean or Integer, ``starts[j]`` its value where none is given."""
+
+    names: list
+    types: list
+    starts: list
+
+
+@dataclass
 class ModelCode:
     code: object                      # GeneratedCode: residual, jacobian, roots, scales, expand
     names: list                       # name of each z entry
@@ -147,3 +159,4 @@ class ModelCode:
     report: object = None
     meta: dict = field(default_factory=dict)
     delays: DelayCode | None = None
+    inputs: InputCode | None = None

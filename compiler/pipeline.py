@@ -355,6 +355,7 @@ def _symbolic_system(reduced, discretes, helds=(), delays=()):
     from ..components.symbols import INITIAL
     system.parameters.add(INITIAL)                   # initial(): constant while it runs
     system.delays = {d.symbol: d for d in delays}        # inputs that vary: never constant
+    system.delays.update({i.symbol: i for i in getattr(reduced, "inputs", ())})
     return system, system.structure()
 
 

@@ -6,7 +6,7 @@ component classes does not load sympy (their symbols and equations do).
 """
 from .component import (AbsentComponent, Component, Connection, InvalidConnection,
                         InvalidEquation, InvalidHierarchy, InvalidInheritance, InvalidValue,
-                        ModelError, NotInModel, Port, connect)
+                        MissingInput, ModelError, NotInModel, Port, connect)
 from .conditional import Conditional
 from .declarations import Across, Parameter, Signal, Through, Variable, ref
 from .inheritance import replaces
@@ -19,7 +19,7 @@ __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidV
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
            "der", "if_else", "no_event", "delay", "when", "When", "reinit", "pre", "sign",
            "time", "sample", "assign", "edge", "change", "initial", "integer", "Conditional",
-           "AbsentComponent"]
+           "AbsentComponent", "MissingInput"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".arrays": ("InvalidIndex",),

@@ -46,7 +46,7 @@ if TYPE_CHECKING:
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
-           "InvalidInheritance", "AbsentComponent"]
+           "InvalidInheritance", "AbsentComponent", "MissingInput"]
 
 
 class ModelError(ValueError):
@@ -82,6 +82,11 @@ class InvalidInheritance(ModelError):
 class AbsentComponent(ModelError, AttributeError):
     """A conditional port or sub-component (``ac.Conditional``) read or connected while
     the structural flag that makes it is False."""
+
+
+class MissingInput(ModelError):
+    """A top-level input of the model (an input port of the model itself that nothing in
+    it drives) that ``simulate`` was not told how to drive (``inputs=``)."""
 
 
 class NotInModel(ModelError):

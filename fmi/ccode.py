@@ -110,7 +110,7 @@ def model_c(mc, p, layout, variables, rtol) -> str:
         "n_rows": c.n_rows, "n_state_z": layout["n_state_z"],
         "n_alg": len(layout["alg_index"]), "state_index": "STATE_INDEX",
         "alg_index": "ALG_INDEX", "link_d": "LINK_D", "nominal": "NOMINAL", "start": "START",
-        "n_p": len(mc.param_values), "p_start": "P_START", "n_rel": rel.n_relations,
+        "n_p": len(p), "p_start": "P_START", "n_rel": rel.n_relations,
         "n_disc": rel.n_discrete, "upward": "UPWARD", "strict": "STRICT", "timed": "TIMED",
         "rel_nominal": "REL_NOMINAL", "n_jac": len(c.jac_rows), "jac_rows": "JAC_ROWS",
         "jac_cols": "JAC_COLS", "residual": "f_residual", "jacobian": "f_jacobian",

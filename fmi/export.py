@@ -322,12 +322,21 @@ def _variables(plant, meta, ports):
                                        variability="tunable", start=float(compiled.p[k]),
                                        unit=unit, description=desc, minimum=lo, maximum=hi),
                            name)
+    own = set()
     input_var = {}
     for n in inputs:
         k = compiled.param_names.index(plant.input_params[n])
         input_var[k] = add(FmiVariable(n, AC_PARAM, k, causality="input", start=0.0,
                                        description="input signal"))
-    own = {f"{n}.signal" for n in inputs + outputs}
+    if compiled.inputs is not None:        # compiled with its top-level inputs
+        for n, k, typ, start in zip(compiled.inputs.names, compiled.inputs.slots,
+                                    compiled.inputs.types, compiled.inputs.starts):
+            types.setdefault(n, typ)
+            input_var[int(k)] = add(FmiVariable(n, AC_PARAM, int(k), causality="input",
+                                                start=start, description="input signal"))
+        own = {f"{n}.signal" for n in compiled.inputs.names}
+    own = {f"{n}.signal" for n in inputs + outputs} | (own if compiled.inputs is not None
+                                                         else set())
     for n in outputs:
         internal = plant.internal(f"{n}.signal")
         add(_from_output(n, mc.outputs[internal], compiled, "output",
@@ -365,6 +374,7 @@ def _variables(plant, meta, ports):
         if v is not None and v.kind == AC_EXPAND and v.sign == 1.0 and v.causality == "local":
             v.initial, v.start, v.start_slot = "exact", value, slot
     layout = {"starts": starts, "state_index": state_index, "n_x": len(state_index),
+              "n_p": len(compiled.p),
               "link_d": [int(k) for k in compiled.link_d],
               "alg_index": [k for k in range(compiled.n) if k not in set(state_index)],
               "n_indicators": int(compiled.n_roots), "n_state_z": n_sz}
@@ -461,7 +471,7 @@ def _dependencies(mc, layout, variables, param_var, input_var, by_name, plant) -
     init_prog = mc.initial.code.program
     init_reads = Reads(init_prog)
     i_res = init_prog.functions["residual"]
-    n_p = len(mc.param_values)
+    n_p = layout["n_p"]          # the parameters, then the inputs' values
     i_rows = [init_reads.of(i_res[r]) for r in mc.initial.rows]
     start_var = {}
     for slot, (j, k, _) in enumerate(layout["starts"]):

@@ -120,6 +120,7 @@ class FlatModel:
     components: dict = field(default_factory=dict)    # path -> class name
     derived: dict = field(default_factory=dict)       # bound parameter -> (binding, value)
     uses_initial: bool = False                        # an equation reads initial()
+    inputs: list = field(default_factory=list)        # top-level inputs (frontend/inputs)
 
     def variable(self, name: str) -> FlatVariable:
         for v in self.variables:
@@ -163,6 +164,8 @@ def flatten(model: Component) -> FlatModel:
     flat.uses_initial = bool(getattr(model, "_uses_initial", False))
     _check_connections(connections, model)
     flat.equations.extend(_connection_equations(connections, nodes))
+    from .inputs import find_inputs
+    flat.inputs = find_inputs(flat, model, connections)
     _check_symbols(flat, with_der)
     # substitution first: a structural zero removes the derivative it multiplies
     # (L*der(i) with L = 0), and no der(i) may be created for it (substituting
