@@ -57,6 +57,15 @@ def test_the_bound_is_relative_to_the_amplitude_and_events_are_left_out():
     assert not check.passed and check.at == 0.8
 
 
+def test_a_reference_at_round_off_around_zero_is_judged_as_zero():
+    t = np.linspace(0.0, 1.0, 11)
+    ref = _reference(t, z=1e-16 * np.sin(7 * t), x=1e-9 * np.sin(7 * t))
+    ours = np.full(11, 1e-5)                  # an integration error of a quantity that is 0
+    z, x = compare(t, lambda n: ours, ref)
+    assert z.passed and z.scale == 1.0
+    assert not x.passed                        # 1e-9 is a signal, judged on its amplitude
+
+
 def test_a_discrete_signal_must_agree_outside_the_events():
     t = np.array([0.0, 0.5, 0.5, 1.0, 1.5, 2.0, 2.5])
     ref = _reference(t, b=[0, 0, 1, 1, 1, 0, 0])                  # 1->0 between 1.5, 2.0
