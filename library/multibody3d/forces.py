@@ -32,12 +32,10 @@ class LineForceBase(PartialTwoFrames):
     """The geometry of an element acting along the line between the frame origins
     (MSL MultiBody.Interfaces.LineForceBase):
 
-        r_rel_0 = r_0,b - r_0,a,   s^2 = r_rel_0 . r_rel_0 (s > 0),   length = s,
-        s e_rel_0 = r_rel_0
+        r_rel_0 = r_0,b - r_0,a,   length = |r_rel_0|,   s = length,   e_rel_0 = r_rel_0 / s
 
-    The distance is written implicitly, s > 0 by its start value (the MSL guards it by
-    s_small instead), which stays polynomial when index reduction differentiates it;
-    the direction is undefined at s = 0.
+    The direction is undefined at s = 0 (the MSL guards s by s_small, which only moves
+    the division by zero to a wrong direction).
 
     An element connected directly to another line force has no body between them to
     set that frame's orientation: ``fixedRotationAtFrame_a=True`` (or ``_b``), given
@@ -46,9 +44,9 @@ class LineForceBase(PartialTwoFrames):
     otherwise it takes no torque there, t = 0.
     """
 
-    s = ac.Variable(start=1.0, unit="m", min=0, state_select="avoid",
-                    description="distance between the frame origins")
-    length = ac.Variable(unit="m", description="distance between the frame origins (= s)")
+    s = ac.Variable(start=1.0, unit="m", state_select="avoid",
+                    description="distance between the frame origins (= length)")
+    length = ac.Variable(start=1.0, unit="m", description="distance between the frame origins")
     r_rel_0 = ac.Variable(shape=3, unit="m",
                           description="frame_b's origin from frame_a's, world frame")
     e_rel_0 = ac.Variable(shape=3, description="unit vector from frame_a to frame_b, world frame")
@@ -67,9 +65,9 @@ class LineForceBase(PartialTwoFrames):
         r = sp.Matrix(self.r_rel_0)
         zero = sp.zeros(3, 1)
         return [*equal(r, position(b) - position(a)),
-                ac.Eq(self.s**2, r.dot(r)),
-                ac.Eq(self.length, self.s),
-                *equal(self.s * sp.Matrix(self.e_rel_0), r),
+                ac.Eq(self.length, sp.sqrt(r.dot(r))),
+                ac.Eq(self.s, self.length),
+                *equal(sp.Matrix(self.e_rel_0), r / self.s),
                 *(equal(orientation(a), sp.eye(3)) if self.fixedRotationAtFrame_a
                   else equal(torque(a), zero)),
                 *(equal(orientation(b), sp.eye(3)) if self.fixedRotationAtFrame_b

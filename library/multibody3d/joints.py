@@ -25,14 +25,14 @@ import numpy as np
 from acausal._sympy import sympy as sp
 
 import acausal as ac
-from acausal.ports import RotationalFlange, TranslationalFlange
+from acausal.ports import RealOutput, RotationalFlange, TranslationalFlange
 
 from .frames import (axes_rotations, force, from_Q, orientation, planar_rotation, position,
                      quaternion_rates, resolve1, to_Q, torque)
 from .interfaces import PartialRigidTwoFrames, PartialTwoFrames, direction, equal, propagate
 
 __all__ = ["Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
-           "RevolutePlanarLoopConstraint"]
+           "RevolutePlanarLoopConstraint", "FreeMotionScalarInit"]
 
 
 def _axis(c):
@@ -319,3 +319,56 @@ class RevolutePlanarLoopConstraint(PartialTwoFrames):
                 *equal(force(a), f_a),
                 *equal(force(b), -R_b * (R_a.T * f_a)),
                 *equal(torque(a), zero), *equal(torque(b), zero)]
+
+
+class FreeMotionScalarInit(PartialTwoFrames):
+    """Free motion of frame_b relative to frame_a with scalar outputs that serve to
+    initialize it (MSL MultiBody.Joints.FreeMotionScalarInit, its position, velocity and
+    acceleration outputs): it sets nothing and transmits nothing,
+
+        r_rel_a = R_a (r_0,b - r_0,a),   v_rel_a = der(r_rel_a),   a_rel_a = der(v_rel_a),
+        f_a = f_b = 0,   t_a = t_b = 0
+
+    the elements given as outputs ``r_rel_a_1`` .. ``_3`` with ``use_r=True``, ``v_rel_a_1``
+    .. with ``use_v=True`` as well, ``a_rel_a_1`` .. with ``use_a=True`` as well (given
+    when it is made).  Fix their start values to put a mechanism's point where it
+    belongs at the start: ``FreeMotionScalarInit(use_r=True, r_rel_a_1={"signal":
+    {"start": 0.7, "fixed": True}})``.  The MSL's angle and angular-velocity outputs
+    (use_angle, use_w) are not there.
+    """
+
+    energy_role = "lossless"  # transmits nothing
+
+    def __init__(self, *, use_r: bool = False, use_v: bool = False, use_a: bool = False,
+                 **modifications):
+        for name, value in (("use_r", use_r), ("use_v", use_v), ("use_a", use_a)):
+            if not isinstance(value, bool):
+                raise ac.InvalidValue(f"FreeMotionScalarInit: {name} = {value!r} must be "
+                                      "True or False")
+        self.use_r, self.use_v, self.use_a = use_r, use_r and use_v, use_r and use_v and use_a
+        super().__init__(**modifications)
+
+    def build(self):
+        for use, name in ((self.use_r, "r_rel_a"), (self.use_v, "v_rel_a"),
+                          (self.use_a, "a_rel_a")):
+            if use:
+                for k in (1, 2, 3):
+                    setattr(self, f"{name}_{k}", RealOutput())
+
+    def _outputs(self, name):
+        return sp.Matrix([getattr(self, f"{name}_{k}").signal for k in (1, 2, 3)])
+
+    def equations(self):
+        a, b = self.frame_a, self.frame_b
+        zero = sp.zeros(3, 1)
+        eqs = [*equal(force(a), zero), *equal(torque(a), zero),
+               *equal(force(b), zero), *equal(torque(b), zero)]
+        if self.use_r:
+            r = self._outputs("r_rel_a")
+            eqs += equal(r, orientation(a) * (position(b) - position(a)))
+        if self.use_v:
+            v = self._outputs("v_rel_a")
+            eqs += equal(v, r.applyfunc(ac.der))
+        if self.use_a:
+            eqs += equal(self._outputs("a_rel_a"), v.applyfunc(ac.der))
+        return eqs
