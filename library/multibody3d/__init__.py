@@ -27,7 +27,8 @@ __all__ = ["World", "Fixed", "Body", "BodyShape", "BodyBox", "BodyCylinder", "Po
            "SpringDamperParallel", "LineForceWithMass", "LineForceWithTwoMasses",
            "WorldForce", "WorldTorque", "ForceAndTorque", "AbsolutePosition",
            "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
-           "CutForceAndTorque", "WhippleBicycle", "Wheelset", "WheelsetDAE"]
+           "CutForceAndTorque", "RollingWheel", "RollingWheelSet", "RollingWheelJoint",
+           "RollingWheelSetJoint", "Mounting1D", "WhippleBicycle", "Wheelset", "WheelsetDAE"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".world": ("World",),
@@ -41,6 +42,8 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                 "LineForceWithTwoMasses", "WorldForce", "WorldTorque", "ForceAndTorque"),
     ".sensors": ("AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
                  "RelativePosition", "CutForceAndTorque"),
+    ".wheels": ("RollingWheel", "RollingWheelSet", "RollingWheelJoint",
+                "RollingWheelSetJoint", "Mounting1D"),
     ".bicycle": ("WhippleBicycle",),
     ".wheelset": ("Wheelset",),
     ".wheelset_dae": ("WheelsetDAE",),
