@@ -10,7 +10,7 @@ import acausal as ac
 from .interfaces import SISO
 from .nonlinear import clip
 
-__all__ = ["Integrator", "Derivative", "FirstOrder", "SecondOrder", "TransferFunction",
+__all__ = ["Integrator", "Der", "Derivative", "FirstOrder", "SecondOrder", "TransferFunction",
            "PI", "PID"]
 
 
@@ -22,6 +22,16 @@ class Integrator(SISO):
 
     def equations(self):
         return [ac.Eq(ac.der(self.x), self.k * self.u), ac.Eq(self.y, self.x)]
+
+
+class Der(SISO):
+    """The derivative of the input (MSL Blocks.Continuous.Der):  y = der(u).
+
+    Index reduction differentiates whatever computes u: u must be differentiable (a
+    filtered signal, not a step)."""
+
+    def equations(self):
+        return [ac.Eq(self.y, ac.der(self.u.signal))]
 
 
 class Derivative(SISO):
