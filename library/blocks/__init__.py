@@ -6,7 +6,9 @@ __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "S
            "Product", "Division", "Abs", "Sqrt", "Min", "Max", "Integrator", "Der", "Derivative",
            "FirstOrder", "SecondOrder", "TransferFunction", "PI", "PID", "Limiter",
            "Saturation", "DeadZone", "CombiTimeTable", "CombiTable1D", "CombiTable2D",
-           "PadeDelay", "FixedDelay", "Filter", "CriticalDamping"]
+           "PadeDelay", "FixedDelay", "Filter", "CriticalDamping", "SlewRateLimiter", "Sinc",
+           "SineVariableFrequencyAndAmplitude", "CosineVariableFrequencyAndAmplitude",
+           "KinematicPTP"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".continuous": ("PI", "PID", "Der", "Derivative", "FirstOrder", "Integrator", "SecondOrder",
@@ -16,8 +18,9 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".interfaces": ("SI2SO", "SISO", "SO", "SignalSource"),
     ".math": ("Abs", "Add", "Add3", "Division", "Feedback", "Gain", "Max", "Min", "Product",
               "Sqrt"),
-    ".nonlinear": ("DeadZone", "Limiter", "Saturation"),
+    ".nonlinear": ("DeadZone", "Limiter", "Saturation", "SlewRateLimiter"),
     ".sources": ("Constant", "Cosine", "ExpSine", "Pulse", "Ramp", "Sine", "Step",
-                 "Trapezoid"),
+                 "Trapezoid", "Sinc", "SineVariableFrequencyAndAmplitude",
+                 "CosineVariableFrequencyAndAmplitude", "KinematicPTP"),
     ".tables": ("CombiTable1D", "CombiTable2D", "CombiTimeTable"),
 })
