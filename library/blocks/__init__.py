@@ -8,16 +8,17 @@ __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "S
            "Saturation", "DeadZone", "CombiTimeTable", "CombiTable1D", "CombiTable2D",
            "PadeDelay", "FixedDelay", "Filter", "CriticalDamping", "SlewRateLimiter", "Sinc",
            "SineVariableFrequencyAndAmplitude", "CosineVariableFrequencyAndAmplitude",
-           "KinematicPTP"]
+           "KinematicPTP", "LimPID", "InverseBlockConstraints"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".continuous": ("PI", "PID", "Der", "Derivative", "FirstOrder", "Integrator", "SecondOrder",
                     "TransferFunction"),
     ".delays": ("FixedDelay", "PadeDelay"),
+    ".controllers": ("LimPID",),
     ".filters": ("Filter", "CriticalDamping"),
     ".interfaces": ("SI2SO", "SISO", "SO", "SignalSource"),
     ".math": ("Abs", "Add", "Add3", "Division", "Feedback", "Gain", "Max", "Min", "Product",
-              "Sqrt"),
+              "Sqrt", "InverseBlockConstraints"),
     ".nonlinear": ("DeadZone", "Limiter", "Saturation", "SlewRateLimiter"),
     ".sources": ("Constant", "Cosine", "ExpSine", "Pulse", "Ramp", "Sine", "Step",
                  "Trapezoid", "Sinc", "SineVariableFrequencyAndAmplitude",
