@@ -8,13 +8,17 @@ __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "S
            "Saturation", "DeadZone", "CombiTimeTable", "CombiTable1D", "CombiTable2D",
            "PadeDelay", "FixedDelay", "Filter", "CriticalDamping", "SlewRateLimiter", "Sinc",
            "SineVariableFrequencyAndAmplitude", "CosineVariableFrequencyAndAmplitude",
-           "KinematicPTP", "LimPID", "InverseBlockConstraints"]
+           "KinematicPTP", "LimPID", "InverseBlockConstraints", "MultiProduct",
+           "RectangularToPolar", "Pythagoras", "Mean", "RootMeanSquare", "Harmonic",
+           "TotalHarmonicDistortion"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".continuous": ("PI", "PID", "Der", "Derivative", "FirstOrder", "Integrator", "SecondOrder",
                     "TransferFunction"),
     ".delays": ("FixedDelay", "PadeDelay"),
     ".controllers": ("LimPID",),
+    ".harmonics": ("MultiProduct", "RectangularToPolar", "Pythagoras", "Mean",
+                   "RootMeanSquare", "Harmonic", "TotalHarmonicDistortion"),
     ".filters": ("Filter", "CriticalDamping"),
     ".interfaces": ("SI2SO", "SISO", "SO", "SignalSource"),
     ".math": ("Abs", "Add", "Add3", "Division", "Feedback", "Gain", "Max", "Min", "Product",

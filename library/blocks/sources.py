@@ -138,7 +138,7 @@ class Sinc(SignalSource):
     def equations(self):
         tau = ac.time - self.startTime
         x = 2 * sp.pi * self.f * tau
-        wave = ac.no_event(ac.if_else(tau < 2.220446049250313e-16, 1, ac.sin(x) / x))
+        wave = ac.no_event(ac.if_else(tau < 1e-15, 1, ac.sin(x) / x))
         return [ac.Eq(self.y, self.offset + ac.if_else(tau < 0, 0, self.amplitude * wave))]
 
 
