@@ -4,4 +4,8 @@ use; ``make test-msl`` (and CI) compares all of them."""
 
 QUICK = {
     "Modelica.Mechanics.Rotational.Examples.First",
+    "Modelica.Mechanics.MultiBody.Examples.Elementary.Pendulum",
+    "Modelica.Mechanics.MultiBody.Examples.Elementary.SpringWithMass",
+    "Modelica.Blocks.Examples.Filter",
+    "Modelica.Blocks.Examples.PID_Controller",
 }

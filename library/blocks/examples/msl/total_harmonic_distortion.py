@@ -30,6 +30,9 @@ class TotalHarmonicDistortionExample(ac.Component):
     stop_time = 0.1
     tolerance = 1e-7
     msl_signals = MSLNames()
+    msl_known_failure = (
+        "defect: the relation u < 1e-15 at u = 0 is judged at its switching point and "
+        "the division it guards makes every output NaN before the sources start")
 
     f1 = ac.Parameter(50.0, unit="Hz", description="fundamental wave frequency")
     V1 = ac.Parameter(100.0, unit="V", description="fundamental wave RMS voltage")

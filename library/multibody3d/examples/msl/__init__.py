@@ -7,25 +7,20 @@ acausal names array elements from 0 and the frame's position ``frame_a.x``, ``.y
 """
 import re
 
+from acausal.library.blocks.examples.msl import MSLNames as _IndexFromOne
+
 __all__ = ["MSLNames"]
 
 _FRAME = re.compile(r"^(.*frame_[ab])\.r_0\[([123])\]$")
-_INDEX = re.compile(r"\[([0-9,]+)\]")
 
 
-class MSLNames(dict):
+class MSLNames(_IndexFromOne):
     """The acausal name of an MSL result name: ``a.frame_a.r_0[2]`` is ``a.frame_a.y``
     (a frame's origin), ``a.v_0[2]`` is ``a.v_0[1]`` (elements from 0); names given
     to the constructor map as given."""
 
-    def __bool__(self):
-        return True          # a rule, even where it lists no name of its own
-
     def get(self, name, default=None):
-        if name in self:
-            return self[name]
         m = _FRAME.match(name)
-        if m:
+        if m and name not in self:
             return f"{m.group(1)}.{'xyz'[int(m.group(2)) - 1]}"
-        return _INDEX.sub(lambda k: "[" + ",".join(str(int(i) - 1) for i in
-                                                   k.group(1).split(",")) + "]", name)
+        return super().get(name, default)

@@ -25,6 +25,10 @@ class DoublePendulumInitTip(ac.Component):
     stop_time = 5.0
     tolerance = 1e-6
     msl_signals = MSLNames()
+    msl_known_failure = (
+        "reference: a chaotic motion; after 4.9 s the reference differs by 4.3e-3 .. "
+        "9.6e-3 of the amplitudes from the model solved at 1e-10 (acausal at the "
+        "tolerance 1e-6: 0.7e-3 .. 2.6e-3); the start agrees to 8 digits")
 
     world = World()
     revolute1 = Revolute()

@@ -24,6 +24,10 @@ class PointGravity(ac.Component):
     stop_time = 5.0
     tolerance = 1e-6
     msl_signals = MSLNames()
+    msl_known_failure = (
+        "reference: body2 passes the centre at 0.07 m, and the reference's body2.r_0[1] "
+        "differs by 4.7e-3 of its amplitude from Kepler's orbit solved to 1e-13 "
+        "(acausal at the tolerance 1e-6: 1.2e-3, at 1e-8: 2e-5)")
 
     world = World(gravityType="PointGravity", mu=1.0)
     body1 = Body(m=1.0, I_11=0.1, I_22=0.1, I_33=0.1, r_CM_1=0.0, r_CM_2=0.0, r_CM_3=0.0)

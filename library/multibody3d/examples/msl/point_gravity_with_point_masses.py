@@ -23,6 +23,11 @@ class PointGravityWithPointMasses(ac.Component):
     stop_time = 2.0
     tolerance = 1e-6
     msl_signals = MSLNames()
+    msl_known_failure = (
+        "reference: body4 passes near the centre; the reference's body4.v_0 differs by "
+        "3.2e-3 and 4.4e-3 of its amplitude from the two masses' equations solved to 1e-13, "
+        "acausal at the tolerance 1e-6 by 1.7e-3 and 2.3e-3 (the tolerance is too loose "
+        "for 1e-3 here)")
 
     world = World(gravityType="PointGravity", mu=1.0)
     body1 = _mass([0.0, 0.6, 0.0], [1.0, 0.0, 0.0], connected=False)

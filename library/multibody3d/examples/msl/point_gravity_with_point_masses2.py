@@ -68,6 +68,9 @@ class PointGravityWithPointMasses2(ac.Component):
     stop_time = 3.0
     tolerance = 1e-7
     msl_signals = MSLNames()
+    msl_known_failure = (
+        "reference: freeMotion.v_rel_a[3] differs by 1.9e-3 of its amplitude from the "
+        "model solved at 1e-10 (acausal at the tolerance 1e-7: 3.6e-4)")
 
     world = World(gravityType="PointGravity", mu=5.0)
     freeMotion = FreeMotion()
