@@ -131,33 +131,43 @@ class _OneMassOnLine(_PointMassesOnLine):
                 *self.cut_forces(fa, fb, self.m * (1 - h) * ag, self.m * h * ag)]
 
 
-class PartialLineForce(_OneMassOnLine):
-    """A force element along the line with the tension f as its law (MSL
-    MultiBody.Interfaces.PartialLineForce, and the point mass of Forces.Spring):
-    f > 0 pulls the frames towards each other, fa = f, fb = -f."""
+class PartialLineForce(_PointMassesOnLine):
+    """A massless force element along the line with the tension f as its law (MSL
+    MultiBody.Interfaces.PartialLineForce): f > 0 pulls the frames towards each other,
+
+        frame_a.f = -R_a e_rel_0 f,   frame_b.f = R_b e_rel_0 f
+    """
 
     f = ac.Variable(unit="N", description="tension force along the line")
 
     def equations(self):
-        return self.line_forces(self.f, -self.f)
+        zero = sp.zeros(3, 1)
+        return self.cut_forces(self.f, -self.f, zero, zero)
 
 
-class Spring(PartialLineForce):
-    """Linear spring along the line, with an optional mass m on it (MSL
-    MultiBody.Forces.Spring):
+class Spring(_OneMassOnLine):
+    """Linear spring along the line, with an optional mass m on it at lengthFraction
+    (MSL MultiBody.Forces.Spring: a LineForceWithMass with a translational spring):
 
         f = c (s - s_unstretched)
     """
 
     c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")
     s_unstretched = ac.Parameter(0.0, unit="m", description="unstretched spring length")
+    f = ac.Variable(unit="N", description="tension force along the line")
 
     def stored_energy(self):
-        """c (s - s_unstretched)^2 / 2."""
-        return self.c * (self.s - self.s_unstretched)**2 / 2
+        """c (s - s_unstretched)^2 / 2, and the mass's m |v_CM|^2/2 + m V(r_CM)."""
+        spring = self.c * (self.s - self.s_unstretched)**2 / 2
+        if not _mass(self):
+            return spring
+        v = sp.Matrix(self.v_CM_0)
+        return (spring + self.m * v.dot(v) / 2
+                + self.m * world_of(self).gravityPotential(sp.Matrix(self.r_CM_0)))
 
     def equations(self):
-        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched))]
+        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched)),
+                *self.line_forces(self.f, -self.f)]
 
 
 class Damper(PartialLineForce):

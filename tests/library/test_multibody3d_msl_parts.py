@@ -12,6 +12,7 @@ import acausal as ac
 from acausal._sympy import sympy as sp
 from acausal.library import multibody3d as mb
 from acausal.library.blocks import Constant
+from acausal.library.translational import Spring as Spring1D
 from acausal.library.multibody3d.examples.msl.double_pendulum_init_tip import (
     DoublePendulumInitTip)
 from acausal.library.multibody3d.examples.msl.line_force_with_two_masses import (
@@ -132,6 +133,9 @@ def test_spring_mass_on_the_line_adds_h_squared_m_of_inertia_and_h_m_of_weight()
     exact = s_rest + (0.3 - s_rest) * np.cos(w * t)
     assert np.max(np.abs(res["spring.s"] - exact)) < 1e-7 * abs(0.3 - s_rest)
     assert np.max(np.abs(res["body.r_0[0]"])) == 0.0
+    # the spring stores its strain energy and its mass's kinetic and potential energy
+    audit = ac.energy_balance(res, HangingSpringWithMass())
+    assert audit.ok, audit.violations
 
 
 # -- line forces with masses: JointUPS against LineForceWithTwoMasses -------------------
@@ -248,3 +252,25 @@ def test_rolling_wheel_set_rolls_straight_at_radius_times_spin():
     assert np.max(np.abs(res["wheelSet.phi"])) < 1e-9
     assert np.max(np.abs(np.abs(res["wheelSet.x"]) - 0.1 * 2.0 * t)) < 1e-9
     assert np.max(np.abs(res["wheelSet.y"])) < 1e-9
+
+
+class HangingOnLineForceWithMass(HangingSpringWithMass):
+    """The same system with the spring law as a 1-D translational spring on the flanges
+    of a LineForceWithMass (the MSL's Forces.Spring is made so)."""
+
+    spring = mb.LineForceWithMass(m=0.5, lengthFraction=0.3)
+    law = Spring1D(c=40.0, s_rel0=0.2)
+
+    def equations(self):
+        return [ac.connect(self.spring.flange_a, self.law.flange_a),
+                ac.connect(self.spring.flange_b, self.law.flange_b)]
+
+
+def test_line_force_with_mass_and_a_1d_spring_equal_the_spring_with_mass():
+    t = np.linspace(0.0, 2.0, 101)
+    kw = dict(t_end=2.0, rtol=1e-10, atol=1e-10, t_eval=t)
+    a = ac.simulate(HangingSpringWithMass(), **kw)
+    b = ac.simulate(HangingOnLineForceWithMass(), **kw)
+    assert np.ptp(a["spring.s"]) > 0.05
+    assert np.max(np.abs(a["spring.s"] - b["spring.s"])) < 1e-9
+    assert np.max(np.abs(b["law.s_rel"] - b["spring.length"])) < 1e-12
