@@ -53,7 +53,7 @@ class FirstOrder(SISO):
     """First-order lag  y = k / (T s + 1) u:   T der(x) = k u - x,  y = x."""
 
     k = ac.Parameter(1.0, description="gain")
-    T = ac.Parameter(1.0, unit="s", min=0, description="time constant")
+    T = ac.Parameter(1.0, unit="s", description="time constant")
     x = ac.Variable(start=0.0, description="state (the output)")
 
     def equations(self):
@@ -67,8 +67,8 @@ class SecondOrder(SISO):
     """
 
     k = ac.Parameter(1.0, description="gain")
-    w = ac.Parameter(1.0, unit="rad/s", min=0, description="natural frequency")
-    D = ac.Parameter(1.0, min=0, description="damping ratio")
+    w = ac.Parameter(1.0, unit="rad/s", description="natural frequency")
+    D = ac.Parameter(1.0, description="damping ratio")
     x = ac.Variable(start=0.0, description="state (the output)")
     xd = ac.Variable(start=0.0, description="state (der of the output)")
 

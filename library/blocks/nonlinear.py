@@ -54,11 +54,11 @@ class SlewRateLimiter(SISO):
     default, SteadyState, y = u, is not offered).
     """
 
-    Rising = ac.Parameter(1.0, description="maximum rising slew rate (> 0), the input's "
-                                           "unit per second")
-    Falling = ac.Parameter(lambda c: -c.Rising,
+    Rising = ac.Parameter(1.0, min=0, description="maximum rising slew rate (> 0), the "
+                                                  "input's unit per second")
+    Falling = ac.Parameter(lambda c: -c.Rising, max=0,
                            description="maximum falling slew rate (< 0), default -Rising")
-    Td = ac.Parameter(0.001, unit="s", description="derivative time constant (> 0)")
+    Td = ac.Parameter(0.001, unit="s", min=0, description="derivative time constant (> 0)")
     x = ac.Variable(start=0.0, description="state (the output)")
 
     def equations(self):

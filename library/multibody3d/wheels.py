@@ -258,9 +258,8 @@ class RollingWheel(ac.Component):
 
     radius = ac.Parameter(1.0, unit="m", min=0, description="radius of the wheel")
     m = ac.Parameter(1.0, unit="kg", min=0, description="mass of the wheel")
-    I_axis = ac.Parameter(1.0, unit="kg.m2", min=0, description="inertia about the wheel axis")
-    I_long = ac.Parameter(1.0, unit="kg.m2", min=0,
-                          description="inertia perpendicular to the wheel axis")
+    I_axis = ac.Parameter(1.0, unit="kg.m2", description="inertia about the wheel axis")
+    I_long = ac.Parameter(1.0, unit="kg.m2", description="inertia perpendicular to the wheel axis")
     frame_a = Frame()
     x = ac.Variable(start=0.0, fixed=True, unit="m", state_select="always",
                     description="x of the wheel centre")
@@ -289,9 +288,9 @@ class RollingWheelSet(ac.Component):
 
     R_wheel = ac.Parameter(1.0, unit="m", min=0, description="radius of one wheel")
     m_wheel = ac.Parameter(1.0, unit="kg", min=0, description="mass of one wheel")
-    I_wheelAxis = ac.Parameter(1.0, unit="kg.m2", min=0,
+    I_wheelAxis = ac.Parameter(1.0, unit="kg.m2",
                                description="inertia of one wheel about its axis")
-    I_wheelLong = ac.Parameter(1.0, unit="kg.m2", min=0,
+    I_wheelLong = ac.Parameter(1.0, unit="kg.m2",
                                description="inertia of one wheel perpendicular to its axis")
     track = ac.Parameter(1.0, unit="m", min=0, description="distance between the two wheels")
     frameMiddle = Frame()
