@@ -9,4 +9,8 @@ QUICK = {
     "Modelica.Mechanics.Translational.Examples.Vehicle",
     "Modelica.Blocks.Examples.BooleanNetwork1",
     "Modelica.Blocks.Examples.IntegerNetwork1",
+    "Modelica.Mechanics.MultiBody.Examples.Elementary.Pendulum",
+    "Modelica.Mechanics.MultiBody.Examples.Elementary.SpringWithMass",
+    "Modelica.Blocks.Examples.Filter",
+    "Modelica.Blocks.Examples.PID_Controller",
 }
