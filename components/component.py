@@ -164,7 +164,7 @@ class Component(metaclass=_ComponentType):
                                        f"False, not {value!r}")
                 try:
                     check_structural_value(value, f"structural parameter {name}",
-                                           decl.min, decl.max)
+                                           decl.min, decl.max, decl.choices)
                 except ValueError as err:
                     raise InvalidValue(f"{type(self).__name__}: {err}") from None
                 structural[name] = value

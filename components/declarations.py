@@ -122,9 +122,14 @@ def check_parameter_value(value, what: str, typ=float) -> None:
     real_number(value, what)
 
 
-def check_structural_value(value, what: str, lo=None, hi=None) -> None:
+def check_structural_value(value, what: str, lo=None, hi=None, choices=None) -> None:
     """A structural parameter's value is a number or a bool, or a list or tuple of them
-    (numbers within [lo, hi]); else ValueError."""
+    (numbers within [lo, hi]), or one of its ``choices`` (strings, an enumeration: the
+    MSL's ``initType``); else ValueError."""
+    if choices is not None:
+        if value not in choices:
+            raise ValueError(f"{what} = {value!r} is not one of {', '.join(map(repr, choices))}")
+        return
     items = value if isinstance(value, (list, tuple)) else [value]
     for item in items:
         if isinstance(item, (bool, np.bool_)):
@@ -176,6 +181,7 @@ class VariableAttributes:
     description: str = ""
     discrete: bool = False   # changes only in when-clauses (Modelica's ``discrete`` prefix)
     type: type = float       # float (Real), bool (Boolean) or int (Integer)
+    steady: bool = False     # der(v) = 0 at the start (an initial equation: steady state)
 
     def modified(self, mod) -> "VariableAttributes":
         """A checked copy with a modification applied: a number sets start, a dict any
@@ -222,6 +228,8 @@ class VariableAttributes:
                 raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
         if not isinstance(self.discrete, (bool, np.bool_)):
             raise ValueError(f"discrete = {self.discrete!r} must be True or False")
+        if not isinstance(self.steady, (bool, np.bool_)):
+            raise ValueError(f"steady = {self.steady!r} must be True or False")
         _check_state_select(self.state_select)
         return replace(self, start=start, fixed=fixed, nominal=nominal, min=lo, max=hi)
 
@@ -307,6 +315,9 @@ class Parameter(_Declaration):
     equations they are 1/0 and the whole number; a Boolean parameter is a condition
     (``ac.if_else(self.use_limit, ...)``).
 
+    ``choices=(...)`` declares a structural parameter that takes one of the given values
+    (strings: an enumeration such as the MSL's ``initType``, ``ac.Init``).
+
     ``structural=True`` declares a parameter that shapes the model rather than entering
     its equations (a number of segments, the coefficients of a transfer function): its
     value is a plain Python value (a number or a bool, or a list or tuple of them)
@@ -317,8 +328,9 @@ class Parameter(_Declaration):
 
     def __init__(self, value=None, unit: str = "", description: str = "",
                  min: float | None = None, max: float | None = None, shape=None,
-                 structural: bool = False, type=None):
-        structural = bool(structural)
+                 structural: bool = False, type=None, choices=None):
+        structural = bool(structural) or choices is not None
+        self.choices = tuple(choices) if choices is not None else None
         if type is None:
             type = bool if isinstance(value, (bool, np.bool_)) and not structural else float
         self.type = type
@@ -351,7 +363,8 @@ class Parameter(_Declaration):
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
         if self.structural:
-            check_structural_value(self.value, "default value", self.min, self.max)
+            check_structural_value(self.value, "default value", self.min, self.max,
+                                   self.choices)
             return
         _value_type(self.type)
         if self.type is not float and self.shape is not None:

@@ -161,6 +161,8 @@ def flatten(model: Component) -> FlatModel:
                     raise InvalidEquation(f"{comp._describe()}.initial_equations() returned "
                                           f"{item!r}; expected ac.Eq(lhs, rhs)")
                 flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
+            for item in _steady_state_equations(comp):
+                flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
     flat.uses_initial = bool(getattr(model, "_uses_initial", False))
     _check_connections(connections, model)
     flat.equations.extend(_connection_equations(connections, nodes))
@@ -174,6 +176,19 @@ def flatten(model: Component) -> FlatModel:
     expand_derivatives(flat, with_der)
     _check_infinite_parameters(flat)
     return flat
+
+
+def _steady_state_equations(comp) -> list:
+    """``der(v) = 0`` at the start for each variable of ``comp`` declared or modified
+    ``steady=True`` (a steady state: ``Inertia(w={"steady": True})``)."""
+    out = []
+    for name, decl in comp.declarations().items():
+        if isinstance(decl, Parameter) or decl.shape is not None:
+            continue
+        if getattr(comp.variable_attributes(name), "steady", False):
+            out.append(Equation(der(getattr(comp, name)), 0,
+                                label=f"steady state of {name} at the start"))
+    return out
 
 
 def _walk(root: Component):
