@@ -24,7 +24,7 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     can print and compile them meanwhile (:mod:`acausal.compiler.pipeline`)."""
     import sympy as sp
     from types import SimpleNamespace
-    from ..components.symbols import INITIAL
+    from ..components.logic import INITIAL
     from .structure.causalize import causalize, full_form
     from .backends.codegen import extract_relations, generate
     from .index.numeric import CoefficientValues

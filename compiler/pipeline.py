@@ -352,7 +352,7 @@ def _symbolic_system(reduced, discretes, helds=(), delays=()):
     system = SymbolicSystem.from_flat(reduced)
     system.parameters |= {d.symbol for d in discretes}   # constant between events
     system.parameters |= {s for h in helds for s in (h.symbol, h.pre)}
-    from ..components.symbols import INITIAL
+    from ..components.logic import INITIAL
     system.parameters.add(INITIAL)                   # initial(): constant while it runs
     system.delays = {d.symbol: d for d in delays}        # inputs that vary: never constant
     system.delays.update({i.symbol: i for i in getattr(reduced, "inputs", ())})

@@ -24,7 +24,7 @@ __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidV
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".arrays": ("InvalidIndex",),
-    ".symbols": ("Eq", "Equation", "When", "delay", "der", "if_else", "no_event", "pre",
-                 "reinit", "sign", "time", "when", "sample", "assign", "edge", "change",
-                 "initial", "integer"),
+    ".symbols": ("Eq", "Equation", "When", "delay", "der", "if_else", "no_event", "reinit",
+                 "sign", "time", "when", "sample", "assign"),
+    ".logic": ("pre", "edge", "change", "initial", "integer"),
 })

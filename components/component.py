@@ -36,7 +36,7 @@ from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
 from . import inheritance
-from .conditional import Conditional
+from .conditional import Conditional, check_conditionals, make_conditionals
 from .declarations import (COMPILING, Parameter, Variable, check_parameter_value,
                            check_structural_value, declaration_doc, is_symbolic,
                            parameter_signature, ref, shown_value)
@@ -179,13 +179,7 @@ class Component(metaclass=_ComponentType):
         object.__setattr__(self, "_var_attrs", {})
         for name, decl in _class_children(type(self)).items():
             setattr(self, name, decl._clone())
-        for name, cond in _class_conditionals(type(self)).items():
-            use = structural.get(cond.flag, _structurals(type(self))[cond.flag].value)
-            if not isinstance(use, bool):
-                raise InvalidValue(f"{type(self).__name__}: {cond.flag} must be True or "
-                                   f"False, not {use!r}")
-            if use == cond.when:
-                setattr(self, name, cond.component._clone())
+        make_conditionals(self, structural)
         self.build()
 
     def build(self) -> None:
@@ -203,12 +197,7 @@ class Component(metaclass=_ComponentType):
                     decl.check()
                 except ValueError as err:
                     raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
-        for name, decl in vars(cls).items():
-            if isinstance(decl, Conditional):
-                try:
-                    decl.check(cls)
-                except ValueError as err:
-                    raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
+        check_conditionals(cls)
         inheritance.prepare_class(cls)
         _describe_class(cls)
 
@@ -519,7 +508,6 @@ def _connection_type(self):
 Port.connection_type = _connection_type
 
 _CHILD_CACHE: dict = {}
-_CONDITIONAL_CACHE: dict = {}
 _DECL_CACHE: dict = {}
 _STRUCTURAL_CACHE: dict = {}
 
@@ -534,20 +522,6 @@ def _class_children(cls) -> dict:
                     out[name] = value
         _CHILD_CACHE[cls] = out
     return _CHILD_CACHE[cls]
-
-
-def _class_conditionals(cls) -> dict:
-    """The ``ac.Conditional`` declarations over the MRO, base classes first."""
-    if cls not in _CONDITIONAL_CACHE:
-        out = {}
-        for klass in reversed(cls.__mro__):
-            for name, value in vars(klass).items():
-                if isinstance(value, Conditional):
-                    out[name] = value
-                elif name in out:
-                    del out[name]          # redeclared as something else
-        _CONDITIONAL_CACHE[cls] = out
-    return _CONDITIONAL_CACHE[cls]
 
 
 def _constructor_arguments(cls) -> set:

@@ -22,7 +22,9 @@ port is an error that names the flag and how to set it.
 """
 from __future__ import annotations
 
-__all__ = ["Conditional"]
+__all__ = ["Conditional", "make_conditionals", "check_conditionals"]
+
+_CONDITIONAL_CACHE: dict = {}
 
 
 def absent_error(owner, name: str, flag: str, when: bool = True):
@@ -76,3 +78,42 @@ class Conditional:
             raise ValueError(f"Conditional(..., {self.flag!r}): {self.flag} must be a "
                              f"structural Boolean parameter of {cls.__name__}, "
                              f"{self.flag} = ac.Parameter(False, structural=True)")
+
+
+def class_conditionals(cls) -> dict:
+    """The ``ac.Conditional`` declarations of ``cls`` over its MRO, base classes first."""
+    if cls not in _CONDITIONAL_CACHE:
+        out = {}
+        for klass in reversed(cls.__mro__):
+            for name, value in vars(klass).items():
+                if isinstance(value, Conditional):
+                    out[name] = value
+                elif name in out:
+                    del out[name]          # redeclared as something else
+        _CONDITIONAL_CACHE[cls] = out
+    return _CONDITIONAL_CACHE[cls]
+
+
+def make_conditionals(comp, structural: dict) -> None:
+    """Make the conditional components of a new instance whose flags say so
+    (``structural``: the structural parameters it was given)."""
+    from .component import InvalidValue, _structurals
+    for name, cond in class_conditionals(type(comp)).items():
+        use = structural.get(cond.flag, _structurals(type(comp))[cond.flag].value)
+        if not isinstance(use, bool):
+            raise InvalidValue(f"{type(comp).__name__}: {cond.flag} must be True or "
+                               f"False, not {use!r}")
+        if use == cond.when:
+            setattr(comp, name, cond.component._clone())
+
+
+def check_conditionals(cls) -> None:
+    """InvalidValue naming ``cls.name`` for a Conditional whose flag is no structural
+    Boolean parameter (checked when the class is made)."""
+    from .component import InvalidValue
+    for name, decl in vars(cls).items():
+        if isinstance(decl, Conditional):
+            try:
+                decl.check(cls)
+            except ValueError as err:
+                raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None

@@ -24,6 +24,8 @@ from decimal import Decimal
 
 import numpy as np
 
+from .valuetypes import TYPE_NAMES, checked_discrete, typed_value, value_type_checked
+
 # The root of the model being flattened, set by components.component.compiling
 COMPILING = contextvars.ContextVar("acausal_compiling", default=None)
 
@@ -32,39 +34,6 @@ __all__ = ["Parameter", "Variable", "Across", "Through", "Signal", "VariableAttr
            "bound_violation", "is_symbolic", "typed_value", "TYPE_NAMES"]
 
 _STATE_SELECT = ("never", "avoid", "default", "prefer", "always")
-
-# The value types of Modelica's simple types: Real (a float), Boolean and Integer.  A
-# Boolean or Integer variable is discrete by nature: it changes only at events.
-TYPE_NAMES = {float: "Real", bool: "Boolean", int: "Integer"}
-
-
-def _value_type(typ, what: str = "type"):
-    """``typ`` checked: float, bool or int (the Python types of Real, Boolean, Integer)."""
-    if typ not in TYPE_NAMES:
-        raise ValueError(f"{what} = {typ!r} must be float (Real), bool (Boolean) or int "
-                         "(Integer)")
-    return typ
-
-
-def typed_value(value, typ, what: str):
-    """``value`` as the Python value of type ``typ`` (float, bool or int), or a
-    ValueError that starts with ``what = value``.  A Boolean is True or False (not 0 or
-    1); an Integer is a whole number that is not a bool (3 or 3.0, not 3.5)."""
-    if typ is float:
-        return real_number(value, what)
-    if typ is bool:
-        if isinstance(value, (bool, np.bool_)):
-            return bool(value)
-        raise ValueError(f"{what} = {value!r} is not a Boolean (True or False)")
-    if isinstance(value, (bool, np.bool_)):
-        raise ValueError(f"{what} = {value!r} is a bool, not an Integer")
-    if isinstance(value, numbers.Integral):
-        return int(value)
-    x = real_number(value, what)
-    if math.isfinite(x) and x == int(x):
-        return int(x)
-    raise ValueError(f"{what} = {value!r} is not an Integer (a whole number)")
-
 
 def is_symbolic(value) -> bool:
     """True if ``value`` is a sympy object.  Declarations are checked when a class is
@@ -202,9 +171,9 @@ class VariableAttributes:
 
         start is finite; fixed is True, False or None; nominal is finite and positive
         (it scales error weights); min <= max; start lies in [min, max]."""
-        typ = _value_type(self.type)
+        typ = value_type_checked(self.type)
         if typ is not float:
-            return self._checked_discrete(typ)
+            return checked_discrete(self, typ)
         start = None if self.start is None else _finite(self.start, "start")
         nominal = None if self.nominal is None else _finite(self.nominal, "nominal")
         if nominal is not None and nominal <= 0:
@@ -232,35 +201,6 @@ class VariableAttributes:
             raise ValueError(f"steady = {self.steady!r} must be True or False")
         _check_state_select(self.state_select)
         return replace(self, start=start, fixed=fixed, nominal=nominal, min=lo, max=hi)
-
-    def _checked_discrete(self, typ) -> "VariableAttributes":
-        """A Boolean or Integer variable: its start (and an Integer's min and max) of its
-        type; no unit, nominal or state selection (it is never a state)."""
-        name = TYPE_NAMES[typ]
-        for attr, default in (("nominal", None), ("state_select", "default")):
-            if getattr(self, attr) != default:
-                raise ValueError(f"{attr} = {getattr(self, attr)!r}: a {name} variable has "
-                                 f"no {attr} (it is never a state)")
-        if typ is bool and (self.min is not None or self.max is not None or self.unit):
-            raise ValueError("a Boolean variable has no unit, min or max")
-        start = None if self.start is None else typed_value(self.start, typ, "start")
-        lo = None if self.min is None else typed_value(self.min, typ, "min")
-        hi = None if self.max is None else typed_value(self.max, typ, "max")
-        if lo is not None and hi is not None and lo > hi:
-            raise ValueError(f"min = {self.min!r} is greater than max = {self.max!r}")
-        if start is not None and bound_violation(start, lo, hi):
-            raise ValueError(f"start = {self.start!r} lies outside "
-                             f"[min, max] = [{self.min!r}, {self.max!r}]")
-        for attr in ("unit", "description"):
-            if not isinstance(getattr(self, attr), str):
-                raise ValueError(f"{attr} = {getattr(self, attr)!r} must be a string")
-        if self.fixed is not None and not isinstance(self.fixed, (bool, np.bool_)):
-            raise ValueError(f"fixed = {self.fixed!r} must be True or False")
-        if not isinstance(self.discrete, (bool, np.bool_)):
-            raise ValueError(f"discrete = {self.discrete!r} must be True or False")
-        return replace(self, start=start, min=lo, max=hi,
-                       fixed=None if self.fixed is None else bool(self.fixed))
-
 
 def _check_state_select(value):
     if not isinstance(value, str) or value not in _STATE_SELECT:
@@ -366,7 +306,7 @@ class Parameter(_Declaration):
             check_structural_value(self.value, "default value", self.min, self.max,
                                    self.choices)
             return
-        _value_type(self.type)
+        value_type_checked(self.type)
         if self.type is not float and self.shape is not None:
             raise ValueError(f"a {TYPE_NAMES[self.type]} parameter is a scalar (arrays of "
                              "them are not supported)")

@@ -18,13 +18,12 @@ import numpy as np
 import sympy as sp
 from sympy import S
 from sympy.core.parameters import global_parameters
-from sympy.printing.precedence import PRECEDENCE, precedence
-from sympy.printing.str import StrPrinter
+
+from .printing import text
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
-           "sympify_value", "When", "when", "reinit", "pre", "Pre", "text", "sample",
-           "Sample", "assign", "Assign", "as_condition", "value_type", "edge", "change",
-           "initial", "INITIAL", "integer", "is_logical"]
+           "sympify_value", "When", "when", "reinit", "Pre", "text", "sample", "Sample",
+           "assign", "Assign"]
 
 time = sp.Symbol("time", real=True)
 _ONE_ARGUMENT = sp.FiniteSet(1)     # der's nargs, as Function makes it uniform
@@ -65,8 +64,8 @@ class Equation:
     def __init__(self, lhs, rhs=0, label: str | None = None):
         self.lhs = _side(lhs, lhs, rhs)
         self.rhs = _side(rhs, lhs, rhs)
-        if _logical_side(lhs) or _logical_side(rhs):
-            _check_boolean_equation(self.lhs, self.rhs, lhs, rhs)
+        if _logic._logical_side(lhs) or _logic._logical_side(rhs):
+            _logic._check_boolean_equation(self.lhs, self.rhs, lhs, rhs)
         _check_not_trivial(self.lhs, self.rhs)
         if label is not None and not isinstance(label, str):
             raise _invalid(f"the label of ac.Eq({_text(lhs)}, {_text(rhs)}) must be a "
@@ -90,194 +89,6 @@ class Equation:
 
     def __repr__(self):
         return self.text
-
-
-class _TextPrinter(StrPrinter):
-    """sympy's str printer with fast paths for the order of terms and factors.
-
-    sympy orders the terms of a sum lexicographically by their monomials, descending
-    (``Expr.as_ordered_terms``), and builds that order through ``Expr.as_terms``, which
-    converts every coefficient to a complex number: most of the time of printing a model.
-    For sums of terms ``c * x1**k1 * x2**k2 ...`` (c a rational or float, x_i symbols of
-    distinct names, k_i integers) the same order is computed here directly, on sparse
-    monomials.  Factors of a product are ordered by their sort keys, and the key of a
-    sum among them is again built through ``as_terms``; for products of a number,
-    symbols and their integer powers, at most one sum and at most one function the
-    order is known from the classes alone (numbers, symbols by name, the sum, the
-    function).  Anything else takes sympy's path, so the text is always sympy's.
-    """
-
-    def _print(self, expr, **kwargs) -> str:
-        if type(expr) is sp.Symbol:      # what the dispatch would find: _print_Symbol
-            return expr.name
-        return super()._print(expr, **kwargs)
-
-    def _print_Mul(self, expr):
-        ordered = _ordered_factors(expr) if self.order is None else None
-        if ordered is None:
-            return super()._print_Mul(expr)
-        # StrPrinter._print_Mul from here on, for the factors it would have ordered so
-        sign, items = ordered
-        num, den = [], []
-        for item in items:
-            if item.is_Pow and item.exp < 0:
-                den.append(item.base if item.exp is S.NegativeOne
-                           else sp.Pow(item.base, -item.exp, evaluate=False))
-            elif item.is_Rational:
-                if item.p != 1:
-                    num.append(sp.Rational(item.p))
-                if item.q != 1:
-                    den.append(sp.Rational(item.q))
-            else:
-                num.append(item)
-        num = num or [S.One]
-        # a symbol is never parenthesized (its precedence is an atom's), so the
-        # product's precedence (a walk of its classes) is only found for other factors
-        prec = None
-        a_str, b_str = [], []
-        for factors, texts in ((num, a_str), (den, b_str)):
-            for x in factors:
-                if type(x) is sp.Symbol:
-                    texts.append(x.name)
-                    continue
-                if prec is None:
-                    prec = precedence(expr)
-                texts.append(self.parenthesize(x, prec, strict=False))
-        if not den:
-            return sign + "*".join(a_str)
-        if len(den) == 1:
-            return sign + "*".join(a_str) + "/" + b_str[0]
-        return sign + "*".join(a_str) + "/(%s)" % "*".join(b_str)
-
-    def _print_Add(self, expr, order=None):
-        """StrPrinter._print_Add, with the precedence of a symbol or product term (an
-        atom's; a product's is never below a sum's) not looked up."""
-        terms = self._as_ordered_terms(expr, order=order)
-        prec = precedence(expr)
-        out = []
-        for term in terms:
-            t = self._print(term)
-            if t.startswith("-") and not term.is_Add:
-                sign, t = "-", t[1:]
-            else:
-                sign = "+"
-            plain = type(term) is sp.Symbol or (term.is_Mul and prec <= PREC_ADD)
-            if not plain and (precedence(term) < prec or term.is_Add):
-                out += [sign, f"({t})"]
-            else:
-                out += [sign, t]
-        sign = out.pop(0)
-        return ("" if sign == "+" else sign) + " ".join(out)
-
-    def _as_ordered_terms(self, expr, order=None):
-        if (order or self.order) is None and expr.is_Add:
-            terms = _lex_ordered_terms(expr.args)
-            if terms is not None:
-                return terms
-        return super()._as_ordered_terms(expr, order=order)
-
-
-_END = (1,)
-
-
-def _lex_ordered_terms(args):
-    """The terms in sympy's print order, or None if a term is not a monomial of symbols.
-
-    Dense lexicographic order on the exponent vectors over the symbols sorted by name,
-    descending, is reproduced on sparse (symbol rank, exponent) lists: at the first
-    symbol where two monomials differ, the one with the larger exponent comes first
-    (an absent symbol counts as exponent 0).  The key of a factor is (0, rank, -k) for
-    k > 0 and (2, -rank, -k) for k < 0, and ``_END`` closes each list, which makes
-    the tuple order of the keys that order.
-    """
-    if len(args) == 2 and any(a.is_Number for a in args):
-        return None          # sympy's special case "c - x" for a number and a product
-    monomials, gens = [], {}
-    for term in args:
-        coeff, rest = term.as_coeff_Mul()
-        if not (coeff.is_Rational or coeff.is_Float):
-            return None
-        powers = []
-        if rest is not S.One:
-            for f in (rest.args if rest.is_Mul else (rest,)):
-                if type(f) is sp.Symbol and f.is_commutative:
-                    powers.append((f, 1))
-                elif (f.is_Pow and type(f.base) is sp.Symbol and f.base.is_commutative
-                      and f.exp.is_Integer):
-                    powers.append((f.base, int(f.exp)))
-                else:
-                    return None
-        if len({g for g, _ in powers}) < len(powers):
-            return None
-        for g, _ in powers:
-            gens[g] = g.name
-        monomials.append((term, powers))
-    names = sorted(gens.values())
-    if len(set(names)) < len(names):
-        return None          # two symbols of one name: sympy's tie-break is its own
-    rank = {n: k for k, n in enumerate(names)}
-    keyed = []
-    for term, powers in monomials:
-        fac = sorted((rank[g.name], k) for g, k in powers)
-        key = tuple((0, r, -k) if k > 0 else (2, -r, -k) for r, k in fac) + (_END,)
-        keyed.append((key, term))
-    keyed.sort(key=lambda kt: kt[0])
-    if any(a[0] == b[0] for a, b in zip(keyed, keyed[1:])):
-        return None          # equal monomials (an unevaluated sum): sympy's tie-break
-    return [t for _, t in keyed]
-
-
-def _ordered_factors(expr):
-    """(sign, factors) as sympy's ``_print_Mul`` orders them, or None where the classes
-    alone do not settle the order (see :class:`_TextPrinter`)."""
-    args = expr.args
-    if not expr.is_commutative or args[0] is S.One or any(
-            a.is_Number or (a.is_Pow and all(x.is_Integer for x in a.args))
-            for a in args[1:]):
-        return None               # sympy prints an unevaluated product as it stands
-    c, e = expr.as_coeff_Mul()
-    if not (c.is_Rational or c.is_Float):
-        return None
-    sign = ""
-    if (c.p < 0) if c.is_Rational else (c < 0):     # a Rational's sign without sympify
-        c, sign = -c, "-"
-    named, add, fn = [], None, None
-    for f in (e.args if e.is_Mul else (e,)):
-        if type(f) is sp.Symbol:
-            named.append((f.name, f))
-        elif f.is_Pow and type(f.base) is sp.Symbol and f.exp.is_Integer:
-            named.append((f.base.name, f))
-        elif f.is_Add and add is None:
-            add = f
-        elif isinstance(f, sp.Function) and fn is None and _class_group(f) == 4:
-            fn = f
-        else:
-            return None
-    if len({n for n, _ in named}) < len(named):
-        return None
-    named.sort(key=lambda nf: nf[0])
-    items = ([] if c is S.One else [c]) + [f for _, f in named]
-    return sign, items + [x for x in (add, fn) if x is not None]
-
-
-_FUNCTION_CLASS_KEY = sp.Function.class_key.__func__
-
-
-def _class_group(f) -> int:
-    """``f.class_key()[0]``: 4 for a function class that keeps Function's class_key
-    (which would otherwise build the set of its numbers of arguments to say so)."""
-    if getattr(type(f).class_key, "__func__", None) is _FUNCTION_CLASS_KEY:
-        return 4
-    return f.class_key()[0]
-
-
-PREC_ADD = PRECEDENCE["Add"]      # a product's precedence is a sum's or a product's
-_PRINTER = _TextPrinter()
-
-
-def text(expr) -> str:
-    """``sympy.sstr(expr)``, the same text, faster on the sums models are made of."""
-    return _PRINTER.doprint(expr)
 
 
 def Eq(lhs, rhs=0, label: str | None = None) -> Equation:
@@ -372,8 +183,8 @@ def _side(value, lhs, rhs) -> sp.Expr:
     expr = S.Zero if type(value) is int and value == 0 else sympify_value(value)
     if isinstance(expr, Sample):        # y = sample(start, period): true at the ticks
         return sp.Piecewise((S.One, expr), (S.Zero, True))
-    if is_logical(expr):
-        return boolean_value(expr)
+    if _logic.is_logical(expr):
+        return _logic.boolean_value(expr)
     if not isinstance(expr, sp.Expr):
         raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}): {_text(expr)} is a relation or "
                        "a logical value, not a value (ac.if_else(condition, a, b) chooses "
@@ -382,26 +193,6 @@ def _side(value, lhs, rhs) -> sp.Expr:
         raise _invalid(f"ac.Eq({_text(lhs)}, {_text(rhs)}) contains a value that is not a "
                        f"finite number ({_text(expr)})")
     return expr
-
-
-def _logical_side(value) -> bool:
-    if isinstance(value, (bool, np.bool_)):
-        return True
-    return isinstance(value, sp.Basic) and not isinstance(value, sp.Expr)
-
-
-def _check_boolean_equation(lhs, rhs, given_lhs, given_rhs) -> None:
-    """A condition is the value of a Boolean: the other side is a Boolean variable."""
-    logical = given_lhs if _logical_side(given_lhs) else given_rhs
-    other = rhs if logical is given_lhs else lhs
-    if type(other) is sp.Symbol and value_type(other) in (bool, None):
-        return
-    what = (f"{other.name} is a{'n Integer' if value_type(other) is int else ' Real'} "
-            "variable" if type(other) is sp.Symbol else f"{_text(other)} is not a variable")
-    raise _invalid(f"ac.Eq({_text(given_lhs)}, {_text(given_rhs)}): {_text(logical)} is a "
-                   f"relation or a logical value, not a value, and {what} "
-                   "(ac.if_else(condition, a, b) chooses between values; a Boolean "
-                   "variable, type=bool, takes the truth of a condition)")
 
 
 def _check_not_trivial(lhs: sp.Expr, rhs: sp.Expr) -> None:
@@ -429,98 +220,17 @@ def if_else(condition, then, otherwise):
 def _branch(value):
     """A branch of if_else: a value; a condition as its value 1 or 0 (a Boolean)."""
     expr = sympify_value(value)
-    return boolean_value(expr) if is_logical(expr) else expr
+    return _logic.boolean_value(expr) if _logic.is_logical(expr) else expr
 
 
 def _condition(condition, where: str):
     """A relation, a Boolean variable or parameter, or a logical combination of them (a
     Python bool is one too), in the form :func:`as_condition` gives it."""
     try:
-        return as_condition(condition)
-    except _NotACondition as err:
+        return _logic.as_condition(condition)
+    except _logic._NotACondition as err:
         raise _invalid(f"{where} takes a condition such as x > 0 (a relation), not "
                        f"{_text(condition)}{err.why or ' (nor a Boolean)'}") from None
-
-
-class _NotACondition(Exception):
-    def __init__(self, why=""):
-        super().__init__(why)
-        self.why = why
-
-
-_HALF = S.Half
-
-
-def value_type(expr):
-    """The value type (float, bool or int) of a variable or parameter symbol of the
-    model being compiled; float for anything else, None outside a compile (where the
-    types are not known)."""
-    from .declarations import COMPILING
-    types = getattr(COMPILING.get(), "_value_types", None)
-    if types is None:
-        return None
-    return types.get(expr, float)
-
-
-def is_logical(value) -> bool:
-    """True for a truth value: a relation, True/False, or a logical combination (a
-    sympy Symbol is a Boolean to sympy, but a variable is not a truth value)."""
-    if isinstance(value, (bool, np.bool_)):
-        return True
-    if isinstance(value, (sp.core.relational.Relational, sp.logic.boolalg.BooleanAtom)):
-        return True
-    return isinstance(value, sp.logic.boolalg.BooleanFunction) and not isinstance(
-        value, Sample)
-
-
-def as_condition(value):
-    """``value`` as a condition in the one form the compiler reads: relations and And,
-    Or, Not of them.  A Boolean variable or parameter y (its value is 1 or 0) is the
-    relation ``y > 1/2``, and so is ``pre(y)``; Xor, Equivalent and ITE are written with
-    And, Or and Not.  A relation whose sides change only at events (Booleans, Integers,
-    parameters) is evaluated directly, one of time or of a continuous variable is an
-    event (:func:`acausal.compiler.codegen.extract_relations`).  Raises
-    ``InvalidEquation`` for what is not a condition (a Real variable, a number)."""
-    if isinstance(value, (bool, np.bool_)):
-        return sp.true if value else sp.false
-    if not isinstance(value, sp.Basic):
-        if not hasattr(value, "_sympy_"):
-            raise _NotACondition()
-        value = value._sympy_()
-    return _as_condition(value)
-
-
-def _as_condition(e):
-    logic = sp.logic.boolalg
-    if isinstance(e, (sp.core.relational.Relational, logic.BooleanAtom)):
-        return e
-    if type(e) is sp.Symbol or isinstance(e, Pre):
-        typ = value_type(e.args[0] if isinstance(e, Pre) else e)
-        if typ in (bool, None):
-            return sp.StrictGreaterThan(e, _HALF)
-        name = text(e)
-        raise _NotACondition(f" ({name} is a{'n Integer' if typ is int else ' Real'} "
-                             f"variable; compare it, e.g. {name} > 0)")
-    if isinstance(e, (logic.And, logic.Or, logic.Not)):
-        return type(e)(*[_as_condition(a) for a in e.args])
-    if isinstance(e, logic.Xor):
-        out = _as_condition(e.args[0])
-        for a in e.args[1:]:
-            b = _as_condition(a)
-            out = (out & ~b) | (~out & b)
-        return out
-    if isinstance(e, logic.Equivalent):
-        args = [_as_condition(a) for a in e.args]
-        return sp.And(*args) | sp.And(*[~a for a in args])
-    if isinstance(e, logic.ITE):
-        c, a, b = (_as_condition(x) for x in e.args)
-        return (c & a) | (~c & b)
-    raise _NotACondition()
-
-
-def boolean_value(cond):
-    """A condition as the value of a Boolean: 1 where it holds, else 0."""
-    return sp.Piecewise((S.One, as_condition(cond)), (S.Zero, True))
 
 
 def sign(x):
@@ -576,61 +286,8 @@ class pre(sp.Function):
     nargs = 1
 
 
-Pre = pre        # the class (``isinstance(e, Pre)``, ``e.has(Pre)``); ``pre`` is below
-
-
-def pre(x):
-    """``pre(x)``: the value of x just before the event (Modelica's ``pre``; see
-    :class:`Pre`).  Of a Boolean it is a condition (``~ac.pre(self.y) & self.u``), of
-    anything else a value."""
-    value = Pre(sympify_value(x))
-    return as_condition(value) if _boolean_symbol(value.args[0]) else value
-
-
-def _boolean_symbol(x) -> bool:
-    return type(x) is sp.Symbol and value_type(x) is bool
-
-
-def _discrete_symbol(x, what: str):
-    x = sympify_value(x)
-    if type(x) is not sp.Symbol:
-        raise _invalid(f"{what}({_text(x)}) takes a Boolean or Integer variable (its value "
-                       "before the event is kept), not an expression")
-    return x
-
-
-def edge(b):
-    """``edge(b)``: b became true at this event, ``b and not pre(b)`` (Modelica's
-    ``edge``; b a Boolean variable)."""
-    x = _discrete_symbol(b, "edge")
-    return as_condition(x) & ~as_condition(Pre(x))
-
-
-def change(v):
-    """``change(v)``: v changed at this event, ``v <> pre(v)`` (Modelica's ``change``; v
-    a Boolean or Integer variable)."""
-    x = _discrete_symbol(v, "change")
-    return sp.Ne(x, Pre(x))
-
-
-# true while the initial values are found (Modelica's initial()); the runtime holds it
-INITIAL = sp.Symbol("initial()", real=True)
-
-
-def initial():
-    """``initial()``: true at the initialization (a when-clause with it fires once the
-    initial values are found), false afterwards (Modelica's ``initial()``)."""
-    from .declarations import COMPILING
-    root = COMPILING.get()
-    if root is not None:
-        object.__setattr__(root, "_uses_initial", True)   # m keeps its value
-    return sp.StrictGreaterThan(INITIAL, _HALF)
-
-
-def integer(x):
-    """``integer(x)``: the largest whole number not above x (Modelica's ``integer``,
-    floor): a value that changes at events, where x crosses a whole number."""
-    return sp.floor(sympify_value(x))
+Pre = pre        # the class (``isinstance(e, Pre)``, ``e.has(Pre)``); ``ac.pre`` is
+                 # components.logic.pre
 
 
 class Sample(sp.logic.boolalg.BooleanFunction):
@@ -706,8 +363,8 @@ class Assign:
     def __init__(self, variable, value):
         self.variable = sympify_value(variable)
         self.value = sympify_value(value)
-        if is_logical(self.value):          # the value of a Boolean: 1 or 0
-            self.value = boolean_value(self.value)
+        if _logic.is_logical(self.value):          # the value of a Boolean: 1 or 0
+            self.value = _logic.boolean_value(self.value)
         if not isinstance(self.variable, sp.Symbol):
             raise _invalid(f"assign() takes a variable, got {_text(variable)}")
         if not isinstance(self.value, sp.Expr) or self.value.has(*_NON_FINITE):
@@ -786,3 +443,6 @@ def when(condition, *actions) -> When:
     conditions, ``ac.when([c1, c2], ...)``, fires when any of them becomes true
     (Modelica's ``when {c1, c2}``)."""
     return When(condition, *actions)
+
+
+from . import logic as _logic     # noqa: E402  (it reads this module's names when called)

@@ -26,7 +26,8 @@ from ...components.component import (Component, Connection, InvalidConnection,
                                      InvalidEquation, InvalidValue, ModelError, NotInModel,
                                      Port, compiling, in_context)
 from ...components.declarations import Parameter, VariableAttributes, bound_violation
-from ...components.symbols import INITIAL, Equation, When, der, text, time
+from ...components.logic import INITIAL
+from ...components.symbols import Equation, When, der, text, time
 from .fastarith import symbol_arithmetic
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
 from .flatder import check_der_arguments, expand_derivatives, has_der

@@ -6,6 +6,8 @@ from acausal.library.blocks.integer_sources import IntegerTable
 from acausal.library.blocks.interaction import BooleanValue, IntegerValue, RealValue
 from acausal.library.blocks.tables import CombiTimeTable
 
+from . import MSLNames
+
 __all__ = ["Interaction1"]
 
 
@@ -18,7 +20,7 @@ class Interaction1(ac.Component):
     msl_name = "Modelica.Blocks.Examples.Interaction1"
     stop_time = 10.0
     tolerance = 1e-6
-    msl_signals = {"start.reset[1]": "start.reset[0]", "stop.reset[1]": "stop.reset[0]"}
+    msl_signals = MSLNames()
 
     integerValue = IntegerValue()
     integerTable = IntegerTable(table=((0, 0), (1, 2), (2, 4), (3, 6), (4, 4), (6, 2)))

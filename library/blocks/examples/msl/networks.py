@@ -1,7 +1,7 @@
 """Modelica.Blocks.Examples.BooleanNetwork1 and IntegerNetwork1 (MSL v4.0.0): the blocks
 of MathBoolean and MathInteger in small networks.
 
-The MSL's vector inputs ``u[1] ... u[nu]`` are ``u[0] ... u[nu-1]`` here (``msl_signals``
+The MSL's vector inputs ``u[1] ... u[nu]`` are ``u[0] ... u[nu-1]`` here (``MSLNames``
 maps the reference's names).
 """
 import acausal as ac
@@ -15,16 +15,9 @@ from acausal.library.blocks.interaction import BooleanValue, IntegerValue
 from acausal.library.blocks.logical import RSFlipFlop
 from acausal.library.blocks.sources import Sine
 
+from . import MSLNames
+
 __all__ = ["BooleanNetwork1", "IntegerNetwork1"]
-
-
-def _vector_names(*names) -> dict:
-    """{"and1.u[1]": "and1.u[0]", ...}: the MSL's 1-based vector elements."""
-    out = {}
-    for name in names:
-        head, _, index = name.rpartition("[")
-        out[name] = f"{head}[{int(index[:-1]) - 1}]"
-    return out
 
 
 class BooleanNetwork1(ac.Component):
@@ -34,9 +27,7 @@ class BooleanNetwork1(ac.Component):
     msl_name = "Modelica.Blocks.Examples.BooleanNetwork1"
     stop_time = 10.0
     tolerance = 1e-6
-    msl_signals = _vector_names("and1.u[1]", "and1.u[2]", "and1.u[3]", "nand1.u[1]",
-                                "nand1.u[2]", "or1.u[1]", "or1.u[2]", "or2.u[1]",
-                                "or2.u[2]", "xor1.u[1]", "xor1.u[2]")
+    msl_signals = MSLNames()
 
     showValue = BooleanValue()
     and1 = mb.And(nu=3)
