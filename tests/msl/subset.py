@@ -4,4 +4,7 @@ use; ``make test-msl`` (and CI) compares all of them."""
 
 QUICK = {
     "Modelica.Mechanics.Rotational.Examples.First",
+    "Modelica.Thermal.HeatTransfer.Examples.TwoMasses",
+    "Modelica.Thermal.FluidHeatFlow.Examples.SimpleCooling",
+    "Modelica.Thermal.FluidHeatFlow.Examples.OneMass",
 }
