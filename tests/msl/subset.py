@@ -7,4 +7,6 @@ QUICK = {
     "Modelica.Thermal.HeatTransfer.Examples.TwoMasses",
     "Modelica.Thermal.FluidHeatFlow.Examples.SimpleCooling",
     "Modelica.Thermal.FluidHeatFlow.Examples.OneMass",
+    "Modelica.Electrical.Machines.Examples.DCMachines.DCPM_Start",
+    "Modelica.Electrical.Machines.Examples.DCMachines.DCEE_Start",
 }
