@@ -15,9 +15,9 @@ Specification 3.7.2.5).  Here |m_flow| is replaced, inside a band |m_flow| <
 ``m_flow_small``, by the C1 parabola (m_flow^2/m_flow_small + m_flow_small)/2, which
 equals |m_flow| and its slope at the band's edges.  Outside the band H_flow is exactly
 the MSL's; inside it a connection without flow holds the mean enthalpy of its
-neighbours, and each port adds a small conduction m_flow_small/2 (h_port - h) (at
-``m_flow_small`` = 1e-6 kg/s and cp = 1 J/(kg.K), 5e-7 W/K), so mass and energy stay
-conserved.  The band's function is C1 and is evaluated directly (``no_event``), as
+neighbours, and each port adds a small conduction, at zero flow m_flow_small/4 (h_port
+- h) (at ``m_flow_small`` = 1e-6 kg/s and cp = 1 J/(kg.K), 2.5e-7 W/K), so mass and
+energy stay conserved.  The band's function is C1 and is evaluated directly (``no_event``), as
 tools evaluate the MSL's semiLinear, which is ``smooth(0, ...)``: a flow that reverses
 is not an event.
 """
@@ -26,7 +26,7 @@ from acausal.ports import FlowPort
 
 from .media import Medium
 
-__all__ = ["semi_linear", "TwoPort", "SinglePort", "SimpleFriction", "WithMedium"]
+__all__ = ["semi_linear", "TwoPort", "SinglePort", "SimpleFriction", "WithMedium", "flag"]
 
 SMALL = 1e-60        # Modelica.Constants.small
 
@@ -57,10 +57,17 @@ class WithMedium(ac.Component):
             self.medium = medium._clone()
 
 
+def flag(kind: str, name: str, value) -> bool:
+    """A structural choice given where a component is made (a port that exists or not, a
+    law): True or False, else a ModelError naming the component and the choice."""
+    if not isinstance(value, bool):
+        raise ac.ModelError(f"{kind}: {name} must be True or False, not {value!r}")
+    return value
+
+
 def _initial_temperature(modifications: dict, T0, T0fixed) -> dict:
     """The MSL's T(start=T0, fixed=T0fixed), with what the caller gave for T on top."""
-    if not isinstance(T0fixed, bool):
-        raise ac.ModelError(f"T0fixed must be True or False, not {T0fixed!r}")
+    flag("a two-port or single port", "T0fixed", T0fixed)
     given = modifications.pop("T", {})
     given = given if isinstance(given, dict) else {"start": given}
     return {"start": T0, "fixed": T0fixed, **given}

@@ -4,17 +4,11 @@ import acausal as ac
 from acausal.ports import FlowPort, HeatPort, RealInput, RealOutput
 
 from ..translational.interfaces import PartialElementaryOneFlangeAndSupport
-from .base_classes import SMALL, SimpleFriction, SinglePort, TwoPort
+from .base_classes import SMALL, SimpleFriction, SinglePort, TwoPort, flag
 
 __all__ = ["Pipe", "HeatedPipe", "Valve", "OneWayValve", "OpenTank", "Cylinder"]
 
 G_N = 9.80665        # m/s2, Modelica.Constants.g_n
-
-
-def _flag(kind: str, name: str, value) -> bool:
-    if not isinstance(value, bool):
-        raise ac.ModelError(f"{kind}: {name} must be True or False, not {value!r}")
-    return value
 
 
 class Pipe(TwoPort, SimpleFriction):
@@ -36,7 +30,7 @@ class Pipe(TwoPort, SimpleFriction):
 
     def __init__(self, *, useHeatPort=False, **modifications):
         super().__init__(**modifications)
-        object.__setattr__(self, "useHeatPort", _flag(type(self).__name__, "useHeatPort",
+        object.__setattr__(self, "useHeatPort", flag(type(self).__name__, "useHeatPort",
                                                       useHeatPort))
         if useHeatPort:
             self.heatPort = HeatPort()
@@ -91,7 +85,7 @@ class Valve(TwoPort):
     def __init__(self, *, LinearCharacteristic=True, **modifications):
         super().__init__(**modifications)
         object.__setattr__(self, "LinearCharacteristic",
-                           _flag(type(self).__name__, "LinearCharacteristic",
+                           flag(type(self).__name__, "LinearCharacteristic",
                                  LinearCharacteristic))
 
     def equations(self):
@@ -172,7 +166,7 @@ class OpenTank(SinglePort):
 
     def __init__(self, *, useHeatPort=False, **modifications):
         super().__init__(**modifications)
-        object.__setattr__(self, "useHeatPort", _flag(type(self).__name__, "useHeatPort",
+        object.__setattr__(self, "useHeatPort", flag(type(self).__name__, "useHeatPort",
                                                       useHeatPort))
         if useHeatPort:
             self.heatPort = HeatPort()

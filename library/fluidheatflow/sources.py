@@ -8,25 +8,19 @@ exist or not (``useSupport``): ``VolumeFlow(useVolumeFlowInput=True)`` has the i
 import acausal as ac
 from acausal.ports import RealInput, RotationalFlange
 
-from .base_classes import SMALL, SinglePort, TwoPort
+from .base_classes import SMALL, SinglePort, TwoPort, flag
 
 __all__ = ["Ambient", "AbsolutePressure", "VolumeFlow", "PressureIncrease", "IdealPump"]
-
-
-def _flag(kind: str, name: str, value) -> bool:
-    if not isinstance(value, bool):
-        raise ac.ModelError(f"{kind}: {name} must be True or False, not {value!r}")
-    return value
 
 
 class _Optional:
     """The value of an optional input: the input when it exists, else the parameter."""
 
-    def _input_or(self, flag: str, port: str, parameter: str):
-        return getattr(self, port) if getattr(self, flag) else getattr(self, parameter)
+    def _input_or(self, choice: str, port: str, parameter: str):
+        return getattr(self, port) if getattr(self, choice) else getattr(self, parameter)
 
-    def _make_input(self, flag: str, port: str, value) -> None:
-        object.__setattr__(self, flag, _flag(type(self).__name__, flag, value))
+    def _make_input(self, choice: str, port: str, value) -> None:
+        object.__setattr__(self, choice, flag(type(self).__name__, choice, value))
         if value:
             setattr(self, port, RealInput())
 

@@ -145,3 +145,20 @@ def test_records_reach_the_loss_components():
     # Ra (given at TaRef = 20 degC) at TaNominal = 95 degC, and the brushes' 0.5 V
     assert d["dcpm2.ViNominal"] == pytest.approx(
         100.0 - 0.03864 * (1 + alpha20Copper * 75.0) * 100.0 - 0.5, rel=1e-12)
+
+
+@pytest.mark.parametrize("module, name", [
+    ("dcpm_with_losses", "DCPM_withLosses"), ("dcee_start", "DCEE_Start"),
+    ("dcse_start", "DCSE_Start"), ("dc_compare_characteristics", "DC_CompareCharacteristics")])
+def test_the_energy_audit_of_every_part_of_the_machines_closes(module, name):
+    """Every part declares its energy (inductances and the air gap store it, the losses
+    leave through their heat ports, the excitation is lossless) and the audit finds the
+    balance and each part consistent."""
+    import importlib
+    cls = getattr(importlib.import_module(
+        f"acausal.library.electromechanical.examples.msl.{module}"), name)
+    model = cls()
+    res = ac.simulate(model, t_end=min(cls.stop_time, 2.0), rtol=1e-9)
+    audit = ac.energy_balance(res, model)
+    assert audit.ok, audit.violations[:3]
+    assert not audit.unclassified

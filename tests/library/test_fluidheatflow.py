@@ -296,3 +296,33 @@ def test_initial_relations_are_read_with_settled_modes():
 
     res = ac.simulate(StaleModes(), t_end=0.4)
     assert res["y"][0] == pytest.approx(1.0)
+
+
+class PushedThroughPipe(ac.Component):
+    """A pressure increase (a signal) pushes coolant from an ambient at a prescribed
+    temperature through a linear pipe."""
+
+    ambient1 = fhf.Ambient(useTemperatureInput=True)
+    fan = fhf.PressureIncrease(m=0.0, usePressureIncreaseInput=True)
+    pipe = fhf.Pipe(m=0.0, V_flowLaminar=1.0, dpLaminar=2.0, V_flowNominal=2.0,
+                    dpNominal=4.0)
+    ambient2 = fhf.Ambient()
+    dp = Ramp(height=3.0, duration=1.0)
+    T = Ramp(height=10.0, duration=1.0, offset=300.0)
+
+    def equations(self):
+        return [ac.connect(self.ambient1.flowPort, self.fan.flowPort_a),
+                ac.connect(self.fan.flowPort_b, self.pipe.flowPort_a),
+                ac.connect(self.pipe.flowPort_b, self.ambient2.flowPort),
+                ac.connect(self.dp.y, self.fan.pressureIncrease),
+                ac.connect(self.T.y, self.ambient1.ambientTemperature)]
+
+
+def test_pressure_increase_and_prescribed_ambient_temperature():
+    """V = dp / 2 (m3/s)/Pa on the laminar pipe (k = 0); the outlet carries the
+    ambient's prescribed temperature."""
+    t = np.linspace(0, 1, 11)
+    res = ac.simulate(PushedThroughPipe(), t_end=1.0, rtol=1e-10, t_eval=t)
+    assert np.allclose(res["pipe.V_flow"], 3.0 * t / 2.0, rtol=1e-9, atol=1e-12)
+    T = 300.0 + 10.0 * t
+    assert np.allclose(res["pipe.T"][1:], T[1:], rtol=1e-9)

@@ -23,6 +23,10 @@ class InductorDC(OnePort):
 
     L = ac.Parameter(1.0, unit="H", description="inductance")
 
+    def stored_energy(self):
+        """Magnetic energy L i^2/2 (none when quasi-static)."""
+        return 0 * self.i if self.quasiStatic else self.L * self.i**2 / 2
+
     def __init__(self, *, quasiStatic=False, **modifications):
         super().__init__(**modifications)
         object.__setattr__(self, "quasiStatic", _quasi_static(type(self).__name__,
@@ -62,7 +66,10 @@ class AirGapDC(ac.Component):
     ia = ac.Variable(unit="A", description="armature current")
     tauElectrical = ac.Variable(unit="N.m", description="electrical torque")
 
-    energy_role = "lossless"   # vai ia + vei ie = tauElectrical w + d/dt(Le ie^2/2)
+    def stored_energy(self):
+        """Magnetic energy of the excitation Le ie^2/2 (vei ie = its rate; none when
+        quasi-static); vai ia = tauElectrical w is converted without loss."""
+        return 0 * self.ie if self.quasiStatic else self.Le * self.ie**2 / 2
 
     def __init__(self, *, quasiStatic=False, **modifications):
         super().__init__(**modifications)

@@ -31,8 +31,8 @@ class _LossHeatPort(ac.Component):
             self.heatPort = HeatPort()
 
     def loss_power(self):
-        """P_loss = lossPower (the MSL's)."""
-        return self.lossPower
+        """P_loss = lossPower (the MSL's), unless it leaves through the heat port."""
+        return 0 * self.lossPower if self.useHeatPort else self.lossPower
 
     def equations(self):
         if self.useHeatPort:
