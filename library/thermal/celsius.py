@@ -38,7 +38,7 @@ class FixedTemperature(PartialElementaryOnePort):
         port.T = T + 273.15
     """
 
-    T = ac.Parameter(20.0, unit="degC", min=-ZERO_CELSIUS,
+    T = ac.Parameter(20.0, unit="degC",
                      description="fixed temperature at the port")
 
     energy_role = "source"  # an environment outside the model
