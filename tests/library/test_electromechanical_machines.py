@@ -11,6 +11,15 @@ from acausal.library.electromechanical import machines
 from acausal.library.electromechanical.machines.thermal import (alpha20Copper, convertAlpha,
                                                                 convertResistance)
 
+
+def _simulate(model, **options):
+    """ac.simulate, which must reach t_end (a run that stops early fails the test)."""
+    res = ac.simulate(model, **options)
+    assert res.success, res.message
+    if "t_eval" in options:
+        assert len(res.t) == len(options["t_eval"])
+    return res
+
 W_NOMINAL = 1425 * 2 * math.pi / 60
 K_PHI = (100.0 - 0.05 * 100.0) / W_NOMINAL      # ViNominal / wNominal of the default data
 
@@ -50,7 +59,7 @@ def test_permanent_magnet_machine_is_the_linear_dc_motor_of_its_data():
     t = np.linspace(0, 2, 201)
     compiled = ac.compile(DCPM_Start())
     assert compiled.derived_parameters["dcpm.turnsRatio"] == pytest.approx(K_PHI, rel=1e-14)
-    res = ac.simulate(compiled, t_end=2.0, rtol=1e-9, t_eval=t)
+    res = _simulate(compiled, t_end=2.0, rtol=1e-9, t_eval=t)
     exact = _dcpm_start_exact(t)
     assert np.max(np.abs(res["dcpm.ia"] - exact[:, 0])) < 1e-6 * 500
     assert np.max(np.abs(res["loadInertia.w"] - exact[:, 1])) < 1e-6 * 160
@@ -65,7 +74,7 @@ def test_machine_with_losses_balances_its_power():
     from acausal.library.electromechanical.examples.msl.dcpm_with_losses import \
         DCPM_withLosses
     t = np.linspace(0.05, 2, 400)
-    res = ac.simulate(DCPM_withLosses(), t_end=2.0, rtol=1e-10, t_eval=t)
+    res = _simulate(DCPM_withLosses(), t_end=2.0, rtol=1e-10, t_eval=t)
     m = "dcpm2"
     p_in = res[f"{m}.va"] * res[f"{m}.ia"]
     w = res[f"{m}.wMechanical"]
@@ -95,7 +104,7 @@ def test_quasi_static_machine_has_no_armature_transient():
     from acausal.library.electromechanical.examples.msl.dcpm_quasi_static import \
         DCPM_QuasiStatic
     t = np.linspace(0, 2, 401)
-    res = ac.simulate(DCPM_QuasiStatic(), t_end=2.0, rtol=1e-9, t_eval=t)
+    res = _simulate(DCPM_QuasiStatic(), t_end=2.0, rtol=1e-9, t_eval=t)
     ia, w = res["dcpm2.ia"], res["loadInertia2.w"]
     assert np.allclose(0.05 * ia, 100.0 - K_PHI * w, atol=1e-6)
     assert np.max(np.abs(res["dcpm1.ia"] - ia)) > 10.0
@@ -106,7 +115,7 @@ def test_separately_excited_field_builds_up_with_its_time_constant():
     ie = 1 A (1 - exp(-t Re/Le)); the induced voltage is turnsRatio Le ie w."""
     from acausal.library.electromechanical.examples.msl.dcee_start import DCEE_Start
     t = np.linspace(0, 0.1, 101)
-    res = ac.simulate(DCEE_Start(), t_end=0.1, rtol=1e-10, t_eval=t)
+    res = _simulate(DCEE_Start(), t_end=0.1, rtol=1e-10, t_eval=t)
     assert np.max(np.abs(res["dcee.ie"] - (1 - np.exp(-100.0 * t)))) < 1e-8
     assert np.allclose(res["dcee.airGapDC.psi_e"], res["dcee.ie"], rtol=1e-12, atol=1e-15)
 
@@ -118,12 +127,12 @@ def test_series_excited_machine_makes_torque_from_the_square_of_its_current():
     from acausal.library.electromechanical.examples.msl.dcse_single_phase import \
         DCSE_SinglePhase
     from acausal.library.electromechanical.examples.msl.dcse_start import DCSE_Start
-    res = ac.simulate(DCSE_Start(), t_end=2.0, rtol=1e-9, n_points=201)
+    res = _simulate(DCSE_Start(), t_end=2.0, rtol=1e-9, n_points=201)
     wN = 1410 * 2 * math.pi / 60
     k = (100.0 - (0.05 + 0.01) * 100.0) / (wN * 0.0005 * 100.0)
     ia = res["dcse.ia"]
     assert np.allclose(res["dcse.tauElectrical"], k * 0.0005 * ia**2, rtol=1e-9, atol=1e-9)
-    ac_res = ac.simulate(DCSE_SinglePhase(), t_end=0.5, rtol=1e-8, n_points=2001)
+    ac_res = _simulate(DCSE_SinglePhase(), t_end=0.5, rtol=1e-8, n_points=2001)
     assert ac_res["dcse.ia"].min() < -10 and ac_res["dcse.ia"].max() > 10
     assert ac_res["dcse.tauElectrical"].min() > -1e-6
 
@@ -158,7 +167,7 @@ def test_the_energy_audit_of_every_part_of_the_machines_closes(module, name):
     cls = getattr(importlib.import_module(
         f"acausal.library.electromechanical.examples.msl.{module}"), name)
     model = cls()
-    res = ac.simulate(model, t_end=min(cls.stop_time, 2.0), rtol=1e-9)
+    res = _simulate(model, t_end=min(cls.stop_time, 2.0), rtol=1e-9)
     audit = ac.energy_balance(res, model)
     assert audit.ok, audit.violations[:3]
     assert not audit.unclassified

@@ -11,6 +11,15 @@ from acausal.library.fluidheatflow.base_classes import semi_linear
 from acausal.library.rotational import Speed
 from acausal.library.thermal import PrescribedHeatFlow
 
+
+def _simulate(model, **options):
+    """ac.simulate, which must reach t_end (a run that stops early fails the test)."""
+    res = ac.simulate(model, **options)
+    assert res.success, res.message
+    if "t_eval" in options:
+        assert len(res.t) == len(options["t_eval"])
+    return res
+
 TAmb = 293.15
 
 
@@ -66,7 +75,7 @@ class StillCircuit(ac.Component):
 def test_a_circuit_without_flow_is_determined_and_carries_no_mass():
     """With every flow zero the port enthalpies are the means of their neighbours (the
     band), and the mass flow is exactly zero."""
-    res = ac.simulate(StillCircuit(), t_end=1.0, rtol=1e-8)
+    res = _simulate(StillCircuit(), t_end=1.0, rtol=1e-8)
     assert np.all(res["pump.V_flow"] == 0.0)
     assert np.allclose(res["pump.T"], 300.0, rtol=1e-12)
     assert np.allclose(res["ambient1.flowPort.h"], 295.0, rtol=1e-12)
@@ -109,7 +118,7 @@ def test_pump_valve_and_pipe_follow_their_characteristics():
     """The operating point solves pump = valve + pipe: each component's law checked on
     the result, and the pump's shaft power equals its hydraulic power."""
     t = np.linspace(0, 1, 11)
-    res = ac.simulate(PumpValvePipe(), t_end=1.0, rtol=1e-10, t_eval=t)
+    res = _simulate(PumpValvePipe(), t_end=1.0, rtol=1e-10, t_eval=t)
     V, w, y = res["pump.V_flow"], 80.0 + 20.0 * t, 1.0 - 0.6 * t
     x = w / 100.0
     assert np.allclose(-res["pump.dp"], 3e5 * x**2 * (1 - V / (0.2 * x)), rtol=1e-9)
@@ -139,7 +148,7 @@ class CheckValve(ac.Component):
 
 def test_one_way_valve_passes_forward_and_leaks_backward():
     t = np.linspace(0, 1, 21)
-    res = ac.simulate(CheckValve(), t_end=1.0, rtol=1e-10, t_eval=t)
+    res = _simulate(CheckValve(), t_end=1.0, rtol=1e-10, t_eval=t)
     dp = 10.0 - 20.0 * t
     expected = np.where(dp >= 0, dp * 2.0 / 0.5, dp * 1e-3 / 100.0)
     assert np.allclose(res["valve.V_flow"], expected, rtol=1e-9, atol=1e-12)
@@ -151,7 +160,7 @@ def test_two_tanks_conserve_mass_and_enthalpy_and_level_out():
     """MSL Examples.TwoTanks: the pipe holds nothing, so m1 + m2 and H1 + H2 are constant;
     p = pAmbient + m g / A at each tank, and the levels approach each other."""
     from acausal.library.fluidheatflow.examples.msl.two_tanks import TwoTanks
-    res = ac.simulate(TwoTanks(), t_end=1.5, rtol=1e-9, n_points=151)
+    res = _simulate(TwoTanks(), t_end=1.5, rtol=1e-9, n_points=151)
     m = res["openTank1.m"] + res["openTank2.m"]
     H = res["openTank1.H"] + res["openTank2.H"]
     assert np.allclose(m, 1.0, rtol=1e-10)
@@ -172,7 +181,7 @@ def test_test_cylinder_conserves_the_medium_and_balances_the_pistons():
     is the same on both pistons (p A1 = -f1, p A2 = -f2); no heat enters, so H/m stays
     the initial temperature's h."""
     from acausal.library.fluidheatflow.examples.msl.test_cylinder import TestCylinder
-    res = ac.simulate(TestCylinder(), t_end=2.0, rtol=1e-9, n_points=201)
+    res = _simulate(TestCylinder(), t_end=2.0, rtol=1e-9, n_points=201)
     m = res["cylinder1.m"] + res["cylinder2.m"]
     assert np.allclose(m, 0.1 * 5.0 + 1.0 * 0.5, rtol=1e-10)
     assert np.allclose(res["cylinder1.f"] / 0.1, res["cylinder2.f"] / 1.0, rtol=1e-9,
@@ -217,7 +226,7 @@ def test_two_mass_against_an_independent_solution():
     solution to 1e-5 K: the difference is the reference's."""
     from acausal.library.fluidheatflow.examples.msl.two_mass import TwoMass
     t = np.linspace(0, 1, 401)
-    res = ac.simulate(TwoMass(), t_end=1.0, rtol=1e-9, t_eval=t)
+    res = _simulate(TwoMass(), t_end=1.0, rtol=1e-9, t_eval=t)
     exact = _two_mass_exact(t)
     for k, name in enumerate(["pipe1.T", "pipe2.T", "pipe3.T", "heatCapacitor1.T",
                               "heatCapacitor2.T"]):
@@ -268,7 +277,7 @@ class SensedFlow(ac.Component):
 def test_sensors_read_flows_pressures_and_the_heating():
     """10 l/s of water at 300 K heated by cp rho V 5 K warms by 5 K; the sensors take
     nothing from the flow."""
-    res = ac.simulate(SensedFlow(), t_end=1.0, rtol=1e-10, n_points=11)
+    res = _simulate(SensedFlow(), t_end=1.0, rtol=1e-10, n_points=11)
     assert np.allclose(res["volume.y.signal"], 0.01, rtol=1e-12)
     assert np.allclose(res["mass.y.signal"], 0.01 * 995.6, rtol=1e-12)
     assert np.allclose(res["enthalpy.y.signal"], 0.01 * 995.6 * 4177.0 * 300.0, rtol=1e-10)
@@ -294,7 +303,7 @@ def test_initial_relations_are_read_with_settled_modes():
             u = self.ramp.y
             return [ac.Eq(ac.if_else(u > 0.5, 0, 1) * self.y, 1 - u)]
 
-    res = ac.simulate(StaleModes(), t_end=0.4)
+    res = _simulate(StaleModes(), t_end=0.4)
     assert res["y"][0] == pytest.approx(1.0)
 
 
@@ -322,7 +331,29 @@ def test_pressure_increase_and_prescribed_ambient_temperature():
     """V = dp / 2 (m3/s)/Pa on the laminar pipe (k = 0); the outlet carries the
     ambient's prescribed temperature."""
     t = np.linspace(0, 1, 11)
-    res = ac.simulate(PushedThroughPipe(), t_end=1.0, rtol=1e-10, t_eval=t)
+    res = _simulate(PushedThroughPipe(), t_end=1.0, rtol=1e-10, t_eval=t)
     assert np.allclose(res["pipe.V_flow"], 3.0 * t / 2.0, rtol=1e-9, atol=1e-12)
     T = 300.0 + 10.0 * t
     assert np.allclose(res["pipe.T"][1:], T[1:], rtol=1e-9)
+
+
+def test_water_pump_delivers_its_operating_point_and_the_check_valve_holds():
+    """MSL Examples.WaterPump (its reference compares only the speed): at 1.2 x nominal
+    speed the flow is where the pump curve meets valve + pipe + the 25 m column (solved
+    by brentq); standing still, the check valve lets only its leakage back."""
+    from scipy.optimize import brentq
+    from acausal.library.fluidheatflow.examples.msl.water_pump import WaterPump
+    t = np.array([0.05, 0.8, 1.0, 1.2])
+    res = _simulate(WaterPump(), t_end=1.3, rtol=1e-9, t_eval=t)
+    rho, x = 995.6, 1.2
+    k = (30000.0 - 10000.0 / 0.09 * 0.18) / (0.18 - 0.09)**2
+
+    def excess(V):
+        pump = 5e5 * x**2 * (1 - V / (0.18 * x))
+        pipe = 10000.0 / 0.09 * V + (k * (V - 0.09)**2 if V > 0.09 else 0.0)
+        return pump - pipe - rho * 9.80665 * 25.0 - V * 10000.0 / 0.18
+
+    V = brentq(excess, 0.0, 0.3)
+    assert np.allclose(res["volumeFlowSensor.y.signal"][1:], V, rtol=1e-7)
+    leak = -1e-6 / 5e5 * rho * 9.80665 * 25.0
+    assert res["volumeFlowSensor.y.signal"][0] == pytest.approx(leak, rel=1e-6)

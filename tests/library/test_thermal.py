@@ -1,5 +1,6 @@
 """Lumped heat transfer, and a resistor heated by its current, against closed forms."""
 import numpy as np
+import pytest
 from scipy.integrate import solve_ivp
 
 import acausal as ac
@@ -97,14 +98,22 @@ def test_prescribed_boundaries_first_order_response():
     assert np.max(np.abs(res["body.T"] - exact)) < 1e-7 * 300
 
 
-# -- Modelica.Thermal.HeatTransfer examples and components against closed forms -------------
+# -- Modelica.Thermal.HeatTransfer examples and components against closed forms
+
+def _simulate(model, **options):
+    """ac.simulate, which must reach t_end (a run that stops early fails the test)."""
+    res = ac.simulate(model, **options)
+    assert res.success, res.message
+    if "t_eval" in options:
+        assert len(res.t) == len(options["t_eval"])
+    return res
 
 def test_two_masses_meet_at_the_mean_temperature():
     """MSL Examples.TwoMasses: T1 - T2 = 100 K exp(-G (1/C1 + 1/C2) t), T1 + T2 constant,
     and T_final_K is the mean of the initial energies (C1 = C2)."""
     from acausal.library.thermal.examples.msl.two_masses import TwoMasses
     t = np.linspace(0, 1, 51)
-    res = ac.simulate(TwoMasses(), t_end=1.0, rtol=1e-10, t_eval=t)
+    res = _simulate(TwoMasses(), t_end=1.0, rtol=1e-10, t_eval=t)
     dT = 100.0 * np.exp(-10.0 * (2 / 15.0) * t)
     assert np.max(np.abs(res["mass1.T"] - res["mass2.T"] - dT)) < 1e-7 * 100
     assert np.allclose(res["mass1.T"] + res["mass2.T"], 373.15 + 273.15, rtol=1e-12)
@@ -120,7 +129,7 @@ def test_generation_of_fmus_blocks_act_as_the_joined_capacities():
     from scipy.integrate import solve_ivp
     from acausal.library.thermal.examples.msl.generation_of_fmus import GenerationOfFMUs
     t = np.linspace(0, 1, 201)
-    res = ac.simulate(GenerationOfFMUs(), t_end=1.0, rtol=1e-10, t_eval=t)
+    res = _simulate(GenerationOfFMUs(), t_end=1.0, rtol=1e-10, t_eval=t)
     w = 4 * np.pi
     T = 293.15 + 1000.0 * (1 - np.cos(w * t)) / (w * 3.3)
     assert np.max(np.abs(res["directCapacity.heatCapacitor.T"] - T)) < 1e-7 * 200
@@ -164,7 +173,7 @@ def test_motor_winding_and_core_follow_the_two_heat_balances():
     Cc Tc' = Pc + G (Tw - Tc) - Gc (Tc - Ta)."""
     from acausal.library.thermal.examples.motor import Motor
     t = np.linspace(0, 7200, 241)
-    res = ac.simulate(Motor(), t_end=7200.0, rtol=1e-8, t_eval=t)
+    res = _simulate(Motor(), t_end=7200.0, rtol=1e-8, t_eval=t)
     exact = _motor_exact(t)
     assert np.max(np.abs(res["winding.T"] - exact[:, 0])) < 1e-5 * 100
     assert np.max(np.abs(res["core.T"] - exact[:, 1])) < 1e-5 * 100
@@ -198,7 +207,7 @@ def test_collector_sums_heat_flows_into_a_convectively_cooled_capacity():
     """C T' = 6 W - (T - 283.15 K)/Rc: T = T_inf + (T0 - T_inf) exp(-t/(Rc C)), T_inf =
     283.15 + 6 Rc; every collector port sits at the body's temperature."""
     t = np.linspace(0, 5, 51)
-    res = ac.simulate(CollectedHeat(), t_end=5.0, rtol=1e-10, t_eval=t)
+    res = _simulate(CollectedHeat(), t_end=5.0, rtol=1e-10, t_eval=t)
     T_inf = 283.15 + 6.0 * 0.5
     T = T_inf + (300.0 - T_inf) * np.exp(-t / (0.5 * 2.0))
     assert np.max(np.abs(res["body.T"] - T)) < 1e-7 * 20
@@ -237,7 +246,7 @@ def test_heat_flow_with_temperature_coefficient_and_celsius_boundaries():
     alpha:  T = T_inf + (T0 - T_inf) exp(-a t / C), T_inf = (Q (1 - alpha T_ref) + G T_w)
     / a, T_w = 25 degC through ToKelvin and FromKelvin."""
     t = np.linspace(0, 20, 81)
-    res = ac.simulate(TemperatureDependentHeating(), t_end=20.0, rtol=1e-10, t_eval=t)
+    res = _simulate(TemperatureDependentHeating(), t_end=20.0, rtol=1e-10, t_eval=t)
     Q, alpha, Tref, G, C, Tw = 2.0, 0.01, 300.0, 0.5, 4.0, 298.15
     a = G - Q * alpha
     T_inf = (Q * (1 - alpha * Tref) + G * Tw) / a
