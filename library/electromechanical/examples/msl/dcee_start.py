@@ -11,7 +11,7 @@ import acausal as ac
 from acausal.library.blocks import Ramp
 from acausal.library.electrical import ConstantVoltage, Ground, SignalVoltage
 from acausal.library.electromechanical.machines import DC_ElectricalExcited
-from acausal.library.rotational import Inertia, StepTorque
+from acausal.library.rotational import Inertia, TorqueStep
 
 __all__ = ["DCEE_Start"]
 
@@ -40,7 +40,7 @@ class DCEE_Start(ac.Component):
     constantVoltage = ConstantVoltage(V=Ve)
     groundExcitation = Ground()
     loadInertia = Inertia(J=JLoad)
-    loadTorqueStep = StepTorque(startTime=tStep, stepTorque=-TLoad, offsetTorque=0.0)
+    loadTorqueStep = TorqueStep(startTime=tStep, stepTorque=-TLoad, offsetTorque=0.0)
 
     def equations(self):
         return [ac.connect(self.ramp.y, self.signalVoltage.v_ref),

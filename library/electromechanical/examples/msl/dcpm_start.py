@@ -10,7 +10,7 @@ import acausal as ac
 from acausal.library.blocks import Ramp
 from acausal.library.electrical import Ground, SignalVoltage
 from acausal.library.electromechanical.machines import DC_PermanentMagnet
-from acausal.library.rotational import Inertia, StepTorque
+from acausal.library.rotational import Inertia, TorqueStep
 
 __all__ = ["DCPM_Start"]
 
@@ -35,7 +35,7 @@ class DCPM_Start(ac.Component):
     signalVoltage = SignalVoltage()
     ground = Ground()
     loadInertia = Inertia(J=JLoad)
-    loadTorqueStep = StepTorque(startTime=tStep, stepTorque=-TLoad, offsetTorque=0.0)
+    loadTorqueStep = TorqueStep(startTime=tStep, stepTorque=-TLoad, offsetTorque=0.0)
 
     def equations(self):
         return [ac.connect(self.ramp.y, self.signalVoltage.v_ref),
