@@ -21,7 +21,7 @@ __all__ = ["OnePort", "TwoPin", "TwoPort", "FourPin", "ConditionalHeatPort", "Gr
            "CosineVoltageVariableFrequencyAndAmplitude",
            "SineCurrentVariableFrequencyAndAmplitude",
            "CosineCurrentVariableFrequencyAndAmplitude", "SupplyVoltage",
-           "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor"]
+           "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".adaptors": ("GeneralCurrentToVoltageAdaptor", "GeneralVoltageToCurrentAdaptor"),
@@ -38,7 +38,8 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".opamps": ("IdealOpAmp", "IdealOpAmp3Pin", "IdealOpAmpLimited", "IdealizedOpAmpLimited",
                 "OpAmp", "OpAmpDetailed"),
     ".semiconductors": ("Diode", "SimpleTriac", "Thyristor", "ZDiode"),
-    ".sensors": ("CurrentSensor", "PotentialSensor", "PowerSensor", "VoltageSensor"),
+    ".sensors": ("CurrentSensor", "MultiSensor", "PotentialSensor", "PowerSensor",
+                 "VoltageSensor"),
     ".sources": ("ConstantCurrent", "ConstantVoltage", "CosineCurrent", "CosineVoltage",
                  "ExpSineCurrent", "ExpSineVoltage", "PulseCurrent", "PulseVoltage",
                  "RampCurrent", "RampVoltage", "SineCurrent", "SineVoltage", "StepCurrent",

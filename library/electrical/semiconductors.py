@@ -32,12 +32,13 @@ def exlin(x, Maxexp):
     return ac.no_event(ac.if_else(x > Maxexp, sp.exp(Maxexp) * (1 + x - Maxexp), sp.exp(x)))
 
 
-def exlin2(x, Minexp, Maxexp):
+def exlin2(x, Minexp, Maxexp, *, events=False):
     """exp(x), continued by its tangents below x = Minexp and above x = Maxexp (the
-    MSL's ``exlin2``)."""
-    return ac.no_event(ac.if_else(x < Minexp, sp.exp(Minexp) * (1 + x - Minexp),
-                                  ac.if_else(x > Maxexp, sp.exp(Maxexp) * (1 + x - Maxexp),
-                                             sp.exp(x))))
+    MSL's ``exlin2``); ``events=True`` lets its relations generate events (for an
+    argument that depends on parameters and temperatures only)."""
+    law = ac.if_else(x < Minexp, sp.exp(Minexp) * (1 + x - Minexp),
+                     ac.if_else(x > Maxexp, sp.exp(Maxexp) * (1 + x - Maxexp), sp.exp(x)))
+    return law if events else ac.no_event(law)
 
 
 def powlin(x, y):

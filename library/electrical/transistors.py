@@ -84,7 +84,8 @@ class _BipolarTransistor(ConditionalHeatPort):
             laws = [ac.Eq(self.is_t, self.Is), ac.Eq(self.br_t, self.Br),
                     ac.Eq(self.bf_t, self.Bf), ac.Eq(self.vt_t, self.Vt)]
         return [ac.Eq(self.hexp, (ratio - 1) * self.EG / self.vt_t),
-                ac.Eq(self.htempexp, exlin2(self.hexp, self.EMin, self.EMax)),
+                # of the temperature alone: its relations may be events
+                ac.Eq(self.htempexp, exlin2(self.hexp, self.EMin, self.EMax, events=True)),
                 *laws,
                 ac.Eq(self.vcs, self.C.v - self.vS),
                 ac.Eq(self.iS, -self.Ccs * ac.der(self.vcs)),

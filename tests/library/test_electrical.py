@@ -199,9 +199,9 @@ def test_signal_voltage_rc_and_sensors():
     vc = 10.0 * (np.sin(w * t) - w * tau * np.cos(w * t) + w * tau * np.exp(-t / tau)) \
         / (1 + (w * tau)**2)
     assert np.max(np.abs(res["C.v"] - vc)) < 1e-7 * 10.0
-    assert np.allclose(res["voltmeter.v_out.signal"], res["C.v"], atol=1e-12)
+    assert np.allclose(res["voltmeter.v.signal"], res["C.v"], atol=1e-12)
     assert np.allclose(res["probe.phi.signal"], res["C.v"], atol=1e-12)
-    i = res["ammeter.i_out.signal"]
+    i = res["ammeter.i.signal"]
     assert np.allclose(i, res["R.i"], atol=1e-12)
     stored = 1e-3 * res["C.v"] * res["der(C.v)"]
     power = res["meter.power.signal"]
