@@ -7,13 +7,15 @@ import pytest
 
 from .harness import (BOUND, Reference, compare, event_window, examples, load_reference,
                       run_example)
-from .subset import QUICK
+from .subset import KNOWN_FAILURES, QUICK
 
 EXAMPLES = examples()
 
 
 def _param(name):
     marks = () if name in QUICK else (pytest.mark.slow,)
+    if name in KNOWN_FAILURES:
+        marks += (pytest.mark.xfail(strict=True, reason=KNOWN_FAILURES[name]),)
     return pytest.param(name, id=name.replace("Modelica.", ""), marks=marks)
 
 
