@@ -42,13 +42,17 @@ class Resistor(OnePort):
                      description="fixed device temperature (no heat port)")
 
     def loss_power(self):
-        """P_loss = v i (to the environment)."""
-        return self.v * self.i
+        """P_loss = R_actual i^2 (to the environment; the audit checks it against v i)."""
+        return self._actual() * self.i**2
+
+    def _actual(self):
+        """R_actual = R (1 + alpha (T - T_ref)), R where alpha is a structural zero."""
+        if self.parameter_value("alpha") == 0:
+            return self.R
+        return self.R * (1 + self.alpha * (self.T - self.T_ref))
 
     def equations(self):
-        if self.parameter_value("alpha") == 0:      # a structural zero
-            return [ac.Eq(self.v, self.R * self.i)]
-        return [ac.Eq(self.v, self.R * (1 + self.alpha * (self.T - self.T_ref)) * self.i)]
+        return [ac.Eq(self.v, self._actual() * self.i)]
 
 
 class Conductor(OnePort):
@@ -69,13 +73,17 @@ class Conductor(OnePort):
                      description="fixed device temperature (no heat port)")
 
     def loss_power(self):
-        """P_loss = v i (the audit checks it against v i)."""
-        return self.v * self.i
+        """P_loss = G_actual v^2 (the audit checks it against v i)."""
+        return self._actual() * self.v**2
+
+    def _actual(self):
+        """G_actual = G / (1 + alpha (T - T_ref)), G where alpha is a structural zero."""
+        if self.parameter_value("alpha") == 0:
+            return self.G
+        return self.G / (1 + self.alpha * (self.T - self.T_ref))
 
     def equations(self):
-        if self.parameter_value("alpha") == 0:      # a structural zero
-            return [ac.Eq(self.i, self.G * self.v)]
-        return [ac.Eq(self.i, self.G / (1 + self.alpha * (self.T - self.T_ref)) * self.v)]
+        return [ac.Eq(self.i, self._actual() * self.v)]
 
 
 class Capacitor(OnePort):
