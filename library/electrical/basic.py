@@ -24,13 +24,13 @@ class Ground(ac.Component):
 
 class Resistor(OnePort):
     """Ideal linear resistor (Modelica.Electrical.Analog.Basic.Resistor, MSL v4.0.0),
-    Ohm's law with a linear temperature coefficient, at the device temperature T:
+    Ohm's law with a linear temperature coefficient:
 
-        v = R (1 + alpha (T - T_ref)) i
+        R_actual = R (1 + alpha (T_heatPort - T_ref)),   v = R_actual i
 
-    (The MSL's R_actual, LossPower and T_heatPort come with its heat port, useHeatPort,
-    which is not here yet; the device is at the fixed temperature T, T_ref by default,
-    and its loss is declared by ``loss_power``.)
+    Without the MSL's heat port (useHeatPort, not here yet) the device is at its
+    reference temperature (the MSL's T = T_ref), so R_actual = R; T_ref and alpha act
+    once the port is there.  The loss is declared by ``loss_power``.
     """
 
     R = ac.Parameter(1.0, unit="Ohm", description="resistance at temperature T_ref")
@@ -38,30 +38,23 @@ class Resistor(OnePort):
     alpha = ac.Parameter(0.0, unit="1/K",
                          description="temperature coefficient of resistance (R_actual = "
                                      "R (1 + alpha (T_heatPort - T_ref)))")
-    T = ac.Parameter(lambda c: c.T_ref, unit="K", min=0,
-                     description="fixed device temperature (no heat port)")
 
     def loss_power(self):
-        """P_loss = R_actual i^2 (to the environment; the audit checks it against v i)."""
-        return self._actual() * self.i**2
-
-    def _actual(self):
-        """R_actual = R (1 + alpha (T - T_ref)), R where alpha is a structural zero."""
-        if self.parameter_value("alpha") == 0:
-            return self.R
-        return self.R * (1 + self.alpha * (self.T - self.T_ref))
+        """P_loss = R i^2 (to the environment; the audit checks it against v i)."""
+        return self.R * self.i**2
 
     def equations(self):
-        return [ac.Eq(self.v, self._actual() * self.i)]
+        return [ac.Eq(self.v, self.R * self.i)]
 
 
 class Conductor(OnePort):
     """Ideal linear conductor (Modelica.Electrical.Analog.Basic.Conductor, MSL v4.0.0)
-    with a linear temperature coefficient, at the device temperature T:
+    with a linear temperature coefficient:
 
-        i = G / (1 + alpha (T - T_ref)) v
+        G_actual = G / (1 + alpha (T_heatPort - T_ref)),   i = G_actual v
 
-    (as :class:`Resistor`: the MSL's G_actual and LossPower come with its heat port.)
+    (at its reference temperature without the MSL's heat port, as :class:`Resistor`:
+    G_actual = G).
     """
 
     G = ac.Parameter(1.0, unit="S", description="conductance at temperature T_ref")
@@ -69,21 +62,13 @@ class Conductor(OnePort):
     alpha = ac.Parameter(0.0, unit="1/K",
                          description="temperature coefficient of resistance (G_actual = "
                                      "G/(1 + alpha (T_heatPort - T_ref)))")
-    T = ac.Parameter(lambda c: c.T_ref, unit="K", min=0,
-                     description="fixed device temperature (no heat port)")
 
     def loss_power(self):
-        """P_loss = G_actual v^2 (the audit checks it against v i)."""
-        return self._actual() * self.v**2
-
-    def _actual(self):
-        """G_actual = G / (1 + alpha (T - T_ref)), G where alpha is a structural zero."""
-        if self.parameter_value("alpha") == 0:
-            return self.G
-        return self.G / (1 + self.alpha * (self.T - self.T_ref))
+        """P_loss = G v^2 (the audit checks it against v i)."""
+        return self.G * self.v**2
 
     def equations(self):
-        return [ac.Eq(self.i, self._actual() * self.v)]
+        return [ac.Eq(self.i, self.G * self.v)]
 
 
 class Capacitor(OnePort):
@@ -244,22 +229,19 @@ class Potentiometer(ac.Component):
     """Adjustable resistor with a sliding contact (MSL Analog.Basic.Potentiometer), the
     contact at r between pin_n (r = 0) and pin_p (r = 1):
 
-        Rp = R (1 + alpha (T - T_ref)) (1 - r_c),   Rn = R (1 + alpha (T - T_ref)) r_c
-        r_c = min(1, max(0, r))
+        Rp = R (1 - r_c),   Rn = R r_c,   r_c = min(1, max(0, r))
         pin_p.v - contact.v = Rp pin_p.i,   pin_n.v - contact.v = Rn pin_n.i
         pin_p.i + pin_n.i + contact.i = 0
 
     r is the parameter rConstant, or with ``Potentiometer(useRinput=True)`` the signal
-    input ``r`` (a structural choice, as the MSL's useRinput).  T is the fixed device
-    temperature (the MSL's heat port is not here yet).
+    input ``r`` (a structural choice, as the MSL's useRinput).  Without the MSL's heat
+    port the device is at T_ref, and R is not changed by alpha (as :class:`Resistor`).
     """
 
     R = ac.Parameter(1.0, unit="Ohm", description="resistance at temperature T_ref")
     T_ref = ac.Parameter(293.15, unit="K", min=0, description="reference temperature")
     alpha = ac.Parameter(0.0, unit="1/K",
                          description="temperature coefficient of resistance")
-    T = ac.Parameter(lambda c: c.T_ref, unit="K", min=0,
-                     description="fixed device temperature (no heat port)")
     rConstant = ac.Parameter(0.5, min=0, max=1,
                              description="contact position without the input r")
     pin_p = Pin()
@@ -284,12 +266,9 @@ class Potentiometer(ac.Component):
     def equations(self):
         # the parameter is checked against [0, 1]; only the signal needs the clipping
         r_c = ac.min(1, ac.max(0, self.r.signal)) if self.useRinput else self.rConstant
-        R = self.R
-        if self.parameter_value("alpha") != 0:      # else a structural zero
-            R = R * (1 + self.alpha * (self.T - self.T_ref))
         return [ac.Eq(0, self.pin_p.i + self.pin_n.i + self.contact.i),
-                ac.Eq(self.Rp, R * (1 - r_c)),
-                ac.Eq(self.Rn, R * r_c),
+                ac.Eq(self.Rp, self.R * (1 - r_c)),
+                ac.Eq(self.Rn, self.R * r_c),
                 ac.Eq(self.pin_p.v - self.contact.v, self.Rp * self.pin_p.i),
                 ac.Eq(self.pin_n.v - self.contact.v, self.Rn * self.pin_n.i)]
 

@@ -52,16 +52,17 @@ def test_saturating_inductor_refuses_an_order_other_than_lzer_lnom_linf():
 
 
 class HotResistors(ac.Component):
-    """10 V across a Resistor, a Conductor and a Potentiometer, each at T = 350 K with
-    alpha = 4e-3 1/K about T_ref = 300 K; a VariableResistor and a VariableConductor
-    likewise with R = 5 and G = 0.2 from signals."""
+    """10 V across a VariableResistor (R = 5) and a VariableConductor (G = 0.2), at
+    T = 350 K with alpha = 4e-3 1/K about T_ref = 300 K, and across a Resistor, a
+    Conductor and a Potentiometer with the same alpha and T_ref (without a heat port:
+    at T_ref)."""
 
     src = el.ConstantVoltage(V=10.0)
-    R = el.Resistor(R=5.0, T_ref=300.0, alpha=4e-3, T=350.0)
-    G = el.Conductor(G=0.2, T_ref=300.0, alpha=4e-3, T=350.0)
+    R = el.Resistor(R=5.0, T_ref=300.0, alpha=4e-3)
+    G = el.Conductor(G=0.2, T_ref=300.0, alpha=4e-3)
     VR = el.VariableResistor(T_ref=300.0, alpha=4e-3, T=350.0)
     VG = el.VariableConductor(T_ref=300.0, alpha=4e-3, T=350.0)
-    pot = el.Potentiometer(R=5.0, T_ref=300.0, alpha=4e-3, T=350.0, rConstant=0.25)
+    pot = el.Potentiometer(R=5.0, T_ref=300.0, alpha=4e-3, rConstant=0.25)
     r = Ramp(offset=5.0, height=0.0)
     g = Ramp(offset=0.2, height=0.0)
     gnd = el.Ground()
@@ -77,27 +78,16 @@ class HotResistors(ac.Component):
 def test_temperature_coefficient_of_the_resistive_elements():
     res = ac.simulate(HotResistors(), t_end=1.0, rtol=1e-10, t_eval=[0.5])
     factor = 1 + 4e-3 * 50.0
-    assert res["R.i"][0] == pytest.approx(10.0 / (5.0 * factor), rel=1e-12)
-    assert res["G.i"][0] == pytest.approx(0.2 / factor * 10.0, rel=1e-12)
     assert res["VR.i"][0] == pytest.approx(10.0 / (5.0 * factor), rel=1e-12)
     assert res["VR.R_actual"][0] == pytest.approx(5.0 * factor, rel=1e-12)
     assert res["VG.i"][0] == pytest.approx(0.2 / factor * 10.0, rel=1e-12)
     assert res["VR.LossPower"][0] == pytest.approx(100.0 / (5.0 * factor), rel=1e-12)
-    assert res["pot.pin_p.i"][0] == pytest.approx(10.0 / (5.0 * factor), rel=1e-12)
-    # the default device temperature is T_ref: no change of resistance
-    cold = ac.simulate(ColdResistor(), t_end=1.0, rtol=1e-10, t_eval=[0.5])
-    assert cold["R.i"][0] == pytest.approx(2.0, rel=1e-12)
-
-
-class ColdResistor(ac.Component):
-    """A Resistor with alpha but no temperature of its own: it is at T_ref."""
-
-    src = el.ConstantVoltage(V=10.0)
-    R = el.Resistor(R=5.0, T_ref=320.0, alpha=4e-3)
-    gnd = el.Ground()
-
-    def equations(self):
-        return [ac.connect(self.src.p, self.R.p), ac.connect(self.src.n, self.R.n, self.gnd.p)]
+    # at their reference temperature: no change of resistance
+    assert res["R.i"][0] == pytest.approx(2.0, rel=1e-12)
+    assert res["G.i"][0] == pytest.approx(2.0, rel=1e-12)
+    assert res["pot.pin_p.i"][0] == pytest.approx(2.0, rel=1e-12)
+    with pytest.raises(ac.NotInModel):
+        el.Resistor(T=350.0)           # no temperature of its own without the heat port
 
 
 def test_resistor_accepts_a_negative_resistance_as_the_msl_does():
