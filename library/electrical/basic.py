@@ -33,7 +33,7 @@ class Resistor(OnePort):
     once the port is there.  The loss is declared by ``loss_power``.
     """
 
-    R = ac.Parameter(1.0, unit="Ohm", description="resistance at temperature T_ref")
+    R = ac.Parameter(1.0, unit="Ohm", description="resistance")
     T_ref = ac.Parameter(300.15, unit="K", min=0, description="reference temperature")
     alpha = ac.Parameter(0.0, unit="1/K",
                          description="temperature coefficient of resistance (R_actual = "

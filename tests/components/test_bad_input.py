@@ -117,10 +117,10 @@ def test_parameter_above_its_maximum():
 
 def test_bound_parameter_outside_its_bounds_is_evaluated_and_named():
     class Holder(ac.Component):
-        Rp = ac.Parameter(-2.0)
-        R1 = Resistor(R=ac.ref("Rp"))
+        Cp = ac.Parameter(-2.0)
+        C1 = Capacitor(C=ac.ref("Cp"))
 
-    with _raises(InvalidValue, "'R1' (Resistor): parameter R = Rp (= -2.0) is below its "
+    with _raises(InvalidValue, "'C1' (Capacitor): parameter C = Cp (= -2.0) is below its "
                                "minimum 0"):
         flatten(Holder())
 
