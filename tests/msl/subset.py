@@ -16,4 +16,7 @@ QUICK = {
     "Modelica.Thermal.FluidHeatFlow.Examples.OneMass",
     "Modelica.Electrical.Machines.Examples.DCMachines.DCPM_Start",
     "Modelica.Electrical.Machines.Examples.DCMachines.DCEE_Start",
+    "Modelica.Electrical.Analog.Examples.CauerLowPassOPV",
+    "Modelica.Electrical.Analog.Examples.OpAmps.InvertingAmplifier",
+    "Modelica.Electrical.Analog.Examples.NandGate",
 }
