@@ -111,7 +111,7 @@ class CurrentControlledDCMotor(ac.Component):
 
     def equations(self):
         # the source's current flows from p to n inside it, i.e. into motor.n: reverse it
-        return [ac.connect(self.i_d, self.drive.i_ref),
+        return [ac.connect(self.i_d, self.drive.i),
                 ac.connect(self.drive.n, self.motor.p),
                 ac.connect(self.drive.p, self.motor.n, self.ground.p),
                 ac.connect(self.motor.flange, self.flange),

@@ -13,4 +13,12 @@ QUICK = {
     "Modelica.Mechanics.MultiBody.Examples.Elementary.SpringWithMass",
     "Modelica.Blocks.Examples.Filter",
     "Modelica.Blocks.Examples.PID_Controller",
+    "Modelica.Thermal.HeatTransfer.Examples.TwoMasses",
+    "Modelica.Thermal.FluidHeatFlow.Examples.SimpleCooling",
+    "Modelica.Thermal.FluidHeatFlow.Examples.OneMass",
+    "Modelica.Electrical.Machines.Examples.DCMachines.DCPM_Start",
+    "Modelica.Electrical.Machines.Examples.DCMachines.DCEE_Start",
+    "Modelica.Electrical.Analog.Examples.CauerLowPassOPV",
+    "Modelica.Electrical.Analog.Examples.OpAmps.InvertingAmplifier",
+    "Modelica.Electrical.Analog.Examples.NandGate",
 }
