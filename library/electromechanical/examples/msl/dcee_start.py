@@ -43,7 +43,7 @@ class DCEE_Start(ac.Component):
     loadTorqueStep = TorqueStep(startTime=tStep, stepTorque=-TLoad, offsetTorque=0.0)
 
     def equations(self):
-        return [ac.connect(self.ramp.y, self.signalVoltage.v_ref),
+        return [ac.connect(self.ramp.y, self.signalVoltage.v),
                 ac.connect(self.signalVoltage.p, self.dcee.pin_ap),
                 ac.connect(self.signalVoltage.n, self.ground.p),
                 ac.connect(self.dcee.pin_an, self.ground.p),

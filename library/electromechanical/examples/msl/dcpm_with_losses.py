@@ -63,7 +63,7 @@ class DCPM_withLosses(ac.Component):
                                                 w_nominal=wLoad2)
 
     def equations(self):
-        return [ac.connect(self.ramp.y, self.signalVoltage.v_ref),
+        return [ac.connect(self.ramp.y, self.signalVoltage.v),
                 ac.connect(self.signalVoltage.n, self.ground.p),
                 ac.connect(self.loadInertia1.flange_b, self.loadTorque1.flange),
                 ac.connect(self.dcpm1.flange, self.loadInertia1.flange_a),
