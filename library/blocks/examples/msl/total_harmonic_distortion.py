@@ -60,5 +60,5 @@ class TotalHarmonicDistortionExample(ac.Component):
                 ac.connect(self.sineVoltage3.n, self.sineVoltage1.p),
                 ac.connect(self.sineVoltage1.n, self.ground.p),
                 ac.connect(self.ground.p, self.voltageSensor.n),
-                ac.connect(self.thd1.u, self.voltageSensor.v_out),
-                ac.connect(self.voltageSensor.v_out, self.thdRMS.u)]
+                ac.connect(self.thd1.u, self.voltageSensor.v),
+                ac.connect(self.voltageSensor.v, self.thdRMS.u)]
