@@ -133,6 +133,8 @@ class Result:
         self.descriptions = dict(meta.get("descriptions", {}))
         self._cols = {}          # the outputs read so far, by their column of expand
         self._kept = None        # the outputs a run kept (simulate(..., outputs=)), or all
+        # "Boolean" or "Integer" by name; every other variable is Real
+        self.value_types = dict(meta.get("value_types", {}))
 
     @classmethod
     def from_table(cls, t, columns: dict, **fields) -> "Result":
@@ -143,6 +145,7 @@ class Result:
         # a dict of arrays, or a mapping that reads each when first asked for (a file)
         res._table = {n: np.asarray(v, dtype=float) for n, v in columns.items()} \
             if isinstance(columns, dict) else columns
+        res.value_types = dict(fields.pop("value_types", {}))
         for key, value in fields.items():
             setattr(res, key, value)
         return res
@@ -204,7 +207,7 @@ class Result:
         if self._table is not None:
             if name not in self._table:
                 raise KeyError(self._missing(name, self._table))
-            return self._table[name].copy()
+            return self._typed(name, self._table[name].copy())
         if self._kept is not None and name not in self._kept:
             raise KeyError(self._missing(name, self._kept)
                            + "; the run kept only the outputs asked for (outputs=)")
@@ -213,8 +216,9 @@ class Result:
         except KeyError:
             raise KeyError(self._missing(name, self.compiled.outputs)) from None
         if sign is None:
-            return np.full(len(self.t), k(self.parameters) if callable(k) else k)
-        return sign * self._columns([k])[0]
+            return self._typed(name, np.full(len(self.t), k(self.parameters)
+                                             if callable(k) else k))
+        return self._typed(name, sign * self._columns([k])[0])
 
     def _columns(self, cols) -> list:
         """The outputs ``cols`` (columns of the model's ``expand``) at every point:
@@ -238,6 +242,7 @@ class Result:
             if source_at_hand(c.code) is None:
                 return False
         known = len(self._discrete_index) == len(self.t) and bool(self._discrete)
+        # the delayed values (and varying inputs') recorded at the points, where needed
         delays_kept = getattr(c, "delays", None) is None or (
             self._delayed is not None and len(self._delayed) == len(self.t))
         return c.code.expand is None or (known and delays_kept) or (
@@ -248,6 +253,15 @@ class Result:
         from .runtime.outputs import evaluate
         return evaluate(self.compiled, cols, self.t, self._z, self.parameters,
                         self._discrete, self._discrete_index, self._delayed)
+
+    def _typed(self, name, values) -> np.ndarray:
+        """A Boolean variable's values as a bool array, an Integer's as int64."""
+        kind = self.value_types.get(name)
+        if kind == "Boolean":
+            return np.asarray(values, dtype=float) > 0.5
+        if kind == "Integer":
+            return np.rint(np.asarray(values, dtype=float)).astype(np.int64)
+        return values
 
     @staticmethod
     def _missing(name, known) -> str:
@@ -289,8 +303,10 @@ class Result:
         return np.flatnonzero(np.append(self.t[1:] != self.t[:-1], True))
 
     def to_pandas(self, names=None, unique: bool = False):
-        """A ``pandas.DataFrame``: index ``time``, one column per variable (default: all);
-        ``df.attrs["units"]`` and ``df.attrs["descriptions"]`` by column name.  An event
+        """A ``pandas.DataFrame``: index ``time``, one column per variable (default: all;
+        a Boolean a bool column, an Integer an int64 one); ``df.attrs["units"]``,
+        ``df.attrs["descriptions"]`` and ``df.attrs["types"]`` (Real, Boolean, Integer)
+        by column name.  An event
         time appears twice (before and after it) unless ``unique=True`` (after only)."""
         try:
             import pandas as pd
@@ -303,11 +319,14 @@ class Result:
                           index=pd.Index(self.t[rows], name="time"), columns=names)
         df.attrs["units"] = {n: self.units.get(n, "") for n in names}
         df.attrs["descriptions"] = {n: self.descriptions.get(n, "") for n in names}
+        # Booleans and Integers are bool and int64 columns; their Modelica types
+        df.attrs["types"] = {n: self.value_types.get(n, "Real") for n in names}
         return df
 
     def to_xarray(self, names=None, unique: bool = False):
         """An ``xarray.Dataset`` with dimension ``time``, one variable per name (default:
-        all) with attributes ``units`` and ``description``; the run's parameters, success
+        all) with attributes ``units``, ``description`` and ``type`` (Real, Boolean or
+        Integer: bool and int64 data); the run's parameters, success
         and message are dataset attributes.  ``unique=True``: each event time once (the
         point after it), so that ``ds.sel(time=..., method="nearest")`` works."""
         try:
@@ -318,7 +337,8 @@ class Result:
         names, rows = self._names(names), self._rows(unique)
         self._prefetch(names)
         data = {n: ("time", self[n][rows], {"units": self.units.get(n, ""),
-                                      "description": self.descriptions.get(n, "")})
+                                      "description": self.descriptions.get(n, ""),
+                                      "type": self.value_types.get(n, "Real")})
                 for n in names}
         attrs = {"success": int(bool(self.success)), "message": str(self.message)}
         attrs.update({f"parameter {k}": v for k, v in self.parameter_values.items()})
@@ -397,6 +417,11 @@ def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
     compiled.p[:] = p
     known = len(index) == len(t) and discrete
     lines = getattr(compiled, "delays", None)
+    # the recorded values: the delayed ones, then those of inputs that varied
+    n_delayed = lines.n if lines is not None else 0
+    inputs = getattr(compiled, "inputs", None)
+    varied = inputs is not None and delayed is not None and len(delayed) == len(t) \
+        and np.ndim(delayed) == 2 and delayed.shape[1] > n_delayed
     if lines is not None and (delayed is None or len(delayed) != len(t)):
         raise ValueError("the values of this result's delay() expressions were not "
                          "recorded (a result of a model with delays needs the values the "
@@ -405,7 +430,9 @@ def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
         rows = []
         for k, (tk, zk) in enumerate(zip(t, z)):
             if lines is not None:
-                lines.held = delayed[k]
+                lines.held = delayed[k][:n_delayed]
+            if varied:
+                compiled.p[inputs.slots] = delayed[k][n_delayed:]
             if known:
                 compiled.m[:] = discrete[index[k]]
             else:                      # a result without its modes: take them from the point

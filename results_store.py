@@ -18,6 +18,7 @@ read as one row, in ``BLOCK``-point chunks, without touching the others.
 
 Datasets: ``time`` (points), ``series`` (rows x points), ``names``, ``row`` (each name's
 row, -1 for a constant), ``sign`` (+-1), ``constant``, ``units``, ``descriptions``,
+``types`` (Real, Boolean or Integer: read as float, bool or int64 arrays),
 ``parameter_names``, ``parameter_values``; attributes as in version 1 (states, events,
 state switches, parameter units and descriptions, stats, success, message).  Version 1
 (``values``: points x names) is still read by :func:`acausal.load_result`.
@@ -86,6 +87,9 @@ class ResultWriter:
                           data=np.array([units.get(n, "") for n in names], dtype=object))
         fh.create_dataset("descriptions", dtype=text, data=np.array(
             [descriptions.get(n, "") for n in names], dtype=object))
+        kinds = meta.get("value_types", {})        # Real, Boolean, Integer (read typed)
+        fh.create_dataset("types", dtype=text, data=np.array(
+            [kinds.get(n, "Real") for n in names], dtype=object))
         self.n = 0
         self._pending = []          # (t, z, m, delayed) blocks not written yet
         self._held = 0
@@ -390,6 +394,7 @@ def read(path):
                         fh["constant"][()], len(t))
         units = dict(zip(names, _strings(fh["units"])))
         descriptions = dict(zip(names, _strings(fh["descriptions"])))
+        kinds = dict(zip(names, _strings(fh["types"])))
         pnames = _strings(fh["parameter_names"])
         units.update(json.loads(fh.attrs["parameter_units"]))
         descriptions.update(json.loads(fh.attrs["parameter_descriptions"]))
@@ -402,4 +407,5 @@ def read(path):
             success=bool(fh.attrs["success"]), message=str(fh.attrs["message"]),
             parameters=fh["parameter_values"][()], parameter_names=pnames, units=units,
             descriptions=descriptions, _states=json.loads(fh.attrs["states"]),
+            value_types={n: k for n, k in kinds.items() if k != "Real"},
             state_switches=[event(d) for d in json.loads(fh.attrs["state_switches"])])

@@ -144,7 +144,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              max_order: int = 5, raise_on_failure: bool = False,
              backend: str = "auto", progress: bool | None = None,
              step_loop: str = "auto", check_units: str = "warn",
-             nonfinite: str = "stop", outputs=None, store=None) -> Result:
+             nonfinite: str = "stop", outputs=None, store=None,
+             inputs: dict | None = None) -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -171,6 +172,11 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     (``"run.h5"``, HDF5) the run writes as it goes, a block of points at a time, instead
     of holding its points: the result returned reads its variables from the file when
     asked (:mod:`acausal.results_store`; with ``outputs``, only those are written).
+    ``inputs``: how the model's top-level inputs (input ports of the model itself that
+    nothing in it drives, ``compiled.input_names``) are driven, by name: a number, a
+    function of time, a table ``(times, values)`` or a ``CombiTimeTable`` (its times
+    are time events); every input must be given (``ac.MissingInput`` names those that
+    are not), see :mod:`acausal.runtime.inputs`.
     """
     check_arguments(t_end, t_start, rtol, atol, n_points)
     t_start, t_end, rtol = _time("t_start", t_start), _time("t_end", t_end), float(rtol)
@@ -196,6 +202,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     try:
         if parameters:
             compiled.set_parameters(parameters)
+        compiled.drive_inputs(inputs)
         from .results_store import Keeping
         keeping = Keeping.make(compiled, outputs, store)
         return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
@@ -204,6 +211,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         if keeping is not None:
             keeping.abandon()          # a run that raised: the file is closed
         compiled.p[:] = saved
+        compiled.release_inputs()
         if compiled.backend in ("c", "numpy"):
             # for the next runs (either backend's model runs in the compiled loop): this
             # one has not shared the processors with the build
@@ -227,7 +235,7 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         events, _ = _event_records(compiled, out, marks)
         return keeping.result(compiled, out.t, np.zeros((len(out.t), 0)), out.stats, events,
                               True, "no states: run from event to event", out.point_states,
-                              list(range(len(out.t))))
+                              list(range(len(out.t))), delayed=_input_values(compiled, out.t))
     if compiled.n == 0:
         # nothing to integrate: every variable is an explicit function of time, and each
         # point is evaluated with the relations as they hold there
@@ -236,6 +244,9 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         if compiled.delays is not None:
             from .runtime.delays import explicit_values
             delayed = explicit_values(compiled, compiled.delays, t)
+        if compiled.inputs_vary:
+            varied = _input_values(compiled, t)
+            delayed = np.column_stack([delayed, varied]) if len(delayed) else varied
         success, message = True, "no states: evaluated explicitly"
         bad = _first_nonfinite(compiled, t) if compiled.delays is None else None
         if bad is not None:       # a variable undefined there (runtime contract item 11)
@@ -243,6 +254,7 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
             message = f"a value is not finite at an output point: {what}"
             if nonfinite == "stop":
                 success, t = False, t[:k]
+                delayed = delayed[:k] if len(delayed) else delayed
             warnings.warn(f"simulate: {message}", RuntimeWarning, stacklevel=3)
         return keeping.result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], success,
                               message, delayed=delayed)
@@ -285,6 +297,13 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
                    "unknowns without an error bound are interpolated, not solved")
         warnings.warn(f"simulate: {message}", RuntimeWarning, stacklevel=3)
     return _result(compiled, out, out.success, message, marks, keeping)
+
+
+def _input_values(compiled, t):
+    """The varying inputs' values at the points t (recorded with a result), or ()."""
+    if not compiled.inputs_vary:
+        return ()
+    return np.array([compiled.inputs.values_at(tk) for tk in t]).reshape(len(t), -1)
 
 
 def _singular_start(compiled, t_start) -> str | None:

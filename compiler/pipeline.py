@@ -235,9 +235,10 @@ def _front(clock, report, flat, check_units) -> tuple:
     _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
     if helds:
-        report.notes.append("discrete variables, held between events and assigned in "
-                            "when-clauses: " + ", ".join(h.name for h in helds[:20])
-                            + (" ..." if len(helds) > 20 else ""))
+        from ..components.declarations import TYPE_NAMES
+        types = {v.name: TYPE_NAMES[getattr(v.attrs, "type", float)] for v in flat.variables}
+        report.discrete = [{"name": h.name, "type": types.get(h.name, "Real"),
+                            "set_by": h.clause} for h in helds]
     if flat.structural_zeros:
         report.notes.append("parameters equal to 0 were evaluated as structural zeros (set a "
                             "non-zero value to keep them tunable): "
@@ -351,7 +352,10 @@ def _symbolic_system(reduced, discretes, helds=(), delays=()):
     system = SymbolicSystem.from_flat(reduced)
     system.parameters |= {d.symbol for d in discretes}   # constant between events
     system.parameters |= {s for h in helds for s in (h.symbol, h.pre)}
+    from ..components.logic import INITIAL
+    system.parameters.add(INITIAL)                   # initial(): constant while it runs
     system.delays = {d.symbol: d for d in delays}        # inputs that vary: never constant
+    system.delays.update({i.symbol: i for i in getattr(reduced, "inputs", ())})
     return system, system.structure()
 
 

@@ -186,14 +186,28 @@ def evaluate(compiled, cols, t, z, parameters, discrete, index, delayed=None) ->
     table = np.array(discrete, dtype=float).reshape(len(discrete), -1)
     index = np.asarray(index, dtype=np.int64)
     params = [float(x) for x in parameters]
-    n_named = len(compiled.param_names)
+    # the values recorded at each point: the delayed ones (read after the tunable
+    # parameters), then the top-level inputs' (read from their slots), when they varied
+    slots = []
+    if delayed is not None and np.ndim(delayed) == 2 and len(delayed) == n:
+        lines = getattr(compiled, "delays", None)
+        n_delayed = lines.n if lines is not None else 0
+        first = len(compiled.param_names)
+        slots = list(range(first, first + n_delayed))
+        inputs = getattr(compiled, "inputs", None)
+        if inputs is not None and np.shape(delayed)[1] > n_delayed:
+            slots += [int(k) for k in inputs.slots]
+        slots = slots[:np.shape(delayed)[1]]
     step = max(1024, _CHUNK // max(1, len(cols)))
     parts = []
     for lo in range(0, max(n, 1), step):
         hi = min(n, lo + step)
         p = params
-        if delayed is not None and getattr(compiled, "delays", None) is not None:
-            p = params[:n_named] + list(np.asarray(delayed[lo:hi], dtype=float).T)
+        if slots:
+            p = list(params)
+            recorded = np.asarray(delayed[lo:hi], dtype=float)
+            for j, k in enumerate(slots):
+                p[k] = recorded[:, j]
         parts.append(vec.columns(cols, t[lo:hi], np.asarray(z[lo:hi]).T, p,
                                  _Modes(table, index[lo:hi])))
     return [np.concatenate([part[j] for part in parts]) if len(parts) > 1

@@ -186,6 +186,8 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         why = "stability limit detection runs in the Python loop"
     elif getattr(problem, "delays", None) is not None:
         why = "delay() keeps the history of every accepted step in Python"
+    elif getattr(problem, "inputs_vary", False):
+        why = "its inputs are functions of time, evaluated in Python before every call"
     elif not model and getattr(problem, "after_step", None) is not None:
         why = "its after_step hook runs in Python after every step"
     if step_loop == "auto":

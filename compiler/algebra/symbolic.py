@@ -90,7 +90,9 @@ class SymbolicSystem:
     var_info: dict = field(default_factory=dict)  # base symbol -> FlatVariable
     derivatives: dict = field(default_factory=dict)  # symbol -> der symbol
     index: dict = field(default_factory=dict)     # symbol -> index
-    delays: dict = field(default_factory=dict)    # delayed-value symbol -> DelayValue
+    # delayed-value symbol -> DelayValue, input symbol -> InputValue: values that vary,
+    # read from p, never differentiated
+    delays: dict = field(default_factory=dict)
 
     @classmethod
     def from_flat(cls, flat) -> "SymbolicSystem":
@@ -194,6 +196,8 @@ class SymbolicSystem:
             if found:
                 from ...components.component import ModelError
                 d = found[0]
+                if hasattr(d, "not_differentiable"):     # a top-level input
+                    raise ModelError(d.not_differentiable())
                 raise ModelError(
                     f"{d.text} in {d.where} appears in an equation that index reduction "
                     "must differentiate (a constraint on a state, e.g. a delayed position "

@@ -376,7 +376,8 @@ def _when_after_aliases(w, subs, find, constants):
                              "is fixed by an equation (a constant), it cannot be re-initialized")
         actions.append(Reinit(root, _signed(sign, act.value.xreplace(subs))))
     out = When(w.condition.xreplace(subs), *actions)
-    out.origin, out.origin_class = w.origin, w.origin_class
+    out.origin, out.origin_class, out.equation = w.origin, w.origin_class, w.equation
+    out.pulse = w.pulse
     return out
 
 

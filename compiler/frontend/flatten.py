@@ -26,6 +26,7 @@ from ...components.component import (Component, Connection, InvalidConnection,
                                      InvalidEquation, InvalidValue, ModelError, NotInModel,
                                      Port, compiling, in_context)
 from ...components.declarations import Parameter, VariableAttributes, bound_violation
+from ...components.logic import INITIAL
 from ...components.symbols import Equation, When, der, text, time
 from .fastarith import symbol_arithmetic
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
@@ -68,6 +69,7 @@ class FlatParameter(_Located):
     component_class: str = ""
     min: float | None = None
     max: float | None = None
+    type: object = float      # float, bool or int (Real, Boolean, Integer)
 
     def describe(self) -> str:
         """``'R1' (Resistor): parameter R``, as the component's own errors say it."""
@@ -89,6 +91,9 @@ class FlatEquation(_Located):
     # it is still the residual (``plain is residual``) it holds no function of another
     # kind, and the passes that look for floor() or delay() need not walk it
     plain: object = field(default=None, repr=False, compare=False)
+    # the variable alone on the left of ``ac.Eq`` as written (a Boolean or Integer
+    # variable's equation gives its value: compiler/sampled.py), else None
+    defines: object = field(default=None, repr=False, compare=False)
 
     @property
     def text(self) -> str:
@@ -115,6 +120,8 @@ class FlatModel:
     ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
     components: dict = field(default_factory=dict)    # path -> class name
     derived: dict = field(default_factory=dict)       # bound parameter -> (binding, value)
+    uses_initial: bool = False                        # an equation reads initial()
+    inputs: list = field(default_factory=list)        # top-level inputs (frontend/inputs)
 
     def variable(self, name: str) -> FlatVariable:
         for v in self.variables:
@@ -155,8 +162,13 @@ def flatten(model: Component) -> FlatModel:
                     raise InvalidEquation(f"{comp._describe()}.initial_equations() returned "
                                           f"{item!r}; expected ac.Eq(lhs, rhs)")
                 flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
+            for item in _steady_state_equations(comp):
+                flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
+    flat.uses_initial = bool(getattr(model, "_uses_initial", False))
     _check_connections(connections, model)
     flat.equations.extend(_connection_equations(connections, nodes))
+    from .inputs import find_inputs
+    flat.inputs = find_inputs(flat, model, connections)
     _check_symbols(flat, with_der)
     # substitution first: a structural zero removes the derivative it multiplies
     # (L*der(i) with L = 0), and no der(i) may be created for it (substituting
@@ -165,6 +177,19 @@ def flatten(model: Component) -> FlatModel:
     expand_derivatives(flat, with_der)
     _check_infinite_parameters(flat)
     return flat
+
+
+def _steady_state_equations(comp) -> list:
+    """``der(v) = 0`` at the start for each variable of ``comp`` declared or modified
+    ``steady=True`` (a steady state: ``Inertia(w={"steady": True})``)."""
+    out = []
+    for name, decl in comp.declarations().items():
+        if isinstance(decl, Parameter) or decl.shape is not None:
+            continue
+        if getattr(comp.variable_attributes(name), "steady", False):
+            out.append(Equation(der(getattr(comp, name)), 0,
+                                label=f"steady state of {name} at the start"))
+    return out
 
 
 def _walk(root: Component):
@@ -216,7 +241,8 @@ def _collect_declarations(comp: Component, flat: FlatModel) -> None:
                 raise ModelError(f"parameter '{sym.name}' of {comp._describe()} has no value")
             flat.parameters.append(FlatParameter(sym.name, sym, value, decl.unit,
                                                  decl.description, comp.path,
-                                                 type(comp).__name__, decl.min, decl.max))
+                                                 type(comp).__name__, decl.min, decl.max,
+                                                 decl.type))
         else:
             hint = comp.hint if isinstance(comp, Port) else ""
             flat.variables.append(FlatVariable(sym.name, sym, comp.variable_attributes(name),
@@ -236,6 +262,8 @@ def _flat_equation(eq: Equation, comp: Component, kind: str, with_der: set) -> F
         residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
         ders = has_der(residual)
     out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+    if type(eq.lhs) is sp.Symbol:
+        out.defines = eq.lhs
     if plain:
         out.plain = residual
     if ders:
@@ -347,7 +375,7 @@ def _check_symbols(flat: FlatModel, with_der: set) -> None:
     equations with der(), whose arguments are checked)."""
     var_syms = {v.symbol for v in flat.variables}
     par_syms = {p.symbol for p in flat.parameters}
-    allowed = var_syms | par_syms | {time}
+    allowed = var_syms | par_syms | {time, INITIAL}
     for p in flat.parameters:
         if isinstance(p.value, sp.Basic) and not p.value.is_number:
             _check_binding(p, p.value.free_symbols, var_syms, allowed)
@@ -409,8 +437,10 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     against its declared [min, max].
     """
     resolved = _resolve_bindings(flat)
+    # (a Boolean or Integer parameter stays tunable at 0: false, or a count of none)
     zeros = {p.symbol: sp.Integer(0) for p in flat.parameters
-             if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")}
+             if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")
+             and p.type is float}
     bound = {k: v.xreplace(zeros) for k, v in resolved.items()}
     bound.update(zeros)
     _check_bounds(flat, resolved)

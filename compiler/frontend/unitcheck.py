@@ -28,7 +28,8 @@ from fractions import Fraction
 
 import sympy as sp
 
-from ...components.symbols import Equation, der, no_event, pre
+from ...components.symbols import Equation, der, no_event
+from ...components.symbols import Pre as pre
 from ...components.units import (DIMENSIONLESS, MODES, UnitCheck, UnitError, UnitWarning,
                                  dimension_text, parse_unit)
 from ..gcpause import gc_paused
