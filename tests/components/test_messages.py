@@ -120,7 +120,7 @@ class LadderWithInput(ac.Component):
         self.C = [el.Capacitor(C=1e-3) for _ in range(n)]
 
     def equations(self):
-        eqs = [ac.connect(self.u, self.src.v_ref),
+        eqs = [ac.connect(self.u, self.src.v),
                ac.connect(self.src.n, self.gnd.p, *[c.n for c in self.C])]
         node = self.src.p
         for r, c in zip(self.R, self.C):
