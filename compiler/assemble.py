@@ -54,7 +54,7 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
         state_z, pairs, dummies = list(range(caus.n_states)), [], []
     else:
         state_z, pairs, dummies = [], reduction.pairs, reduction.dummies
-    init_rows, init_text, n_mandatory = _initial_rows(system, reduced, reduction, caus)
+    init_rows, init_text, n_mandatory = _initial_rows(system, reduced, reduction, caus, flat)
     when_rows, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
     delay_rows = [d.argument for d in delays]
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
@@ -417,7 +417,7 @@ def _parameter_functions(exprs: dict, psyms):
     return out
 
 
-def _initial_rows(system, reduced, reduction, caus):
+def _initial_rows(system, reduced, reduction, caus, flat=None):
     """Initial equations and fixed starts (mandatory), then a start-value row for every
     other state (optional: :func:`choose_initial_rows` keeps those that
     make the initial system structurally nonsingular)."""
@@ -436,7 +436,7 @@ def _initial_rows(system, reduced, reduction, caus):
         from ..words import listed
         from .index.balance import zero_causes
         places = [w.rsplit("[", 1)[-1].split(" (")[0] for w in text]
-        cause = zero_causes(reduced.structural_zeros, places)
+        cause = zero_causes(reduced.structural_zeros, places, flat)
         raise InitializationFailed(
             f"the initial problem is over-specified: {len(rows)} initial conditions for "
             f"{needed} states ({listed(system.symbols[v].name for v in reduction.states)}"

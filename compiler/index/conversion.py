@@ -299,14 +299,15 @@ def _derivative(system, x: sp.Symbol, k: int):
 def _check_nontrivial(system, total, terms, text) -> None:
     if any(q in system.index for q in total.free_symbols):
         return
+    from ...words import listed, shortened     # the whole lists stay in the error's names
     names = [name for _, name, _ in terms]
     if sp.simplify(total) == 0:
         raise StructurallySingular(
-            f"the equations {'; '.join(names)} are linearly dependent: {text} is 0 = 0 "
-            "(one of them is redundant; the model is over-determined)", names)
+            f"the equations {listed(names)} are linearly dependent: {shortened(text, 400)} "
+            "is 0 = 0 (one of them is redundant; the model is over-determined)", names)
     raise StructurallySingular(
-        f"the equations {'; '.join(names)} contradict each other: {text} gives "
-        f"{sp.sstr(total)} = 0", names)
+        f"the equations {listed(names)} contradict each other: {shortened(text, 400)} "
+        f"gives {shortened(sp.sstr(total))} = 0", names)
 
 
 def _combination_text(terms) -> str:
