@@ -25,7 +25,7 @@ import sympy as sp
 from ..compiler.frontend.alias import eliminate_aliases
 from ..compiler.structure.causalize import causalize
 from ..compiler.frontend.flatten import flatten
-from ..compiler.assemble import solve_linear
+from ..compiler.algebra.derivative import solve_linear
 from ..compiler.index.reduction import reduce_index
 from ..compiler.algebra.symbolic import SymbolicSystem
 from .plant import _Harness, top_level_inputs

@@ -14,7 +14,8 @@ from functools import lru_cache
 import sympy as sp
 from sympy.core.basic import _args_sortkey
 
-__all__ = ["partial", "plain_coefficient", "solve_linear", "simple_partials"]
+__all__ = ["partial", "plain_coefficient", "solve_linear", "simple_partials", "terms_with",
+           "symbol_nodes"]
 
 _CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
 
@@ -111,8 +112,7 @@ def solve_linear(residual, x):
     coefficient is read from the term itself: neither the derivative nor r(x=0) is
     built, and the result is the same expression."""
     if residual.is_Add:
-        from .symbolic import _terms_with     # symbolic imports this module
-        inner = _terms_with(residual).get(x, ())
+        inner = terms_with(residual).get(x, ())
         if len(inner) == 1:
             c = plain_coefficient(inner[0], x)
             if c is not None:
@@ -252,3 +252,29 @@ def _solve_general(residual, x):
                 return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
             return -r0 / c
     return -residual.xreplace({x: 0}) / c
+
+
+@lru_cache(maxsize=200_000)
+def terms_with(r: sp.Expr) -> dict:
+    """symbol -> the terms of the sum r that contain it, in the order of r's arguments
+    (every symbol a term has, as ``has`` sees them)."""
+    out = {}
+    for t in r.args:
+        for q in symbol_nodes(t):
+            out.setdefault(q, []).append(t)
+    return out
+
+
+def symbol_nodes(e: sp.Basic) -> set:
+    """``e.atoms(Symbol)``: every Symbol node of the tree, bound ones included (what
+    ``has`` finds)."""
+    if e.is_Symbol:
+        return {e}
+    out, stack = set(), [e]
+    while stack:
+        node = stack.pop()
+        if node.is_Symbol:
+            out.add(node)
+        else:
+            stack.extend(node.args)
+    return out

@@ -57,7 +57,7 @@ import numpy as np
 from .keys import fingerprint, flat_key, tree_key
 from ..backends.lazycode import GeneratedModule, ModuleSource, install_array_code
 
-__all__ = ["LoadedCode", "ParameterFunction", "portable", "load_notes", "flat_key",
+__all__ = ["LoadedCode", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
            "models_dir"]
 
@@ -225,21 +225,6 @@ class _ProgramPlace:
                                "compile cache entry's side file, which is gone; compile "
                                "the model again")
         return python_source(prog)
-
-
-class ParameterFunction:
-    """f(p): a variable's value as a function of the parameters, from generated Python
-    (``source`` defines ``name``); pickles as its source."""
-
-    def __init__(self, source: str, name: str):
-        self.source, self.name = source, name
-        self._f = _run(source, "<acausal constants>")[name]
-
-    def __call__(self, p):
-        return self._f(p)
-
-    def __reduce__(self):
-        return (ParameterFunction, (self.source, self.name))
 
 
 def _codes(mc) -> dict:

@@ -20,7 +20,7 @@ import sympy as sp
 from ...components.component import InvalidEquation, ModelError
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
-from .flatten import FlatModel
+from ..flatmodel import FlatModel
 from ..gcpause import gc_paused
 from ..structure.graph import STATE_SELECT
 from ..algebra.symbolic import symbols_of

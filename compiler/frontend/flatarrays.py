@@ -14,7 +14,7 @@ import numpy as np
 from ...components.arrays import elements, parameter_array
 from ...components.component import InvalidValue, Port
 from ...components.declarations import Parameter
-from .flatten import FlatParameter, FlatVariable
+from ..flatmodel import FlatParameter, FlatVariable
 
 __all__ = ["collect_array", "ArrayElement"]
 

@@ -40,7 +40,7 @@ import sympy as sp
 
 from ...components.component import InvalidEquation
 from ...components.symbols import Assign, Reinit, no_event, pre
-from .flatten import FlatEquation
+from ..flatmodel import FlatEquation
 from ..gcpause import gc_paused
 
 __all__ = ["DiscreteVariableError", "HeldValue", "declare_discrete_variables",
