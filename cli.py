@@ -33,6 +33,8 @@ import os
 import sys
 import traceback
 import warnings
+from .errors import (BackendError, InitializationFailed, ModelError, NotInModel,
+                     SimulationError)
 
 __all__ = ["main", "build_parser", "load_model", "report_dict", "UsageError"]
 
@@ -280,7 +282,6 @@ def _check_writable(option: str, path) -> None:
 
 
 def _check_names(compiled, names) -> None:
-    from .components import NotInModel
     for n in names:
         if n not in compiled.outputs:
             leaf = n.split(".")[-1]
@@ -483,8 +484,6 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _exit_status(err) -> int | None:
     """1 for the typed failures of a model or a run, 2 for usage; None: not expected."""
-    from .components import ModelError
-    from .errors import BackendError, InitializationFailed, SimulationError
     if isinstance(err, UsageError):
         return 2
     if isinstance(err, (_Failed, ModelError, SimulationError, InitializationFailed,

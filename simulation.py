@@ -15,9 +15,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .components.component import Component, ModelError
-from .errors import SimulationError
+from .components.component import Component
 from .result import Event, Result
+from .errors import ModelError, SimulationError
 
 if TYPE_CHECKING:
     from .runtime import CompiledModel

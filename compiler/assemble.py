@@ -10,10 +10,8 @@ from types import SimpleNamespace
 import numpy as np
 import sympy as sp
 
-from ..components.component import ModelError
 from ..components.symbols import time
 from ..components.units import output_tables
-from ..errors import InitializationFailed
 from .algebra.derivative import solve_linear
 from .algebra.symbolic import symbols_of
 from .backends.cbackend import programs
@@ -26,6 +24,7 @@ from .report import EquationNames
 from .structure.causalize import causalize, full_form
 from .structure.graph import UNASSIGNED
 from .structure.matching import _match
+from ..errors import InitializationFailed, ModelError
 
 __all__ = ["assemble", "choose_initial_rows", "delay_code", "feeds_back"]
 

@@ -26,6 +26,7 @@ from . import sidejobs
 from .gcpause import collect_after_pause
 from .modelcode import ModelCode
 from .report import IndexReport, mode_structures
+from ..errors import ModelError
 
 # The passes and sympy are imported where they run: a model found in the compile cache
 # is returned without importing either.
@@ -370,7 +371,6 @@ def _reinit_targets_are_states(flat) -> None:
     """A variable that a when-clause re-initializes must be a state (Modelica 3.6, sec.
     8.3.6: tools treat it as stateSelect = always), so state selection keeps it one,
     wherever index reduction could otherwise put the states (the motor side of a gear)."""
-    from ..components.component import ModelError
     from ..components.symbols import Reinit
     targets = {act.variable for w in flat.whens for act in w.actions
                if isinstance(act, Reinit)}

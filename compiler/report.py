@@ -218,11 +218,6 @@ class IndexReport:
     def to_json(self, **kw) -> str:
         return json.dumps(self.as_dict(), default=str, **kw)
 
-    def _repr_html_(self) -> str:
-        """Jupyter: the report as tables, with the BLT incidence picture."""
-        from ..display import report_html
-        return report_html(self)
-
     def __str__(self) -> str:
         lines = [f"Index report for {self.model_name}",
                  f"  differential index: {self.differential_index}"

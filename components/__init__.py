@@ -4,13 +4,13 @@ Components, ports and declarations are plain Python; the symbolic vocabulary
 (``Eq``, ``der``, ``time``, ...) is sympy and is imported on first use, so defining
 component classes does not load sympy (their symbols and equations do).
 """
-from .component import (Component, Connection, InvalidConnection, InvalidEquation,
-                        InvalidHierarchy, InvalidInheritance, InvalidValue, ModelError,
-                        NotInModel, Port, connect)
+from .component import Component, Connection, Port, connect
 from .declarations import Across, Parameter, Signal, Through, Variable, ref
 from .inheritance import replaces
-from .units import UnitError, UnitWarning
 from .. import _lazy_exports
+from ..errors import (InvalidConnection, InvalidEquation, InvalidHierarchy,
+                      InvalidInheritance, InvalidValue, ModelError, NotInModel, UnitError,
+                      UnitWarning)
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",

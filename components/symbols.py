@@ -20,6 +20,7 @@ from sympy import S
 from sympy.core.parameters import global_parameters
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
+from ..errors import InvalidEquation
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
            "sympify_value", "When", "when", "reinit", "pre", "text", "sample", "Sample",
@@ -352,7 +353,6 @@ def _may_vary(expr) -> bool:
 
 
 def _invalid(message: str):
-    from .component import InvalidEquation   # component.py imports this module
     return InvalidEquation(message)
 
 

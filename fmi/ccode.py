@@ -8,8 +8,8 @@ import subprocess
 import tempfile
 
 import numpy as np
-
 from ..errors import BackendError
+
 
 __all__ = ["model_c", "build_binary", "FLAGS"]
 

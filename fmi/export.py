@@ -41,10 +41,10 @@ import zipfile
 
 import numpy as np
 
-from ..errors import BackendError
 from .description import FmiVariable, model_description
 from .ccode import build_binary, model_c
 from .structure import Reads, solved_dependencies
+from ..errors import BackendError, ModelError
 
 __all__ = ["export_fmu", "FMI_TYPES"]
 
@@ -171,7 +171,7 @@ def _platform() -> tuple[str, str]:
 def _compiled(model):
     """(Plant, metadata, (inputs, outputs)) for a Component or a CompiledModel."""
     from ..analysis.plant import Plant, compile_plant, top_level_inputs
-    from ..components.component import Component, ModelError
+    from ..components.component import Component
     from ..ports import RealOutput
     from ..runtime import CompiledModel
     if isinstance(model, CompiledModel):
@@ -243,7 +243,6 @@ def _static_states(compiled) -> None:
     mc = compiled.model_code
     if mc.dynamic is None:
         return
-    from ..components.component import ModelError
     sets = getattr(mc.report, "state_sets", None) or []
     words = "; ".join(
         f"{len(s['candidates']) - s['n_dummies']} of {{{', '.join(s['candidates'])}}}"
@@ -280,7 +279,6 @@ def _inputs_not_differentiated(plant, ports) -> None:
                 return          # the start point is outside the model's domain: no verdict
         if not (np.array_equal(rows[0], rows[1], equal_nan=True)
                 and np.array_equal(rows[0], rows[2], equal_nan=True)):
-            from ..components.component import ModelError
             raise ModelError(f"the model differentiates its input '{n}' (index reduction "
                              f"needs der({n})), which an FMU's input does not provide: "
                              "give the derivative as a second input, or filter the input "

@@ -44,8 +44,8 @@ import subprocess
 import tempfile
 import threading
 import time
-
 from ..errors import BackendError
+
 
 __all__ = ["LARGE", "LOOPED", "UNIT", "UNIT_SIZE", "FLAGS", "FLAGS_LARGE", "FLAGS_LOOPED",
            "flags_for", "jobs", "split", "compile_library", "Compilation", "last_build"]

@@ -28,7 +28,6 @@ import types
 
 import numpy as np
 
-from ..components.component import InvalidValue, NotInModel
 from ..solvers.base import DAEProblem, unbounded
 from ..solvers.linalg import assemble
 from .delays import DelayLines, FilledCode
@@ -37,6 +36,7 @@ from .dynamic import DynamicStateSelection
 from .events import WhenClauses, iterate_event
 from .initial import InitialConditions, consistent_output, initialize, reinitialize
 from .modes import DiscreteState
+from ..errors import InvalidValue, NotInModel
 
 __all__ = ["CompiledModel"]
 
@@ -426,11 +426,6 @@ class CompiledModel(DAEProblem):
         if self.n_roots:
             self.discrete.release(t, z, self.p)
         return self.reselect_states(t, z)
-
-    def _repr_html_(self) -> str:
-        """Jupyter: the states, parameters and the index report's summary."""
-        from ..display import model_html
-        return model_html(self)
 
     # -- parameters ---------------------------------------------------------------------------
     def set_parameters(self, values: dict) -> None:

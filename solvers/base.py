@@ -110,8 +110,8 @@ from dataclasses import dataclass, field
 from typing import Sequence
 
 import numpy as np
-
 from ..errors import InitializationFailed, SimulationError
+
 
 __all__ = ["DAEProblem", "EventAction", "SolverStats", "SolverOutput", "SimulationError",
            "InitializationFailed"]

@@ -51,13 +51,13 @@ import threading
 
 import numpy as np
 
-from ..errors import BackendError
 from . import cbdf_sparse as sparse_lu
 from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
 from . import cbdf_build
 from .cbdf_build import build_if_long, build_in_background
 from .cbdf_callbacks import Callbacks
 from .linalg import LinearSolver, singular_block
+from ..errors import BackendError
 
 __all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library",
            "build_in_background", "build_if_long"]

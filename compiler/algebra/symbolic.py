@@ -24,6 +24,7 @@ from .derivative import partial, symbol_nodes, terms_with
 from .substitution import _NEGATED, negated, sort_args
 from ..structure.graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER,
                                STATE_SELECT, UNASSIGNED, Names, Structure)
+from ...errors import ModelError
 
 __all__ = ["SymbolicEquation", "SymbolicSystem", "ExactText", "coefficient_kind",
            "forget_expressions",
@@ -192,7 +193,6 @@ class SymbolicSystem:
         if self.delays:
             found = [self.delays[q] for q in symbols_of(r) if q in self.delays]
             if found:
-                from ...components.component import ModelError
                 d = found[0]
                 raise ModelError(
                     f"{d.text} in {d.where} appears in an equation that index reduction "

@@ -45,8 +45,8 @@ import threading
 
 import numpy as np
 
-from ...errors import BackendError
 from ...native import build as cbuild
+from ...errors import BackendError
 
 __all__ = ["BackendError", "c_source", "build", "start_build", "attach", "reattach",
            "compiler_available", "cache_dir", "programs", "prepare"]

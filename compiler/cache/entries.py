@@ -56,6 +56,7 @@ import numpy as np
 
 from .keys import fingerprint, flat_key, tree_key
 from ..backends.lazycode import GeneratedModule, ModuleSource, install_array_code
+from ...errors import BackendError
 
 __all__ = ["LoadedCode", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
@@ -148,7 +149,6 @@ class LoadedCode(ModuleSource):
         if array_source is not None:
             install_array_code(self, array_source)
         if c is not None:
-            from ...errors import BackendError
             from ..backends.cbackend import reattach
             try:
                 reattach(self, c["library"], c["source"], c["layout"])
@@ -217,7 +217,6 @@ class _ProgramPlace:
     def python_source(self) -> str:
         """The Python source, printed from the Program as the code generator printed
         it when the model was compiled (:func:`acausal.compiler.backends.codegen.python_source`)."""
-        from ...errors import BackendError
         from ..backends.codegen import python_source
         prog = self.get()
         if prog is None:

@@ -17,13 +17,13 @@ from dataclasses import dataclass, field, replace
 
 import sympy as sp
 
-from ...components.component import InvalidEquation, ModelError
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
 from ..flatmodel import FlatModel
 from ..gcpause import gc_paused
 from ..structure.graph import STATE_SELECT
 from ..algebra.symbolic import symbols_of
+from ...errors import InvalidEquation, ModelError
 
 __all__ = ["AliasTable", "eliminate_aliases"]
 

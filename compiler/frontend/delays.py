@@ -18,9 +18,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ...components.component import ModelError
 from ...components.symbols import delay
 from ..gcpause import gc_paused
+from ...errors import ModelError
 
 __all__ = ["DelayValue", "extract_delays"]
 

@@ -20,9 +20,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ...components import inheritance
-from ...components.component import (Component, Connection, InvalidConnection,
-                                     InvalidEquation, InvalidValue, ModelError, NotInModel,
-                                     Port, compiling, in_context)
+from ...components.component import Component, Connection, Port, compiling, in_context
 from ...components.declarations import Parameter, bound_violation
 from ...components.symbols import Equation, When, der, time
 from .fastarith import symbol_arithmetic
@@ -33,6 +31,8 @@ from ..gcpause import gc_paused
 from ..algebra.symbolic import signed_sum, signed_terms, symbols_of
 from .usercode import failed_reading
 from ..flatmodel import FlatEquation, FlatModel, FlatParameter, FlatVariable
+from ...errors import (InvalidConnection, InvalidEquation, InvalidValue, ModelError,
+                       NotInModel)
 
 __all__ = ["flatten"]
 

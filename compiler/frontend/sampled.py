@@ -38,17 +38,13 @@ from dataclasses import dataclass, replace
 
 import sympy as sp
 
-from ...components.component import InvalidEquation
 from ...components.symbols import Assign, Reinit, no_event, pre
 from ..flatmodel import FlatEquation
 from ..gcpause import gc_paused
+from ...errors import DiscreteVariableError, ModelError
 
 __all__ = ["DiscreteVariableError", "HeldValue", "declare_discrete_variables",
            "pre_after_aliases", "when_rows", "explain_overdetermined"]
-
-
-class DiscreteVariableError(InvalidEquation):
-    """A discrete-time variable or a when-assignment used against its rules."""
 
 
 @dataclass
@@ -207,7 +203,6 @@ def when_rows(whens, z_syms, caus, pairs, helds, assigned):
     """Rows and layout of the when-clauses (see :class:`~.modelcode.WhenCode`):
     conditions (1/0; 0 for a clock), reinit values, assigned values, then start and
     period of each clock."""
-    from ...components.component import ModelError
     z_index = {s: k for k, s in enumerate(z_syms)}
     states = set(range(caus.n_states)) if caus.causal else {a for a, _ in pairs}
     slot = {h.symbol: k for k, h in enumerate(helds)}

@@ -29,9 +29,9 @@ from fractions import Fraction
 import sympy as sp
 
 from ...components.symbols import Equation, der, no_event, pre
-from ...components.units import (DIMENSIONLESS, MODES, UnitCheck, UnitError, UnitWarning,
-                                 dimension_text, parse_unit)
+from ...components.units import DIMENSIONLESS, MODES, UnitCheck, dimension_text, parse_unit
 from ..gcpause import gc_paused
+from ...errors import UnitError, UnitWarning
 
 __all__ = ["check_units", "complain", "UnitCheck", "MODES"]
 

@@ -9,7 +9,8 @@ are too many and the variables that nothing determines, with their components.
 from __future__ import annotations
 
 from ..structure.graph import Structure
-from ..structure.matching import StructuralError, check_structure
+from ..structure.matching import check_structure
+from ...errors import StructuralError
 
 __all__ = ["check_balance"]
 

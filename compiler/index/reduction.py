@@ -15,6 +15,7 @@ from functools import partial
 from ..structure.graph import UNASSIGNED, Names, Structure
 from ..structure.pantelides import pantelides
 from ..structure.states import select_states
+from ...errors import IndexReductionFailed, StructuralError
 
 __all__ = ["IndexReduction", "reduce_index"]
 
@@ -68,7 +69,6 @@ def reduce_index(system, s: Structure, coefficient=None) -> IndexReduction:
 def _check_square(system, red: IndexReduction) -> None:
     n_eq, n_var = len(system.equations), len(system.symbols)
     if n_eq + red.n_states != n_var:
-        from ..structure.matching import IndexReductionFailed
         raise IndexReductionFailed(
             f"after index reduction the system is not square: {n_eq} equations + "
             f"{red.n_states} states for {n_var} variables", [], [])
@@ -83,7 +83,6 @@ def as_written(flat) -> dict:
     have is measured here, on integers only.
     """
     from ..structure.sigma import signature_matrix, sigma_method
-    from ..structure.matching import StructuralError
     s = _flat_structure(flat)
     try:
         found = pantelides(s)

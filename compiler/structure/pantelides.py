@@ -23,7 +23,8 @@ from functools import partial
 from typing import Callable, Optional
 
 from .graph import DEFAULT, LINEAR_VAR, NONLINEAR, UNASSIGNED, Names, Structure
-from .matching import IndexReductionFailed, _from_sentinel, _to_sentinel, check_structure
+from .matching import _from_sentinel, _to_sentinel, check_structure
+from ...errors import IndexReductionFailed
 
 __all__ = ["PantelidesResult", "pantelides", "predict_derivative"]
 

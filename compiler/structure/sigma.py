@@ -23,7 +23,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .graph import Structure
-from .matching import StructurallySingular, _match, base_variables
+from .matching import _match, base_variables
+from ...errors import StructurallySingular
 
 __all__ = ["SigmaResult", "signature_matrix", "sigma_method"]
 

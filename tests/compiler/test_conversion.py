@@ -19,8 +19,9 @@ from acausal.compiler.flatmodel import FlatEquation, FlatModel, FlatParameter, F
 from acausal.compiler.structure.graph import LINEAR_CONST as K, UNASSIGNED
 from acausal.compiler.structure.pantelides import pantelides
 from acausal.compiler.structure.states import select_states
-from acausal.compiler.structure.matching import StructurallySingular, make_structure
+from acausal.compiler.structure.matching import make_structure
 from acausal.compiler.algebra.symbolic import SymbolicSystem
+from acausal.errors import StructurallySingular
 
 
 def sym(name):

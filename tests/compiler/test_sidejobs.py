@@ -14,6 +14,7 @@ import acausal as ac
 from acausal.compiler.cache import entries as store
 from acausal.compiler import pipeline, sidejobs
 from acausal.compiler.index.reduction import as_written
+from acausal.errors import UnitError, UnitWarning
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="no fork on this system")
 
@@ -234,7 +235,6 @@ def test_units_checked_beside_are_reported_as_in_a_compile_that_does_not_fork(
     import re
     import warnings
 
-    from acausal.components.units import UnitError, UnitWarning
     from tests.components.test_units import WRONG, Oscillator
 
     class Repeated(Oscillator):

@@ -12,7 +12,6 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.errors import BackendError, SimulationError
 from acausal.solvers import DAEProblem, cbdf
 from acausal.library.examples.motor_drive import MotorDrive
 from acausal.library.examples.pendulum import Pendulum
@@ -23,6 +22,7 @@ from acausal.tests.models.test_events import BouncingBall as Ball, _bounce_times
 
 from .problems import (BlowUp, BouncingBall, DampedOscillator, LinearIndex1, Robertson,
                        VanDerPol)
+from acausal.errors import BackendError, SimulationError
 
 pytestmark = pytest.mark.skipif(library() is None, reason="no C compiler on this machine")
 
