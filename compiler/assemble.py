@@ -1,6 +1,6 @@
 """The ``assemble`` and ``codegen`` passes: the index-reduced system put in the form the
-solver sees (full or causal, :mod:`acausal.compiler.structure.causalize`), its relations, initial
-equations, when-clauses and delays, and the generated code of each
+solver sees (full or causal, :mod:`acausal.compiler.structure.causalize`), and its
+relations, initial equations, when-clauses and delays with the generated code of each
 (:mod:`acausal.compiler.backends.codegen`), gathered in a :class:`ModelCode`.
 """
 from __future__ import annotations
@@ -12,6 +12,7 @@ import sympy as sp
 
 from ..components.symbols import time
 from ..components.units import output_tables
+from ..errors import InitializationFailed, ModelError
 from .algebra.derivative import solve_linear
 from .algebra.symbolic import symbols_of
 from .backends.cbackend import programs
@@ -24,17 +25,15 @@ from .report import EquationNames
 from .structure.causalize import causalize, full_form
 from .structure.graph import UNASSIGNED
 from .structure.matching import _match
-from ..errors import InitializationFailed, ModelError
 
-__all__ = ["assemble", "choose_initial_rows", "delay_code", "feeds_back"]
+__all__ = ["assemble", "model_code", "choose_initial_rows", "delay_code", "feeds_back"]
 
 
-def assemble(system, reduction, reduced, flat, aliases, report, discretes,
-             helds=(), delays=(), programs_made=None) -> ModelCode:
-    """The ModelCode of the index-reduced ``system``.  ``programs_made``, if given, is
-    called with the generated Programs by prefix (:func:`acausal.compiler.backends.cbackend.programs`)
-    as soon as they are all made, before the rest of the ModelCode: the C backend
-    can print and compile them meanwhile (:mod:`acausal.compiler.pipeline`)."""
+def assemble(system, reduction, reduced, report, discretes, helds=()):
+    """The form the solver sees (:class:`~acausal.compiler.structure.causalize.Causalization`):
+    with dynamic state selection every variable stays an unknown (the full form); else the
+    BLT order and tearing decide what the solver vector holds, torn blocks checked
+    numerically at the compile-time values of their coefficients."""
     syms = system.symbols
     if reduction.dynamic:
         caus = full_form(reduction, len(syms), len(system.equations))
@@ -48,6 +47,17 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
                                 f"({b['not_torn']}), e.g. {syms[b['variables'][0]].name}")
     report.blocks = caus.blocks
     report.kept_for_fill = [syms[v].name for v in caus.kept_for_fill]
+    return caus
+
+
+def model_code(system, reduction, caus, reduced, flat, aliases, report, discretes,
+               helds=(), delays=(), programs_made=None) -> ModelCode:
+    """The ModelCode of the index-reduced ``system`` in the form ``caus``.
+    ``programs_made``, if given, is called with the generated Programs by prefix
+    (:func:`acausal.compiler.backends.cbackend.programs`) as soon as they are all made,
+    before the rest of the ModelCode: the C backend can print and compile them meanwhile
+    (:mod:`acausal.compiler.pipeline`)."""
+    syms = system.symbols
     z_syms = [syms[v] for v in caus.z]
     assigned = [(syms[v], solve_linear(system.equations[e].residual, syms[v]))
                 for v, e in caus.assignments]

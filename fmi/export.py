@@ -44,6 +44,7 @@ import numpy as np
 from .description import FmiVariable, model_description
 from .ccode import build_binary, model_c
 from .structure import Reads, solved_dependencies
+from .. import native
 from ..errors import BackendError, ModelError
 
 __all__ = ["export_fmu", "FMI_TYPES"]
@@ -74,8 +75,7 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
     kind = _fmi_type(fmi_type)
     if rtol is not None and not (0 < float(rtol) < 1):
         raise ValueError(f"rtol must be in (0, 1), got {rtol!r}")
-    from ..compiler.backends.cbackend import compiler_available
-    cc = compiler_available()
+    cc = native.find_compiler()
     if cc is None:
         raise BackendError("exporting an FMU needs a C compiler (set CC, or install "
                            "cc/gcc/clang)")
@@ -187,38 +187,23 @@ def _compiled(model):
     inputs = top_level_inputs(model)
     outputs = [n for n, c in model.children().items() if isinstance(c, RealOutput)]
 
-    def build():
+    def build(cache):
         if inputs:
-            return compile_plant(model, {})
+            return compile_plant(model, {}, cache=cache)
         from ..simulation import compile as compile_model
-        return Plant(compile_model(model, backend="numpy"))
+        return Plant(compile_model(model, backend="numpy", cache=cache))
 
-    plant = build()
+    plant = build(True)
     if not _has_programs(plant.compiled.model_code):
         # loaded from the compile cache, which keeps the functions but not the Program
         # the FMU's C is printed from: compiled again, past the cache
-        with _compile_cache_off():
-            plant = build()
+        plant = build(False)
     return plant, _metadata(model), (inputs, outputs)
 
 
 def _has_programs(mc) -> bool:
     codes = [mc.code, mc.initial.code] + ([mc.whens.code] if mc.whens is not None else [])
     return all(getattr(c, "program", None) is not None for c in codes)
-
-
-class _compile_cache_off:
-    """ACAUSAL_COMPILE_CACHE=0 for the duration (:mod:`acausal.compiler.cache.entries`)."""
-
-    def __enter__(self):
-        self.before = os.environ.get("ACAUSAL_COMPILE_CACHE")
-        os.environ["ACAUSAL_COMPILE_CACHE"] = "0"
-
-    def __exit__(self, *exc):
-        if self.before is None:
-            os.environ.pop("ACAUSAL_COMPILE_CACHE", None)
-        else:
-            os.environ["ACAUSAL_COMPILE_CACHE"] = self.before
 
 
 def _metadata(model):

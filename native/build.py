@@ -39,16 +39,19 @@ place when it is whole: a process that finds the name finds the complete library
 """
 from __future__ import annotations
 
+import hashlib
 import os
 import subprocess
 import tempfile
 import threading
 import time
-from ..errors import BackendError
 
+from ..errors import BackendError
+from .toolchain import cache_dir, find_compiler
 
 __all__ = ["LARGE", "LOOPED", "UNIT", "UNIT_SIZE", "FLAGS", "FLAGS_LARGE", "FLAGS_LOOPED",
-           "flags_for", "jobs", "split", "compile_library", "Compilation", "last_build"]
+           "flags_for", "jobs", "split", "compile_library", "Compilation", "Build",
+           "library_path", "start", "build_library", "last_build"]
 
 FLAGS = ["-O2", "-fPIC", "-ffp-contract=off"]
 FLAGS_LARGE = ["-O0", "-fPIC", "-ffp-contract=off"]
@@ -200,6 +203,78 @@ class Compilation:
                           characters=sum(map(len, self.units)), compile_s=t1 - self.t0,
                           link_s=time.perf_counter() - t1)
         return lib
+
+
+    def cancel(self) -> None:
+        """Stop the compilers that still run (a build whose library is not wanted)."""
+        with self.lock:
+            self.errors.append("cancelled")
+            _stop(self.running)
+
+
+# -- libraries in the cache -------------------------------------------------------------------
+def library_path(source: str, prefix: str = "model_") -> str:
+    """Where the library built from ``source`` lives in the cache: named by the hash of
+    the source, the compiler's name and the flags.  BackendError without a compiler."""
+    cc = find_compiler()
+    if cc is None:
+        raise BackendError("no C compiler found (set CC, or install cc/gcc/clang)")
+    flags = flags_for(source)
+    key = hashlib.sha256((source + " ".join([os.path.basename(cc)] + flags)).encode())
+    return os.path.join(cache_dir(), f"{prefix}{key.hexdigest()[:24]}.so")
+
+
+class Build:
+    """A library being built from one source: :meth:`wait` returns its path in the cache
+    (it may be called from another thread), :meth:`cancel` stops the compilers."""
+
+    def __init__(self, lib: str, job: Compilation | None = None, tmp=None):
+        self.lib, self.job, self.tmp = lib, job, tmp
+
+    def wait(self) -> str:
+        if self.job is not None:
+            try:
+                os.replace(self.job.wait(), self.lib)   # atomic: a whole file or none
+            finally:
+                self.tmp.cleanup()
+                self.job = None
+        return self.lib
+
+    def cancel(self) -> None:
+        if self.job is not None:
+            self.job.cancel()
+
+
+def start(source: str, unit_size: int | None = None, prefix: str = "model_") -> Build:
+    """The build of ``source`` begun: its compilers are started now, by this thread (a
+    library already in the cache is not built again).  A large source is compiled
+    without optimization, in translation units of about ``unit_size`` characters
+    (:data:`UNIT_SIZE`), as many compiled at once as there are processors; the split
+    does not enter the library's name: every split of a source gives the same
+    functions."""
+    lib = library_path(source, prefix)
+    if os.path.exists(lib):
+        return Build(lib)
+    flags = flags_for(source)
+    units = split(source, unit_size or UNIT_SIZE, jobs()) \
+        if len(source) > LARGE or unit_size else [source]
+    tmp = temporary_dir(cache_dir())
+    try:
+        job = Compilation(find_compiler(), units, flags, tmp.name)
+    except BaseException:
+        tmp.cleanup()
+        raise
+    return Build(lib, job, tmp)
+
+
+def build_library(source: str, cached_only: bool = False, unit_size: int | None = None,
+                  prefix: str = "model_") -> str | None:
+    """The path of the library built from ``source``, compiled now or found in the cache
+    (with ``cached_only``: None rather than compiling it)."""
+    if cached_only:
+        lib = library_path(source, prefix)
+        return lib if os.path.exists(lib) else None
+    return start(source, unit_size, prefix).wait()
 
 
 def _stop(running: dict) -> None:

@@ -53,14 +53,12 @@ import numpy as np
 
 from . import cbdf_sparse as sparse_lu
 from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
-from . import cbdf_build
-from .cbdf_build import build_if_long, build_in_background
 from .cbdf_callbacks import Callbacks
 from .linalg import LinearSolver, singular_block
+from .. import native
 from ..errors import BackendError
 
-__all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library",
-           "build_in_background", "build_if_long"]
+__all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library"]
 
 MAX_DENSE = 200          # largest system the compiled loop factors dense (above: sparse LU)
 STEP_LOOPS = ("auto", "c", "python")
@@ -94,23 +92,17 @@ _text = None
 
 
 def library(cached_only: bool = False):
-    """The compiled step loop (built once into the C backend's cache), or None when no
-    C compiler works (with ``cached_only``: also when it is not built yet).  Without
-    ``cached_only`` a build that :func:`build_in_background` started is waited for.
-    A build that failed is tried again once another compiler is named (``CC``)."""
+    """The compiled step loop (built once into the native cache), or None when no C
+    compiler works (with ``cached_only``: also when it is not built yet).  A build that
+    failed is tried again once another compiler is named (``CC``)."""
     global _lib
     if _lib is False and _failed_with != ():
-        from ..compiler.backends.cbackend import compiler_available
-        if compiler_available() != _failed_with:
+        if native.find_compiler() != _failed_with:
             _lib = None
     if _lib is None:
-        if not _lock.acquire(blocking=not cached_only):
-            return None
-        try:
+        with _lock:
             if _lib is None:
                 _load(cached_only)
-        finally:
-            _lock.release()
     return _lib or None
 
 
@@ -128,20 +120,13 @@ def _source() -> str:
 
 def _load(cached_only: bool) -> None:
     global _lib, _failed_with
-    from ..compiler.backends.cbackend import build, compiler_available
     try:
-        source = _source()
-        path = build(source, cached_only=True)
-        if path is None and not cached_only:
-            builder = cbdf_build._builder
-            if builder is not None:
-                builder.wait()       # its library, or its failure, then ours
-            path = build(source)
+        path = native.build_library(_source(), cached_only=cached_only, prefix="cbdf_")
         if path is None:
             return
         lib = ctypes.CDLL(path)
     except (BackendError, OSError):
-        _lib, _failed_with = False, compiler_available()
+        _lib, _failed_with = False, native.find_compiler()
         return
     lib.cbdf_run.argtypes = [ctypes.c_void_p] * 3
     lib.cbdf_run.restype = ctypes.c_int
@@ -152,7 +137,7 @@ def _load(cached_only: bool) -> None:
 def _compiled_model(problem) -> bool:
     """A compiled model whose residual, Jacobian and zero-crossing functions are C, or
     its generated numpy code (called back: :mod:`.cbdf_callbacks`)."""
-    from ..compiler.backends.cbackend import _CFunction
+    from ..compiler.backends.clibrary import CFunction
     code = getattr(problem, "code", None)
     backend = getattr(problem, "backend", None)
     if code is None or backend not in ("c", "numpy") or \
@@ -162,7 +147,7 @@ def _compiled_model(problem) -> bool:
                                               if problem.n_roots else [])
     if backend == "numpy":
         return all(callable(f) for f in need)
-    return all(isinstance(f, _CFunction) for f in need)
+    return all(isinstance(f, CFunction) for f in need)
 
 
 def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
@@ -189,8 +174,7 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         why = "its after_step hook runs in Python after every step"
     if step_loop == "auto":
         # a library still being built is not waited for: this run takes the Python loop
-        return 0 if model and why is None and library(cached_only=True) is not None \
-            else None
+        return 0 if model and why is None and library() is not None else None
     if why is not None:
         raise ValueError(f"step_loop='c' is not available for this problem: {why}")
     if library() is None:

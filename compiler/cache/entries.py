@@ -54,11 +54,13 @@ from dataclasses import fields, is_dataclass, replace
 
 import numpy as np
 
-from .keys import fingerprint, flat_key, tree_key
-from ..backends.lazycode import GeneratedModule, ModuleSource, install_array_code
+from ... import native
 from ...errors import BackendError
+from ..backends.clibrary import reattach
+from ..backends.lazycode import GeneratedModule, ModuleSource, install_array_code
+from .keys import fingerprint, flat_key, tree_key
 
-__all__ = ["LoadedCode", "portable", "load_notes", "flat_key",
+__all__ = ["from_cache", "find_by_tree", "LoadedCode", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
            "models_dir"]
 
@@ -149,7 +151,6 @@ class LoadedCode(ModuleSource):
         if array_source is not None:
             install_array_code(self, array_source)
         if c is not None:
-            from ..backends.cbackend import reattach
             try:
                 reattach(self, c["library"], c["source"], c["layout"])
             except (BackendError, OSError) as exc:
@@ -217,6 +218,7 @@ class _ProgramPlace:
     def python_source(self) -> str:
         """The Python source, printed from the Program as the code generator printed
         it when the model was compiled (:func:`acausal.compiler.backends.codegen.python_source`)."""
+        # imported here: the printer needs sympy, which loading a model does not
         from ..backends.codegen import python_source
         prog = self.get()
         if prog is None:
@@ -286,8 +288,7 @@ def enabled() -> bool:
 
 
 def models_dir() -> str:
-    from ..backends.cbackend import cache_dir
-    path = os.path.join(cache_dir(), "models")
+    path = os.path.join(native.cache_dir(), "models")
     os.makedirs(path, exist_ok=True)
     return path
 
@@ -303,11 +304,7 @@ def _read_index(tree: str) -> str | None:
 
 def lookup(key: str | None = None, tree: str | None = None):
     """The cached ModelCode for a flat key or a tree key (tried in that order), or None.
-    Returns (ModelCode, seconds spent loading).  An unreadable entry is removed.
-    Entries this process is still storing beside its work (:mod:`sidejobs`) are
-    waited for first."""
-    from ..sidejobs import settle
-    settle()
+    Returns (ModelCode, seconds spent loading).  An unreadable entry is removed."""
     if key is None and tree is not None:
         key = _read_index(tree)
     if key is None:
@@ -337,6 +334,31 @@ def lookup(key: str | None = None, tree: str | None = None):
         if isinstance(code, LoadedCode):
             code._program_file = (side, which)
     return mc, _time.perf_counter() - t0
+
+
+def from_cache(found, seconds: float, how: str):
+    """The ModelCode of a ``lookup`` result, its report noting that it came from the
+    cache (found by ``how``) and the ``seconds`` the look-up took."""
+    mc, _ = found
+    report = mc.report
+    report.timings["cache_lookup"] = seconds
+    report.notes += load_notes(mc)
+    report.notes.append(f"came from the compile cache (found by {how}, loaded in "
+                        f"{seconds * 1e3:.1f} ms); the other timings are those of the "
+                        "original compile")
+    return mc
+
+
+def find_by_tree(model, backend: str) -> tuple:
+    """(ModelCode or None, tree key): the model found in the cache by its instance tree
+    (:func:`~acausal.compiler.cache.keys.tree_key`), without flattening or sympy."""
+    t0 = _time.perf_counter()
+    tree = tree_key(model, backend)
+    found = lookup(tree=tree) if tree is not None else None
+    if found is None:
+        return None, tree
+    model._bind("")     # the instance named as a compile leaves it
+    return from_cache(found, _time.perf_counter() - t0, "its instance tree"), tree
 
 
 def store(key: str, mc, tree: str | None = None) -> None:

@@ -14,8 +14,8 @@ import types
 
 import numpy as np
 
+from ... import native
 from ...components.component import Component
-from ..gcpause import gc_paused
 
 __all__ = ["fingerprint", "flat_key", "tree_key"]
 
@@ -84,11 +84,9 @@ def _sympy_version() -> str:
 def _backend_id(backend: str) -> tuple:
     if backend == "numpy":
         return (backend,)
-    from ..backends.cbackend import compiler_available
-    return (backend, compiler_available())
+    return (backend, native.find_compiler())
 
 
-@gc_paused
 def flat_key(flat, backend: str) -> str | None:
     """The SHA-256 of everything of the flat model the compiler reads (see the module
     docstring), the backend and the compiler's :func:`fingerprint`; None when a value

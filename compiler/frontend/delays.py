@@ -19,7 +19,6 @@ from __future__ import annotations
 import sympy as sp
 
 from ...components.symbols import delay
-from ..gcpause import gc_paused
 from ...errors import ModelError
 
 __all__ = ["DelayValue", "extract_delays"]
@@ -44,7 +43,6 @@ def _innermost(e: sp.Basic) -> list:
                    and not d.args[1].has(delay)), key=sp.srepr)
 
 
-@gc_paused
 def extract_delays(flat) -> list:
     """Replace every delay() in the equations, initial equations and when-clauses of
     ``flat`` by a symbol (in place); return the :class:`DelayValue` list.  A delay time

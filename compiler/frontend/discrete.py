@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..gcpause import gc_paused
 
 __all__ = ["DiscreteValue", "freeze_integer_functions"]
 
@@ -61,7 +60,6 @@ def _has_type(e: sp.Basic, types: tuple) -> bool:
     return False
 
 
-@gc_paused
 def freeze_integer_functions(flat) -> list:
     """Replace floor atoms in every equation and when-clause of ``flat`` by discrete
     symbols (in place); return the :class:`DiscreteValue` list, in a canonical order."""

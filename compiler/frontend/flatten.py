@@ -23,11 +23,9 @@ from ...components import inheritance
 from ...components.component import Component, Connection, Port, compiling, in_context
 from ...components.declarations import Parameter, bound_violation
 from ...components.symbols import Equation, When, der, time
-from .fastarith import symbol_arithmetic
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
 from .flatarrays import collect_array
 from .flatder import check_der_arguments, expand_derivatives, has_der
-from ..gcpause import gc_paused
 from ..algebra.symbolic import signed_sum, signed_terms, symbols_of
 from .usercode import failed_reading
 from ..flatmodel import FlatEquation, FlatModel, FlatParameter, FlatVariable
@@ -37,7 +35,6 @@ from ...errors import (InvalidConnection, InvalidEquation, InvalidValue, ModelEr
 __all__ = ["flatten"]
 
 
-@gc_paused
 def flatten(model: Component) -> FlatModel:
     """Bind the instance tree, collect its declarations and equations, resolve connections."""
     if not isinstance(model, Component):
@@ -48,7 +45,7 @@ def flatten(model: Component) -> FlatModel:
     connections = []
     with_der = set()     # ids of the flat equations whose residuals contain der()
     known = {}           # the classes' own equation methods (inheritance.collect)
-    with compiling(model), symbol_arithmetic():
+    with compiling(model):
         for comp in nodes:
             flat.components[comp.path] = type(comp).__name__
             _collect_declarations(comp, flat)

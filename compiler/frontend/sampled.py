@@ -40,11 +40,11 @@ import sympy as sp
 
 from ...components.symbols import Assign, Reinit, no_event, pre
 from ..flatmodel import FlatEquation
-from ..gcpause import gc_paused
 from ...errors import DiscreteVariableError, ModelError
 
-__all__ = ["DiscreteVariableError", "HeldValue", "declare_discrete_variables",
-           "pre_after_aliases", "when_rows", "explain_overdetermined"]
+__all__ = ["HeldValue", "declare_discrete_variables",
+           "pre_after_aliases", "when_rows", "explain_overdetermined",
+           "reinit_targets_are_states"]
 
 
 @dataclass
@@ -72,7 +72,6 @@ def _local(v) -> str:
     return v.name[len(v.component) + 1:] if v.component else v.name
 
 
-@gc_paused
 def declare_discrete_variables(flat) -> list:
     """Check the discrete variables and their assignments, add ``y = held(y)`` for each,
     replace ``pre(y)`` by its symbol everywhere (in place); return the
@@ -310,3 +309,17 @@ def _level_of(a, deps, by_slot, level, path, values, slots, owners, helds, whens
     path.pop()
     level[a] = lv
     return lv
+
+
+def reinit_targets_are_states(flat) -> None:
+    """A variable that a when-clause re-initializes must be a state (Modelica 3.6, sec.
+    8.3.6: tools treat it as stateSelect = always), so state selection keeps it one,
+    wherever index reduction could otherwise put the states (the motor side of a gear)."""
+    targets = {act.variable for w in flat.whens for act in w.actions
+               if isinstance(act, Reinit)}
+    for k, v in enumerate(flat.variables):
+        if v.symbol in targets:
+            if v.attrs.state_select == "never":
+                raise ModelError(f"reinit({v.name}) in {v.where}: the variable has "
+                                 "state_select='never', but only a state can be re-initialized")
+            flat.variables[k] = replace(v, attrs=replace(v.attrs, state_select="always"))

@@ -30,7 +30,6 @@ import sympy as sp
 
 from ...components.symbols import Equation, der, no_event, pre
 from ...components.units import DIMENSIONLESS, MODES, UnitCheck, dimension_text, parse_unit
-from ..gcpause import gc_paused
 from ...errors import UnitError, UnitWarning
 
 __all__ = ["check_units", "complain", "UnitCheck", "MODES"]
@@ -65,7 +64,6 @@ class _Mismatch(Exception):
         return f"{self.what}: {first} but '{sp.sstr(self.b)}' is {dimension_text(self.db)}"
 
 
-@gc_paused
 def check_units(flat, mode: str = "warn", known: UnitCheck | None = None,
                 quiet: bool = False) -> UnitCheck:
     """Check every equation of ``flat`` (a FlatModel); see the module docstring.

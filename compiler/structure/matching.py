@@ -24,12 +24,9 @@ from dataclasses import dataclass, field
 from typing import Mapping, NamedTuple, Optional, Sequence
 
 from .graph import DEFAULT, UNASSIGNED, Structure
-from ...errors import (IndexReductionFailed, OverdeterminedModel, StructuralError,
-                       StructurallySingular, UnderdeterminedModel)
+from ...errors import OverdeterminedModel, StructurallySingular, UnderdeterminedModel
 
 __all__ = [
-    "StructuralError", "IndexReductionFailed", "StructurallySingular",
-    "OverdeterminedModel", "UnderdeterminedModel",
     "bipartite_matching", "maximum_matching", "DMParts", "dulmage_mendelsohn",
     "base_variables", "StructuralDiagnosis", "diagnose", "check_structure",
     "make_structure",
