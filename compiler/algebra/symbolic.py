@@ -21,7 +21,7 @@ import sympy as sp
 
 from ...components.symbols import der, time
 from .derivative import partial, symbol_nodes, terms_with
-from .substitution import _NEGATED, negated, sort_args
+from .substitution import forget_negated, negated, sort_args
 from ..structure.graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER,
                                STATE_SELECT, UNASSIGNED, Names, Structure)
 from ...errors import ModelError
@@ -303,7 +303,7 @@ def forget_expressions() -> None:
     in every walk of the garbage collector over the live objects."""
     symbols_of.cache_clear()
     terms_with.cache_clear()
-    _NEGATED.clear()
+    forget_negated()
 
 
 def derivative_symbol(x: sp.Symbol, derivatives: dict) -> sp.Symbol:

@@ -215,9 +215,7 @@ def _key_text():
         def _atom(self, node) -> str:
             if type(node) is not sp.Symbol:
                 return super()._atom(node)
-            key = getattr(node, "_assumptions0", None)    # sympy's sorted tuple of them
-            if not isinstance(key, tuple):
-                key = tuple(sorted(node.assumptions0.items()))
+            key = tuple(sorted(node.assumptions0.items()))
             facts = self.facts.get(key)
             if facts is None:
                 facts = ",".join(f"{k}={v}" for k, v in sorted(dict(key).items()))
