@@ -40,6 +40,7 @@ import numpy as np
 from .base import (DAEProblem, EventAction, InitializationFailed, SimulationError,
                    SolverOutput, SolverStats)
 from .bdf import BDF, StepFailure
+from .cbdf import R_FAIL, R_FULL, R_SPECIAL, CompiledBDF, choose_step_loop
 from .failures import failure_message
 from .initialization import consistent_initial, reinitialize
 
@@ -123,7 +124,6 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     run = _Run(problem, t_span, t_eval, rtol, atol, max_step, suppress_alg, max_steps,
                max_event_iterations)
     run.bdf_options = {"max_order": max_order, "stald": stald}
-    from .cbdf import choose_step_loop
     run.mode = choose_step_loop(problem, step_loop, stald)
     run.progress = progress
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -188,7 +188,6 @@ class _Run:
             self.solver = BDF(p, self.t0, y, yp, **options)
             advance = self._advance
         else:
-            from .cbdf import CompiledBDF
             self.solver = CompiledBDF(p, self.t0, y, yp, mode=self.mode, **options)
             self.stats.step_loop = "c"
             advance = self._advance_compiled
@@ -231,7 +230,6 @@ class _Run:
     def _advance_compiled(self):
         """Steps in the compiled loop (:mod:`acausal.solvers.cbdf`) up to the next thing
         that needs Python; that step, if any, then goes on as in :meth:`_advance`."""
-        from .cbdf import R_FAIL, R_FULL, R_SPECIAL
         s = self.solver
         if self.stats.steps >= self.max_steps:
             raise self._error(f"maximum number of steps ({self.max_steps}) reached at "
@@ -359,8 +357,10 @@ class _Run:
         lin = getattr(getattr(self, "solver", None), "lin", None)
         if self.stats.step_loop == "c":
             self.stats.linear_solver = "sparse" if self.solver.sparse else "dense"
+            self.stats.lu = "compiled"
         elif lin is not None and lin.sparse is not None:
             self.stats.linear_solver = "sparse" if lin.sparse else "dense"
+            self.stats.lu = lin.kind
         y = np.vstack(self.ys) if self.ys else np.empty((0, n))
         yp = np.vstack(self.yps) if self.yps else np.empty((0, n))
         out = SolverOutput(np.array(self.ts), y, yp, success, message, self.stats,
