@@ -10,7 +10,7 @@ import acausal as ac
 from .interfaces import SISO
 from .nonlinear import clip
 
-__all__ = ["Integrator", "Derivative", "FirstOrder", "SecondOrder", "TransferFunction",
+__all__ = ["Integrator", "Der", "Derivative", "FirstOrder", "SecondOrder", "TransferFunction",
            "PI", "PID"]
 
 
@@ -22,6 +22,16 @@ class Integrator(SISO):
 
     def equations(self):
         return [ac.Eq(ac.der(self.x), self.k * self.u), ac.Eq(self.y, self.x)]
+
+
+class Der(SISO):
+    """The derivative of the input (MSL Blocks.Continuous.Der):  y = der(u).
+
+    Index reduction differentiates whatever computes u: u must be differentiable (a
+    filtered signal, not a step)."""
+
+    def equations(self):
+        return [ac.Eq(self.y, ac.der(self.u.signal))]
 
 
 class Derivative(SISO):
@@ -43,7 +53,7 @@ class FirstOrder(SISO):
     """First-order lag  y = k / (T s + 1) u:   T der(x) = k u - x,  y = x."""
 
     k = ac.Parameter(1.0, description="gain")
-    T = ac.Parameter(1.0, unit="s", min=0, description="time constant")
+    T = ac.Parameter(1.0, unit="s", description="time constant")
     x = ac.Variable(start=0.0, description="state (the output)")
 
     def equations(self):
@@ -57,8 +67,8 @@ class SecondOrder(SISO):
     """
 
     k = ac.Parameter(1.0, description="gain")
-    w = ac.Parameter(1.0, unit="rad/s", min=0, description="natural frequency")
-    D = ac.Parameter(1.0, min=0, description="damping ratio")
+    w = ac.Parameter(1.0, unit="rad/s", description="natural frequency")
+    D = ac.Parameter(1.0, description="damping ratio")
     x = ac.Variable(start=0.0, description="state (the output)")
     xd = ac.Variable(start=0.0, description="state (der of the output)")
 
@@ -76,37 +86,38 @@ class _State(ac.Component):
 
 
 class TransferFunction(SISO):
-    """y = num(s)/den(s) u, coefficients highest power first, in controllable canonical
-    form.  With den = a0 s^n + ... + an (divided through by a0 to alpha_k = a_k/a0) and
-    num padded to n + 1 coefficients beta_j (also divided by a0):
+    """y = b(s)/a(s) u, coefficients highest power first (MSL
+    Blocks.Continuous.TransferFunction), in controllable canonical form.  With a = a0 s^n
+    + ... + an (divided through by a0 to alpha_k = a_k/a0) and b padded to n + 1
+    coefficients beta_j (also divided by a0):
 
         der(x[i]) = x[i+1]  (i < n),   der(x[n]) = u - sum_k alpha_k x[n-k+1],
         y = beta_0 der(x[n]) + sum_{j>=1} beta_j x[n-j+1]
 
-    ``num`` and ``den`` are structural parameters (they set the number of states): plain
+    ``b`` and ``a`` are structural parameters (they set the number of states): plain
     numbers fixed when the block is made; ``build`` creates the states.
 
     Examples
     --------
-    >>> tf = TransferFunction(num=[1.0], den=[0.5, 1.0])   # 1 / (0.5 s + 1)
+    >>> tf = TransferFunction(b=[1.0], a=[0.5, 1.0])   # 1 / (0.5 s + 1)
     >>> len(tf.state)
     1
     """
 
-    num = ac.Parameter((1.0,), structural=True,
-                       description="numerator coefficients, highest power of s first")
-    den = ac.Parameter((1.0, 1.0), structural=True,
-                       description="denominator coefficients, highest power of s first")
+    b = ac.Parameter((1.0,), structural=True,
+                     description="numerator coefficients, highest power of s first")
+    a = ac.Parameter((1.0, 1.0), structural=True,
+                     description="denominator coefficients, highest power of s first")
 
     def build(self):
-        num, den = [float(c) for c in self.num], [float(c) for c in self.den]
+        num, den = [float(c) for c in self.b], [float(c) for c in self.a]
         if not den or den[0] == 0:
-            raise ac.ModelError("TransferFunction: the leading coefficient of den must not be 0")
+            raise ac.ModelError("TransferFunction: the leading coefficient of a must not be 0")
         if len(num) > len(den):
-            raise ac.ModelError("TransferFunction: num has a higher degree than den (improper)")
+            raise ac.ModelError("TransferFunction: b has a higher degree than a (improper)")
         n = len(den) - 1
-        self.alpha = [a / den[0] for a in den[1:]]
-        self.beta = [0.0] * (n + 1 - len(num)) + [b / den[0] for b in num]
+        self.alpha = [c / den[0] for c in den[1:]]
+        self.beta = [0.0] * (n + 1 - len(num)) + [c / den[0] for c in num]
         self.state = [_State() for _ in range(n)]
 
     def equations(self):

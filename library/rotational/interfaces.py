@@ -49,6 +49,8 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
     ``stateSelect`` is the state priority of phi_rel and w_rel: "prefer" for a stiff
     shaft (the MSL's default); by default ("default") the model keeps the states it
     would have with ``PartialCompliant`` (see ``acausal.library.relative_states``).
+    ``phi_nominal`` (1e-4 rad) is the nominal value of phi_rel, which scales its error
+    tolerance.
     """
 
     phi_rel = ac.Variable(start=0.0, unit="rad", nominal=1e-4,
@@ -59,9 +61,9 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
 
     _relative_states = ("phi_rel", "w_rel")
 
-    def __init__(self, *, stateSelect="default", **modifications):
+    def __init__(self, *, stateSelect="default", phi_nominal=1e-4, **modifications):
         super().__init__(**modifications)
-        self._select(stateSelect)
+        self._select(stateSelect, phi_nominal)
 
     def equations(self):
         return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),

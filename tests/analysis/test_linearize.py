@@ -132,7 +132,7 @@ class GearedMotor(ac.Component):
     amplifier = SignalVoltage()
     ground = Ground()
     motor = DCMotor(R=R, L=L, k=K, J=J)
-    gear = IdealGear(n=5.0)
+    gear = IdealGear(ratio=5.0)
     load = Inertia(J=4e-3)
     friction = CubicDamper(d=2e-5)
     housing = Fixed()

@@ -60,7 +60,7 @@ class GearOnRotatingHousing(ac.Component):
 
     drive = rot.ConstantTorque(tau_constant=T)
     input = rot.Inertia(J=JA)
-    gear = rot.IdealGear(n=N, useSupport=True)
+    gear = rot.IdealGear(ratio=N, useSupport=True)
     output = rot.Inertia(J=JB)
     housing_speed = Sine(amplitude=WS, f=FS)
     housing = rot.Speed()

@@ -89,7 +89,7 @@ class GearedInertias(ac.Component):
 
     drive = rot.ConstantTorque(tau_constant=2.0)
     J1 = rot.Inertia(J=0.5)
-    gear = rot.IdealGear(n=4.0)
+    gear = rot.IdealGear(ratio=4.0)
     J2 = rot.Inertia(J=3.0)
 
     def equations(self):

@@ -4,4 +4,11 @@ use; ``make test-msl`` (and CI) compares all of them."""
 
 QUICK = {
     "Modelica.Mechanics.Rotational.Examples.First",
+    "Modelica.Mechanics.Rotational.Examples.Backlash",
+    "Modelica.Mechanics.Translational.Examples.ElastoGap",
+    "Modelica.Mechanics.Translational.Examples.Vehicle",
+    "Modelica.Mechanics.MultiBody.Examples.Elementary.Pendulum",
+    "Modelica.Mechanics.MultiBody.Examples.Elementary.SpringWithMass",
+    "Modelica.Blocks.Examples.Filter",
+    "Modelica.Blocks.Examples.PID_Controller",
 }

@@ -166,7 +166,7 @@ _CLASSES = {
     "translational": {"mass": ("tr.Mass", "m"), "spring": ("tr.Spring", "c"),
                       "damper": ("tr.Damper", "d")},
     "rotational": {"mass": ("rot.Inertia", "J"), "spring": ("rot.Spring", "c"),
-                   "damper": ("rot.Damper", "d"), "gear": ("rot.IdealGear", "n")},
+                   "damper": ("rot.Damper", "d"), "gear": ("rot.IdealGear", "ratio")},
 }
 _PINS = {"electrical": ("p", "n"), "translational": ("flange_a", "flange_b"),
          "rotational": ("flange_a", "flange_b")}

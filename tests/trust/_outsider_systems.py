@@ -51,7 +51,7 @@ class First(ac.Component):
     sine = bl.Sine(amplitude=10.0, f=5.0)
     torque = ro.Torque()
     inertia1 = ro.Inertia(J=0.1)
-    gear = ro.IdealGear(n=10.0)
+    gear = ro.IdealGear(ratio=10.0)
     inertia2 = ro.Inertia(J=2.0, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
     spring = ro.Spring(c=1e4)
     inertia3 = ro.Inertia(J=2.0, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
@@ -177,7 +177,7 @@ FILTER_DEN = (0.001, 0.03, 0.3, 1.0)
 
 class CriticalFilter(ac.Component):
     step = bl.Step(height=1.0, startTime=0.0)
-    tf = bl.TransferFunction(num=[1.0], den=list(FILTER_DEN))
+    tf = bl.TransferFunction(b=[1.0], a=list(FILTER_DEN))
 
     def equations(self):
         return [ac.connect(self.step.y, self.tf.u)]
@@ -195,7 +195,7 @@ class SaturatedLoop(ac.Component):
 
 class LeadLag(ac.Component):
     step = bl.Step(height=1.0, startTime=0.1)
-    tf = bl.TransferFunction(num=[1.0, 1.0], den=[0.1, 1.0])
+    tf = bl.TransferFunction(b=[1.0, 1.0], a=[0.1, 1.0])
 
     def equations(self):
         return [ac.connect(self.step.y, self.tf.u)]
