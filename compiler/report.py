@@ -12,8 +12,11 @@ equations) is not kept.  Unpickling it needs no sympy.
 from __future__ import annotations
 
 import json
+import textwrap
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from .structure.causalize import FILL_LIMIT
+from .structure.graph import UNASSIGNED
 
 __all__ = ["IndexReport", "AliasSummary", "EquationNames", "mode_structures"]
 
@@ -188,7 +191,7 @@ class IndexReport:
 
     def plot(self, ax=None, path=None):
         """The incidence matrix in BLT order with the blocks outlined (matplotlib)."""
-        import matplotlib
+        import matplotlib          # an optional dependency (the plot extra), used here only
         if path is not None:
             matplotlib.use("Agg")
         import matplotlib.pyplot as plt
@@ -243,7 +246,6 @@ class IndexReport:
             lines.append(f"  BLT: {len(sizes)} blocks, largest {max(sizes)}, {torn} torn")
         kept = getattr(self, "kept_for_fill", [])
         if kept:
-            from .structure.causalize import FILL_LIMIT
             lines.append(f"  fill: {len(kept)} assigned variable(s) kept as unknowns (gradient "
                          f"over {FILL_LIMIT} entries and its equation's), e.g. "
                          + ", ".join(kept[:3]))
@@ -367,7 +369,6 @@ WIDTH = 100      # the text report wraps at this width; it never cuts an equatio
 def _wrapped(first: str, text: str) -> list:
     """``first + text`` as lines of at most WIDTH characters where it can break, the
     continuation lines indented under the text (no character of it is dropped)."""
-    import textwrap
     return textwrap.wrap(text, WIDTH, initial_indent=first,
                          subsequent_indent=" " * len(first), break_long_words=False,
                          break_on_hyphens=False) or [first]
@@ -385,7 +386,6 @@ def names_of(system, variables) -> list:
 
 
 def _times_differentiated(s, e) -> int:
-    from .structure.graph import UNASSIGNED
     k = 0
     while e < len(s.eq_to_diff) and s.eq_to_diff[e] is not UNASSIGNED:
         e = s.eq_to_diff[e]

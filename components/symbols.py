@@ -14,6 +14,8 @@ never holds).  Errors are ``InvalidEquation``; flattening adds the component pat
 """
 from __future__ import annotations
 
+import os
+
 import numpy as np
 import sympy as sp
 from sympy import S
@@ -22,12 +24,63 @@ from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 from ..errors import InvalidEquation
 
-__all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
+__all__ = ["Symbol", "SYMBOLS", "time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
            "sympify_value", "When", "when", "reinit", "pre", "text", "sample", "Sample",
            "assign", "Assign"]
 
 time = sp.Symbol("time", real=True)
 _ONE_ARGUMENT = sp.FiniteSet(1)     # der's nargs, as Function makes it uniform
+
+
+class Symbol(sp.Symbol):
+    """A variable's or parameter's symbol, real; the sum, difference and product of two
+    of them (and a product with der() of one) built directly in sympy's canonical form
+    (:mod:`.realsymbol` says why and how)."""
+
+    __slots__ = ()
+
+    def __new__(cls, name, **assumptions):
+        # always real, so that every one has the same assumptions (and sorts by name)
+        return super().__new__(cls, name, **{**assumptions, "real": True})
+
+    def __add__(self, other):
+        if type(other) is not Symbol or other.name == self.name \
+                or not global_parameters.evaluate:
+            return super().__add__(other)
+        args = (self, other) if self.name < other.name else (other, self)
+        return _checked(sp.Add(*args, evaluate=False), "__add__", self, other)
+
+    def __sub__(self, other):
+        if type(other) is not Symbol or other.name == self.name \
+                or not global_parameters.evaluate:
+            return super().__sub__(other)
+        # a symbol sorts before a product: -other, Mul(-1, other), is the second term
+        out = sp.Add(self, sp.Mul(S.NegativeOne, other, evaluate=False), evaluate=False)
+        return _checked(out, "__sub__", self, other)
+
+    def __mul__(self, other):
+        if not global_parameters.evaluate:
+            return super().__mul__(other)
+        if type(other) is Symbol and other.name != self.name:
+            args = (self, other) if self.name < other.name else (other, self)
+        elif type(other) is der and type(other.args[0]) in SYMBOLS:
+            args = (self, other)           # a Symbol sorts before an unlisted Function
+        else:
+            return super().__mul__(other)
+        return _checked(sp.Mul(*args, evaluate=False), "__mul__", self, other)
+
+
+#: a model's symbols and sympy's own (time is one): what reads as "a symbol"
+SYMBOLS = frozenset((Symbol, sp.Symbol))
+_CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
+
+
+def _checked(out, op, a, b):
+    if _CHECK:
+        ref = getattr(sp.Expr, op)(a, b)
+        if out != ref or sp.srepr(out) != sp.srepr(ref):
+            raise AssertionError(f"{op}({a}, {b}) gave {out}, sympy {ref}")
+    return out
 
 
 class der(sp.Function):
@@ -36,7 +89,7 @@ class der(sp.Function):
     nargs = 1
 
     def __new__(cls, *args, **options):
-        if len(args) == 1 and type(args[0]) is sp.Symbol and cls is der and not options \
+        if len(args) == 1 and type(args[0]) in SYMBOLS and cls is der and not options \
                 and global_parameters.evaluate:
             # der(x) of a symbol, most of a model's der() calls: the object Function's
             # constructor builds (der has no eval, a symbol nothing to evalf), without
@@ -106,7 +159,7 @@ class _TextPrinter(StrPrinter):
     """
 
     def _print(self, expr, **kwargs) -> str:
-        if type(expr) is sp.Symbol:      # what the dispatch would find: _print_Symbol
+        if type(expr) in SYMBOLS:      # what the dispatch would find: _print_Symbol
             return expr.name
         return super()._print(expr, **kwargs)
 
@@ -135,7 +188,7 @@ class _TextPrinter(StrPrinter):
         a_str, b_str = [], []
         for factors, texts in ((num, a_str), (den, b_str)):
             for x in factors:
-                if type(x) is sp.Symbol:
+                if type(x) in SYMBOLS:
                     texts.append(x.name)
                     continue
                 if prec is None:
@@ -159,7 +212,7 @@ class _TextPrinter(StrPrinter):
                 sign, t = "-", t[1:]
             else:
                 sign = "+"
-            plain = type(term) is sp.Symbol or (term.is_Mul and prec <= PREC_ADD)
+            plain = type(term) in SYMBOLS or (term.is_Mul and prec <= PREC_ADD)
             if not plain and (precedence(term) < prec or term.is_Add):
                 out += [sign, f"({t})"]
             else:
@@ -198,9 +251,9 @@ def _lex_ordered_terms(args):
         powers = []
         if rest is not S.One:
             for f in (rest.args if rest.is_Mul else (rest,)):
-                if type(f) is sp.Symbol and f.is_commutative:
+                if type(f) in SYMBOLS and f.is_commutative:
                     powers.append((f, 1))
-                elif (f.is_Pow and type(f.base) is sp.Symbol and f.base.is_commutative
+                elif (f.is_Pow and type(f.base) in SYMBOLS and f.base.is_commutative
                       and f.exp.is_Integer):
                     powers.append((f.base, int(f.exp)))
                 else:
@@ -241,9 +294,9 @@ def _ordered_factors(expr):
         c, sign = -c, "-"
     named, add, fn = [], None, None
     for f in (e.args if e.is_Mul else (e,)):
-        if type(f) is sp.Symbol:
+        if type(f) in SYMBOLS:
             named.append((f.name, f))
-        elif f.is_Pow and type(f.base) is sp.Symbol and f.exp.is_Integer:
+        elif f.is_Pow and type(f.base) in SYMBOLS and f.exp.is_Integer:
             named.append((f.base.name, f))
         elif f.is_Add and add is None:
             add = f
@@ -362,7 +415,7 @@ def _text(value) -> str:
 
 def _side(value, lhs, rhs) -> sp.Expr:
     """One side of an equation: a finite value, not a relation or a logical value."""
-    if type(value) is sp.Symbol:          # a variable: a value, finite
+    if type(value) in SYMBOLS:            # a variable: a value, finite
         return value
     # Eq(0, ...), written for every balance, without sympify
     expr = S.Zero if type(value) is int and value == 0 else sympify_value(value)

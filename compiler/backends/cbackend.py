@@ -47,6 +47,8 @@ from ...native import build as cbuild
 from .arraycode import use_array_code
 from .clibrary import attach
 from .cloops import looped_program
+from .codegen import combinations, row_groups
+from .emit import Emitter
 
 __all__ = ["c_source", "programs", "prepare", "Prepared", "bind", "BACKENDS"]
 
@@ -113,8 +115,6 @@ def _c_program(prefix, prog) -> tuple[list, int]:
     """The functions of one Program as (name, statements, calls, outputs), and the size
     of its work array."""
     # imported here: printing needs sympy, loading a library built before does not
-    from .codegen import combinations, row_groups
-    from .emit import Emitter
     n_a = len(prog.assigned)
     slot = {}
     for k, g in prog.grads.items():

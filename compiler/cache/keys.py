@@ -11,6 +11,7 @@ import os
 import sys
 import time as _time
 import types
+from importlib.util import find_spec
 
 import numpy as np
 
@@ -70,7 +71,6 @@ def fingerprint() -> str:
 def _sympy_version() -> str:
     """sympy's version from its release file: found, not imported (importing sympy is
     what a cached model saves; reading the installed metadata is slower still)."""
-    from importlib.util import find_spec
     spec = find_spec("sympy")
     if spec is None or not spec.submodule_search_locations:
         return "none"
@@ -98,6 +98,8 @@ def flat_key(flat, backend: str) -> str | None:
 
 
 def _flat_key(flat, backend: str) -> str:
+    # sympy and what needs it are imported in the flat key's functions only: the tree
+    # key is taken without sympy (0.3 s to import), which a model found so never loads
     from ...components.symbols import Equation
     ex = _key_text()
 
@@ -159,6 +161,7 @@ def _key_text():
     walked by recursion up to a depth of 100."""
     import sympy as sp
 
+    from ...components.symbols import SYMBOLS
     from ..algebra.symbolic import ExactText
 
     class KeyText(ExactText):
@@ -213,7 +216,7 @@ def _key_text():
             return out
 
         def _atom(self, node) -> str:
-            if type(node) is not sp.Symbol:
+            if type(node) not in SYMBOLS:
                 return super()._atom(node)
             key = tuple(sorted(node.assumptions0.items()))
             facts = self.facts.get(key)

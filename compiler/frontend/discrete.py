@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ...components.symbols import no_event
+
 
 __all__ = ["DiscreteValue", "freeze_integer_functions"]
 
@@ -63,7 +65,6 @@ def _has_type(e: sp.Basic, types: tuple) -> bool:
 def freeze_integer_functions(flat) -> list:
     """Replace floor atoms in every equation and when-clause of ``flat`` by discrete
     symbols (in place); return the :class:`DiscreteValue` list, in a canonical order."""
-    from ...components.symbols import no_event
     found: dict = {}
 
     def freeze(e):

@@ -22,7 +22,7 @@ import sympy as sp
 from ...components import inheritance
 from ...components.component import Component, Connection, Port, compiling, in_context
 from ...components.declarations import Parameter, bound_violation
-from ...components.symbols import Equation, When, der, time
+from ...components.symbols import SYMBOLS, der, Equation, time, When
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
 from .flatarrays import collect_array
 from .flatder import check_der_arguments, expand_derivatives, has_der
@@ -237,13 +237,13 @@ def _node_equations(members: list, connections: list) -> list:
         for p, _ in members[1:]:
             b = getattr(p, name)
             diff = signed_sum({a: 1, b: -1}) if a != b else a - b
-            plain = a != b and type(a) is sp.Symbol and type(b) is sp.Symbol
+            plain = a != b and type(a) in SYMBOLS and type(b) in SYMBOLS
             eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect",
                                     plain=diff if plain else None))
     for name in first.through():
         signed = [(getattr(p, name), 1 if role == "inside" else -1) for p, role in members]
         coeffs = dict(signed)
-        plain = len(coeffs) == len(signed) and all(type(q) is sp.Symbol for q in coeffs)
+        plain = len(coeffs) == len(signed) and all(type(q) in SYMBOLS for q in coeffs)
         total = signed_sum(coeffs) if plain else sp.Add(*[c * q for q, c in signed])
         eqs.append(FlatEquation(total, total, where, "connect", "connect",
                                 plain=total if plain else None))

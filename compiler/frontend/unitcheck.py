@@ -23,6 +23,7 @@ changes the model.
 """
 from __future__ import annotations
 
+import time
 import warnings
 from fractions import Fraction
 
@@ -73,7 +74,6 @@ def check_units(flat, mode: str = "warn", known: UnitCheck | None = None,
     ``mode`` without checking again, so a cache hit does not load sympy's units.
     ``quiet``: the findings are returned, not reported (:func:`complain` reports them
     where the check ran in a side job, :mod:`acausal.compiler.pipeline`)."""
-    import time
     if mode not in MODES:
         raise ValueError(f"check_units must be one of {MODES}, not {mode!r}")
     result = UnitCheck(mode=mode)

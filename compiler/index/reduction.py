@@ -89,17 +89,20 @@ def _check_square(system, red: IndexReduction) -> None:
             f"{red.n_states} states for {n_var} variables", [], [])
 
 
-def as_written(flat) -> dict:
+def as_written(flat, checked: bool = False) -> dict:
     """The structural index of the model as the user wrote it (before alias elimination),
     by Pantelides and, independently, by Pryce's Sigma-method; they must agree.
 
     Alias elimination can resolve a constraint before index reduction sees it (two
     capacitors in parallel share one voltage variable), so the index the user's equations
-    have is measured here, on integers only.
+    have is measured here, on integers only.  ``checked``: the alias-reduced system has
+    passed the balance check, so this one is structurally regular too (every equation
+    alias elimination removed held the variable it removed) and Pantelides need not
+    check it again.
     """
     s = _flat_structure(flat)
     try:
-        found = pantelides(s)
+        found = pantelides(s, checked=checked)
         counts = found.diff_counts[: s.n_eqs]
         entries, columns = signature_matrix(s, sparse=True)
         sig = sigma_method(entries, start=_pantelides_transversal(found, columns, s.n_eqs))

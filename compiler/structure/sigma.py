@@ -18,6 +18,7 @@ equation i.
 """
 from __future__ import annotations
 
+import heapq
 from dataclasses import dataclass
 
 import numpy as np
@@ -158,7 +159,6 @@ def _sparse_transversal(n: int, rows: list, cols: list, vals: list) -> np.ndarra
     ``sum d - sum c``, a bound for every transversal).  The rounds are about as many as
     the distinct distances, a few for a model: no dense n x n matrix and no solver
     import at any size."""
-    import heapq
     adj = [[] for _ in range(n)]
     d = [None] * n
     for r, k, v in zip(rows, cols, vals):
