@@ -13,6 +13,8 @@ can all name them without importing each other.
         InvalidInheritance             equations() calling its base's, a bad @replaces
         InvalidIndex (also IndexError) an array index outside its shape
         NotInModel                     a name that is not part of the model
+        AbsentComponent (also AttributeError)  a conditional part that is not there
+        MissingInput                   a top-level input simulate was not given
         UnitError                      dimensions that do not agree
         StructuralError                a structural pass could not proceed
             IndexReductionFailed       Pantelides could not make the system matchable
@@ -35,8 +37,8 @@ from typing import Sequence
 
 __all__ = ["ModelError", "InvalidValue", "InvalidEquation", "DiscreteVariableError",
            "InvalidConnection", "InvalidHierarchy", "InvalidInheritance", "InvalidIndex",
-           "NotInModel", "UnitError", "StructuralError", "IndexReductionFailed",
-           "StructurallySingular", "OverdeterminedModel", "UnderdeterminedModel",
+           "NotInModel", "AbsentComponent", "MissingInput", "UnitError", "StructuralError",
+           "IndexReductionFailed", "StructurallySingular", "OverdeterminedModel", "UnderdeterminedModel",
            "SimulationError", "InitializationFailed", "BackendError",
            "OperatingPointError", "SteadyStateError", "ModeConflict", "UnitWarning",
            "ModeWarning", "TransferFunctionWarning"]
@@ -84,6 +86,16 @@ class InvalidIndex(ModelError, IndexError):
 class NotInModel(ModelError):
     """An equation or connection uses a component, port, variable or symbol that is not
     part of the model being compiled."""
+
+
+class AbsentComponent(ModelError, AttributeError):
+    """A conditional port or sub-component (``ac.Conditional``) read or connected while
+    the structural flag that makes it is False."""
+
+
+class MissingInput(ModelError):
+    """A top-level input of the model (an input port of the model itself that nothing in
+    it drives) that ``simulate`` was not told how to drive (``inputs=``)."""
 
 
 class UnitError(ModelError):

@@ -10,21 +10,24 @@ from types import SimpleNamespace
 import numpy as np
 import sympy as sp
 
+from ..components.declarations import TYPE_NAMES
+from ..components.logic import INITIAL
 from ..components.symbols import time
 from ..components.units import output_tables
-from ..errors import InitializationFailed, ModelError
 from .algebra.derivative import solve_linear
 from .algebra.symbolic import symbols_of
 from .backends.cbackend import programs
-from .backends.codegen import extract_relations, generate
+from .backends.codegen import FrozenSymbols, extract_relations, generate
 from .backends.parametric import parameter_functions
 from .frontend.sampled import when_rows as clause_rows
 from .index.numeric import CoefficientValues, is_number
-from .modelcode import DelayCode, DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
+from .modelcode import (DelayCode, DynamicSets, InitialCode, InputCode, ModelCode, RelationInfo,
+                        WhenCode)
 from .report import EquationNames
 from .structure.causalize import causalize, full_form
 from .structure.graph import UNASSIGNED
 from .structure.matching import _match
+from ..errors import InitializationFailed, ModelError
 
 __all__ = ["assemble", "model_code", "choose_initial_rows", "delay_code", "feeds_back"]
 
@@ -39,6 +42,7 @@ def assemble(system, reduction, reduced, report, discretes, helds=()):
         caus = full_form(reduction, len(syms), len(system.equations))
     else:
         held_items = [SimpleNamespace(symbol=s) for h in helds for s in (h.symbol, h.pre)]
+        held_items.append(SimpleNamespace(symbol=INITIAL))
         values = CoefficientValues(system, reduced.parameters, list(discretes) + held_items)
         caus = causalize(reduction, values)
         untorn = [b for b in caus.blocks if b.get("not_torn")]
@@ -73,8 +77,14 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
     when_rows, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
     delay_rows = [d.argument for d in delays]
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
+    everything = [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows
+    uses_initial = bool(getattr(flat, "uses_initial", False))
+    # m: relation values, floor values, then held(y) and pre(y) of the discrete
+    # variables, then initial() if the model reads it
+    dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + \
+        [h.pre for h in helds] + ([INITIAL] if uses_initial else [])
     exprs, crossings, modes, origin = extract_relations(
-        [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows)
+        everything, _frozen(reduced, dsyms, assigned))
     parts = np.split(np.array(exprs, dtype=object), np.cumsum(sizes)[:-1])
     assigned = [(a, e) for (a, _), e in zip(assigned, parts[0])]
     rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
@@ -82,10 +92,10 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
     zeros = set(reduced.structural_zeros)
     params = [p for p in reduced.parameters if is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
-    # m: relation values, floor values, then held(y) and pre(y) of the discrete variables
-    dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + [h.pre for h in helds]
     # the delayed values are read from p after the tunable parameters (runtime/delays.py)
-    inputs = psyms + [d.symbol for d in delays]
+    # then the top-level inputs' values, written by the runtime (runtime/inputs.py)
+    model_inputs = list(getattr(flat, "inputs", ()))
+    inputs = psyms + [d.symbol for d in delays] + [i.symbol for i in model_inputs]
     rel_list = list(modes.values())
     code = generate(rows, z_syms, inputs, len(modes),
                     crossings + [d.argument for d in discretes], assigned, outputs=syms,
@@ -101,11 +111,13 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
     names = [q.name for q in z_syms]
     relations = RelationInfo(
         ops=[type(r).__name__ for r in rel_list],
-        texts=[_relation_text(r, k, origin, system, caus, assigned, init_text, reduced)
+        texts=[_relation_text(r, k, origin, system, caus, assigned, init_text, reduced,
+                              (len(init_rows), when_layout, helds))
                for k, r in enumerate(rel_list)],
         nominal=[_relation_nominal(system, g, assigned) for g in crossings],
         discrete_texts=[d.text for d in discretes],
         held_names=[h.name for h in helds], held_start=[h.start for h in helds],
+        has_initial=uses_initial, held_types=_type_names(flat, helds),
         time_linear=_time_linear(crossings + [d.argument for d in discretes], assigned,
                                  set(psyms) | set(dsyms)))
     initial = InitialCode(init_code, init_text, choose_initial_rows(
@@ -125,7 +137,10 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms),
-              "derived_parameters": dict(flat.derived)})
+              "derived_parameters": dict(flat.derived),
+              "value_types": _value_types(flat),
+              "parameter_types": {p.name: _TYPE_NAME[p.type] for p in params
+                                  if getattr(p, "type", float) is not float}})
     # the declared unit and description of every name of a result
     out.meta["units"], out.meta["descriptions"] = output_tables(
         {**{v.name: v.attrs.unit for v in flat.variables},
@@ -138,15 +153,55 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
             delays, delay_rows, delays_code, reduced.parameters, psyms,
             set(z_syms) | {a for a, _ in assigned} | set(inputs) | set(dsyms) | set(modes),
             feeds_back(system, delays))
+    if model_inputs:
+        out.inputs = InputCode([i.name for i in model_inputs], [i.type for i in model_inputs],
+                               [i.start for i in model_inputs])
     if reduced.whens:
-        out.whens = WhenCode(whens_code, len(reduced.whens), texts=[
-            f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} ({w.origin_class})]"
+        out.whens = WhenCode(whens_code, len(when_layout["cond_owners"]), texts=[
+            (f"when {sp.sstr(w.condition)}" if w.equation is None else w.equation)
+            + f" [{w.origin or '(model)'} ({w.origin_class})]"
             for w in reduced.whens], **when_layout)
     return out
 
 
-def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -> str:
-    """The relation as written, with the equation it is part of."""
+def _frozen(reduced, dsyms, assigned):
+    """The symbols whose values change only at events: parameters, frozen and held values,
+    Boolean and Integer variables, and the assigned variables computed from them alone.
+    A relation of these that reads a Boolean, an Integer, a held value or initial() is
+    evaluated where it is read, not an event (it cannot cross between events); a relation
+    of parameters alone stays an item of the discrete state, as it always was."""
+    typed = {v.symbol for v in reduced.variables
+             if getattr(v.attrs, "type", float) is not float}
+    discrete = typed | set(dsyms)
+    if not discrete:
+        return None
+    frozen = {p.symbol for p in reduced.parameters} | discrete
+    for a, e in assigned:
+        if symbols_of(e) <= frozen:
+            frozen.add(a)
+            discrete.add(a)
+    return FrozenSymbols(frozen, discrete)
+
+
+_TYPE_NAME = {float: "Real", bool: "Boolean", int: "Integer"}
+
+
+def _value_types(flat) -> dict:
+    """The Boolean and Integer variables of a result, by name (aliases included)."""
+    return {v.name: TYPE_NAMES[v.attrs.type] for v in flat.variables
+            if getattr(v.attrs, "type", float) is not float}
+
+
+def _type_names(flat, helds) -> list:
+    types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables}
+    return [TYPE_NAMES[types.get(h.name, float)] for h in helds]
+
+
+def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced,
+                   clauses=None) -> str:
+    """The relation as written, with the equation it is part of (``clauses``: the number
+    of initial rows, the when-clauses' layout and the held values, which tell a
+    when-clause's condition from a Boolean's or Integer's equation)."""
     i = origin[k]
     n_a, n_r = len(assigned), len(caus.residual_eqs)
     if i < n_a:
@@ -157,6 +212,13 @@ def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -
         where = "initial conditions"
     else:
         where = "a when-clause"
+        if clauses is not None:
+            n_init, layout, helds = clauses
+            j = i - n_a - n_r - (caus.n_states if caus.causal else 0) - n_init
+            a = j - len(layout["cond_owners"]) - len(layout["targets"])
+            if 0 <= a < len(layout["assign_slots"]) and \
+                    layout["assign_owners"][a] in set(layout["always"]):
+                where = f"the equation of {helds[layout['assign_slots'][a]].name}"
     return f"{sp.sstr(rel)}  in {where}"
 
 

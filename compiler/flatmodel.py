@@ -45,6 +45,7 @@ class FlatParameter(_Located):
     component_class: str = ""
     min: float | None = None
     max: float | None = None
+    type: object = float      # float, bool or int (Real, Boolean, Integer)
 
     def describe(self) -> str:
         """``'R1' (Resistor): parameter R``, as the component's own errors say it."""
@@ -66,6 +67,9 @@ class FlatEquation(_Located):
     # it is still the residual (``plain is residual``) it holds no function of another
     # kind, and the passes that look for floor() or delay() need not walk it
     plain: object = field(default=None, repr=False, compare=False)
+    # the variable alone on the left of ``ac.Eq`` as written (a Boolean or Integer
+    # variable's equation gives its value: compiler/sampled.py), else None
+    defines: object = field(default=None, repr=False, compare=False)
 
     @property
     def text(self) -> str:
@@ -92,6 +96,8 @@ class FlatModel:
     ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
     components: dict = field(default_factory=dict)    # path -> class name
     derived: dict = field(default_factory=dict)       # bound parameter -> (binding, value)
+    uses_initial: bool = False                        # an equation reads initial()
+    inputs: list = field(default_factory=list)        # top-level inputs (frontend/inputs)
 
     def variable(self, name: str) -> FlatVariable:
         for v in self.variables:

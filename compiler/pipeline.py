@@ -27,6 +27,8 @@ from typing import Callable
 
 from .. import native
 from ..components.component import Component
+from ..components.declarations import TYPE_NAMES
+from ..components.logic import INITIAL
 from ..components.units import MODES
 from . import cache as compile_cache
 from .algebra.symbolic import SymbolicSystem, forget_expressions
@@ -128,9 +130,9 @@ def _discrete(c: Compilation) -> None:
 def _sampled(c: Compilation) -> None:
     c.helds = declare_discrete_variables(c.flat)
     if c.helds:
-        c.report.notes.append("discrete variables, held between events and assigned in "
-                              "when-clauses: " + ", ".join(h.name for h in c.helds[:20])
-                              + (" ..." if len(c.helds) > 20 else ""))
+        types = {v.name: TYPE_NAMES[getattr(v.attrs, "type", float)] for v in c.flat.variables}
+        c.report.discrete = [{"name": h.name, "type": types.get(h.name, "Real"),
+                              "set_by": h.clause} for h in c.helds]
 
 
 def _delays(c: Compilation) -> None:
@@ -165,7 +167,9 @@ def _structure(c: Compilation) -> None:
     system = SymbolicSystem.from_flat(c.reduced)
     system.parameters |= {d.symbol for d in c.discretes}     # constant between events
     system.parameters |= {s for h in c.helds for s in (h.symbol, h.pre)}
+    system.parameters.add(INITIAL)                           # initial(): constant in a run
     system.delays = {d.symbol: d for d in c.delays}          # inputs that vary
+    system.delays.update({i.symbol: i for i in getattr(c.reduced, "inputs", ())})
     c.system, c.structure = system, system.structure()
     c.n_equations = len(system.equations)
 

@@ -66,6 +66,9 @@ class IndexReport:
     modes: list = field(default_factory=list)
     units: object = None            # compiler.unitcheck.UnitCheck
     derived_parameters: dict = field(default_factory=dict)   # name -> (binding, value)
+    # the variables held between events (Boolean, Integer, discrete Real): name, type
+    # and what sets them (an equation evaluated at every event, or a when-clause)
+    discrete: list = field(default_factory=list)
 
     def __getstate__(self):
         self.equations                 # noqa: B018  (prints the texts not printed yet)
@@ -166,6 +169,7 @@ class IndexReport:
             "units": self.units.as_dict() if self.units is not None else None,
             "derived_parameters": {k: {"binding": b, "value": v}
                                    for k, (b, v) in self.derived_parameters.items()},
+            "discrete_variables": list(getattr(self, "discrete", [])),
         }
 
     def blt_order(self) -> tuple[list, list]:
@@ -278,6 +282,13 @@ class IndexReport:
                          "whose relation holds:")
             for m in comp["modes"]:
                 lines.append(f"    {m['mode']:<15}[{m['when']}]  {m['structure']}")
+        held = getattr(self, "discrete", [])
+        if held:
+            lines.append("  variables held between events (changed only at events):")
+            for d in held[:50]:
+                lines += _wrapped(f"    {d['name']} ({d['type']}): ", d["set_by"])
+            if len(held) > 50:
+                lines.append(f"    ... ({len(held) - 50} more)")
         if self.derived_parameters:
             lines.append("  derived parameters (bound to other parameters):")
             for name, (binding, value) in self.derived_parameters.items():

@@ -36,8 +36,8 @@ from __future__ import annotations
 import contextvars
 import functools
 import types
-
 from ..errors import InvalidInheritance
+
 
 __all__ = ["EQUATION_METHODS", "replaces", "prepare_class", "collect", "own_methods",
            "all_items"]

@@ -46,8 +46,8 @@ import tempfile
 import threading
 import time
 
-from ..errors import BackendError
 from .toolchain import cache_dir, find_compiler
+from ..errors import BackendError
 
 __all__ = ["LARGE", "LOOPED", "UNIT", "UNIT_SIZE", "FLAGS", "FLAGS_LARGE", "FLAGS_LOOPED",
            "flags_for", "jobs", "split", "compile_library", "Compilation", "Build",

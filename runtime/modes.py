@@ -65,11 +65,17 @@ class DiscreteState:
         # held(y) then pre(y) of the discrete variables follow the items in m
         self.n_held = getattr(info, "n_held", 0)
         self.held_start = np.asarray(getattr(info, "held_start", []), dtype=float)
+        # initial() follows them where the model reads it: 1.0 while initializing
+        self.has_initial = bool(getattr(info, "has_initial", False))
+        types = list(getattr(info, "held_types", [])) or ["Real"] * self.n_held
+        self.held_types = types
+        self._boolean = np.array([t == "Boolean" for t in types], dtype=bool)
+        self._integer = np.array([t == "Integer" for t in types], dtype=bool)
         self.upward = np.array([_UPWARD[op] for op in info.ops], dtype=bool)
         self.strict = np.array([_STRICT[op] for op in info.ops], dtype=bool)
         self.nominal = np.asarray(info.nominal, dtype=float)
         self._roots, self._scales = roots, scales
-        self.m = np.zeros(self.n_rel + self.n_disc + 2 * self.n_held)
+        self.m = np.zeros(self.n_rel + self.n_disc + 2 * self.n_held + self.has_initial)
         self.reset_held()
         self.offset = np.zeros(self.n_rel + 2 * self.n_disc)
         self.time_linear = np.asarray(info.time_linear, dtype=np.int64)
@@ -348,3 +354,27 @@ class DiscreteState:
         if self.n_held:
             self.m[self.held] = self.held_start
             self.m[self.pre] = self.held_start
+
+    def typed(self, slots, values) -> np.ndarray:
+        """Values assigned to the held values ``slots``: a Boolean's 1.0 or 0.0, an
+        Integer's whole number (a sum of gains times whole numbers rounds to one)."""
+        out = np.asarray(values, dtype=float).copy()
+        b, i = self._boolean[slots], self._integer[slots]
+        if b.any():
+            out[b] = np.where(out[b] > 0.5, 1.0, 0.0)
+        if i.any():
+            out[i] = np.rint(out[i])
+        return out
+
+    def show(self, j, x) -> str:
+        """Held value j as its type prints it (True, 3, 0.25)."""
+        if self._boolean[j]:
+            return str(bool(x > 0.5))
+        if self._integer[j]:
+            return str(int(round(x)))
+        return f"{x:g}"
+
+    def set_initial(self, value: bool) -> None:
+        """initial() is true while the initial values are found, false afterwards."""
+        if self.has_initial:
+            self.m[-1] = 1.0 if value else 0.0

@@ -48,7 +48,6 @@ import ctypes
 
 import numpy as np
 
-from ..errors import BackendError
 from . import cbdf_sparse as sparse_lu
 from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
 from .cbdf_callbacks import Callbacks, problem_callbacks
@@ -56,6 +55,7 @@ from .cbdf_dyn import bind as bind_dynamic
 from .cbdf_layout import CbdfState
 from .cbdf_library import library
 from .linalg import LinearSolver, singular_block
+from ..errors import BackendError
 
 __all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library",
            "R_BUDGET", "R_FULL", "R_SPECIAL", "R_FAIL"]
@@ -96,6 +96,8 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         why = "stability limit detection runs in the Python loop"
     elif getattr(problem, "delays", None) is not None:
         why = "delay() keeps the history of every accepted step in Python"
+    elif getattr(problem, "inputs_vary", False):
+        why = "its inputs are functions of time, evaluated in Python before every call"
     elif not model and getattr(problem, "after_step", None) is not None:
         why = "its after_step hook runs in Python after every step"
     if step_loop == "auto":

@@ -25,7 +25,7 @@ import sympy as sp
 from sympy.calculus.accumulationbounds import AccumBounds
 from sympy.tensor.tensor import TensExpr
 
-from ...components.symbols import SYMBOLS, Symbol, has_atom_in
+from ...components.symbols import has_atom_in
 
 __all__ = ["fast_xreplace", "fast_difference", "has_undefined", "sort_args", "negated",
            "forget_negated",
@@ -119,9 +119,7 @@ _FACT_SETS: dict = {}
 def _facts(q):
     """The assumptions of the symbol ``q`` as one shared object per distinct set, so
     that two symbols' are compared by identity (``assumptions0`` makes a new dict each
-    time it is read).  A model's symbols are all real (:class:`components.symbols.Symbol`)."""
-    if type(q) is Symbol:
-        return Symbol
+    time it is read)."""
     out = _FACTS.get(q)
     if out is None:
         items = frozenset(q.assumptions0.items())
@@ -131,10 +129,10 @@ def _facts(q):
 
 def _signed_symbol(v):
     """(sign, symbol) of a value that is a commutative symbol or its negative; else None."""
-    if type(v) in SYMBOLS:
+    if type(v) is _Symbol:
         return (1, v) if v.is_commutative else None
     if type(v) is _Mul and len(v.args) == 2 and v.args[0] is _MINUS \
-            and type(v.args[1]) in SYMBOLS and v.args[1].is_commutative:
+            and type(v.args[1]) is _Symbol and v.args[1].is_commutative:
         return -1, v.args[1]
     return None
 
@@ -199,7 +197,7 @@ def _product(e, mapping):
             raise Fallback
     if coeff is not None and any(f.is_Add for f in factors):
         raise Fallback
-    if coeff is _MINUS and len(factors) == 1 and type(factors[0]) in SYMBOLS:
+    if coeff is _MINUS and len(factors) == 1 and type(factors[0]) is _Symbol:
         return negated(factors[0])
     sort_args(factors)
     if coeff is not None:
@@ -339,11 +337,11 @@ def _plain_keys(seq):
     keys, facts = [], None
     for t in seq:
         kind = type(t)
-        if kind in SYMBOLS:
+        if kind is _Symbol:
             key, q = (0, t.name), t
         elif kind is _Mul:
             args = t.args
-            if len(args) != 2 or args[0] is not _MINUS or type(args[1]) not in SYMBOLS:
+            if len(args) != 2 or args[0] is not _MINUS or type(args[1]) is not _Symbol:
                 return None
             q = args[1]
             key = (1, q.name)

@@ -19,7 +19,7 @@ from functools import lru_cache, partial as bound
 
 import sympy as sp
 
-from ...components.symbols import SYMBOLS, der, time
+from ...components.symbols import der, time
 from .derivative import partial, symbol_nodes, terms_with
 from .substitution import forget_negated, negated, sort_args
 from ..structure.graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER,
@@ -91,7 +91,9 @@ class SymbolicSystem:
     var_info: dict = field(default_factory=dict)  # base symbol -> FlatVariable
     derivatives: dict = field(default_factory=dict)  # symbol -> der symbol
     index: dict = field(default_factory=dict)     # symbol -> index
-    delays: dict = field(default_factory=dict)    # delayed-value symbol -> DelayValue
+    # delayed-value symbol -> DelayValue, input symbol -> InputValue: values that vary,
+    # read from p, never differentiated
+    delays: dict = field(default_factory=dict)
 
     @classmethod
     def from_flat(cls, flat) -> "SymbolicSystem":
@@ -194,6 +196,8 @@ class SymbolicSystem:
             found = [self.delays[q] for q in symbols_of(r) if q in self.delays]
             if found:
                 d = found[0]
+                if hasattr(d, "not_differentiable"):     # a top-level input
+                    raise ModelError(d.not_differentiable())
                 raise ModelError(
                     f"{d.text} in {d.where} appears in an equation that index reduction "
                     "must differentiate (a constraint on a state, e.g. a delayed position "
@@ -245,7 +249,7 @@ def _factor_kind(t, s, parameters: set) -> int | None:
     for f in t.args:
         if f is s:
             found = True
-        elif type(f) in SYMBOLS:
+        elif type(f) is sp.Symbol:
             if f == s:
                 return None         # an equal symbol of another object: sympy decides
             kind = max(kind, LINEAR_PARAM if f in parameters else LINEAR_VAR)
@@ -324,7 +328,7 @@ _MINUS = sp.S.NegativeOne
 
 def _plain_term(t) -> bool:
     """A symbol, or der() of a symbol."""
-    return type(t) in SYMBOLS or (type(t) is der and type(t.args[0]) in SYMBOLS)
+    return type(t) is sp.Symbol or (type(t) is der and type(t.args[0]) is sp.Symbol)
 
 
 def signed_terms(side, sign: int, coeffs: dict) -> bool:
@@ -352,7 +356,7 @@ def signed_sum(coeffs: dict) -> sp.Expr:
     if len(terms) == 1:
         return terms[0]
     sort_args(terms)     # sympy's _addsort
-    return sp.Add._from_args(terms)
+    return sp.Add(*terms, evaluate=False)
 
 
 class ExactText:

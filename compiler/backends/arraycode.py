@@ -40,7 +40,6 @@ from sympy.logic.boolalg import ITE, And, BooleanFalse, BooleanTrue, Not, Or
 from .codegen import _negate
 from .emit import _FUNCS, Emitter
 from .lazycode import install_array_code
-from ...components.symbols import SYMBOLS
 
 __all__ = ["array_source", "use_array_code", "MIN_STATEMENTS", "MIN_GROUP"]
 
@@ -106,7 +105,7 @@ def _shape(e, refs, leafidx, leaves) -> str:
 
 
 def _expr_statement(target, e, refs) -> _Statement:
-    if type(e) in SYMBOLS:      # a copy of a value (most outputs of expand)
+    if type(e) is sp.Symbol:      # a copy of a value (most outputs of expand)
         where = refs.get(e)
         if where is None:
             raise _Unsupported(f"unknown symbol {e}")

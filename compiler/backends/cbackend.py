@@ -42,13 +42,13 @@ import threading
 import numpy as np
 
 from ... import native
-from ...errors import BackendError
 from ...native import build as cbuild
 from .arraycode import use_array_code
 from .clibrary import attach
 from .cloops import looped_program
 from .codegen import combinations, row_groups
 from .emit import Emitter
+from ...errors import BackendError
 
 __all__ = ["c_source", "programs", "prepare", "Prepared", "bind", "BACKENDS"]
 

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from ...components.symbols import SYMBOLS, no_event, time
+from ...components.symbols import no_event, time
 from ..algebra.derivative import partial as _partial
 from ..algebra.derivative import simple_partials
 from ..algebra.symbolic import symbols_of
@@ -82,11 +82,26 @@ def _fold(args, pair):
     return out
 
 
-def extract_relations(exprs: list) -> tuple[list, list, dict, list]:
+class FrozenSymbols:
+    """Symbols whose values change only at events (``symbols``), and among them those
+    that make a relation of them a discrete one (``discrete``: Booleans, Integers, held
+    values; not parameters alone, whose relations stay items of the discrete state)."""
+
+    def __init__(self, symbols, discrete):
+        self.symbols, self.discrete = frozenset(symbols), frozenset(discrete)
+
+    def covers(self, free) -> bool:
+        return free <= self.symbols and not self.discrete.isdisjoint(free)
+
+
+def extract_relations(exprs: list, frozen=None) -> tuple[list, list, dict, list]:
     """Replace relations inside Piecewise conditions by mode symbols.
 
     abs/min/max/sign are first written as if-expressions (:func:`event_form`); relations
-    inside ``no_event(...)`` stay as they are and are evaluated directly.
+    inside ``no_event(...)`` stay as they are and are evaluated directly, and so do the
+    relations of values that change only at events (every symbol in ``frozen``:
+    parameters, Boolean and Integer variables, held and frozen values), which cannot
+    cross zero between events (``==`` and ``<>`` among them).
     Returns (new exprs, zero-crossing expressions, {mode symbol: relation}, origin) where
     ``origin[k]`` is the index of the first expression that relation k occurs in.
     """
@@ -102,7 +117,7 @@ def extract_relations(exprs: list) -> tuple[list, list, dict, list]:
     for i in eventful:
         for pw in _event_piecewise(exprs[i], no_event):
             for _, cond in pw.args:
-                for rel in _relations_in(cond):
+                for rel in _relations_in(cond, frozen):
                     relations.setdefault(rel, i)
     ordered = sorted(relations, key=sp.srepr)
     modes = {rel: sp.Symbol(f"_m{k}") for k, rel in enumerate(ordered)}
@@ -154,14 +169,16 @@ def _freeze(e, modes, no_event):
     return out.xreplace({d: q.args[0] for q, d in quiet.items()})
 
 
-def _relations_in(cond):
+def _relations_in(cond, frozen=None):
     if isinstance(cond, sp.core.relational.Relational):
+        if frozen is not None and frozen.covers(cond.free_symbols):
+            return []            # constant between events: evaluated where it is read
         if isinstance(cond, (sp.Eq, sp.Ne)):
             raise ValueError(f"equality relation {cond} cannot generate an event; "
                              "use <, <=, > or >=")
         return [cond]
     if isinstance(cond, sp.logic.boolalg.BooleanFunction):
-        return [r for a in cond.args for r in _relations_in(a)]
+        return [r for a in cond.args for r in _relations_in(a, frozen)]
     return []
 
 
@@ -210,7 +227,7 @@ class Program:
 
     def _direct(self, e):
         refs = self.refs
-        if type(e) in SYMBOLS:        # an output that is a variable (expand)
+        if type(e) is sp.Symbol:        # an output that is a variable (expand)
             w = refs.get(e)
             return [w[1]] if w is not None and w[0] == "a" else []
         return [refs[q][1] for q in symbols_of(e) if refs.get(q, ("",))[0] == "a"]

@@ -36,7 +36,7 @@ _FUNCS = {sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.asin: "asin", sp.acos:
           sp.exp: "exp", sp.log: "log", sp.atan2: "atan2", sp.floor: "floor",
           sp.ceiling: "ceil", sp.asinh: "asinh", sp.acosh: "acosh", sp.atanh: "atanh"}
 _REL = {"StrictGreaterThan": ">", "GreaterThan": ">=", "StrictLessThan": "<",
-        "LessThan": "<="}
+        "LessThan": "<=", "Equality": "==", "Unequality": "!="}
 
 
 class Emitter:

@@ -55,10 +55,10 @@ from dataclasses import fields, is_dataclass, replace
 import numpy as np
 
 from ... import native
-from ...errors import BackendError
 from ..backends.clibrary import reattach
 from ..backends.lazycode import GeneratedModule, ModuleSource, install_array_code
 from .keys import fingerprint, flat_key, tree_key
+from ...errors import BackendError
 
 __all__ = ["from_cache", "find_by_tree", "LoadedCode", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",

@@ -17,13 +17,13 @@ from dataclasses import dataclass, field, replace
 
 import sympy as sp
 
-from ...components.symbols import SYMBOLS, Assign, Reinit, When
-from ...errors import InvalidEquation, ModelError
+from ...components.symbols import Assign, Reinit, When
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
 from ..algebra.symbolic import symbols_of
 from ..flatmodel import FlatModel
 from ..structure.graph import STATE_SELECT
+from ...errors import InvalidEquation, ModelError
 
 __all__ = ["resolve_aliases_in", "AliasTable", "eliminate_aliases"]
 
@@ -170,7 +170,7 @@ def _signed(sign, expr):
     if sign == 1:
         return expr
     if sign == -1:
-        return negated(expr) if type(expr) in SYMBOLS else -expr
+        return negated(expr) if type(expr) is sp.Symbol else -expr
     return sign * expr
 
 
@@ -263,16 +263,16 @@ def _plain_alias(residual: sp.Expr, info):
     """The pattern of the residuals connections make, read off their arguments: ``x``
     (x = 0) and ``+-a +- b``; None for anything else (which takes the general path,
     with the same result for these)."""
-    if type(residual) in SYMBOLS:
+    if type(residual) is sp.Symbol:
         return ("const", residual, None, sp.S.Zero) if residual in info else None
     if not residual.is_Add or len(residual.args) != 2:
         return None
     signs = {}
     for t in residual.args:
-        if type(t) in SYMBOLS and t in info:
+        if type(t) is sp.Symbol and t in info:
             signs[t] = 1
         elif (t.is_Mul and len(t.args) == 2 and t.args[0] is sp.S.NegativeOne
-              and type(t.args[1]) in SYMBOLS and t.args[1] in info):
+              and type(t.args[1]) is sp.Symbol and t.args[1] in info):
             signs[t.args[1]] = -1
         else:
             return None
@@ -374,7 +374,8 @@ def _when_after_aliases(w, subs, find, constants):
                              "is fixed by an equation (a constant), it cannot be re-initialized")
         actions.append(Reinit(root, _signed(sign, act.value.xreplace(subs))))
     out = When(w.condition.xreplace(subs), *actions)
-    out.origin, out.origin_class = w.origin, w.origin_class
+    out.origin, out.origin_class, out.equation = w.origin, w.origin_class, w.equation
+    out.pulse = w.pulse
     return out
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ...components.symbols import SYMBOLS, der, time
+from ...components.symbols import der, time
 from ..algebra.substitution import fast_xreplace
 from ..algebra.symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
 from ...errors import InvalidEquation
@@ -66,7 +66,7 @@ def _all_ders(expr) -> list:
 def check_der_arguments(eq, var_syms: set) -> None:
     """der() of something that cannot vary (a number, a parameter) is always zero: the
     argument was meant to be a variable."""
-    if all(type(d.args[0]) in SYMBOLS and d.args[0] in var_syms
+    if all(type(d.args[0]) is sp.Symbol and d.args[0] in var_syms
            for d in _all_ders(eq.residual)):
         return      # der(x) of variables only (sorting the der() atoms is for the error)
     for d in sorted(eq.residual.atoms(der), key=sp.default_sort_key):

@@ -22,9 +22,11 @@ import sympy as sp
 from ...components import inheritance
 from ...components.component import Component, Connection, Port, compiling, in_context
 from ...components.declarations import Parameter, bound_violation
-from ...components.symbols import SYMBOLS, der, Equation, time, When
+from ...components.logic import INITIAL
+from ...components.symbols import Equation, When, der, time
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
 from .flatarrays import collect_array
+from .inputs import find_inputs
 from .flatder import check_der_arguments, expand_derivatives, has_der
 from ..algebra.symbolic import signed_sum, signed_terms, symbols_of
 from .usercode import failed_reading
@@ -66,8 +68,12 @@ def flatten(model: Component) -> FlatModel:
                     raise InvalidEquation(f"{comp._describe()}.initial_equations() returned "
                                           f"{item!r}; expected ac.Eq(lhs, rhs)")
                 flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
+            for item in _steady_state_equations(comp):
+                flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
+    flat.uses_initial = bool(getattr(model, "_uses_initial", False))
     _check_connections(connections, model)
     flat.equations.extend(_connection_equations(connections, nodes))
+    flat.inputs = find_inputs(flat, model, connections)
     _check_symbols(flat, with_der)
     # substitution first: a structural zero removes the derivative it multiplies
     # (L*der(i) with L = 0), and no der(i) may be created for it (substituting
@@ -76,6 +82,19 @@ def flatten(model: Component) -> FlatModel:
     expand_derivatives(flat, with_der)
     _check_infinite_parameters(flat)
     return flat
+
+
+def _steady_state_equations(comp) -> list:
+    """``der(v) = 0`` at the start for each variable of ``comp`` declared or modified
+    ``steady=True`` (a steady state: ``Inertia(w={"steady": True})``)."""
+    out = []
+    for name, decl in comp.declarations().items():
+        if isinstance(decl, Parameter) or decl.shape is not None:
+            continue
+        if getattr(comp.variable_attributes(name), "steady", False):
+            out.append(Equation(der(getattr(comp, name)), 0,
+                                label=f"steady state of {name} at the start"))
+    return out
 
 
 def _walk(root: Component):
@@ -126,7 +145,8 @@ def _collect_declarations(comp: Component, flat: FlatModel) -> None:
                 raise ModelError(f"parameter '{sym.name}' of {comp._describe()} has no value")
             flat.parameters.append(FlatParameter(sym.name, sym, value, decl.unit,
                                                  decl.description, comp.path,
-                                                 type(comp).__name__, decl.min, decl.max))
+                                                 type(comp).__name__, decl.min, decl.max,
+                                                 decl.type))
         else:
             hint = comp.hint if isinstance(comp, Port) else ""
             flat.variables.append(FlatVariable(sym.name, sym, comp.variable_attributes(name),
@@ -146,6 +166,8 @@ def _flat_equation(eq: Equation, comp: Component, kind: str, with_der: set) -> F
         residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
         ders = has_der(residual)
     out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+    if type(eq.lhs) is sp.Symbol:
+        out.defines = eq.lhs
     if plain:
         out.plain = residual
     if ders:
@@ -237,13 +259,13 @@ def _node_equations(members: list, connections: list) -> list:
         for p, _ in members[1:]:
             b = getattr(p, name)
             diff = signed_sum({a: 1, b: -1}) if a != b else a - b
-            plain = a != b and type(a) in SYMBOLS and type(b) in SYMBOLS
+            plain = a != b and type(a) is sp.Symbol and type(b) is sp.Symbol
             eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect",
                                     plain=diff if plain else None))
     for name in first.through():
         signed = [(getattr(p, name), 1 if role == "inside" else -1) for p, role in members]
         coeffs = dict(signed)
-        plain = len(coeffs) == len(signed) and all(type(q) in SYMBOLS for q in coeffs)
+        plain = len(coeffs) == len(signed) and all(type(q) is sp.Symbol for q in coeffs)
         total = signed_sum(coeffs) if plain else sp.Add(*[c * q for q, c in signed])
         eqs.append(FlatEquation(total, total, where, "connect", "connect",
                                 plain=total if plain else None))
@@ -257,7 +279,7 @@ def _check_symbols(flat: FlatModel, with_der: set) -> None:
     equations with der(), whose arguments are checked)."""
     var_syms = {v.symbol for v in flat.variables}
     par_syms = {p.symbol for p in flat.parameters}
-    allowed = var_syms | par_syms | {time}
+    allowed = var_syms | par_syms | {time, INITIAL}
     for p in flat.parameters:
         if isinstance(p.value, sp.Basic) and not p.value.is_number:
             _check_binding(p, p.value.free_symbols, var_syms, allowed)
@@ -319,8 +341,10 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     against its declared [min, max].
     """
     resolved = _resolve_bindings(flat)
+    # (a Boolean or Integer parameter stays tunable at 0: false, or a count of none)
     zeros = {p.symbol: sp.Integer(0) for p in flat.parameters
-             if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")}
+             if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")
+             and p.type is float}
     bound = {k: v.xreplace(zeros) for k, v in resolved.items()}
     bound.update(zeros)
     _check_bounds(flat, resolved)

@@ -38,7 +38,9 @@ from dataclasses import dataclass, replace
 
 import sympy as sp
 
-from ...components.symbols import Assign, Reinit, no_event, pre
+from ...components.symbols import Assign, Reinit, Sample, When, no_event
+from ...components.symbols import Pre as pre
+from ...components.declarations import TYPE_NAMES
 from ..flatmodel import FlatEquation
 from ...errors import DiscreteVariableError, ModelError
 
@@ -65,6 +67,8 @@ class HeldValue:
 
 
 def _clause_text(w) -> str:
+    if getattr(w, "equation", None) is not None:
+        return f"the equation '{w.equation}' in {w.origin or '(model)'} ({w.origin_class})"
     return f"when {w.condition} in {w.origin or '(model)'} ({w.origin_class})"
 
 
@@ -72,12 +76,29 @@ def _local(v) -> str:
     return v.name[len(v.component) + 1:] if v.component else v.name
 
 
+def _shown(v) -> str:
+    """A variable's name as the user reads it (a signal by its port's name)."""
+    return v.name[: -len(".signal")] if v.kind == "signal" and v.name.endswith(
+        ".signal") else v.name
+
+
+def _typed(v) -> bool:
+    """A Boolean or Integer variable: discrete by nature."""
+    return getattr(v.attrs, "type", float) is not float
+
+
 def declare_discrete_variables(flat) -> list:
     """Check the discrete variables and their assignments, add ``y = held(y)`` for each,
     replace ``pre(y)`` by its symbol everywhere (in place); return the
-    :class:`HeldValue` list in declaration order."""
+    :class:`HeldValue` list in declaration order.
+
+    The equation of a Boolean or Integer variable, ``ac.Eq(y, expr)`` with y alone on
+    its left, becomes a clause that is evaluated at every event (``When.equation``):
+    y is held between events and takes expr, relations in it switching at located
+    events, as Modelica's event iteration evaluates the discrete equations."""
     by_symbol = {v.symbol: v for v in flat.variables}
     params = {p.symbol for p in flat.parameters}
+    _clauses_of_equations(flat, by_symbol)
     assigned = {}
     for w in flat.whens:
         read = sorted(q.name for q in (w.clock.free_symbols if w.clock is not None else ())
@@ -89,7 +110,7 @@ def declare_discrete_variables(flat) -> list:
         for act in w.actions:
             v = by_symbol.get(act.variable)
             if isinstance(act, Reinit):
-                if v is not None and v.attrs.discrete:
+                if v is not None and (v.attrs.discrete or _typed(v)):
                     raise DiscreteVariableError(
                         f"reinit({v.name}, ...) in {_clause_text(w)}: '{_local(v)}' of "
                         f"{v.where} is a discrete variable; assign it with "
@@ -99,18 +120,20 @@ def declare_discrete_variables(flat) -> list:
             assigned[v.symbol] = w
     helds = []
     for v in flat.variables:
-        if not v.attrs.discrete:
+        if not (v.attrs.discrete or _typed(v)):
             continue
+        if v.symbol in flat.derivatives:
+            raise DiscreteVariableError(
+                f"der({v.name}) in {v.where}: '{_local(v)}' is a discrete variable, "
+                "constant between events; its derivative is 0")
         if v.symbol not in assigned:
+            if _typed(v):      # an input, or equal to one through a connection
+                continue
             raise DiscreteVariableError(
                 f"'{_local(v)}' of {v.where} is declared discrete, but no when-clause "
                 f"assigns it: a discrete variable changes only in when-clauses "
                 f"(ac.when(..., ac.assign({_local(v)}, ...))); an equation that determines "
                 "it makes it a continuous variable (drop discrete=True)")
-        if v.symbol in flat.derivatives:
-            raise DiscreteVariableError(
-                f"der({v.name}) in {v.where}: '{_local(v)}' is a discrete variable, "
-                "constant between events; its derivative is 0")
         start = float(v.attrs.start) if v.attrs.start is not None else 0.0
         if v.attrs.fixed:        # the start value is the value before t0 in any case
             flat.variables[flat.variables.index(v)] = replace(v, attrs=replace(v.attrs,
@@ -129,6 +152,55 @@ def declare_discrete_variables(flat) -> list:
     return helds
 
 
+def _clauses_of_equations(flat, by_symbol) -> None:
+    """The equations ``y = expr`` of Boolean and Integer variables y become clauses
+    evaluated at every event (in place: taken out of ``flat.equations``)."""
+    kept = []
+    for eq in flat.equations:
+        v = by_symbol.get(eq.defines) if eq.kind == "equation" else None
+        if v is None or not _typed(v):
+            kept.append(eq)
+            continue
+        value = v.symbol - eq.residual
+        tick = _tick_of(value)
+        if tick is not None:      # y = sample(start, period): true at each tick only
+            w = When(tick, Assign(v.symbol, sp.Integer(1)))
+            w.origin, w.origin_class, w.pulse = eq.component, eq.component_class, True
+            flat.whens.append(w)
+            continue
+        if value.has(Sample):
+            raise DiscreteVariableError(
+                f"equation '{eq.text}' in {eq.where}: sample() is a value only as the "
+                "whole right-hand side of a Boolean variable's equation, "
+                "ac.Eq(y, ac.sample(start, period)) (true at each tick), or as the "
+                "whole condition of a when-clause")
+        own = value.xreplace({q: sp.Integer(0) for q in value.atoms(pre)})
+        if v.symbol in own.free_symbols:
+            name = _shown(v)
+            raise DiscreteVariableError(
+                f"equation '{eq.text}' in {eq.where}: the {_type_name(v)} variable "
+                f"'{name}' is read on its own right-hand side (at an event its value is "
+                f"the expression's); read its value before the event with "
+                f"ac.pre({name})")
+        w = When(True, Assign(v.symbol, value))
+        w.origin, w.origin_class, w.equation = eq.component, eq.component_class, eq.text
+        flat.whens.append(w)
+    flat.equations[:] = kept
+
+
+def _tick_of(value):
+    """The clock of ``Piecewise((1, sample(...)), (0, True))``, else None."""
+    if isinstance(value, sp.Piecewise) and len(value.args) == 2 and \
+            isinstance(value.args[0][1], Sample) and value.args[0][0] == 1 \
+            and value.args[1][0] == 0:
+        return value.args[0][1]
+    return None
+
+
+def _type_name(v) -> str:
+    return TYPE_NAMES[getattr(v.attrs, "type", float)]
+
+
 def _check_target(act, v, w, params, assigned) -> None:
     q = act.variable
     where = f"assign({q.name}, ...) in {_clause_text(w)}"
@@ -136,7 +208,7 @@ def _check_target(act, v, w, params, assigned) -> None:
         what = "a parameter" if q in params else "not a variable of the model"
         raise DiscreteVariableError(f"{where}: {q.name} is {what}; only a discrete "
                                     "variable can be assigned in a when-clause")
-    if not v.attrs.discrete:
+    if not (v.attrs.discrete or _typed(v)):
         raise DiscreteVariableError(
             f"{where}: '{_local(v)}' of {v.where} is not a discrete variable; declare it "
             "ac.Variable(discrete=True) (a port's value: signal={'discrete': True}); a "
@@ -144,7 +216,9 @@ def _check_target(act, v, w, params, assigned) -> None:
     if q in assigned:
         raise DiscreteVariableError(
             f"{where}: '{_local(v)}' of {v.where} is assigned twice, also in "
-            f"{_clause_text(assigned[q])}; a discrete variable has one assignment")
+            f"{_clause_text(assigned[q])}; a discrete variable has one assignment (give "
+            "one clause several conditions, ac.when([c1, c2], ...), and choose the value "
+            "with ac.if_else)")
 
 
 def _substitute(flat, helds) -> None:
@@ -200,26 +274,37 @@ def explain_overdetermined(err, helds) -> None:
 # -- the when-clauses as rows of generated code ------------------------------------------
 def when_rows(whens, z_syms, caus, pairs, helds, assigned):
     """Rows and layout of the when-clauses (see :class:`~.modelcode.WhenCode`):
-    conditions (1/0; 0 for a clock), reinit values, assigned values, then start and
-    period of each clock."""
+    conditions (1/0; 0 for a clock; one row per condition of ``when([c1, c2])``, none
+    for the equation of a Boolean or Integer variable, which is evaluated at every
+    event), reinit values, assigned values, then start and period of each clock."""
     z_index = {s: k for k, s in enumerate(z_syms)}
     states = set(range(caus.n_states)) if caus.causal else {a for a, _ in pairs}
     slot = {h.symbol: k for k, h in enumerate(helds)}
-    conds, reinits, targets, owners = [], [], [], []
+    conds, cond_owners, always, reinits, targets, owners = [], [], [], [], [], []
     values, slots, assign_owners, clocks, clock_rows = [], [], [], [], []
     for w_i, w in enumerate(whens):
         if w.clock is not None:
             conds.append(sp.Integer(0))
+            cond_owners.append(w_i)
             clocks.append(w_i)
             clock_rows += [w.clock.start, w.clock.period]
+        elif w.equation is not None:
+            always.append(w_i)
         else:
-            conds.append(sp.Piecewise((1, w.condition), (0, True)))
+            for c in w.conditions:
+                conds.append(sp.Piecewise((1, c), (0, True)))
+                cond_owners.append(w_i)
         for act in w.actions:
             if isinstance(act, Assign):
                 # relations in a when-equation are evaluated where it fires, not frozen
-                # (they generate no events: Modelica 3.6, sec. 8.5)
-                values.append(no_event(act.value) if act.value.has(
-                    sp.Piecewise, sp.Min, sp.Max, sp.Abs, sp.sign) else act.value)
+                # (they generate no events: Modelica 3.6, sec. 8.5); those of the
+                # equation of a Boolean or Integer variable generate events
+                value = act.value
+                if value.has(pre):      # pre() of a continuous variable: its value
+                    value = value.replace(lambda e: isinstance(e, pre), lambda e: e.args[0])
+                quiet = w.equation is None and value.has(
+                    sp.Piecewise, sp.Min, sp.Max, sp.Abs, sp.sign)
+                values.append(no_event(value) if quiet else value)
                 slots.append(slot[act.variable])
                 assign_owners.append(w_i)
                 continue
@@ -234,7 +319,10 @@ def when_rows(whens, z_syms, caus, pairs, helds, assigned):
     levels = assignment_levels(values, slots, assign_owners, helds, whens, z_syms,
                                set(range(len(z_syms))) - states, assigned)
     layout = {"targets": targets, "owners": owners, "assign_slots": slots,
-              "assign_owners": assign_owners, "assign_levels": levels, "clocks": clocks}
+              "assign_owners": assign_owners, "assign_levels": levels, "clocks": clocks,
+              "cond_owners": cond_owners, "always": always, "n_clauses": len(whens),
+              "pulse_slots": sorted({slot[a.variable] for w in whens if w.pulse
+                                     for a in w.actions})}
     return conds + reinits + values + clock_rows, layout
 
 

@@ -29,7 +29,8 @@ from fractions import Fraction
 
 import sympy as sp
 
-from ...components.symbols import Equation, der, no_event, pre
+from ...components.symbols import Equation, der, no_event
+from ...components.symbols import Pre as pre
 from ...components.units import DIMENSIONLESS, MODES, UnitCheck, dimension_text, parse_unit
 from ...errors import UnitError, UnitWarning
 

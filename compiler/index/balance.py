@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from ...errors import StructuralError
 from ..structure.graph import Structure
 from ..structure.matching import check_structure
+from ...errors import StructuralError
 
 __all__ = ["check_balance"]
 

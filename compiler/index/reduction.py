@@ -12,13 +12,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import partial
 
-from ...errors import IndexReductionFailed, StructuralError
 from ..algebra.symbolic import symbols_of
 from ..structure.graph import UNASSIGNED, Names, Structure
 from ..structure.matching import base_variables
 from ..structure.pantelides import pantelides
 from ..structure.sigma import signature_matrix, sigma_method
 from ..structure.states import select_states
+from ...errors import IndexReductionFailed, StructuralError
 
 __all__ = ["IndexReduction", "reduce_index", "differentiate", "select", "as_written"]
 

@@ -10,7 +10,18 @@ __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "S
            "SineVariableFrequencyAndAmplitude", "CosineVariableFrequencyAndAmplitude",
            "KinematicPTP", "LimPID", "InverseBlockConstraints", "MultiProduct",
            "RectangularToPolar", "Pythagoras", "Mean", "RootMeanSquare", "Harmonic",
-           "TotalHarmonicDistortion"]
+           "TotalHarmonicDistortion",
+           # Boolean and Integer signals (logical, boolean_sources, integer_sources,
+           # conversions; math_boolean and math_integer by module: their names are the MSL's)
+           "And", "Or", "Xor", "Nor", "Nand", "Not", "Pre", "Edge", "FallingEdge", "Change",
+           "GreaterThreshold", "GreaterEqualThreshold", "LessThreshold",
+           "LessEqualThreshold", "Greater", "GreaterEqual", "Less", "LessEqual",
+           "ZeroCrossing", "LogicalSwitch", "Switch", "Hysteresis", "OnOffController",
+           "TriggeredTrapezoid", "Timer", "RSFlipFlop", "BooleanConstant", "BooleanStep",
+           "BooleanPulse", "SampleTrigger", "BooleanTable", "BooleanExpression",
+           "RadioButtonSource", "IntegerConstant", "IntegerStep", "IntegerTable",
+           "BooleanToReal", "BooleanToInteger", "RealToBoolean", "IntegerToBoolean",
+           "RealToInteger", "IntegerToReal"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".continuous": ("PI", "PID", "Der", "Derivative", "FirstOrder", "Integrator", "SecondOrder",
@@ -28,4 +39,14 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                  "Trapezoid", "Sinc", "SineVariableFrequencyAndAmplitude",
                  "CosineVariableFrequencyAndAmplitude", "KinematicPTP"),
     ".tables": ("CombiTable1D", "CombiTable2D", "CombiTimeTable"),
-})
+    ".logical": ("And", "Or", "Xor", "Nor", "Nand", "Not", "Pre", "Edge", "FallingEdge",
+                 "Change", "GreaterThreshold", "GreaterEqualThreshold", "LessThreshold",
+                 "LessEqualThreshold", "Greater", "GreaterEqual", "Less", "LessEqual",
+                 "ZeroCrossing", "LogicalSwitch", "Switch", "Hysteresis", "OnOffController",
+                 "TriggeredTrapezoid", "Timer", "RSFlipFlop"),
+    ".boolean_sources": ("BooleanConstant", "BooleanStep", "BooleanPulse", "SampleTrigger",
+                         "BooleanTable", "BooleanExpression", "RadioButtonSource"),
+    ".integer_sources": ("IntegerConstant", "IntegerStep", "IntegerTable"),
+    ".conversions": ("BooleanToReal", "BooleanToInteger", "RealToBoolean",
+                     "IntegerToBoolean", "RealToInteger", "IntegerToReal"),
+}, submodules=("math_boolean", "math_integer", "interaction", "boolean_interfaces"))

@@ -1,8 +1,12 @@
 """Linear dynamic blocks and controllers (Modelica.Blocks.Continuous).
 
 Every block with dynamics keeps its state in a variable ``x`` (a list of cells for
-``TransferFunction``); its start value, 0 by default, is the initial state unless the
-model fixes the state otherwise: ``FirstOrder(x=1.0)``.
+``TransferFunction``).  ``initType`` chooses how it starts, as in the MSL
+(``ac.Init``): ``"NoInit"`` (the default here: the state's start value, 0 unless given,
+``FirstOrder(x=1.0)``, where the model does not fix it otherwise), ``"SteadyState"``
+(der(x) = 0), ``"InitialState"`` (x = x_start, or y_start where the state is the
+output) or ``"InitialOutput"`` (y = y_start).  The MSL's Integrator defaults to
+InitialState with y_start = 0, which NoInit gives wherever nothing else fixes its state.
 """
 
 import acausal as ac
@@ -19,6 +23,13 @@ class Integrator(SISO):
 
     k = ac.Parameter(1.0, description="integrator gain")
     x = ac.Variable(start=0.0, description="state (the integral)")
+    initType = ac.Init.parameter()
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
+                                            "InitialOutput)")
+
+    def initial_equations(self):
+        return ac.Init.equations(self.initType, [self.x], [self.y_start], self.y,
+                                 self.y_start)
 
     def equations(self):
         return [ac.Eq(ac.der(self.x), self.k * self.u), ac.Eq(self.y, self.x)]
@@ -43,6 +54,13 @@ class Derivative(SISO):
     k = ac.Parameter(1.0, description="gain")
     T = ac.Parameter(0.01, unit="s", min=0, description="filter time constant")
     x = ac.Variable(start=0.0, description="filter state")
+    initType = ac.Init.parameter()
+    x_start = ac.Parameter(0.0, description="initial value of the state (InitialState)")
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
+
+    def initial_equations(self):
+        return ac.Init.equations(self.initType, [self.x], [self.x_start], self.y,
+                                 self.y_start, free_at_output=[])
 
     def equations(self):
         return [ac.Eq(self.T * ac.der(self.x), self.u - self.x),
@@ -55,6 +73,13 @@ class FirstOrder(SISO):
     k = ac.Parameter(1.0, description="gain")
     T = ac.Parameter(1.0, unit="s", description="time constant")
     x = ac.Variable(start=0.0, description="state (the output)")
+    initType = ac.Init.parameter()
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
+                                            "InitialOutput)")
+
+    def initial_equations(self):
+        return ac.Init.equations(self.initType, [self.x], [self.y_start], self.y,
+                                 self.y_start)
 
     def equations(self):
         return [ac.Eq(self.T * ac.der(self.x), self.k * self.u - self.x), ac.Eq(self.y, self.x)]
@@ -71,6 +96,16 @@ class SecondOrder(SISO):
     D = ac.Parameter(1.0, description="damping ratio")
     x = ac.Variable(start=0.0, description="state (the output)")
     xd = ac.Variable(start=0.0, description="state (der of the output)")
+    initType = ac.Init.parameter()
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
+                                            "InitialOutput)")
+    yd_start = ac.Parameter(0.0, description="initial value of der(y) (InitialState)")
+
+    def initial_equations(self):
+        # InitialOutput: y = y_start and der(y) = 0, the MSL's
+        return ac.Init.equations(self.initType, [self.x, self.xd],
+                                 [self.y_start, self.yd_start], self.y, self.y_start,
+                                 free_at_output=[self.x])
 
     def equations(self):
         return [ac.Eq(ac.der(self.x), self.xd),
@@ -108,6 +143,21 @@ class TransferFunction(SISO):
                      description="numerator coefficients, highest power of s first")
     a = ac.Parameter((1.0, 1.0), structural=True,
                      description="denominator coefficients, highest power of s first")
+    initType = ac.Init.parameter()
+    x_start = ac.Parameter((), structural=True,
+                           description="initial states x[0] .. x[n-1] (InitialState; "
+                                       "default zeros)")
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
+
+    def initial_equations(self):
+        """InitialOutput: y = y_start with der(x[1:]) = 0 (the MSL's der(x[1:nx-1]) = 0
+        in its reversed order of the states)."""
+        x = [cell.x for cell in self.state]
+        x_start = [float(v) for v in self.x_start] or [0.0] * len(x)
+        if len(x_start) != len(x):
+            raise ac.InvalidValue(f"TransferFunction: x_start has {len(x_start)} values for "
+                                  f"{len(x)} states")
+        return ac.Init.equations(self.initType, x, x_start, self.y, self.y_start)
 
     def build(self):
         num, den = [float(c) for c in self.b], [float(c) for c in self.a]
@@ -148,6 +198,17 @@ class _LimitedController(SISO):
                       description="anti-windup tracking time constant (default Ti)")
     v = ac.Variable(description="unlimited controller output")
     x_i = ac.Variable(start=0.0, description="integral state, in output units")
+    initType = ac.Init.parameter()
+    xi_start = ac.Parameter(0.0, description="initial integral state, in output units "
+                                             "(InitialState)")
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
+
+    def states(self) -> list:
+        return [self.x_i]
+
+    def initial_equations(self):
+        starts = [self.xi_start] + [getattr(self, "xd_start", 0)] * (len(self.states()) - 1)
+        return ac.Init.equations(self.initType, self.states(), starts, self.y, self.y_start)
 
     def equations(self):
         return [ac.Eq(self.y, clip(self.v, self.yMax, self.yMin)),
@@ -177,6 +238,11 @@ class PID(_LimitedController):
     Td = ac.Parameter(0.1, unit="s", min=0, description="derivative time")
     Nd = ac.Parameter(10.0, min=0, description="derivative filter: high-frequency gain")
     x_d = ac.Variable(start=0.0, description="derivative filter state")
+    xd_start = ac.Parameter(0.0, description="initial derivative filter state "
+                                             "(InitialState)")
+
+    def states(self) -> list:
+        return [self.x_i, self.x_d]
 
     def equations(self):
         d = self.k * self.Nd * (self.u - self.x_d)

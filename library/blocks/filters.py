@@ -51,8 +51,8 @@ class Filter(SISO):
         y = gain u_nominal uu[last]
 
     The states x[0 .. nx-1] are the MSL's x[1 .. nx] (real poles first).  It starts in
-    steady state, der(x) = 0 (the MSL's default init = SteadyState; the MSL's other
-    init choices are not offered).  ``analogFilter``, ``filterType``, ``order`` and
+    steady state, der(x) = 0, as the MSL's default initType = SteadyState; the other
+    choices (``ac.Init``) as the MSL's, InitialState with every state at x_start.  ``analogFilter``, ``filterType``, ``order`` and
     ``normalized`` (amplitude -3 dB at f_cut) are given when the block is made;
     a band filter's pass band is f_min .. f_cut.
     """
@@ -64,6 +64,9 @@ class Filter(SISO):
     f_min = ac.Parameter(0.0, unit="Hz", description="lower end of the band (band filters)")
     u_nominal = ac.Parameter(1.0, description="nominal value of the input (scales the states)")
     x = ac.Variable(shape="nx", start=0.0, description="filter states")
+    initType = ac.Init.parameter("SteadyState")
+    x_start = ac.Parameter(0.0, description="initial value of every state (InitialState)")
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
     uu = ac.Variable(shape="n_uu", description="input and the outputs of the sections")
 
     def __init__(self, *, analogFilter: str = "CriticalDamping", filterType: str = "LowPass",
@@ -99,7 +102,11 @@ class Filter(SISO):
         return {name: list(v) for name, v in k.items()}
 
     def initial_equations(self):
-        return [ac.Eq(ac.der(x), 0) for x in self.x]
+        """The MSL's initType (default SteadyState); InitialOutput holds der(x[0 ..
+        nx-2]) = 0, the MSL's der(x[1:nx-1])."""
+        x = list(self.x)
+        return ac.Init.equations(self.initType, x, [self.x_start] * len(x), self.y,
+                                 self.y_start, free_at_output=x[:-1])
 
     def equations(self):
         k = self.coefficients()

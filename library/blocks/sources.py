@@ -87,19 +87,20 @@ class ExpSine(SignalSource):
 
 
 class Pulse(SignalSource):
-    """Rectangular pulse train:  y = offset + amplitude during the first fraction
-    ``width`` of each ``period`` after startTime, y = offset otherwise.
+    """Rectangular pulse train (Modelica.Blocks.Sources.Pulse, MSL v4.0.0):
+    y = offset + amplitude during the first ``width`` percent of each ``period`` after
+    startTime, y = offset otherwise.
 
     The edges are zero crossings; simulate with ``max_step`` below the pulse width, or
     a long step can jump over a whole pulse.
     """
 
     amplitude = ac.Parameter(1.0, description="pulse height")
-    width = ac.Parameter(0.5, min=0, max=1, description="fraction of the period that is high")
+    width = ac.Parameter(50.0, min=0, max=100, description="width of the pulse in % of period")
     period = ac.Parameter(1.0, unit="s", min=0, description="period")
 
     def equations(self):
-        p = signals.pulse(self.amplitude, self.width, self.period, self.startTime)
+        p = signals.pulse(self.amplitude, self.width / 100, self.period, self.startTime)
         return [ac.Eq(self.y, self.offset + p)]
 
 

@@ -16,7 +16,7 @@ way the stuck torque is found are those of
 from acausal._sympy import sympy as sp
 
 import acausal as ac
-from acausal.ports import RealInput
+from acausal.ports import BooleanInput, RealInput
 
 from .friction_modes import PartialFriction, friction_table, table_at_zero, table_value
 from .interfaces import PartialElementaryTwoFlangesAndSupport, PartialTwoFlanges
@@ -26,14 +26,20 @@ __all__ = ["Clutch", "Brake", "OneWayClutch", "BearingFriction"]
 
 class _PressedFriction(PartialFriction, PartialTwoFlanges):
     """The parameters of a friction element pressed by a normal force, the force
-    fn = fn_max f_normalized and the sliding law cgeo fn mu(w)."""
+    fn = fn_max f_normalized and the sliding law cgeo fn mu(w).  With
+    ``booleanControl=True`` a ``BooleanInput`` ``engaged`` replaces the Real input
+    ``f_normalized``: fn = fn_max while it is true, 0 while it is false."""
 
     peak = ac.Parameter(1.0, min=1, description="stiction: most held torque / tau0")
     cgeo = ac.Parameter(1.0, unit="m", min=0,
                         description="geometry constant, torque per normal force")
     fn_max = ac.Parameter(1.0, unit="N", min=0, description="maximum normal force (> 0)")
     fn = ac.Variable(unit="N", description="normal force fn_max f_normalized")
-    f_normalized = RealInput()
+    booleanControl = ac.Parameter(False, structural=True,
+                                  description="engaged by a BooleanInput (else by the Real "
+                                              "f_normalized)")
+    f_normalized = ac.Conditional(RealInput(), "booleanControl", when=False)
+    engaged = ac.Conditional(BooleanInput(), "booleanControl")
 
     def __init__(self, mu_pos=((0.0, 0.5),), **mods):
         super().__init__(**mods)
@@ -54,6 +60,8 @@ class _PressedFriction(PartialFriction, PartialTwoFlanges):
 
     def equations(self):
         _check_positive(self, "fn_max")
+        if self.booleanControl:
+            return [ac.Eq(self.fn, ac.if_else(self.engaged, self.fn_max, 0))]
         return [ac.Eq(self.fn, self.fn_max * self.f_normalized)]
 
 

@@ -3,7 +3,6 @@ import acausal as ac
 from acausal.ports import TranslationalFlange
 
 from ..relative_states import LinearAcceleration, RelativeStatesMixin
-from ..support import SupportMixin
 
 __all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
            "PartialCompliantWithRelativeStates", "PartialElementaryOneFlange",
@@ -108,32 +107,30 @@ class PartialRelativeSensor(PartialTwoFlanges):
         return [ac.Eq(0, self.flange_a.f + self.flange_b.f)]
 
 
-class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFlange):
+class PartialElementaryOneFlangeAndSupport(PartialElementaryOneFlange):
     """One flange acting against a support (MSL Translational
     PartialElementaryOneFlangeAndSupport2):
 
         support.f = -flange.f              (the reaction goes into the housing)
 
     ``useSupport=True`` creates the flange ``support`` (it must then be connected);
-    without it the housing is fixed, s_support = 0.
+    without it the housing is fixed, s_support = 0 (an ``ac.Conditional`` port).
     """
 
-    _supports = {"support": "useSupport"}
-
-    def __init__(self, *, useSupport=False, **modifications):
-        super().__init__(**modifications)
-        self._mount({"support": TranslationalFlange}, {"useSupport": useSupport})
+    useSupport = ac.Parameter(False, structural=True,
+                              description="use the support flange, else it is fixed")
+    support = ac.Conditional(TranslationalFlange(), "useSupport")
 
     def s_support(self):
-        return self.support_position("support", "s")
+        return self.support.s if self.useSupport else 0
 
     def equations(self):
-        if not self.supported("support"):
+        if not self.useSupport:
             return []
         return [ac.Eq(self.support.f, -self.flange.f)]
 
 
-class PartialElementaryTwoFlangesAndSupport(SupportMixin, PartialTwoFlanges):
+class PartialElementaryTwoFlangesAndSupport(PartialTwoFlanges):
     """Two flanges acting against a support (MSL Translational
     PartialElementaryTwoFlangesAndSupport2), force-free as a whole:
 
@@ -142,16 +139,14 @@ class PartialElementaryTwoFlangesAndSupport(SupportMixin, PartialTwoFlanges):
     ``useSupport=True`` creates the flange ``support``; without it s_support = 0.
     """
 
-    _supports = {"support": "useSupport"}
-
-    def __init__(self, *, useSupport=False, **modifications):
-        super().__init__(**modifications)
-        self._mount({"support": TranslationalFlange}, {"useSupport": useSupport})
+    useSupport = ac.Parameter(False, structural=True,
+                              description="use the support flange, else it is fixed")
+    support = ac.Conditional(TranslationalFlange(), "useSupport")
 
     def s_support(self):
-        return self.support_position("support", "s")
+        return self.support.s if self.useSupport else 0
 
     def equations(self):
-        if not self.supported("support"):
+        if not self.useSupport:
             return []
         return [ac.Eq(self.support.f, -self.flange_a.f - self.flange_b.f)]

@@ -3,8 +3,8 @@
 
 Their inclination, rolling resistance coefficient and wind speed are parameters or,
 where the component is created with ``useInclinationInput=True`` (``useCrInput``,
-``useWindInput``), signal inputs, as the MSL's conditional inputs; like ``useSupport``
-these are constructor arguments, because they add a port.
+``useWindInput``), signal inputs: the MSL's conditional inputs, ``ac.Conditional`` ports
+of structural flags (like ``useSupport``, given where the component is created).
 """
 from __future__ import annotations
 
@@ -23,25 +23,15 @@ G_N = 9.80665
 
 
 class _OptionalInputs:
-    """Signal inputs that exist only when their flag is given True (``_inputs``:
-    {port: (flag, the parameter used otherwise)})."""
+    """Signal inputs that exist only when their flag is True (``ac.Conditional``), else
+    a constant parameter stands in (``_inputs``: {port: (flag, the parameter)})."""
 
     _inputs: dict = {}
-
-    def _mount_inputs(self, flags: dict) -> None:
-        for port, (flag, _) in self._inputs.items():
-            use = flags[flag]
-            if not isinstance(use, bool):
-                raise ac.ModelError(f"{type(self).__name__}: {flag} must be True or False, "
-                                    f"not {use!r}")
-            object.__setattr__(self, flag, use)
-            if use:
-                setattr(self, port, RealInput())
 
     def input_or_constant(self, port: str):
         """The input ``port`` where it exists, else its constant parameter."""
         flag, constant = self._inputs[port]
-        return getattr(self, port) if self.__dict__.get(flag) else getattr(self, constant)
+        return getattr(self, port) if getattr(self, flag) else getattr(self, constant)
 
 
 class RollingResistance(_OptionalInputs, _PartialForce):
@@ -65,14 +55,16 @@ class RollingResistance(_OptionalInputs, _PartialForce):
                                                   "regularization")
 
     energy_role = "source"  # a resistance imposed from outside (a source of negative power)
+    useCrInput = ac.Parameter(False, structural=True, description="enable the input cr")
+    useInclinationInput = ac.Parameter(False, structural=True,
+                                       description="enable the input inclination")
+    cr = ac.Conditional(RealInput(), "useCrInput")
+    inclination = ac.Conditional(RealInput(), "useInclinationInput")
     _inputs = {"cr": ("useCrInput", "CrConstant"),
                "inclination": ("useInclinationInput", "inclinationConstant")}
 
-    def __init__(self, *, useCrInput=False, useInclinationInput=False, reg="Exp",
-                 useSupport=False, **modifications):
-        super().__init__(useSupport=useSupport, **modifications)
-        self._mount_inputs({"useCrInput": useCrInput,
-                            "useInclinationInput": useInclinationInput})
+    def __init__(self, *, reg="Exp", **modifications):
+        super().__init__(**modifications)
         object.__setattr__(self, "reg", check_regularization(reg, type(self).__name__))
 
     def equations(self):
@@ -120,15 +112,19 @@ class Vehicle(_OptionalInputs, ac.Component):
     flangeT = TranslationalFlange()
     flangeR = RotationalFlange()
 
+    useWindInput = ac.Parameter(False, structural=True, description="enable the input vWind")
+    useCrInput = ac.Parameter(False, structural=True, description="enable the input cr")
+    useInclinationInput = ac.Parameter(False, structural=True,
+                                       description="enable the input inclination")
+    inclination = ac.Conditional(RealInput(), "useInclinationInput")
+    cr = ac.Conditional(RealInput(), "useCrInput")
+    vWind = ac.Conditional(RealInput(), "useWindInput")
     _inputs = {"inclination": ("useInclinationInput", "inclinationConstant"),
                "cr": ("useCrInput", "CrConstant"),
                "vWind": ("useWindInput", "vWindConstant")}
 
-    def __init__(self, *, useWindInput=False, useCrInput=False, useInclinationInput=False,
-                 **modifications):
-        super().__init__(**modifications)
-        self._mount_inputs({"useWindInput": useWindInput, "useCrInput": useCrInput,
-                            "useInclinationInput": useInclinationInput})
+    def build(self):
+        useCrInput, useInclinationInput = self.useCrInput, self.useInclinationInput
         self.fDrag = QuadraticSpeedDependentForce(
             useSupport=True, ForceDirection=False, v_nominal=ac.ref("vRef"),
             f_nominal=ac.ref("fDrag_nominal"))
@@ -145,7 +141,7 @@ class Vehicle(_OptionalInputs, ac.Component):
 
     def equations(self):
         inputs = [ac.connect(getattr(self, port), getattr(self.fRoll, port))
-                  for port in ("cr", "inclination") if self.__dict__.get(self._inputs[port][0])]
+                  for port in ("cr", "inclination") if getattr(self, self._inputs[port][0])]
         inclination = self.input_or_constant("inclination")
         return [*inputs,
                 ac.Eq(self.s, self.mass.s), ac.Eq(self.v, self.mass.v),

@@ -25,7 +25,7 @@ class VoltageDrivenMotor(ac.Component):
     motor = DCMotor(R=R, L=L, k=K, J=J)
 
     def equations(self):
-        return [ac.connect(self.u_a, self.amplifier.v_ref),
+        return [ac.connect(self.u_a, self.amplifier.v),
                 ac.connect(self.amplifier.p, self.motor.p),
                 ac.connect(self.amplifier.n, self.motor.n, self.ground.p)]
 
@@ -138,7 +138,7 @@ class GearedMotor(ac.Component):
     housing = Fixed()
 
     def equations(self):
-        return [ac.connect(self.u_a, self.amplifier.v_ref),
+        return [ac.connect(self.u_a, self.amplifier.v),
                 ac.connect(self.amplifier.p, self.motor.p),
                 ac.connect(self.amplifier.n, self.motor.n, self.ground.p),
                 ac.connect(self.motor.flange, self.gear.flange_a),

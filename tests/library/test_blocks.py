@@ -45,7 +45,7 @@ def test_sources_step_ramp_sine():
 
 
 class Pulses(ac.Component):
-    pulse = bl.Pulse(amplitude=2.0, width=0.3, period=0.25, offset=0.5, startTime=0.1)
+    pulse = bl.Pulse(amplitude=2.0, width=30.0, period=0.25, offset=0.5, startTime=0.1)
     integral = bl.Integrator()
 
     def equations(self):

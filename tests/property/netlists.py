@@ -183,8 +183,8 @@ def _source_lines(net: Netlist, el: Element, decl: List[str], links: List[str]):
     if mech:
         cls, port = ("rot.Torque", "tau") if net.domain == "rotational" else ("tr.Force", "f")
     else:
-        cls, port = (("el.SignalVoltage", "v_ref") if el.kind == "V"
-                     else ("el.SignalCurrent", "i_ref"))
+        cls, port = (("el.SignalVoltage", "v") if el.kind == "V"
+                     else ("el.SignalCurrent", "i"))
     decl.append(f"{el.name} = {cls}()")
     if el.realize == "open":                # the input left unconnected
         return

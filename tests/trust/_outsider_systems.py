@@ -131,15 +131,17 @@ class MotorThermal(ac.Component):
     winding = th.HeatCapacitor(C=MOTOR["Cw"], T={"start": MOTOR["T_amb"], "fixed": True})
     core = th.HeatCapacitor(C=MOTOR["Cc"], T={"start": MOTOR["T_amb"], "fixed": True})
     Gwc = th.ThermalConductor(G=MOTOR["Gwc"])
-    conv = th.Convection(Gc=MOTOR["Gc"])
+    conv = th.Convection()
+    Gc = bl.Constant(k=MOTOR["Gc"])
     amb = th.FixedTemperature(T=MOTOR["T_amb"])
 
     def equations(self):
         return [ac.connect(self.losses.y[0], self.Pw.Q_flow),
                 ac.connect(self.losses.y[1], self.Pc.Q_flow),
                 ac.connect(self.Pw.port, self.winding.port, self.Gwc.port_a),
-                ac.connect(self.Pc.port, self.core.port, self.Gwc.port_b, self.conv.port_a),
-                ac.connect(self.conv.port_b, self.amb.port)]
+                ac.connect(self.Pc.port, self.core.port, self.Gwc.port_b, self.conv.solid),
+                ac.connect(self.conv.fluid, self.amb.port),
+                ac.connect(self.Gc.y, self.conv.Gc)]
 
 
 class MotorThermalSteady(MotorThermal):

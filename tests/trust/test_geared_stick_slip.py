@@ -105,7 +105,7 @@ def positioner(order, set_point):
         return [ac.connect(m.set_point.y, m.error.u1),
                 ac.connect(m.angle.phi, m.error.u2),
                 ac.connect(m.error.y, m.pid.u),
-                ac.connect(m.pid.y, m.amplifier.v_ref),
+                ac.connect(m.pid.y, m.amplifier.v),
                 ac.connect(m.amplifier.p, m.motor.p),
                 ac.connect(m.amplifier.n, m.motor.n, m.ground.p),
                 ac.connect(m.motor.flange, m.gear.flange_a),

@@ -54,11 +54,11 @@ class TotalHarmonicDistortionExample(ac.Component):
     thdRMS = TotalHarmonicDistortion(f=ac.ref("f1"), useFirstHarmonic=False)
 
     def equations(self):
-        return [ac.connect(self.sine3.y, self.sineVoltage3.v_ref),
-                ac.connect(self.sine1.y, self.sineVoltage1.v_ref),
+        return [ac.connect(self.sine3.y, self.sineVoltage3.v),
+                ac.connect(self.sine1.y, self.sineVoltage1.v),
                 ac.connect(self.voltageSensor.p, self.sineVoltage3.p),
                 ac.connect(self.sineVoltage3.n, self.sineVoltage1.p),
                 ac.connect(self.sineVoltage1.n, self.ground.p),
                 ac.connect(self.ground.p, self.voltageSensor.n),
-                ac.connect(self.thd1.u, self.voltageSensor.v_out),
-                ac.connect(self.voltageSensor.v_out, self.thdRMS.u)]
+                ac.connect(self.thd1.u, self.voltageSensor.v),
+                ac.connect(self.voltageSensor.v, self.thdRMS.u)]

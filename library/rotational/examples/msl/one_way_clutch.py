@@ -28,7 +28,7 @@ class OneWayClutch(ac.Component):
     oneWayClutch = rot.OneWayClutch(peak=25.0, fn_max=3.0)
     torque = Torque()
     signalTorque = Sine(amplitude=10.0, f=3.0)
-    signalEngagement = Pulse(amplitude=1.0, width=0.5, period=1.3, startTime=0.3)
+    signalEngagement = Pulse(amplitude=1.0, width=50.0, period=1.3, startTime=0.3)
 
     def equations(self):
         return [ac.connect(self.torque.flange, self.inertiaIn.flange_a),
