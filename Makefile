@@ -7,7 +7,8 @@ TEST_STAMP := $(VENV)/.installed-test
 
 .PHONY: demo test test-msl bench docs clean
 
-$(STAMP): pyproject.toml
+# setup.py builds the compiled step loop (solvers/cbdf*.c): a change there reinstalls
+$(STAMP): pyproject.toml setup.py $(wildcard solvers/cbdf*.c solvers/cbdf*.h)
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e ".[plot]"

@@ -15,24 +15,28 @@ module written with it), scipy with ``compile``, ``simulate`` and the analyses.
 from __future__ import annotations
 
 import importlib
+import sys
 
 _EXPORTS = {
-    ".components": ("Across", "Component", "Connection", "Eq", "Equation",
-                    "InvalidConnection", "InvalidEquation", "InvalidHierarchy", "InvalidIndex",
-                    "InvalidInheritance", "InvalidValue", "ModelError", "NotInModel",
-                    "Parameter", "Port", "Signal", "Through", "UnitError", "UnitWarning",
-                    "Variable", "When", "assign", "connect", "delay", "der", "if_else",
-                    "no_event", "pre", "ref", "reinit", "replaces", "sample", "sign", "time",
-                    "when", "edge", "change", "initial", "integer", "Conditional",
-                    "AbsentComponent", "MissingInput", "Init"),
-    ".errors": ("BackendError", "CacheError", "CacheWarning", "InitializationFailed",
-                "InvalidArgument", "SimulationError"),
+    ".components": ("Across", "Component", "Connection", "Eq", "Equation", "Parameter", "Port",
+                    "Signal", "Through", "Variable", "When", "assign", "connect", "delay", "der",
+                    "if_else", "no_event", "pre", "ref", "reinit", "replaces", "sample",
+                    "sign", "time", "when", "edge", "change", "initial", "integer",
+                    "Conditional", "Init"),
+    ".errors": ("ModelError", "InvalidValue", "InvalidEquation", "DiscreteVariableError",
+                "InvalidConnection", "InvalidHierarchy", "InvalidInheritance", "InvalidIndex",
+                "NotInModel", "AbsentComponent", "MissingInput", "UnitError",
+                "StructuralError", "IndexReductionFailed", "StructurallySingular",
+                "OverdeterminedModel", "UnderdeterminedModel", "SimulationError",
+                "InitializationFailed", "BackendError", "CacheError", "CacheWarning",
+                "InvalidArgument", "OperatingPointError",
+                "SteadyStateError", "ModeConflict", "UnitWarning", "ModeWarning",
+                "TransferFunctionWarning"),
     ".result": ("Result",),
     ".runtime": ("CompiledModel",),
     ".simulation": ("compile", "initial_values", "simulate"),
-    ".analysis": ("ModeWarning", "OperatingPointError", "StateSpace", "SteadyStateError",
-                  "TransferFunctionWarning", "energy_balance", "estimate", "is_passive",
-                  "linearize", "linearize_grid", "linearize_symbolic", "steady_state"),
+    ".analysis": ("StateSpace", "energy_balance", "estimate", "is_passive", "linearize",
+                  "linearize_grid", "linearize_symbolic", "steady_state"),
     ".fmi": ("export_fmu",),
     ".results_io": ("load_result",),
     ".display.animation": ("animate",),
@@ -47,13 +51,16 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "AbsentComponent", "MissingInput", "Init",
            "Connection", "if_else", "no_event", "delay", "sign", "time", "replaces",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
-           "ModelError", "InvalidValue", "InvalidEquation", "InvalidConnection",
-           "InvalidHierarchy", "InvalidIndex", "InvalidInheritance", "NotInModel",
-           "SimulationError", "InitializationFailed", "UnitError", "UnitWarning",
+           "ModelError", "InvalidValue", "InvalidEquation", "DiscreteVariableError",
+           "InvalidConnection", "InvalidHierarchy", "InvalidIndex", "InvalidInheritance",
+           "NotInModel", "UnitError", "StructuralError", "IndexReductionFailed",
+           "StructurallySingular", "OverdeterminedModel", "UnderdeterminedModel",
+           "SimulationError", "InitializationFailed", "BackendError", "OperatingPointError",
+           "SteadyStateError", "ModeConflict", "UnitWarning", "ModeWarning",
+           "TransferFunctionWarning",
            "linearize", "linearize_grid", "linearize_symbolic", "StateSpace", "steady_state",
-           "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
-           "energy_balance", "is_passive", "estimate", "BackendError", "CacheError",
-           "CacheWarning", "InvalidArgument", "export_fmu",
+           "energy_balance", "is_passive", "estimate", "CacheError", "CacheWarning",
+           "InvalidArgument", "export_fmu",
            "load_result", "animate", "sweep", "ensemble", "sqrt", "exp", "log", "log10", "sin", "cos",
            "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi"]
 # ac.abs, ac.min and ac.max exist too, but not in __all__: `import *` must not shadow builtins
@@ -91,3 +98,32 @@ def _lazy_exports(namespace: dict, exports: dict, submodules=()) -> tuple:
 
 __getattr__, __dir__ = _lazy_exports(globals(), _EXPORTS,
                                      submodules=("compiler", "ports", "solvers"))
+
+
+# -- notebooks ---------------------------------------------------------------------------
+# Jupyter shows a component, a compiled model, its index report, a result and a linear
+# model as HTML (acausal.display).  The classes know nothing of their pictures: the
+# renderers are registered here with IPython's HTML formatter, by class name (so nothing
+# is imported until an object is shown), when acausal is imported in an IPython session.
+_SHOWN = (("components.component", "Component"), ("runtime.model", "CompiledModel"),
+          ("compiler.report", "IndexReport"), ("result", "Result"),
+          ("analysis.statespace", "StateSpace"))
+
+
+def _html(obj) -> str:
+    from .display import show
+    return show(obj).text
+
+
+def _show_in_notebooks() -> None:
+    ipython = sys.modules.get("IPython")
+    shell = ipython.get_ipython() if hasattr(ipython, "get_ipython") else None
+    formatters = getattr(getattr(shell, "display_formatter", None), "formatters", {})
+    html = formatters.get("text/html")
+    if html is None:
+        return
+    for module, name in _SHOWN:
+        html.for_type_by_name(f"{__name__}.{module}", name, _html)
+
+
+_show_in_notebooks()

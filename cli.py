@@ -35,6 +35,8 @@ import re
 import sys
 import traceback
 import warnings
+from .errors import (BackendError, CacheError, InitializationFailed, InvalidArgument,
+                     ModelError, NotInModel, SimulationError, StructuralError)
 
 __all__ = ["main", "build_parser", "load_model", "report_dict", "UsageError"]
 
@@ -327,7 +329,6 @@ def _check_writable(option: str, path) -> None:
 
 
 def _check_names(compiled, names) -> None:
-    from .components import NotInModel
     for n in names:
         if n not in compiled.outputs:
             leaf = n.split(".")[-1]
@@ -534,10 +535,6 @@ def build_parser() -> argparse.ArgumentParser:
 def _exit_status(err) -> int | None:
     """1 for the typed failures of a model or a run, 2 for usage (a number given on the
     command line that the API refuses among them); None: not expected."""
-    from .compiler.structure.matching import StructuralError
-    from .components import ModelError
-    from .errors import (BackendError, CacheError, InitializationFailed, InvalidArgument,
-                         SimulationError)
     if isinstance(err, (UsageError, InvalidArgument)):
         return 2
     if isinstance(err, (_Failed, ModelError, SimulationError, InitializationFailed,

@@ -369,11 +369,6 @@ class Result:
         return plot_result(self, list(names) or self.states, ax=ax, path=path,
                            events=events, subplots=subplots)
 
-    def _repr_html_(self) -> str:
-        """Jupyter: a summary table and a plot of the states."""
-        from .display import result_html
-        return result_html(self)
-
     def __repr__(self):
         status = "ok" if self.success else f"FAILED: {self.message}"
         n_vars = len(self._table) if self._table is not None else (

@@ -6,7 +6,6 @@ re-initialized) and shows progress in simulated time (``progress=``, a tqdm bar)
 """
 from __future__ import annotations
 
-import contextlib
 import math
 import sys
 import time as _clock
@@ -15,9 +14,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .components.component import Component, ModelError
-from .errors import InvalidArgument, SimulationError
+from .components.component import Component
 from .result import Event, Result
+from .errors import InvalidArgument, ModelError, SimulationError
 
 if TYPE_CHECKING:
     from .runtime import CompiledModel
@@ -41,82 +40,24 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
     terms have different dimensions, ``"error"`` raises ``UnitError``, ``"off"`` skips
     the check (:mod:`acausal.compiler.frontend.unitcheck`); ``compiled.report.units`` says what
     was checked and lists the variables declared without a unit."""
-    # imported here: the compiler brings sympy and the runtime scipy, which importing
-    # acausal (or this module, for its names) does not need
-    from .compiler.pipeline import compile_model
+    # imported here: the runtime brings scipy, the compiler sympy (with its passes some
+    # 0.3 s to import), which importing acausal does not need; a model found in the
+    # compile cache by its instance tree needs neither sympy nor the passes
+    from .compiler import cache as compile_cache
     from .runtime import CompiledModel
     if isinstance(model, CompiledModel):
         return model
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r} ({type(model).__name__})")
-    during = contextlib.nullcontext()
-    if backend in ("auto", "c"):
-        # a long compile overlaps the build of the compiled step loop's library, if it
-        # was never built here; a short one leaves it to the end of the first run
-        from .solvers.cbdf import build_if_long
-        during = build_if_long(_LONG_COMPILE)
-    global _collected_before
-    exempting = _exemption_pending() and not _collected_before
-    if exempting:
-        # the garbage made so far is found while the heap is small; the collector then
-        # stays paused until what the compile leaves is frozen (compiler/gcpause.py).
-        # Once: a compile that loads no sympy (a model found by its instance tree) is
-        # not followed by the freeze, and later ones collect as before
-        import gc
-        from .compiler.gcpause import paused
-        gc.collect()
-        _collected_before = True
-    with during, paused() if exempting else contextlib.nullcontext():
-        mc = compile_model(model, backend, cache=cache, check_units=check_units)
-        _declare_units(mc, model)
-        _exempt_from_collector(collected=exempting)
+    if cache == "tree" and compile_cache.enabled():
+        found, _ = compile_cache.find_by_tree(model, backend)
+        if found is not None:
+            _declare_units(found, model)
+            return CompiledModel(found)
+    from .compiler.pipeline import compile_model
+    mc = compile_model(model, backend, cache=cache, check_units=check_units)
+    _declare_units(mc, model)
     return CompiledModel(mc)
-
-
-_LONG_COMPILE = 2.0   # s: a compile still running then starts the step loop's build
-# (it takes about as long: a shorter compile would not find it built, only slowed)
-
-
-_exempted = False
-_collected_before = False       # a compile was preceded by a collection (see compile)
-
-
-def _exemption_pending() -> bool:
-    """Whether the compile about to run may be the one after which
-    :func:`_exempt_from_collector` freezes (not yet done, not an interactive session)."""
-    return not (_exempted or hasattr(sys, "ps1") or sys.flags.interactive
-                or "IPython" in sys.modules)
-
-
-def _exempt_from_collector(collected: bool = False) -> None:
-    """After the first compile that loaded sympy in a script (not an interactive
-    session), move what is alive to the collector's permanent generation
-    (``gc.freeze``), the garbage collected first: before the compile (``collected``,
-    the collector paused since) or now.
-
-    Why: sympy's modules are some 65 000 objects that live as long as the process, and
-    every full collection walks them -- above all the interpreter's at exit, which with
-    sympy loaded took 0.1-0.2 s, as long as a small model's whole compile.  Frozen,
-    they are no longer walked, and at exit they are left to the operating system
-    rather than taken apart one by one (Python does not promise to finalize what is
-    alive at exit).  Collected before the compile, what it keeps is frozen without
-    being walked (the walk of a large model's hundreds of thousands of objects took
-    0.4-0.6 s on an 18 000-equation one), and with it the compile's own garbage
-    cycles, a few hundred objects (:mod:`acausal.compiler.gcpause`).  The price: an
-    object that was alive at that moment and becomes garbage in a reference cycle later
-    is not collected, so the exemption is made once per process, and not in an
-    interactive session, where the objects made before the first compile may be many
-    and exit time does not matter."""
-    global _exempted
-    if "sympy" not in sys.modules or not _exemption_pending():
-        return
-    _exempted = True
-    import gc
-    from .compiler import gcpause
-    if not (collected or gcpause.collected):     # a large compile has just collected
-        gc.collect()
-    gcpause.collected = False
-    gc.freeze()
 
 
 def _declare_units(mc, model) -> None:
@@ -212,11 +153,6 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
             keeping.abandon()          # a run that raised: the file is closed
         compiled.p[:] = saved
         compiled.release_inputs()
-        if compiled.backend in ("c", "numpy"):
-            # for the next runs (either backend's model runs in the compiled loop): this
-            # one has not shared the processors with the build
-            from .solvers.cbdf import build_in_background
-            build_in_background()
 
 
 def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,

@@ -44,16 +44,12 @@ import numpy as np
 from ..components.component import Component
 from ..runtime.delays import refuse_delays
 from .modes import describe_items, mode_values, relations_at_switch
-from .operating import OperatingPoint, OperatingPointError, operating_point
+from .operating import OperatingPoint, operating_point
 from .plant import as_plant, compile_plant, parameters_set, top_level_inputs
 from .statespace import StateSpace
+from ..errors import ModeWarning, OperatingPointError
 
 __all__ = ["linearize", "linear_residual", "ModeWarning"]
-
-
-class ModeWarning(UserWarning):
-    """The operating point sits where a relation switches (a kink of the model): the
-    linearization is that of the mode named in the message (``StateSpace.modes``)."""
 
 
 def linearize(model, inputs=(), outputs=(), at=None, *, t: float = 0.0) -> StateSpace:

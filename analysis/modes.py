@@ -27,6 +27,7 @@ import re
 from collections import deque
 
 import numpy as np
+from ..errors import ModeConflict
 
 __all__ = ["ModeConflict", "NoSolution", "search_modes", "relations_at_switch",
            "mode_values", "describe_items", "user_text"]
@@ -39,15 +40,6 @@ class NoSolution(Exception):
     def __init__(self, message: str, z=None):
         super().__init__(message)
         self.message, self.z = message, z
-
-
-class ModeConflict(ValueError):
-    """No mode assignment the point satisfies was found: ``relations`` lists the texts of
-    the relations (and floor values) that the solutions contradicted."""
-
-    def __init__(self, message: str, relations=(), tried: int = 0):
-        super().__init__(message)
-        self.relations, self.tried = list(relations), tried
 
 
 def search_modes(compiled, t: float, z0: np.ndarray, solve, *, modes=None,

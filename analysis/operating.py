@@ -31,26 +31,12 @@ import scipy.sparse as sps
 from ..runtime import CompiledModel
 from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton, homotopy
-from .modes import ModeConflict, NoSolution, mode_values, search_modes
+from .modes import NoSolution, mode_values, search_modes
 from .plant import Plant, as_plant, constant_value
+from ..errors import ModeConflict, OperatingPointError, SteadyStateError
 
 __all__ = ["OperatingPoint", "OperatingPointError", "SteadyStateError", "steady_state",
            "operating_point", "make_consistent", "consistent_point", "constant_value"]
-
-
-class OperatingPointError(ValueError):
-    """No consistent operating point: the algebraic equations have no solution, or no
-    mode of the relations is consistent with its own solution (``relations`` names
-    them, in the user's words)."""
-
-    def __init__(self, message: str, relations=()):
-        super().__init__(message)
-        self.relations = list(relations)
-
-
-class SteadyStateError(OperatingPointError):
-    """No isolated equilibrium: none found, a singular Jacobian (names the states), or
-    no mode of the relations that the equilibrium satisfies (names the relations)."""
 
 
 class OperatingPoint:

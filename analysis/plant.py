@@ -134,7 +134,8 @@ def _connect(a, b):
     return connect(a, b)
 
 
-def compile_plant(model: Component, values: dict, unfreeze=(), driven=()) -> Plant:
+def compile_plant(model: Component, values: dict, unfreeze=(), driven=(),
+                  cache=True) -> Plant:
     """Compile ``model`` (in a harness if it has top-level inputs).
 
     Parameters equal to 0 are structural zeros of the compiled model (not tunable), so
@@ -142,7 +143,8 @@ def compile_plant(model: Component, values: dict, unfreeze=(), driven=()) -> Pla
     compiled as 1 and set to their value afterwards; they enter the equations
     additively, so the structure does not depend on the value.  The parameters named in
     ``driven`` (dotted paths) that can be are turned into driven variables
-    (:func:`driven_class`); the others stay parameters.
+    (:func:`driven_class`); the others stay parameters.  ``cache``: as in
+    :func:`acausal.compile`.
     """
     from ..simulation import compile as compile_model
     names = top_level_inputs(model)
@@ -154,9 +156,9 @@ def compile_plant(model: Component, values: dict, unfreeze=(), driven=()) -> Pla
     root = type(model)(*args, **kwargs)
     root, drives = _drive_parameters(root, type(model)(*args, **kwargs), driven)
     if not names:
-        plant = Plant(compile_model(root))
+        plant = Plant(compile_model(root, cache=cache))
     else:
-        compiled = compile_model(_Harness(root, {n: 1.0 for n in names}))
+        compiled = compile_model(_Harness(root, {n: 1.0 for n in names}), cache=cache)
         params = {n: f"input{k}.k" for k, n in enumerate(names)}
         params.update({f"{n}.signal": p for n, p in params.items()})
         rates = {n: tuple(f"input{k}.{q}" for q in ("rate", "accel", "t_ref"))

@@ -33,6 +33,7 @@ from __future__ import annotations
 import warnings
 
 import numpy as np
+from ..errors import TransferFunctionWarning
 
 __all__ = ["TransferFunctionWarning", "balance", "scaled", "controllable_basis",
            "minimal_realization", "invariant_zeros", "tf_polynomials", "check_frequencies",
@@ -42,11 +43,6 @@ RTOL = 1e-10           # default relative rank tolerance (times the state dimens
 _EPS = np.finfo(float).eps
 _CHECK_RTOL = 1e-6     # accepted change of H(jw) when modes are removed, relative
 _TF_RTOL = 1e-5        # accepted mismatch of num/den, relative to its evaluation bound
-
-
-class TransferFunctionWarning(RuntimeWarning):
-    """A transfer function's polynomials did not reproduce the state-space model and
-    were recomputed by a slower, robust route."""
 
 
 # -- scaling ----------------------------------------------------------------------------------

@@ -27,8 +27,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 import scipy.linalg as sla
 
-from .realization import (TransferFunctionWarning, frequency_response, invariant_zeros,
-                          minimal_realization, scaled, tf_polynomials)
+from .realization import (frequency_response, invariant_zeros, minimal_realization, scaled,
+                          tf_polynomials)
+from ..errors import TransferFunctionWarning
 
 if TYPE_CHECKING:
     import scipy.signal
@@ -347,11 +348,6 @@ class StateSpace:
         from scipy.signal import tf2ss
         A, B, C, D = tf2ss(num, den)
         return cls(A, B, C, D, **names)
-
-    def _repr_html_(self) -> str:
-        """Jupyter: the poles (natural frequency, damping) and the Bode plot."""
-        from ..display import statespace_html
-        return statespace_html(self)
 
     def __repr__(self):
         return (f"<StateSpace {self.n_states} states {self.states}, inputs {self.inputs}, "

@@ -1,8 +1,9 @@
 """Symbolic linearization: A(p), B(p), C(p), D(p) as sympy matrices, for small models.
 
-The compiler's own symbolic passes are run again (flatten, alias elimination, index
-reduction with static state selection, BLT causalization), and instead of generating
-code the causal form is kept as expressions:
+The compiler's pipeline runs up to state selection (:data:`acausal.compiler.PASSES`:
+flattening, alias elimination, the numeric checks, index reduction with static state
+selection), the BLT causalization follows, and instead of generating code the causal
+form is kept as expressions:
 
     x' = f(x, t_r, p),   0 = R(x, t_r, p)          (t_r: torn variables, if any)
 
@@ -22,12 +23,9 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from ..compiler.frontend.alias import eliminate_aliases
+from ..compiler.algebra.derivative import solve_linear
+from ..compiler.pipeline import compile_model
 from ..compiler.structure.causalize import causalize
-from ..compiler.frontend.flatten import flatten
-from ..compiler.assemble import solve_linear
-from ..compiler.index.reduction import reduce_index
-from ..compiler.algebra.symbolic import SymbolicSystem
 from .plant import _Harness, top_level_inputs
 from .statespace import StateSpace
 
@@ -92,10 +90,9 @@ def linearize_symbolic(model, inputs=(), outputs=(), at=None,
     SymbolicStateSpace
     """
     root, prefix, input_params = _root(model)
-    flat = flatten(root)
-    reduced, aliases = eliminate_aliases(flat)
-    system = SymbolicSystem.from_flat(reduced)
-    reduction = reduce_index(system, system.structure())
+    c = compile_model(root, "numpy", cache=False, check_units="off", until="state_selection")
+    flat, reduced, aliases = c.flat, c.reduced, c.aliases
+    system, reduction = c.system, c.reduction
     if reduction.dynamic:
         raise NotImplementedError("symbolic linearization needs a static choice of states; "
                                   "this model selects its states at run time")

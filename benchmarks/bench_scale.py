@@ -14,16 +14,13 @@ Every (family, N) is run ``--repeat`` times, the repetitions interleaved (all si
 once, then again), and the median of each time is printed: the machine is shared, and
 single timings are noisy.  ``total`` is the wall time of ``compile_model``, ``cpu`` the
 processor time of the process during it (less sensitive to other load), ``sub cpu`` that
-of its child processes -- the C compiler's (all translation units) and the compile's side
-jobs (:mod:`acausal.compiler.sidejobs`: the cache key, the index as written and the cache
-store, in forked copies) -- user + system; ``RSS MB`` is the Python process's peak
-memory, ``sub MB`` the largest child's (a forked child shares the parent's pages until
-it writes them, so this over-counts what it adds), and a line per size says
-how the C library was built (translation units, compilers at once, flags, seconds
-compiling and linking; :mod:`acausal.native.build`) and the load average then.
+of its child processes -- the C compiler's (all translation units) -- user + system;
+``RSS MB`` is the Python process's peak memory, ``sub MB`` the largest child's, and a
+line per size says how the C library was built (translation units, compilers at once,
+flags, seconds compiling and linking; :mod:`acausal.native.build`) and the load
+average then.
 
-``--front`` stops after index reduction: code generation is replaced by a stand-in
-that builds nothing (the report is still filled, so the cost of its texts is measured),
+``--front`` stops after state selection (``compile_model(..., until="state_selection")``),
 for sizes where code generation would dominate the run.
 
     python benchmarks/bench_scale.py [--families ladder,chain,network]
@@ -43,28 +40,7 @@ import time
 __all__ = ["measure_once", "main"]
 
 _HERE = os.path.dirname(os.path.abspath(__file__))
-_last_report = None       # the report of a --front compile (the stand-in code has none)
 _FAMILIES = ("ladder", "chain", "network")
-
-
-def _front_only() -> None:
-    """Replace code generation (and the binding of a backend to it) by stand-ins; the
-    stand-in code has the fields the report reads."""
-    import importlib
-    from types import SimpleNamespace
-    from acausal.compiler import pipeline
-
-    def assemble(system, reduction, reduced, flat, aliases, report, discretes, *rest):
-        global _last_report
-        _last_report = report
-        return SimpleNamespace(names=[], state_z=[], pairs=[], dummies=[],
-                               relations=SimpleNamespace(n_relations=0, n_discrete=0))
-    pipeline._assemble = assemble
-    try:
-        cbackend = importlib.import_module("acausal.compiler.backends.cbackend")
-    except ImportError:
-        return
-    cbackend.bind = lambda *args, **kwargs: None
 
 
 def _preload() -> None:
@@ -80,23 +56,16 @@ def measure_once(family: str, n: int, front: bool) -> dict:
     sys.path.insert(0, _HERE)
     import families
     from acausal.compiler.pipeline import compile_model
-    if front:
-        _front_only()
+    from acausal.native.build import last_build
     _preload()
     model = getattr(families, family)(n)
     kids0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0, c0 = time.perf_counter(), time.process_time()
-    code = compile_model(model)
+    out = compile_model(model, until="state_selection" if front else None)
     total = time.perf_counter() - t0
-    report = _last_report if front else code.report
+    report = out.report
     usage = resource.getrusage(resource.RUSAGE_SELF)
-    from acausal.compiler import sidejobs
-    sidejobs.settle()        # the cache store beside the compile: its time and memory too
     kids = resource.getrusage(resource.RUSAGE_CHILDREN)
-    try:
-        from acausal.native.build import last_build
-    except ImportError:
-        last_build = {}
     return {"family": family, "n": n, "flat": report.counts["flatten"]["equations"],
             "total": total, "cpu": time.process_time() - c0, "timings": dict(report.timings),
             "rss_mb": usage.ru_maxrss / 1024.0, "child_rss_mb": kids.ru_maxrss / 1024.0,

@@ -19,11 +19,8 @@ noisy, so the CPU time (user + system) of the child is printed too.  Each run is
 down into its import, compile (the passes, the C compiler for the model's library, and
 the rest: mostly the imports the compile makes, sympy's above all), simulate, and the
 interpreter's teardown after the script's last statement (the time from the child's
-last clock reading to its exit as the parent sees it).  A cold run with the C backend
-starts the build of the compiled step loop's library in a process of its own
-(:func:`acausal.solvers.cbdf_build.build_in_background`) and does not wait for it; the
-benchmark waits for it before the next run (so that it does not compete with that run
-for the processors) and prints how long it went on after the run ended.  The children keep
+last clock reading to its exit as the parent sees it).  (The compiled step loop's
+library is part of the installation: no run builds it.)  The children keep
 their compiled bytecode in a temporary directory, as an installed package has it
 (``--source`` compiles the modules in every run instead, as an environment with
 PYTHONDONTWRITEBYTECODE does).  Then ``python -X importtime`` is run once on each script
@@ -73,14 +70,12 @@ def main(backend, cache):
     t = _clock
     cached = any("compile cache" in n for n in compiled.report.notes)
     timings = {} if cached else compiled.report.timings
-    builder = sys.modules.get("acausal.solvers.cbdf_build")
     print(json.dumps({"import": t[1] - t[0], "compile": t[2] - t[1], "simulate": t[3] - t[2],
                       "gcc": timings.get("c_backend", 0.0),
                       "passes": sum(v for k, v in timings.items() if k != "c_backend"),
                       "equations": [counts["flatten"]["equations"],
                                     counts["alias"]["equations"]],
                       "backend": compiled.backend, "step_loop": res.stats["step_loop"],
-                      "builder": getattr(getattr(builder, "_builder", None), "pid", None),
                       "module": ac.__file__,
                       "loaded": [m for m in heavy if m in sys.modules],
                       "end": time.time()}))
@@ -169,32 +164,12 @@ def main(argv=None) -> None:
 
 
 def _rc(script: str, backend: str, env: dict, *flags: str) -> tuple:
-    """One run of the RC script: (wall s, cpu s, the child's phases, its stderr); the
-    phases get ``teardown`` and, when the run started the build of the step loop's
-    library, ``background``: how long that build went on after the run ended (it is
-    waited for here, so that it does not share the processors with the next run)."""
+    """One run of the RC script: (wall s, cpu s, the child's phases with ``teardown``,
+    its stderr)."""
     wall, cpu, out, err = run_child(script, *flags, env=env, file=True, args=(backend, "tree"))
     phases = json.loads(out.strip().splitlines()[-1])
     phases["teardown"] = run_child.ended - phases["end"]
-    if phases["builder"] is not None:
-        phases["background"] = _wait_for_build(env["ACAUSAL_CACHE"], phases["builder"])
     return wall, cpu, phases, err
-
-
-def _wait_for_build(cache: str, pid: int, timeout: float = 600.0) -> float:
-    """Wait until the step loop's build in process ``pid`` has ended (its marker in the
-    cache is gone); the seconds it took from now."""
-    from acausal.solvers.cbdf_build import _MARKER
-    start = time.perf_counter()
-    marker = os.path.join(cache, _MARKER)
-    while time.perf_counter() - start < timeout:
-        try:
-            os.kill(pid, 0)
-        except ProcessLookupError:
-            if not os.path.exists(marker):
-                break
-        time.sleep(0.01)
-    return time.perf_counter() - start
 
 
 def _report(repeat: int, env: dict, script: str, cache: str, mode: str) -> None:
@@ -232,10 +207,6 @@ def _report(repeat: int, env: dict, script: str, cache: str, mode: str) -> None:
             rest = m["compile"] - m["passes"] - m["gcc"]
             print(f"      compile: passes {m['passes']:.3f}, C compiler for the model "
                   f"{m['gcc']:.3f}, the rest (imports: sympy, the compiler) {rest:.3f}")
-            built = [p["background"] for p in phases if "background" in p]
-            if built:
-                print(f"      the step loop's library was built in the background, done "
-                      f"{median(built):.3f} s after the run ended (not waited for)")
         if state == "warm":
             loaded = ", ".join(phases[-1]["loaded"]) or "none of them"
             print(f"      sympy, sympy.physics.units, scipy.sparse/linalg/optimize loaded: "

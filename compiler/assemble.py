@@ -1,34 +1,45 @@
 """The ``assemble`` and ``codegen`` passes: the index-reduced system put in the form the
-solver sees (full or causal, :mod:`acausal.compiler.structure.causalize`), its relations, initial
-equations, when-clauses and delays, and the generated code of each
+solver sees (full or causal, :mod:`acausal.compiler.structure.causalize`), and its
+relations, initial equations, when-clauses and delays with the generated code of each
 (:mod:`acausal.compiler.backends.codegen`), gathered in a :class:`ModelCode`.
 """
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
+import sympy as sp
 
+from ..components.declarations import TYPE_NAMES
+from ..components.logic import INITIAL
+from ..components.symbols import time
 from ..components.units import output_tables
-from .structure.graph import UNASSIGNED
-from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
-from .index.numeric import is_number
+from .algebra.derivative import solve_linear
+from .algebra.symbolic import symbols_of
+from .backends.cbackend import programs
+from .backends.codegen import FrozenSymbols, extract_relations, generate
+from .backends.domains import output_checks
+from .backends.parametric import parameter_functions
+from .frontend.sampled import when_rows as clause_rows
+from .index.numeric import CoefficientValues, is_number
+from .modelcode import (DelayCode, DynamicSets, InitialCode, InputCode, ModelCode, RelationInfo,
+                        WhenCode)
 from .report import EquationNames
+from .structure.causalize import causalize, full_form
+from .structure.graph import UNASSIGNED
+from .structure.matching import _match
+from ..errors import InitializationFailed, ModelError
+from ..words import listed
+from .index.balance import zero_causes
 
-__all__ = ["assemble", "choose_initial_rows", "solve_linear"]
+__all__ = ["assemble", "model_code", "choose_initial_rows", "delay_code", "feeds_back"]
 
 
-def assemble(system, reduction, reduced, flat, aliases, report, discretes,
-             helds=(), delays=(), programs_made=None) -> ModelCode:
-    """The ModelCode of the index-reduced ``system``.  ``programs_made``, if given, is
-    called with the generated Programs by prefix (:func:`acausal.compiler.backends.cbackend.programs`)
-    as soon as they are all made, before the rest of the ModelCode: the C backend
-    can print and compile them meanwhile (:mod:`acausal.compiler.pipeline`)."""
-    import sympy as sp
-    from types import SimpleNamespace
-    from ..components.logic import INITIAL
-    from .structure.causalize import causalize, full_form
-    from .backends.codegen import extract_relations, generate
-    from .index.numeric import CoefficientValues
-    from .frontend.sampled import when_rows as clause_rows
+def assemble(system, reduction, reduced, report, discretes, helds=()):
+    """The form the solver sees (:class:`~acausal.compiler.structure.causalize.Causalization`):
+    with dynamic state selection every variable stays an unknown (the full form); else the
+    BLT order and tearing decide what the solver vector holds, torn blocks checked
+    numerically at the compile-time values of their coefficients."""
     syms = system.symbols
     if reduction.dynamic:
         caus = full_form(reduction, len(syms), len(system.equations))
@@ -43,6 +54,17 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
                                 f"({b['not_torn']}), e.g. {syms[b['variables'][0]].name}")
     report.blocks = caus.blocks
     report.kept_for_fill = [syms[v].name for v in caus.kept_for_fill]
+    return caus
+
+
+def model_code(system, reduction, caus, reduced, flat, aliases, report, discretes,
+               helds=(), delays=(), programs_made=None) -> ModelCode:
+    """The ModelCode of the index-reduced ``system`` in the form ``caus``.
+    ``programs_made``, if given, is called with the generated Programs by prefix
+    (:func:`acausal.compiler.backends.cbackend.programs`) as soon as they are all made,
+    before the rest of the ModelCode: the C backend can print and compile them meanwhile
+    (:mod:`acausal.compiler.pipeline`)."""
+    syms = system.symbols
     z_syms = [syms[v] for v in caus.z]
     assigned = [(syms[v], solve_linear(system.equations[e].residual, syms[v]))
                 for v, e in caus.assignments]
@@ -88,7 +110,6 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     whens_code = generate(when_rows, z_syms, inputs, len(modes), None, assigned,
                          discretes=dsyms) if reduced.whens else None
     if programs_made is not None:
-        from .backends.cbackend import programs
         programs_made(programs(code, init_code, whens_code, delays_code))
     names = [q.name for q in z_syms]
     relations = RelationInfo(
@@ -124,7 +145,6 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
               "parameter_types": {p.name: _TYPE_NAME[p.type] for p in params
                                   if getattr(p, "type", float) is not float}})
     # the outputs nothing checks while integrating, checked at every output point
-    from .backends.domains import output_checks
     out.meta["output_checks"] = output_checks(
         code.program, out.meta["assigned_names"],
         lambda k: system.equations[caus.assignments[k][1]].name(system))
@@ -136,13 +156,11 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
          **{p.name: p.description for p in flat.parameters}},
         list(out.outputs) + list(out.param_names))
     if delays:
-        from .frontend.delays import delay_code, feeds_back
         out.delays = delay_code(
             delays, delay_rows, delays_code, reduced.parameters, psyms,
             set(z_syms) | {a for a, _ in assigned} | set(inputs) | set(dsyms) | set(modes),
             feeds_back(system, delays))
     if model_inputs:
-        from .modelcode import InputCode
         out.inputs = InputCode([i.name for i in model_inputs], [i.type for i in model_inputs],
                                [i.start for i in model_inputs])
     if reduced.whens:
@@ -159,8 +177,6 @@ def _frozen(reduced, dsyms, assigned):
     A relation of these that reads a Boolean, an Integer, a held value or initial() is
     evaluated where it is read, not an event (it cannot cross between events); a relation
     of parameters alone stays an item of the discrete state, as it always was."""
-    from .backends.codegen import FrozenSymbols
-    from .algebra.symbolic import symbols_of
     typed = {v.symbol for v in reduced.variables
              if getattr(v.attrs, "type", float) is not float}
     discrete = typed | set(dsyms)
@@ -179,13 +195,11 @@ _TYPE_NAME = {float: "Real", bool: "Boolean", int: "Integer"}
 
 def _value_types(flat) -> dict:
     """The Boolean and Integer variables of a result, by name (aliases included)."""
-    from ..components.declarations import TYPE_NAMES
     return {v.name: TYPE_NAMES[v.attrs.type] for v in flat.variables
             if getattr(v.attrs, "type", float) is not float}
 
 
 def _type_names(flat, helds) -> list:
-    from ..components.declarations import TYPE_NAMES
     types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables}
     return [TYPE_NAMES[types.get(h.name, float)] for h in helds]
 
@@ -195,7 +209,6 @@ def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced,
     """The relation as written, with the equation it is part of (``clauses``: the number
     of initial rows, the when-clauses' layout and the held values, which tell a
     when-clause's condition from a Boolean's or Integer's equation)."""
-    import sympy as sp
     i = origin[k]
     n_a, n_r = len(assigned), len(caus.residual_eqs)
     if i < n_a:
@@ -238,9 +251,6 @@ def _time_linear(items, assigned, frozen) -> list:
     """Indices of the items (relations' lhs - rhs, floor arguments) that are functions of
     time alone, linear in it, with coefficients of parameters and frozen values: their
     next zero is known before the integrator gets there (exact time events)."""
-    import sympy as sp
-    from ..components.symbols import time
-    from .algebra.symbolic import symbols_of
     explicit = {}
     known = set(frozen) | {time}              # grows with explicit: one set, not one a row
     for a, e in assigned:                     # assignments that depend on time alone
@@ -265,8 +275,6 @@ def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z
     """The mandatory initial rows, then those optional start-value rows (in state order)
     that complete a perfect matching of [G; initial rows] onto z (Modelica's rule: start
     values fix the states that nothing else determines)."""
-    from ..errors import InitializationFailed
-    from .structure.matching import _match
     keep = model_code.jac_rows < n_res
     adj = _adjacency(model_code.jac_rows[keep], model_code.jac_cols[keep], n_res)
     i_adj = _adjacency(init_code.jac_rows, init_code.jac_cols, init_code.n_rows)
@@ -322,12 +330,6 @@ def _adjacency(rows, cols, n_rows) -> list:
     return [sorted(set(a)) for a in adj]
 
 
-def solve_linear(residual, x):
-    """x from residual(x) = 0 when x enters linearly (:func:`acausal.compiler.algebra.derivative.solve_linear`)."""
-    from .algebra.derivative import solve_linear as solve
-    return solve(residual, x)
-
-
 def _dynamic(reduction) -> DynamicSets:
     s = reduction.structure
     sel = reduction.selection
@@ -366,7 +368,6 @@ def _start(system, k) -> float:
 def _output_map(flat, aliases, index, psyms) -> dict:
     """Every flat variable's name -> (sign, y index), or (None, f) with f(p) its constant
     value (a variable fixed to an expression of parameters)."""
-    import sympy as sp
     by_name = {s.name: k for s, k in index.items()}
     out, constant = {}, {}
     for v in flat.variables:
@@ -380,7 +381,7 @@ def _output_map(flat, aliases, index, psyms) -> dict:
         sign, root = aliases.resolve(v.name)
         out[v.name] = (float(int(sign)), by_name[root])   # +-1 (sympy's float() is slow)
     if constant:
-        out.update({name: (None, f) for name, f in _parameter_functions(constant, psyms)})
+        out.update({name: (None, f) for name, f in parameter_functions(constant, psyms)})
     for s, k in index.items():
         out.setdefault(s.name, (1.0, k))
     return out
@@ -390,7 +391,6 @@ def _derived_bounds(parameters, psyms) -> list:
     """(name, min, max, f(p)) of every bounded parameter whose value is an expression of
     tunable ones (``Resistor(R=ac.ref("R"))``): tuning those must respect its bounds, as
     compiling with the same values does."""
-    import sympy as sp
     tunable = set(psyms)
     derived = {}
     for q in parameters:
@@ -399,22 +399,8 @@ def _derived_bounds(parameters, psyms) -> list:
         value = sp.sympify(q.value)
         if value.free_symbols and value.free_symbols <= tunable:
             derived[q.name] = (q, value)
-    funcs = dict(_parameter_functions({n: v for n, (_, v) in derived.items()}, psyms))
+    funcs = dict(parameter_functions({n: v for n, (_, v) in derived.items()}, psyms))
     return [(n, q.min, q.max, funcs[n]) for n, (q, _) in derived.items()]
-
-
-def _parameter_functions(exprs: dict, psyms):
-    """f(p) for each expression of parameters, each from its own generated source (a
-    :class:`~acausal.compiler.cache.entries.ParameterFunction`: picklable)."""
-    from .cache.entries import ParameterFunction
-    from .backends.emit import Emitter
-    pos = {q: k for k, q in enumerate(psyms)}
-    em = Emitter("py", lambda q: f"p[{pos[q]}]")
-    out = []
-    for name, e in exprs.items():
-        lines = ["def f(p):"] + ["    " + ln for ln in em.assign("_v", e)] + ["    return _v"]
-        out.append((name, ParameterFunction("\n".join(lines) + "\n", "f")))
-    return out
 
 
 def _initial_rows(system, reduced, reduction, caus, flat=None):
@@ -432,9 +418,6 @@ def _initial_rows(system, reduced, reduction, caus, flat=None):
             text.append(f"{sym.name} = {info.attrs.start} (fixed start value) [{info.where}]")
             fixed.add(k)
     if len(rows) > needed:
-        from ..errors import InitializationFailed
-        from ..words import listed
-        from .index.balance import zero_causes
         places = [w.rsplit("[", 1)[-1].split(" (")[0] for w in text]
         cause = zero_causes(reduced.structural_zeros, places, flat)
         raise InitializationFailed(
@@ -449,3 +432,67 @@ def _initial_rows(system, reduced, reduction, caus, flat=None):
             rows.append(system.symbols[v] if start == 0.0 else system.symbols[v] - start)
             text.append(f"{system.symbols[v].name} = {start} (start value of a state)")
     return rows, text, n_mandatory
+
+
+# -- delays (compiler/frontend/delays.py made them inputs) ------------------------------
+def feeds_back(system, delays) -> bool:
+    """Whether a delayed value can reach a delayed expression (a loop through a delay),
+    judged on the connectivity of the equations: symbols of one equation, and x with
+    der(x), are connected.  Connectivity over-approximates dependence, so the answer
+    errs towards True.  Without such a loop a discontinuity comes back through a delay
+    once and stops (the runtime then follows one generation instead of six)."""
+    parent = {}
+
+    def find(q):
+        parent.setdefault(q, q)
+        while parent[q] is not q:
+            parent[q] = parent[parent[q]]
+            q = parent[q]
+        return q
+
+    def union(a, b):
+        ra, rb = find(a), find(b)
+        if ra is not rb:
+            parent[ra] = rb
+
+    for eq in system.equations:
+        syms = list(eq.residual.free_symbols)
+        for q in syms[1:]:
+            union(syms[0], q)
+    for x, dx in system.derivatives.items():
+        union(x, dx)
+    roots = {find(d.symbol) for d in delays}
+    return any(find(q) in roots for d in delays for q in d.argument.free_symbols
+               if q in parent)
+
+
+def delay_code(delays, rows, code, parameters, psyms, known, feedback=True):
+    """The :class:`~acausal.compiler.modelcode.DelayCode` of the model: ``code`` computes
+    the delayed expressions (``rows``) from the unknowns; each delay time becomes a
+    float or a function of the tunable parameters ``psyms``."""
+    for d, row in zip(delays, rows):
+        unknown = sorted(q.name for q in row.free_symbols if q not in known and q != time)
+        if unknown:
+            raise ModelError(f"{d.text} in {d.where}: the delayed expression reads "
+                             f"{', '.join(unknown)}, which the compiled model does not "
+                             "compute")
+    values = {p.symbol: p for p in parameters}
+    tunable = set(psyms)
+    times, exprs = [], {}
+    for d in delays:
+        T = d.T
+        for _ in range(100):                 # parameters bound to others, down to tunables
+            bound = {q: sp.sympify(values[q].value) for q in T.free_symbols
+                     if q in values and q not in tunable}
+            if not bound:
+                break
+            T = T.xreplace(bound)
+        if T.free_symbols:
+            exprs[d.text] = T
+            times.append(None)
+        else:
+            times.append(float(T))
+    funcs = dict(parameter_functions(exprs, psyms)) if exprs else {}
+    times = [funcs[d.text] if t is None else t for d, t in zip(delays, times)]
+    return DelayCode(code, [d.text for d in delays], times, [d.where for d in delays],
+                     feedback)

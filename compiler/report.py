@@ -12,8 +12,11 @@ equations) is not kept.  Unpickling it needs no sympy.
 from __future__ import annotations
 
 import json
+import textwrap
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from .structure.causalize import FILL_LIMIT
+from .structure.graph import UNASSIGNED
 
 __all__ = ["IndexReport", "AliasSummary", "EquationNames", "mode_structures"]
 
@@ -192,7 +195,7 @@ class IndexReport:
 
     def plot(self, ax=None, path=None):
         """The incidence matrix in BLT order with the blocks outlined (matplotlib)."""
-        import matplotlib
+        import matplotlib          # an optional dependency (the plot extra), used here only
         if path is not None:
             matplotlib.use("Agg")
         import matplotlib.pyplot as plt
@@ -222,11 +225,6 @@ class IndexReport:
     def to_json(self, **kw) -> str:
         return json.dumps(self.as_dict(), default=str, **kw)
 
-    def _repr_html_(self) -> str:
-        """Jupyter: the report as tables, with the BLT incidence picture."""
-        from ..display import report_html
-        return report_html(self)
-
     def __str__(self) -> str:
         lines = [f"Index report for {self.model_name}",
                  f"  differential index: {self.differential_index}"
@@ -252,7 +250,6 @@ class IndexReport:
             lines.append(f"  BLT: {len(sizes)} blocks, largest {max(sizes)}, {torn} torn")
         kept = getattr(self, "kept_for_fill", [])
         if kept:
-            from .structure.causalize import FILL_LIMIT
             lines.append(f"  fill: {len(kept)} assigned variable(s) kept as unknowns (gradient "
                          f"over {FILL_LIMIT} entries and its equation's), e.g. "
                          + ", ".join(kept[:3]))
@@ -383,7 +380,6 @@ WIDTH = 100      # the text report wraps at this width; it never cuts an equatio
 def _wrapped(first: str, text: str) -> list:
     """``first + text`` as lines of at most WIDTH characters where it can break, the
     continuation lines indented under the text (no character of it is dropped)."""
-    import textwrap
     return textwrap.wrap(text, WIDTH, initial_indent=first,
                          subsequent_indent=" " * len(first), break_long_words=False,
                          break_on_hyphens=False) or [first]
@@ -401,7 +397,6 @@ def names_of(system, variables) -> list:
 
 
 def _times_differentiated(s, e) -> int:
-    from .structure.graph import UNASSIGNED
     k = 0
     while e < len(s.eq_to_diff) and s.eq_to_diff[e] is not UNASSIGNED:
         e = s.eq_to_diff[e]

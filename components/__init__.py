@@ -4,15 +4,15 @@ Components, ports and declarations are plain Python; the symbolic vocabulary
 (``Eq``, ``der``, ``time``, ...) is sympy and is imported on first use, so defining
 component classes does not load sympy (their symbols and equations do).
 """
-from .component import (AbsentComponent, Component, Connection, InvalidConnection,
-                        InvalidEquation, InvalidHierarchy, InvalidInheritance, InvalidValue,
-                        MissingInput, ModelError, NotInModel, Port, connect)
+from .component import Component, Connection, Port, connect
 from .conditional import Conditional
 from .initialization import Init
 from .declarations import Across, Parameter, Signal, Through, Variable, ref
 from .inheritance import replaces
-from .units import UnitError, UnitWarning
 from .. import _lazy_exports
+from ..errors import (AbsentComponent, InvalidConnection, InvalidEquation, InvalidHierarchy,
+                      InvalidIndex, InvalidInheritance, InvalidValue, MissingInput,
+                      ModelError, NotInModel, UnitError, UnitWarning)
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
@@ -23,7 +23,6 @@ __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidV
            "AbsentComponent", "MissingInput", "Init"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".arrays": ("InvalidIndex",),
     ".symbols": ("Eq", "Equation", "When", "delay", "der", "if_else", "no_event", "reinit",
                  "sign", "time", "when", "sample", "assign"),
     ".logic": ("pre", "edge", "change", "initial", "integer"),

@@ -38,18 +38,14 @@ from dataclasses import fields, replace
 
 import numpy as np
 
-from .component import InvalidEquation, InvalidValue, ModelError
 from .declarations import (VariableAttributes, bound_violation, check_parameter_value,
                            real_number)
+from ..errors import InvalidEquation, InvalidIndex, InvalidValue, ModelError
 
 __all__ = ["InvalidIndex", "SymbolArray", "ArrayAttributes", "declared_shape", "shape_of",
            "symbol_array", "element_index", "elements", "array_equations",
            "elementwise", "parameter_array", "check_array_value", "check_array_declaration",
            "array_of_name"]
-
-
-class InvalidIndex(ModelError, IndexError):
-    """An index outside an array's shape (indices count from 0, as in Python)."""
 
 
 # -- shapes ------------------------------------------------------------------------------

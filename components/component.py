@@ -40,58 +40,13 @@ from .conditional import Conditional, check_conditionals, make_conditionals
 from .declarations import (COMPILING, Parameter, Variable, check_parameter_value,
                            check_structural_value, declaration_doc, is_symbolic,
                            parameter_signature, ref, shown_value)
+from ..errors import (InvalidConnection, InvalidEquation, InvalidHierarchy, InvalidValue,
+                      ModelError, NotInModel)
 
 if TYPE_CHECKING:
     import sympy
 
-__all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
-           "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
-           "InvalidInheritance", "AbsentComponent", "MissingInput"]
-
-
-class ModelError(ValueError):
-    """The model as written is not valid (unknown modification, bad connect, ...)."""
-
-
-class InvalidValue(ModelError):
-    """A parameter value or variable attribute that is not valid: not a real number,
-    NaN, outside [min, max], infinite where an equation needs it finite, or a parameter
-    binding that depends on a variable or on itself."""
-
-
-class InvalidEquation(ModelError):
-    """Something returned as an equation that is not one, an equation that determines
-    nothing or can never hold, or der() of a constant."""
-
-
-class InvalidConnection(ModelError):
-    """A connect() that is not valid: not ports, ports of different types, the same port
-    twice, or a port that is not the writing component's or its sub-components'."""
-
-
-class InvalidHierarchy(ModelError):
-    """A component that contains itself, or one instance held at two places."""
-
-
-class InvalidInheritance(ModelError):
-    """An ``equations()`` (or ``initial_equations()``) that calls its base's, which the
-    framework already includes, or an ``@ac.replaces`` naming a class that is not a base
-    with equations of its own."""
-
-
-class AbsentComponent(ModelError, AttributeError):
-    """A conditional port or sub-component (``ac.Conditional``) read or connected while
-    the structural flag that makes it is False."""
-
-
-class MissingInput(ModelError):
-    """A top-level input of the model (an input port of the model itself that nothing in
-    it drives) that ``simulate`` was not told how to drive (``inputs=``)."""
-
-
-class NotInModel(ModelError):
-    """An equation or connection uses a component, port, variable or symbol that is not
-    part of the model being compiled."""
+__all__ = ["Component", "Port", "Connection", "connect"]
 
 
 # The root of the model being flattened: reading a variable of a component outside it is
@@ -417,11 +372,6 @@ class Component(metaclass=_ComponentType):
         if len(shown) > 8:
             shown = shown[:8] + [f"... ({len(shown) - 8} more)"]
         return f"<{type(self).__name__} {where}" + (": " + ", ".join(shown) if shown else "") + ">"
-
-    def _repr_html_(self) -> str:
-        """Jupyter: the schematic of the component and its parameters."""
-        from ..display import component_html
-        return component_html(self)
 
 
 class Port(Component):

@@ -21,6 +21,8 @@ equations give the internal default in its place (a fixed support, a device temp
 port is an error that names the flag and how to set it.
 """
 from __future__ import annotations
+from ..errors import AbsentComponent, InvalidValue
+
 
 __all__ = ["Conditional", "make_conditionals", "check_conditionals"]
 
@@ -29,7 +31,6 @@ _CONDITIONAL_CACHE: dict = {}
 
 def absent_error(owner, name: str, flag: str, when: bool = True):
     """The error for reading ``owner.name`` whose flag does not have the value ``when``."""
-    from .component import AbsentComponent
     kind = type(owner).__name__
     where = f"'{owner._path}' ({kind})" if getattr(owner, "_path", None) else kind
     return AbsentComponent(f"{where}.{name} exists only with {flag}={when} ({flag}="
@@ -44,7 +45,7 @@ class Conditional:
     docstring."""
 
     def __init__(self, component, flag: str, when: bool = True):
-        from .component import Component, InvalidValue
+        from .component import Component
         if not isinstance(component, Component):
             raise InvalidValue(f"Conditional() takes a port or component, got {component!r}")
         if not isinstance(flag, str) or not flag.isidentifier():
@@ -97,7 +98,7 @@ def class_conditionals(cls) -> dict:
 def make_conditionals(comp, structural: dict) -> None:
     """Make the conditional components of a new instance whose flags say so
     (``structural``: the structural parameters it was given)."""
-    from .component import InvalidValue, _structurals
+    from .component import _structurals
     for name, cond in class_conditionals(type(comp)).items():
         use = structural.get(cond.flag, _structurals(type(comp))[cond.flag].value)
         if not isinstance(use, bool):
@@ -110,7 +111,6 @@ def make_conditionals(comp, structural: dict) -> None:
 def check_conditionals(cls) -> None:
     """InvalidValue naming ``cls.name`` for a Conditional whose flag is no structural
     Boolean parameter (checked when the class is made)."""
-    from .component import InvalidValue
     for name, decl in vars(cls).items():
         if isinstance(decl, Conditional):
             try:

@@ -25,6 +25,7 @@ from decimal import Decimal
 import numpy as np
 
 from .valuetypes import TYPE_NAMES, checked_discrete, typed_value, value_type_checked
+from ..errors import InvalidValue
 
 # The root of the model being flattened, set by components.component.compiling
 COMPILING = contextvars.ContextVar("acausal_compiling", default=None)
@@ -419,7 +420,6 @@ class ref:
 
     def __init__(self, name: str):
         if not isinstance(name, str) or not name.isidentifier():
-            from .component import InvalidValue   # component.py imports this module
             raise InvalidValue(f"ref() takes the name of a parameter of the enclosing "
                                f"component, not {name!r}")
         self.name = name

@@ -36,36 +36,27 @@ from __future__ import annotations
 import contextvars
 import functools
 import types
+from ..errors import InvalidInheritance
+
 
 __all__ = ["EQUATION_METHODS", "replaces", "prepare_class", "collect", "own_methods",
-           "all_items", "InvalidInheritance"]
+           "all_items"]
 
 EQUATION_METHODS = ("equations", "initial_equations")
 _REPLACES = "__acausal_replaces__"
 _WRAPPED = "__acausal_own__"
 
 
-def _error_class():
-    from .component import InvalidInheritance   # component.py imports this module
-    return InvalidInheritance
-
-
-def __getattr__(name):
-    if name == "InvalidInheritance":
-        return _error_class()
-    raise AttributeError(name)
-
-
 def replaces(*bases):
     """Mark ``equations`` (or ``initial_equations``) as replacing the named base classes'
     own method instead of adding to it: ``@ac.replaces(Diode)``."""
     if not bases or not all(isinstance(b, type) for b in bases):
-        raise _error_class()(f"ac.replaces() takes the base classes whose equations the "
-                             f"method replaces, got {bases!r}")
+        raise InvalidInheritance(f"ac.replaces() takes the base classes whose equations the "
+                                 f"method replaces, got {bases!r}")
 
     def mark(func):
         if not callable(func):
-            raise _error_class()(f"@ac.replaces(...) decorates a method, not {func!r}")
+            raise InvalidInheritance(f"@ac.replaces(...) decorates a method, not {func!r}")
         setattr(func, _REPLACES, tuple(bases))
         return func
     return mark
@@ -83,7 +74,7 @@ def prepare_class(cls) -> None:
         if not isinstance(func, types.FunctionType) or getattr(func, _WRAPPED, None):
             continue
         if _calls_super(func.__code__, name) and not getattr(func, _REPLACES, ()):
-            raise _error_class()(_super_message(cls, name))
+            raise InvalidInheritance(_super_message(cls, name))
         for base in getattr(func, _REPLACES, ()):
             _check_replaced(cls, name, base)
         setattr(cls, name, _guarded(cls, name, func))
@@ -111,11 +102,11 @@ def _calls_super(code: types.CodeType, name: str) -> bool:
 
 def _check_replaced(cls, name: str, base) -> None:
     if base not in cls.__mro__[1:]:
-        raise _error_class()(f"{cls.__name__}.{name} replaces {base.__name__}, "
-                             f"which is not a base class of {cls.__name__}")
+        raise InvalidInheritance(f"{cls.__name__}.{name} replaces {base.__name__}, "
+                                 f"which is not a base class of {cls.__name__}")
     if name not in vars(base):
-        raise _error_class()(f"{cls.__name__}.{name} replaces {base.__name__}, "
-                             f"which has no {name}() of its own to replace")
+        raise InvalidInheritance(f"{cls.__name__}.{name} replaces {base.__name__}, "
+                                 f"which has no {name}() of its own to replace")
 
 
 # The class whose own method the framework is calling, per instance and method: a call of
@@ -129,7 +120,7 @@ def _guarded(cls, name: str, func):
         active = _CALLING.get()
         if active is not None and active[0] is self and active[1] == name \
                 and active[2] is not cls and cls not in _replaced_by(active[2], name):
-            raise _error_class()(_super_message(active[2], name, cls))
+            raise InvalidInheritance(_super_message(active[2], name, cls))
         return func(self, *args, **kwargs)
     setattr(own, _WRAPPED, cls)
     return own

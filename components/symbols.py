@@ -20,6 +20,7 @@ from sympy import S
 from sympy.core.parameters import global_parameters
 
 from .printing import text
+from ..errors import InvalidEquation
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
            "sympify_value", "When", "when", "reinit", "Pre", "text", "sample", "Sample",
@@ -166,7 +167,6 @@ def _may_vary(expr) -> bool:
 
 
 def _invalid(message: str):
-    from .component import InvalidEquation   # component.py imports this module
     return InvalidEquation(message)
 
 

@@ -23,8 +23,8 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import lru_cache
 from typing import NamedTuple
+from ..errors import UnitError, UnitWarning
 
-from .component import ModelError
 
 __all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "output_tables",
            "parse_unit", "dimension_text", "has_unit", "convert_value", "BASE_DIMENSIONS",
@@ -32,15 +32,6 @@ __all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "output_tab
 
 # check_units= of acausal.compile (the check itself: compiler/frontend/unitcheck.py)
 MODES = ("error", "warn", "off")
-
-
-class UnitError(ModelError):
-    """An equation whose sides or terms have different dimensions, a function of a
-    quantity with a dimension, or a unit string that cannot be read."""
-
-
-class UnitWarning(UserWarning):
-    """A dimensional inconsistency found with ``check_units="warn"``."""
 
 
 BASE_DIMENSIONS = ("mass", "length", "time", "current", "temperature",

@@ -18,10 +18,10 @@ from __future__ import annotations
 import difflib
 import math
 
-from .component import (InvalidValue, NotInModel, _constructor_arguments, _declarations,
-                        _structurals)
+from .component import _constructor_arguments, _declarations, _structurals
 from .declarations import (Parameter, Variable, bound_violation, check_parameter_value,
                            is_symbolic)
+from ..errors import InvalidValue, NotInModel
 
 __all__ = ["validate_modifications", "suggestion"]
 

@@ -8,8 +8,8 @@ import subprocess
 import tempfile
 
 import numpy as np
-
 from ..errors import BackendError
+
 
 __all__ = ["model_c", "build_binary", "FLAGS"]
 
@@ -148,7 +148,7 @@ def model_c(mc, p, layout, variables, rtol) -> str:
 
 def build_binary(cc, src, binary, size) -> None:
     """The translation units compiled at once, then linked."""
-    from ..compiler.backends.cbackend import LARGE
+    from ..native.build import LARGE
     model_flags = (["-O0"] + FLAGS[1:]) if size > LARGE else FLAGS
     with tempfile.TemporaryDirectory() as tmp:
         objects, procs = [], []

@@ -42,10 +42,11 @@ import zipfile
 
 import numpy as np
 
-from ..errors import BackendError, InvalidArgument
 from .description import FmiVariable, model_description
 from .ccode import build_binary, model_c
 from .structure import Reads, solved_dependencies
+from .. import native
+from ..errors import BackendError, InvalidArgument, ModelError
 
 __all__ = ["export_fmu", "FMI_TYPES"]
 
@@ -77,8 +78,7 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
         raise InvalidArgument(f"export_fmu: rtol must be in (0, 1), got {rtol!r}")
     if t_end is not None and not (math.isfinite(float(t_end)) and float(t_end) > 0):
         raise InvalidArgument(f"export_fmu: t_end must be > 0 and finite, got {t_end!r}")
-    from ..compiler.backends.cbackend import compiler_available
-    cc = compiler_available()
+    cc = native.find_compiler()
     if cc is None:
         raise BackendError("exporting an FMU needs a C compiler (set CC, or install "
                            "cc/gcc/clang)")
@@ -174,7 +174,7 @@ def _platform() -> tuple[str, str]:
 def _compiled(model):
     """(Plant, metadata, (inputs, outputs)) for a Component or a CompiledModel."""
     from ..analysis.plant import Plant, compile_plant, top_level_inputs
-    from ..components.component import Component, ModelError
+    from ..components.component import Component
     from ..ports import BooleanOutput, IntegerOutput, RealOutput
     from ..runtime import CompiledModel
     if isinstance(model, CompiledModel):
@@ -191,38 +191,23 @@ def _compiled(model):
     outputs = [n for n, c in model.children().items()
                if isinstance(c, (RealOutput, BooleanOutput, IntegerOutput))]
 
-    def build():
+    def build(cache):
         if inputs:
-            return compile_plant(model, {})
+            return compile_plant(model, {}, cache=cache)
         from ..simulation import compile as compile_model
-        return Plant(compile_model(model, backend="numpy"))
+        return Plant(compile_model(model, backend="numpy", cache=cache))
 
-    plant = build()
+    plant = build(True)
     if not _has_programs(plant.compiled.model_code):
         # loaded from the compile cache, which keeps the functions but not the Program
         # the FMU's C is printed from: compiled again, past the cache
-        with _compile_cache_off():
-            plant = build()
+        plant = build(False)
     return plant, _metadata(model), (inputs, outputs)
 
 
 def _has_programs(mc) -> bool:
     codes = [mc.code, mc.initial.code] + ([mc.whens.code] if mc.whens is not None else [])
     return all(getattr(c, "program", None) is not None for c in codes)
-
-
-class _compile_cache_off:
-    """ACAUSAL_COMPILE_CACHE=0 for the duration (:mod:`acausal.compiler.cache.entries`)."""
-
-    def __enter__(self):
-        self.before = os.environ.get("ACAUSAL_COMPILE_CACHE")
-        os.environ["ACAUSAL_COMPILE_CACHE"] = "0"
-
-    def __exit__(self, *exc):
-        if self.before is None:
-            os.environ.pop("ACAUSAL_COMPILE_CACHE", None)
-        else:
-            os.environ["ACAUSAL_COMPILE_CACHE"] = self.before
 
 
 def _metadata(model):
@@ -247,7 +232,6 @@ def _static_states(compiled) -> None:
     mc = compiled.model_code
     if mc.dynamic is None:
         return
-    from ..components.component import ModelError
     sets = getattr(mc.report, "state_sets", None) or []
     words = "; ".join(
         f"{len(s['candidates']) - s['n_dummies']} of {{{', '.join(s['candidates'])}}}"
@@ -284,7 +268,6 @@ def _inputs_not_differentiated(plant, ports) -> None:
                 return          # the start point is outside the model's domain: no verdict
         if not (np.array_equal(rows[0], rows[1], equal_nan=True)
                 and np.array_equal(rows[0], rows[2], equal_nan=True)):
-            from ..components.component import ModelError
             raise ModelError(f"the model differentiates its input '{n}' (index reduction "
                              f"needs der({n})), which an FMU's input does not provide: "
                              "give the derivative as a second input, or filter the input "

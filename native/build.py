@@ -35,20 +35,27 @@ what costs (M1 at ``-O2``: some 15 s more of the compiler).  Hence:
   of 2.5 MB, half of a 100k-equation ladder).
 
 The library is written under a temporary name in the cache directory and renamed into
-place when it is whole: a process that finds the name finds the complete library.
+place when it is whole, its checksum written first (:mod:`acausal.native.cachefiles`): a
+process that finds the name finds the complete library, and loads it only once its
+bytes have that checksum.  Without a usable cache it is built in a private temporary
+directory, loaded at once and the directory removed.
 """
 from __future__ import annotations
 
+import hashlib
 import os
 import subprocess
 import tempfile
 import threading
 import time
 
+from . import cachefiles
+from .toolchain import cache_dir, find_compiler
 from ..errors import BackendError
 
 __all__ = ["LARGE", "LOOPED", "UNIT", "UNIT_SIZE", "FLAGS", "FLAGS_LARGE", "FLAGS_LOOPED",
-           "flags_for", "jobs", "split", "compile_library", "Compilation", "last_build"]
+           "flags_for", "jobs", "split", "compile_library", "Compilation", "Build",
+           "library_path", "start", "build_library", "last_build"]
 
 FLAGS = ["-O2", "-fPIC", "-ffp-contract=off"]
 FLAGS_LARGE = ["-O0", "-fPIC", "-ffp-contract=off"]
@@ -200,6 +207,98 @@ class Compilation:
                           characters=sum(map(len, self.units)), compile_s=t1 - self.t0,
                           link_s=time.perf_counter() - t1)
         return lib
+
+
+    def cancel(self) -> None:
+        """Stop the compilers that still run (a build whose library is not wanted)."""
+        with self.lock:
+            self.errors.append("cancelled")
+            _stop(self.running)
+
+
+# -- libraries in the cache -------------------------------------------------------------------
+def library_path(source: str, prefix: str = "model_") -> str:
+    """Where the library built from ``source`` lives: in the cache, named by the hash of
+    the source, the compiler's name and the flags; without a usable cache, a name that
+    :func:`acausal.native.cachefiles.load_library` knows for this process only.
+    BackendError without a compiler."""
+    cc = find_compiler()
+    if cc is None:
+        raise BackendError("no C compiler found (set CC, or install cc/gcc/clang)")
+    flags = flags_for(source)
+    key = hashlib.sha256((source + " ".join([os.path.basename(cc)] + flags)).encode())
+    name = f"{prefix}{key.hexdigest()[:24]}.so"
+    root = cache_dir()
+    return os.path.join(root, name) if root is not None else \
+        os.path.join(tempfile.gettempdir(), "acausal-no-cache", name)
+
+
+class Build:
+    """A library being built from one source: :meth:`wait` returns its path (it may be
+    called from another thread), :meth:`cancel` stops the compilers.  ``transient``:
+    built outside a cache, loaded as soon as it is linked."""
+
+    def __init__(self, lib: str, job: Compilation | None = None, cleanup=None,
+                 transient: bool = False):
+        self.lib, self.job, self.cleanup, self.transient = lib, job, cleanup, transient
+
+    def wait(self) -> str:
+        if self.job is not None:
+            try:
+                built = self.job.wait()
+                if self.transient:
+                    cachefiles.load_transient(self.lib, built)
+                else:        # atomic, its checksum first: a whole file or none
+                    cachefiles.publish_library(built, self.lib)
+            finally:
+                self.cleanup()
+                self.job = None
+        return self.lib
+
+    def cancel(self) -> None:
+        if self.job is not None:
+            self.job.cancel()
+
+
+def start(source: str, unit_size: int | None = None, prefix: str = "model_") -> Build:
+    """The build of ``source`` begun: its compilers are started now, by this thread (a
+    library already in the cache, whole, is not built again; a damaged one is).  A large
+    source is compiled without optimization, in translation units of about
+    ``unit_size`` characters (:data:`UNIT_SIZE`), as many compiled at once as there are
+    processors; the split does not enter the library's name: every split of a source
+    gives the same functions."""
+    lib = library_path(source, prefix)
+    if cachefiles.library_ok(lib):
+        return Build(lib)
+    flags = flags_for(source)
+    units = split(source, unit_size or UNIT_SIZE, jobs()) \
+        if len(source) > LARGE or unit_size else [source]
+    root = cache_dir()
+    if root is None:           # no cache: built aside, loaded, and the directory removed
+        aside = cachefiles.transient_build_dir()
+        where = aside.__enter__()
+
+        def cleanup():
+            aside.__exit__(None, None, None)
+    else:
+        tmp = temporary_dir(root)
+        where, cleanup = tmp.name, tmp.cleanup
+    try:
+        job = Compilation(find_compiler(), units, flags, where)
+    except BaseException:
+        cleanup()
+        raise
+    return Build(lib, job, cleanup, transient=root is None)
+
+
+def build_library(source: str, cached_only: bool = False, unit_size: int | None = None,
+                  prefix: str = "model_") -> str | None:
+    """The path of the library built from ``source``, compiled now or found in the cache
+    (with ``cached_only``: None rather than compiling it)."""
+    if cached_only:
+        lib = library_path(source, prefix)
+        return lib if cachefiles.library_ok(lib) else None
+    return start(source, unit_size, prefix).wait()
 
 
 def _stop(running: dict) -> None:

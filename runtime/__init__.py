@@ -50,7 +50,7 @@ What the runtime provides (numbered, so the code can cite it)
    (:func:`.initial.consistent_output`); a failed solve is counted and said.
 11. Outputs the integrator does not see (computed only for the results, through an
    operation that can leave the finite numbers: ``sqrt``, ``log``, a division) are
-   checked at every output point (``check_point``, solver contract item 18,
+   checked at every output point (``check_point``, solver contract item 19,
    :mod:`.diagnostics`): one that is NaN or inf ends the run, naming the variable, its
    equation and the time.
 """

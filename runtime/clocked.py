@@ -18,6 +18,7 @@ from __future__ import annotations
 from types import SimpleNamespace
 
 import numpy as np
+from ..errors import InitializationFailed, SimulationError
 
 __all__ = ["has_discrete_events", "run_between_events"]
 
@@ -82,7 +83,6 @@ def run_between_events(compiled, t_start: float, t_end: float, t_eval=None):
 
 def _handle(compiled, t, crossed) -> None:
     """The event at t; a discrete state that does not settle stops the run."""
-    from ..errors import InitializationFailed, SimulationError
     z = np.zeros(0)
     try:
         compiled.handle_event(t, z, z, crossed)

@@ -38,8 +38,8 @@ from __future__ import annotations
 import bisect
 
 import numpy as np
+from ..errors import InitializationFailed, InvalidValue, ModelError, SimulationError
 
-from ..errors import InitializationFailed, SimulationError
 
 __all__ = ["DelayLines", "FilledCode", "refuse_delays"]
 
@@ -64,7 +64,6 @@ def refuse_delays(compiled, what: str, advice: str) -> None:
     d = getattr(getattr(compiled, "model_code", None), "delays", None)
     if d is None:
         return
-    from ..components.component import ModelError
     raise ModelError(f"{what}: " + "; ".join(f"{x} in {w}" for x, w in zip(d.texts, d.wheres))
                      + f".  {advice}")
 
@@ -129,7 +128,6 @@ class DelayLines:
         T = np.array([f(p) if callable(f) else f for f in self._times], dtype=float)
         bad = [k for k in range(self.n) if not (0 < T[k] < np.inf)]
         if bad:
-            from ..components.component import InvalidValue
             k = bad[0]
             raise InvalidValue(f"{self.texts[k]} in {self.wheres[k]}: the delay time is "
                                f"{T[k]!r} with these parameter values; it must be positive")
@@ -336,7 +334,6 @@ def explicit_values(model, lines: DelayLines, times) -> np.ndarray:
     then a function of time, and so is each delayed expression, evaluated directly at
     t - T (at t0 before t0) in the modes that hold there.  A delayed expression that
     reads another delay has no such closed form here: ModelError."""
-    from ..components.component import ModelError
     out = np.empty((len(times), lines.n))
     z = np.zeros(0)
     saved = model.m.copy()

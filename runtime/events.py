@@ -42,11 +42,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import InitializationFailed
 from ..solvers.base import EventAction
 from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton
 from .initial import algebraic_system, consistent_derivatives
+from ..errors import InitializationFailed, InvalidValue
 
 __all__ = ["WhenClauses", "iterate_event", "discrete_iteration"]
 
@@ -106,7 +106,6 @@ class WhenClauses:
         for c, w in enumerate(self.clocks):
             if not (np.isfinite(self.start[c]) and np.isfinite(self.period[c])
                     and self.period[c] > 0):
-                from ..components.component import InvalidValue
                 raise InvalidValue(f"{self.texts[w]}: sample(start = {self.start[c]:g}, "
                                    f"period = {self.period[c]:g}) needs a finite start and "
                                    "a positive period")

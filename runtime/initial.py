@@ -37,10 +37,10 @@ import math
 
 import numpy as np
 
-from ..errors import InitializationFailed
 from ..solvers.initialization import solve_with_fallback
 from ..solvers.linalg import SPARSE_THRESHOLD, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
+from ..errors import InitializationFailed
 
 __all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives",
            "algebraic_system", "consistent_output"]

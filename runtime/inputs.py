@@ -21,6 +21,7 @@ import math
 import numbers
 
 import numpy as np
+from ..errors import InvalidValue, MissingInput, NotInModel, SimulationError
 
 __all__ = ["InputDrivers"]
 
@@ -48,11 +49,9 @@ class _Function:
         try:
             x = float(self.f(t))
         except Exception as err:        # the user's function: say which input
-            from ..errors import SimulationError
             raise SimulationError(f"the function given for input '{self.name}' raised "
                                   f"{type(err).__name__} at t = {t:.6g}: {err}", t) from err
         if not math.isfinite(x):
-            from ..errors import SimulationError
             raise SimulationError(f"the function given for input '{self.name}' returned "
                                   f"{x} at t = {t:.6g}", t)
         return x
@@ -65,7 +64,6 @@ class _Table:
     varying = True
 
     def __init__(self, times, values, held: bool, name: str):
-        from ..components.component import InvalidValue
         t = np.asarray(times, dtype=float).ravel()
         v = np.asarray(values, dtype=float).ravel()
         if t.size == 0 or t.shape != v.shape:
@@ -97,7 +95,6 @@ class _Table:
 
 def _driver(spec, name, typ):
     """The driver of input ``name`` for what the user gave (module docstring)."""
-    from ..components.component import InvalidValue
     from ..components.declarations import typed_value
     if isinstance(spec, (numbers.Number, np.number, np.bool_)):
         kind = {"Boolean": bool, "Integer": int}.get(typ, float)
@@ -146,7 +143,6 @@ class InputDrivers:
     def set(self, specs: dict | None, p) -> None:
         """Drive the inputs by ``specs`` ({name: number, function, table}); every input
         must be given (a missing or unknown name is a typed error naming it)."""
-        from ..components.component import InvalidValue, MissingInput, NotInModel
         specs = dict(specs or {})
         unknown = [n for n in specs if n not in self.names]
         if unknown:

@@ -28,8 +28,7 @@ import types
 
 import numpy as np
 
-from ..components.component import InvalidValue, NotInModel
-from ..solvers.base import DAEProblem, unbounded
+from ..solvers.base import DAEProblem, LoopModel, unbounded
 from ..solvers.linalg import assemble
 from .delays import DelayLines, FilledCode
 from .diagnostics import DOMAIN_ERRORS, OutputCheck, failing_statement
@@ -38,6 +37,7 @@ from .events import WhenClauses, iterate_event
 from .initial import InitialConditions, consistent_output, initialize, reinitialize
 from .inputs import InputDrivers
 from .modes import DiscreteState
+from ..errors import InvalidValue, NotInModel
 
 __all__ = ["CompiledModel"]
 
@@ -120,6 +120,7 @@ class CompiledModel(DAEProblem):
             self.delays is None and len(self.p) >= _LISTED_PARAMS
         self._p_listed = None
         self._next_own = None              # the model's own next time event
+        self._loop_model = None            # made when a compiled step loop asks
         self._update_links()
 
     # -- pickling -----------------------------------------------------------------------
@@ -160,7 +161,6 @@ class CompiledModel(DAEProblem):
         typed error naming it.  ``None`` with no inputs is fine."""
         if self.inputs is None:
             if specs:
-                from ..components.component import NotInModel
                 raise NotInModel(f"simulate(inputs=...): the model has no top-level inputs "
                                  f"(given: {', '.join(map(str, specs))})")
             return
@@ -273,6 +273,47 @@ class CompiledModel(DAEProblem):
         names += [f"der({self.names[s]}) = {self.names[d]}" for s, d in
                   zip(self.link_s, self.link_d)]
         return names
+
+    # -- the compiled step loop (solver contract item 18) ---------------------------------
+    def loop_model(self) -> LoopModel | None:
+        """The generated functions and their layout, for a compiled step loop; None with
+        delays (their history is kept in Python after every step)."""
+        if self.delays is not None:
+            return None
+        if self._loop_model is None:
+            self._loop_model = self._make_loop_model()
+        return self._loop_model
+
+    def _make_loop_model(self) -> LoopModel:
+        from ..compiler.backends.clibrary import CFunction
+        code, d = self.code, self.discrete
+        names = ("residual", "jacobian") + (("roots", "scales") if self.n_roots else ())
+        native = self.backend == "c" and all(isinstance(getattr(code, k), CFunction)
+                                             for k in names)
+
+        def function(name):
+            fn = getattr(code, name)
+            if native:
+                import ctypes
+                return ctypes.cast(fn.fn, ctypes.c_void_p).value
+            return lambda t, z, out: self._call(fn, t, z, len(out), out)
+
+        def links():
+            return (self.link_s, self.link_d, self._jac_indptr, self._jac_indices,
+                    self._jac_slot)
+
+        def dynamic_test():
+            return self.dynamic.watch(self.dummies)
+
+        return LoopModel(
+            functions={k: function(k) for k in names},
+            n_work=int(code.c_layout["n_work"]) if native else 0,
+            n_rows=int(code.n_rows), n_res=self.n_res, state_z=self.state_z,
+            jac_rows=code.jac_rows, jac_cols=code.jac_cols,
+            jac_sign=np.where(self._der_entries, -1.0, 1.0), n_rel=d.n_rel, n_disc=d.n_disc,
+            root_nominal=d.nominal, timed=d._timed.astype(float), p=self.p, m=d.m,
+            offset=d.offset, orientation=d._orientation, links=links,
+            dynamic_test=dynamic_test if self.dynamic is not None else None)
 
     # -- evaluation of the generated code ------------------------------------------------
     def _params(self):
@@ -505,11 +546,6 @@ class CompiledModel(DAEProblem):
         if self.n_roots:
             self.discrete.release(t, z, self.p)
         return self.reselect_states(t, z)
-
-    def _repr_html_(self) -> str:
-        """Jupyter: the states, parameters and the index report's summary."""
-        from ..display import model_html
-        return model_html(self)
 
     # -- parameters ---------------------------------------------------------------------------
     def set_parameters(self, values: dict) -> None:

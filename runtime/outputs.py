@@ -13,8 +13,10 @@ not taken discarded), as the array code of the numpy backend does
 (:mod:`acausal.compiler.backends.arraycode`).  The operations are those of the
 generated statements in the same order; numpy's functions agree with ``math``'s to
 rounding, so values agree with a point-by-point ``expand`` to rounding, not bitwise.
-Every result reads its values this way (:class:`acausal.Result`), so what a run
-gives does not depend on how it is read.
+Every result of a model on the numpy backend reads its values this way, and every result
+of a model behind its C library reads them from its C ``expand`` point by point
+(:func:`source_at_hand`), so what a run gives depends neither on how it is read nor on
+what ran before.
 """
 from __future__ import annotations
 
@@ -154,16 +156,15 @@ _CHUNK = 1 << 22     # values (points x outputs) computed at once, at most
 
 
 def source_at_hand(code) -> str | None:
-    """The generated Python source of ``code`` if it is printed, or can be printed
-    without importing sympy (a model compiled in this process); None for a model
-    loaded behind its C library, whose Python source is printed from its Program only
-    when needed (:mod:`acausal.compiler.cache.entries`): reading its results then
-    takes its C ``expand`` point by point rather than load sympy for the Program."""
-    import sys
-    module = getattr(code, "module", None)
-    if module is None or getattr(module, "printed", True) or "sympy" in sys.modules:
-        return code.source
-    return None
+    """The generated Python source whose ``expand`` computes the outputs on arrays, or
+    None for a model behind its C library: its outputs are its C ``expand``'s, point by
+    point, whether it was compiled in this process or loaded from the cache, so a
+    result's values do not depend on what ran before (the array statements and the C
+    function agree to rounding, not bitwise; nor does the C library's model need sympy
+    to print its Python source)."""
+    if getattr(code, "backend", None) == "c":
+        return None
+    return code.source
 
 
 def evaluate(compiled, cols, t, z, parameters, discrete, index, delayed=None) -> list:

@@ -92,7 +92,12 @@ What a problem provides (numbered, so integrators can cite it)
    components the error test does not bound between steps (item 6) from its
    equations.  None: it could not, the interpolated value is kept and counted
    (``SolverStats.interpolated_outputs``).
-18. ``check_point(t, y, m, every=False) -> str | None`` (optional, may be None): whether
+18. ``loop_model() -> LoopModel | None`` (optional): a model whose residual, Jacobian
+   and zero-crossing functions are generated gives their layout (:class:`LoopModel`),
+   so that a compiled step loop (:mod:`acausal.solvers.cbdf`) can call them and
+   assemble F, the iteration matrix and the oriented roots (item 13) itself; None
+   where it cannot run there.  The loop reads nothing else of the problem.
+19. ``check_point(t, y, m, every=False) -> str | None`` (optional, may be None): whether
    the values the problem computes from an output point (y, in the discrete state
    ``m``) are finite -- all of them with ``every`` (the first point of a run), else
    those that need it (its ``every_point`` False: none); a sentence saying which is
@@ -103,7 +108,7 @@ What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
 (convergence) failures, events, the steps taken at each order, the order reductions
 made by stability limit detection, and which LU
-(dense or sparse) was used.
+(dense or sparse) and which step loop ran.
 
 What a solver returns (``SolverOutput``): accepted times ``t``, values ``y`` and
 derivatives ``yp`` (rows = time), ``success``, ``message``, ``stats``, and the event
@@ -116,11 +121,11 @@ from dataclasses import dataclass, field
 from typing import Sequence
 
 import numpy as np
-
 from ..errors import InitializationFailed, SimulationError
 
-__all__ = ["DAEProblem", "EventAction", "SolverStats", "SolverOutput", "SimulationError",
-           "InitializationFailed"]
+
+__all__ = ["DAEProblem", "EventAction", "LoopModel", "SolverStats", "SolverOutput",
+           "SimulationError", "InitializationFailed"]
 
 
 class DAEProblem:
@@ -168,6 +173,51 @@ class EventAction:
 
 
 @dataclass
+class LoopModel:
+    """What a compiled step loop reads of a model (contract item 18).
+
+    The model's rows are ``F = [G(t, z); z'[state_z] - D(t, z); z'[link_s] - z[link_d]]``:
+    the generated residual returns G then D (``n_rows`` values, the first ``n_res`` of
+    them G).  Its Jacobian returns the values at ``(jac_rows, jac_cols)`` of dG/dz and
+    dD/dz; ``jac_sign`` is +1 on G's rows and -1 on D's (they enter F negated).  Each
+    generated function is either the address of a C function
+    ``int f(double t, const double *z, const double *p, const double *m, double *out,
+    double *work)`` (``work``: ``n_work`` doubles) or a Python callable
+    ``f(t, z, out)`` that writes ``out`` in place (raising where it fails).  The roots
+    are the relations' values ``g`` (``n_rel`` of them, oriented by ``orientation()``:
+    ``sign * g + side * (1e-10 |scale| + 1e-12 nominal)``) followed by the frozen
+    integer values' arguments (``n_disc``, each two oriented functions), plus
+    ``offset``; ``timed`` marks the items that are functions of time alone.  ``p`` and
+    ``m`` are the model's own parameter and discrete-state arrays (read by address).
+    ``links()`` gives the current linking rows and the iteration matrix's CSC pattern
+    ``(link_s, link_d, indptr, indices, slot)``: they change with dynamic state
+    selection, whose test of the current choice ``dynamic_test()`` describes (None
+    without dynamic states; ``acausal.solvers.cbdf_dyn``).  ``cache`` is a dict the
+    solver may keep what it learned about the model in (the sparse LU's analysis),
+    for its next runs."""
+
+    functions: dict
+    n_work: int
+    n_rows: int
+    n_res: int
+    state_z: np.ndarray
+    jac_rows: np.ndarray
+    jac_cols: np.ndarray
+    jac_sign: np.ndarray
+    n_rel: int
+    n_disc: int
+    root_nominal: np.ndarray
+    timed: np.ndarray
+    p: np.ndarray
+    m: np.ndarray
+    offset: np.ndarray
+    orientation: object
+    links: object
+    dynamic_test: object = None
+    cache: dict = field(default_factory=dict)
+
+
+@dataclass
 class SolverStats:
     steps: int = 0
     residual_evaluations: int = 0
@@ -180,6 +230,8 @@ class SolverStats:
     orders: dict = field(default_factory=dict)
     stability_limit_reductions: int = 0   # order lowered by stability limit detection
     linear_solver: str = ""      # "dense" or "sparse" LU, as chosen for the problem
+    lu: str = ""                 # which: "compiled", "numpy", "lapack" or "superlu"
+                                 # (solvers.linalg.LinearSolver.kind)
     step_loop: str = "python"    # where the steps ran: "python" or "c" (solvers.cbdf)
     interpolated_outputs: int = 0   # output times whose item-17 solve failed
 

@@ -12,9 +12,9 @@ search, the same hysteresis), and a new choice goes back to C as the new list of
 linking rows, the history kept (:meth:`BDF.reformulate`).  So the decisions are those
 of the Python loop, up to the rounding of one determinant.
 
-:func:`layout` builds the two arrays of ``cbdf_dyn.c`` (its header says what they
-hold) for the current choice; it runs before every return into C, since a search may
-have changed the choice or the reference quality.
+:func:`layout` builds the two int64/double arrays of ``cbdf_dyn.c`` (its header says
+what they hold) for the current choice; it runs before every return into C, since a
+search may have changed the choice or the reference quality.
 """
 from __future__ import annotations
 
@@ -23,10 +23,10 @@ import numpy as np
 __all__ = ["bind", "layout"]
 
 
-def layout(problem) -> tuple[np.ndarray, np.ndarray]:
-    """``(dl, dd)`` for ``cbdf_dyn.c``: the test of the problem's current choice of
-    states, or (when :meth:`watch` gives None) a request to return after every step."""
-    plan = problem.dynamic.watch(problem.dummies)
+def layout(plan) -> tuple[np.ndarray, np.ndarray]:
+    """``(dl, dd)`` for ``cbdf_dyn.c`` from the model's test of its current choice of
+    states (``LoopModel.dynamic_test()``), or, when that is None, a request to return
+    after every step."""
     if plan is None:
         return np.array([0, 0, 1, 0], dtype=np.int64), np.zeros(1)
     longs, doubles, work = [len(plan), 0, 0, 0], [], 0
@@ -39,15 +39,8 @@ def layout(problem) -> tuple[np.ndarray, np.ndarray]:
     return np.array(longs, dtype=np.int64), np.array(doubles + [0.0] * max(work, 1))
 
 
-def bind(solver) -> None:
-    """Before a run of the compiled loop: the current linking rows (mode 0: the C
-    residual and Jacobian read them) and the test of the current choice."""
-    from .cbdf import I_NLINK, P_DYND, P_DYNL, P_LINKD, P_LINKS
-    p = solver.problem
-    if solver.mode == 0:
-        solver._set("links", p.link_s, P_LINKS, np.int64)
-        solver._set("linkd", p.link_d, P_LINKD, np.int64)
-        solver.iv[I_NLINK] = len(p.link_s)
-    dl, dd = layout(p)
-    solver._set("dynl", dl, P_DYNL, np.int64)
-    solver._set("dynd", dd, P_DYND)
+def bind(solver, plan) -> None:
+    """Before a run of the compiled loop: the test of the current choice of states."""
+    dl, dd = layout(plan)
+    solver._set("dyn_longs", dl, np.int64)
+    solver._set("dyn_doubles", dd)

@@ -12,30 +12,11 @@ values drift far from the analysed one is still factored stably, at most with mo
 """
 from __future__ import annotations
 
-import ctypes
 import weakref
 
 import numpy as np
 
-__all__ = ["SparseLU", "analysis", "bind"]
-
-
-def bind(lib) -> None:
-    """Declare the sparse LU's entry points of the step loop's library ``lib``."""
-    vp = ctypes.c_void_p
-    lib.sparse_new.argtypes = [ctypes.c_long, vp, vp, ctypes.c_long, vp, vp, vp,
-                               ctypes.c_long]
-    lib.sparse_new.restype = vp
-    lib.sparse_free.argtypes = [vp]
-    lib.sparse_free.restype = None
-    lib.sparse_values.argtypes = [vp]
-    lib.sparse_values.restype = ctypes.POINTER(ctypes.c_double)
-    lib.sparse_factor.argtypes = [vp]
-    lib.sparse_factor.restype = ctypes.c_int
-    lib.sparse_solve.argtypes = [vp, vp]
-    lib.sparse_solve.restype = None
-    lib.sparse_nnz.argtypes = [vp]
-    lib.sparse_nnz.restype = ctypes.c_long
+__all__ = ["SparseLU", "analysis"]
 
 
 def analysis(A, perms=None):
@@ -78,8 +59,6 @@ class SparseLU:
         q, pref, cap, self.perms = analysis(A, perms)
         arrays = [np.ascontiguousarray(a, dtype=np.int64) for a in
                   (indptr, indices, slot, q, pref)]
-        if ctypes.sizeof(ctypes.c_long) != 8:
-            raise OSError("the compiled step loop needs 64-bit longs")
         h = lib.sparse_new(int(n), *map(_ptr, arrays[:2]), len(arrays[2]), _ptr(arrays[2]),
                            _ptr(arrays[3]), _ptr(arrays[4]), int(cap))
         if not h:

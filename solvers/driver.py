@@ -40,6 +40,7 @@ import numpy as np
 from .base import (DAEProblem, EventAction, InitializationFailed, SimulationError,
                    SolverOutput, SolverStats)
 from .bdf import BDF, StepFailure
+from .cbdf import R_FAIL, R_FULL, R_SPECIAL, CompiledBDF, choose_step_loop
 from .failures import failure_message
 from .initialization import consistent_initial, reinitialize
 
@@ -110,7 +111,7 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
         and a C compiler works, else the Python loop; "c" and "python" force one.
     nonfinite : {"stop", "warn"}
         A NaN or inf at an output point -- in y, or in what the problem computes from it
-        (``problem.check_point``, contract item 18) -- ends the run as a failure naming
+        (``problem.check_point``, contract item 19) -- ends the run as a failure naming
         it ("stop"), or is said in the output's ``nonfinite`` (the first such point)
         while the run goes on ("warn").
     sink : optional
@@ -143,7 +144,6 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
     run.nonfinite = nonfinite
     run.sink = sink
     run.bdf_options = {"max_order": max_order, "stald": stald}
-    from .cbdf import choose_step_loop
     run.mode = choose_step_loop(problem, step_loop, stald)
     run.progress = progress
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -195,7 +195,7 @@ class _Run:
         self.commit = getattr(problem, "commit", None)
         self.point_values = getattr(problem, "point_values", None)
         self.output_point = getattr(problem, "output_point", None)      # item 17
-        self.check_point = getattr(problem, "check_point", None)        # item 18
+        self.check_point = getattr(problem, "check_point", None)        # item 19
         self.nonfinite, self.nonfinite_seen = "stop", None
         self.sink, self.flushed = None, 0     # where the points go, and how many went
         self.values = []
@@ -218,7 +218,6 @@ class _Run:
             self.solver = BDF(p, self.t0, y, yp, **options)
             advance = self._advance
         else:
-            from .cbdf import CompiledBDF
             self.solver = CompiledBDF(p, self.t0, y, yp, mode=self.mode, **options)
             self.stats.step_loop = "c"
             advance = self._advance_compiled
@@ -261,7 +260,6 @@ class _Run:
     def _advance_compiled(self):
         """Steps in the compiled loop (:mod:`acausal.solvers.cbdf`) up to the next thing
         that needs Python; that step, if any, then goes on as in :meth:`_advance`."""
-        from .cbdf import R_FAIL, R_FULL, R_SPECIAL
         s = self.solver
         if self.stats.steps >= self.max_steps:
             raise self._error(f"maximum number of steps ({self.max_steps}) reached at "
@@ -387,7 +385,7 @@ class _Run:
 
     def _nonfinite(self, t, y, snapshot=None):
         """None, or (message, t, variables) for a NaN or inf at the output point (t, y):
-        in y itself, or in what the problem computes from it (item 18; at the first
+        in y itself, or in what the problem computes from it (item 19; at the first
         point all of it).  With ``nonfinite="warn"`` the first is kept for the output,
         and None returned."""
         what, variables = None, []
@@ -465,8 +463,10 @@ class _Run:
         lin = getattr(getattr(self, "solver", None), "lin", None)
         if self.stats.step_loop == "c":
             self.stats.linear_solver = "sparse" if self.solver.sparse else "dense"
+            self.stats.lu = "compiled"
         elif lin is not None and lin.sparse is not None:
             self.stats.linear_solver = "sparse" if lin.sparse else "dense"
+            self.stats.lu = lin.kind
         y = np.vstack(self.ys) if self.ys else np.empty((0, n))
         yp = np.vstack(self.yps) if self.yps else np.empty((0, n))
         out = SolverOutput(np.array(self.ts), y, yp, success, message, self.stats,

@@ -56,14 +56,19 @@ import sys
 
 import numpy as np
 
+from .cbdf_library import library
+from .cbdf_sparse import SparseLU
+
 __all__ = ["SPARSE_THRESHOLD", "NUMPY_LU_MAX", "LinearSolver", "SingularMatrixError",
            "singular_block", "make_linear_solver", "equilibrate"]
 
 #: Systems larger than this use sparse LU when the problem offers sparsity.
 SPARSE_THRESHOLD = 60
-#: Dense systems up to this size are factored without scipy.linalg when it is not loaded
-#: (and the compiled LU is not built): a factorization costs about n numpy calls, a few
-#: microseconds each, against 0.2-0.4 s for the import.
+#: Dense systems up to this size are factored by numpy row operations when the compiled
+#: LU is not installed, rather than by LAPACK through scipy.linalg: a factorization
+#: costs about n numpy calls, a few microseconds each, against 0.2-0.4 s for the import.
+#: (Which LU runs depends on the size and the installation only, never on what a process
+#: has imported: the same run gives the same numbers.)
 NUMPY_LU_MAX = 16
 
 # A pivot of the equilibrated matrix this small relative to the largest one is treated
@@ -239,11 +244,22 @@ class LinearSolver:
             offered = issparse(J) or self.pattern is not None
             self.sparse = bool(offered and self.n > SPARSE_THRESHOLD)
         if not self.sparse:
-            self._dlu = _compiled_lu()
+            self._dlu = library()
             if self._dlu is None:
-                self._numpy = "scipy.linalg" not in sys.modules and self.n <= NUMPY_LU_MAX
+                self._numpy = self.n <= NUMPY_LU_MAX
                 if not self._numpy:
                     self._lapack()
+
+    @property
+    def kind(self) -> str:
+        """Which LU factors: "compiled" (the step loop's, ``cbdf_lu.c``), "numpy" or
+        "lapack" when dense; "superlu" when sparse (its numeric refactorizations by the
+        compiled sparse LU where installed); "" before the first factorization."""
+        if self.sparse is None:
+            return ""
+        if self.sparse:
+            return "superlu"
+        return "compiled" if self._dlu is not None else "numpy" if self._numpy else "lapack"
 
     def _lapack(self) -> None:
         from scipy.linalg import get_lapack_funcs    # only a dense factorization needs it
@@ -343,12 +359,10 @@ class LinearSolver:
         if kept is None or kept is False or not _same_pattern(A, kept[0], kept[1]):
             return False
         if self._clu is None:
-            from .cbdf import library        # not at import: cbdf imports this module
             lib = library()
             if lib is None:
                 self._kept = False
                 return False
-            from .cbdf_sparse import SparseLU
             self._clu = SparseLU(lib, self.n, kept[0], kept[1], np.arange(A.nnz), A,
                                  kept[2])
         if self._clu.factor(A.data) != 0:
@@ -431,23 +445,6 @@ def _splu(A):
         return splu(A)
     except RuntimeError:     # exactly singular
         return None
-
-
-def _compiled_lu():
-    """The compiled step loop's library for a dense LU, when scipy.linalg is not loaded
-    yet and that library is built (never built for this), else None."""
-    if "scipy.linalg" in sys.modules:
-        return None
-    from . import cbdf
-    lib = cbdf.library(cached_only=True)
-    if lib is not None and not getattr(lib, "_lu_typed", False):
-        P = ctypes.c_void_p
-        lib.dense_factor.argtypes = [P, P, P, P, P, ctypes.c_long, P]
-        lib.dense_factor.restype = ctypes.c_int
-        lib.dense_solve.argtypes = [P, P, P, P, ctypes.c_long, P]
-        lib.dense_solve.restype = None
-        lib._lu_typed = True
-    return lib
 
 
 def make_linear_solver(problem) -> LinearSolver:

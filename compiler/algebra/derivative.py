@@ -9,14 +9,17 @@ coefficients, the Jacobian and the initialization Jacobian.
 from __future__ import annotations
 
 import os
-from functools import lru_cache
+from functools import cmp_to_key, lru_cache
 
 import sympy as sp
-from sympy.core.basic import _args_sortkey
 
-__all__ = ["partial", "plain_coefficient", "solve_linear", "simple_partials"]
+from .substitution import Fallback, assemble_sum
+
+__all__ = ["partial", "plain_coefficient", "solve_linear", "simple_partials", "terms_with",
+           "symbol_nodes"]
 
 _CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
+_CANONICAL = cmp_to_key(sp.Basic.compare)     # the order of a sum's or product's arguments
 
 
 @lru_cache(maxsize=200_000)
@@ -42,7 +45,7 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
                     # and with nothing to combine, are the product sympy would build
                     # (but a number times a sum is distributed over it)
                     terms.append(_checked(
-                        others[0] if len(others) == 1 else sp.Mul._from_args(others, True),
+                        others[0] if len(others) == 1 else sp.Mul(*others, evaluate=False),
                         sp.Mul(*others) if _CHECK else None))
                 else:
                     terms.append(sp.Mul(*args[:i], inner, *args[i + 1:]))
@@ -111,8 +114,7 @@ def solve_linear(residual, x):
     coefficient is read from the term itself: neither the derivative nor r(x=0) is
     built, and the result is the same expression."""
     if residual.is_Add:
-        from .symbolic import _terms_with     # symbolic imports this module
-        inner = _terms_with(residual).get(x, ())
+        inner = terms_with(residual).get(x, ())
         if len(inner) == 1:
             c = plain_coefficient(inner[0], x)
             if c is not None:
@@ -156,12 +158,12 @@ def plain_coefficient(term, x):
 def _solved(rest, c):
     """-(sum of rest) / c, built as :func:`_solve_general` builds it."""
     if len(rest) > 1:
-        r0 = sp.Add._from_args(rest)
+        r0 = sp.Add(*rest, evaluate=False)
         if c.is_Number:
             # x = (-1/c) * r0, kept as a product: distributing the number over the
             # sum would rebuild every term
             if c is sp.S.One:     # what Mul(-1, r0, evaluate=False) makes
-                return sp.Mul._from_args((sp.S.NegativeOne, r0))
+                return sp.Mul(sp.S.NegativeOne, r0, evaluate=False)
             return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
         return _checked(_negated_sum_over(rest, c), -r0 / c if _CHECK else None)
     # one other term: r(x=0) is that term
@@ -180,12 +182,12 @@ def _negated(t):
             and not any(f.is_Add for f in t.args):
         k, others = -t.args[0], t.args[1:]
         if k is sp.S.One:
-            out = others[0] if len(others) == 1 else sp.Mul._from_args(others, True)
+            out = others[0] if len(others) == 1 else sp.Mul(*others, evaluate=False)
         else:
-            out = sp.Mul._from_args((k, *others), True)
+            out = sp.Mul(k, *others, evaluate=False)
         return _checked(out, -t if _CHECK else None)
     if type(t) is sp.Symbol:
-        return _checked(sp.Mul._from_args((sp.S.NegativeOne, t), True),
+        return _checked(sp.Mul(sp.S.NegativeOne, t, evaluate=False),
                         -t if _CHECK else None)
     return -t
 
@@ -194,21 +196,20 @@ def _negated_sum_over(rest, c):
     """-(sum of rest) / c for a symbol c, as sympy builds it: the sum with every term
     negated (sympy distributes -1 over it), times c**-1, the two factors in sympy's
     order; sympy's own arithmetic where a term is not a plain product."""
-    from .substitution import _assemble_sum, _Fallback
     if type(c) is not sp.Symbol or not c.is_commutative:
-        return -sp.Add._from_args(rest) / c
+        return -sp.Add(*rest, evaluate=False) / c
     negated = [_negated(t) for t in rest]
     if any(t.is_Add or t.is_Number for t in negated):
-        return -sp.Add._from_args(rest) / c
+        return -sp.Add(*rest, evaluate=False) / c
     try:
-        total = _assemble_sum(negated)
-    except _Fallback:
-        return -sp.Add._from_args(rest) / c
+        total = assemble_sum(negated)
+    except Fallback:
+        return -sp.Add(*rest, evaluate=False) / c
     if not total.is_Add or c in total.free_symbols:
-        return -sp.Add._from_args(rest) / c
+        return -sp.Add(*rest, evaluate=False) / c
     factors = [total, sp.Pow(c, sp.S.NegativeOne)]
-    factors.sort(key=_args_sortkey)
-    return sp.Mul._from_args(factors, True)
+    factors.sort(key=_CANONICAL)
+    return sp.Mul(*factors, evaluate=False)
 
 
 def _quotient(t, c):
@@ -228,8 +229,8 @@ def _quotient(t, c):
     if c in factors or not all(f.is_commutative for f in factors):
         return t / c
     factors.append(sp.Pow(c, sp.S.NegativeOne))
-    factors.sort(key=_args_sortkey)
-    return sp.Mul._from_args(([k] if k is not None else []) + factors, True)
+    factors.sort(key=_CANONICAL)
+    return sp.Mul(*([k] if k is not None else []), *factors, evaluate=False)
 
 
 def _checked(out, ref):
@@ -247,8 +248,34 @@ def _solve_general(residual, x):
         # the term with x must be x times its coefficient: a term such as k (x - a)
         # also contributes -k a to r(x=0)
         if len(inner) == 1 and inner[0] == c * x and len(residual.args) > 2:
-            r0 = sp.Add._from_args(rest) if len(rest) > 1 else rest[0]
+            r0 = sp.Add(*rest, evaluate=False) if len(rest) > 1 else rest[0]
             if c.is_Number and r0.is_Add:
                 return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
             return -r0 / c
     return -residual.xreplace({x: 0}) / c
+
+
+@lru_cache(maxsize=200_000)
+def terms_with(r: sp.Expr) -> dict:
+    """symbol -> the terms of the sum r that contain it, in the order of r's arguments
+    (every symbol a term has, as ``has`` sees them)."""
+    out = {}
+    for t in r.args:
+        for q in symbol_nodes(t):
+            out.setdefault(q, []).append(t)
+    return out
+
+
+def symbol_nodes(e: sp.Basic) -> set:
+    """``e.atoms(Symbol)``: every Symbol node of the tree, bound ones included (what
+    ``has`` finds)."""
+    if e.is_Symbol:
+        return {e}
+    out, stack = set(), [e]
+    while stack:
+        node = stack.pop()
+        if node.is_Symbol:
+            out.add(node)
+        else:
+            stack.extend(node.args)
+    return out

@@ -7,8 +7,9 @@ and products of symbols.  sympy's ``xreplace`` rebuilds every node it changes th
 ``Add``/``Mul`` (flatten, sort, the cache), most of these passes' time.  Here a sum or
 product whose new arguments are symbols, +-symbols and the numbers it had is assembled
 directly in sympy's canonical form -- terms with equal non-numeric parts combined,
-factors and terms in sympy's own order (``_args_sortkey``), the numeric coefficient
-first -- which is the expression sympy would build.  Anything else (a mapped symbol
+factors and terms in sympy's own order (:meth:`sympy.Basic.compare`), the numeric
+coefficient first -- which is the expression sympy would build, and builds with
+``evaluate=False`` from arguments already in that form.  Anything else (a mapped symbol
 inside a power or a function, a product that would combine powers, float coefficients
 that change, a sum nested in a sum) falls back to ``xreplace`` for the whole
 expression, so the result is always ``expr.xreplace(mapping)``.
@@ -18,21 +19,26 @@ Setting ``ACAUSAL_CHECK_FASTSUBS=1`` compares every result with ``xreplace`` (a 
 from __future__ import annotations
 
 import os
+from functools import cmp_to_key
 
 import sympy as sp
-from sympy.core.basic import _args_sortkey
+from sympy.calculus.accumulationbounds import AccumBounds
+from sympy.tensor.tensor import TensExpr
 
 from ...components.symbols import has_atom_in
 
-__all__ = ["fast_xreplace", "fast_difference", "has_undefined", "sort_args"]
+__all__ = ["fast_xreplace", "fast_difference", "has_undefined", "sort_args", "negated",
+           "forget_negated",
+           "assemble_sum", "Fallback"]
 
 _ONE, _ZERO, _MINUS = sp.S.One, sp.S.Zero, sp.S.NegativeOne
 _Symbol, _Add, _Mul = sp.Symbol, sp.Add, sp.Mul
 _Rational = sp.Rational
+_CANONICAL = cmp_to_key(sp.Basic.compare)     # the order of a sum's or product's arguments
 _CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
 
 
-class _Fallback(Exception):
+class Fallback(Exception):
     """The fast path does not know sympy's canonical form of this result."""
 
 
@@ -42,7 +48,7 @@ def fast_xreplace(expr, mapping: dict):
         return expr
     try:
         out = _sub(expr, mapping)
-    except _Fallback:
+    except Fallback:
         return expr.xreplace(mapping)
     if _CHECK:
         ref = expr.xreplace(mapping)
@@ -81,7 +87,7 @@ def _sub(e, mapping):
     if t is _Mul:
         return _product(e, mapping)
     if _contains_key(e, mapping):
-        raise _Fallback
+        raise Fallback
     return e
 
 
@@ -92,11 +98,33 @@ def negated(q) -> sp.Expr:
     for it), so that look-ups of it find it by identity, not by comparing two copies."""
     out = _NEGATED.get(q)
     if out is None:
-        out = _NEGATED[q] = _Mul._from_args((_MINUS, q), q.is_commutative)
+        out = _NEGATED[q] = _Mul(_MINUS, q, evaluate=False)
     return out
 
 
 _NEGATED: dict = {}       # emptied at a compile's end (symbolic.forget_expressions)
+
+
+def forget_negated() -> None:
+    """Let go of the negated symbols and the symbols' facts kept so far (a compile's
+    end)."""
+    _NEGATED.clear()
+    _FACTS.clear()
+
+
+_FACTS: dict = {}      # symbol -> its assumptions, one object per distinct set
+_FACT_SETS: dict = {}
+
+
+def _facts(q):
+    """The assumptions of the symbol ``q`` as one shared object per distinct set, so
+    that two symbols' are compared by identity (``assumptions0`` makes a new dict each
+    time it is read)."""
+    out = _FACTS.get(q)
+    if out is None:
+        items = frozenset(q.assumptions0.items())
+        out = _FACTS[q] = _FACT_SETS.setdefault(items, items)
+    return out
 
 
 def _signed_symbol(v):
@@ -127,7 +155,7 @@ def _product(e, mapping):
         if v is not None:
             s = _signed_symbol(v)
             if s is None:
-                raise _Fallback
+                raise Fallback
             sign *= s[0]
             factors.append(s[1])
             new.append(s[1])
@@ -142,7 +170,7 @@ def _product(e, mapping):
             continue
         if g is not f:
             if g.is_Number or type(g) is _Mul or not g.is_commutative:
-                raise _Fallback
+                raise Fallback
             changed = True
             new.append(g)
         factors.append(g)
@@ -152,12 +180,12 @@ def _product(e, mapping):
         # 0 times finite factors is 0 (Mul.flatten); an infinite factor makes nan
         if (coeff is not None and not isinstance(coeff, _Rational)) \
                 or any(f.is_finite is False for f in factors):
-            raise _Fallback
+            raise Fallback
         return _ZERO
     if new:
         bases = [f.base if f.is_Pow else f for f in factors]
         if len(set(bases)) < len(bases):
-            raise _Fallback
+            raise Fallback
     if sign == -1:
         if coeff is None:
             coeff = _MINUS
@@ -166,9 +194,9 @@ def _product(e, mapping):
             if coeff is _ONE:
                 coeff = None
         else:
-            raise _Fallback
+            raise Fallback
     if coeff is not None and any(f.is_Add for f in factors):
-        raise _Fallback
+        raise Fallback
     if coeff is _MINUS and len(factors) == 1 and type(factors[0]) is _Symbol:
         return negated(factors[0])
     sort_args(factors)
@@ -176,7 +204,7 @@ def _product(e, mapping):
         factors.insert(0, coeff)
     if len(factors) == 1:
         return factors[0]
-    return _Mul._from_args(factors, True)
+    return _Mul(*factors, evaluate=False)
 
 
 def _sum(e, mapping):
@@ -191,7 +219,7 @@ def _sum(e, mapping):
         new_args.append(b)
     if not changed:
         return e
-    return _assemble_sum(new_args)
+    return assemble_sum(new_args)
 
 
 def fast_difference(lhs, rhs):
@@ -203,8 +231,8 @@ def fast_difference(lhs, rhs):
     # -(a + b) distributes as -a - b (Mul's two-argument rule), each by sympy's __neg__
     terms += [-t for t in rhs.args] if type(rhs) is _Add else [-rhs]
     try:
-        out = _assemble_sum(terms)
-    except _Fallback:
+        out = assemble_sum(terms)
+    except Fallback:
         return lhs - rhs
     if _CHECK:
         ref = lhs - rhs
@@ -216,8 +244,6 @@ def fast_difference(lhs, rhs):
 def _unusual(t) -> bool:
     """Terms Add.flatten treats specially: orders, intervals, tensors, zoo, matrices,
     unevaluated powers of numbers."""
-    from sympy.calculus.accumulationbounds import AccumBounds
-    from sympy.tensor.tensor import TensExpr
     return (not isinstance(t, sp.Expr) or t.is_Order or t is sp.S.ComplexInfinity
             or isinstance(t, (AccumBounds, TensExpr))
             or (t.is_Pow and t.base.is_Number))
@@ -227,16 +253,16 @@ _USUAL = {sp.Symbol, sp.Mul}     # term classes known not to be _unusual (Mul: i
                                  # are checked where they are combined)
 
 
-def _assemble_sum(new_args):
+def assemble_sum(new_args):
     """Add(*new_args) for terms that are not sums themselves, in sympy's canonical form:
     numbers summed, terms with equal non-numeric
     parts combined (rational coefficients), zeros dropped, sympy's order of terms, the
-    number first; _Fallback where sympy's flatten would do something else."""
+    number first; Fallback where sympy's flatten would do something else."""
     coeff = _ZERO
     for a in new_args:       # in flatten's order, by sympy's arithmetic (0.0 -> 0)
         if a.is_Number:
             if not isinstance(a, (_Rational, sp.Float)):
-                raise _Fallback
+                raise Fallback
             coeff = coeff + a
     terms = {}           # non-numeric factors -> [coefficient, term as it stands]
     for a in new_args:
@@ -244,7 +270,7 @@ def _assemble_sum(new_args):
             continue
         if type(a) is _Add or not a.is_commutative \
                 or (type(a) not in _USUAL and _unusual(a)):
-            raise _Fallback
+            raise Fallback
         if type(a) is _Mul and a.args[0].is_Number:
             c, key = a.args[0], a.args[1:]
         else:
@@ -254,7 +280,7 @@ def _assemble_sum(new_args):
             terms[key] = [c, a]
             continue
         if not (isinstance(c, _Rational) and isinstance(known[0], _Rational)):
-            raise _Fallback
+            raise Fallback
         known[0] = known[0] + c
         known[1] = None              # rebuilt below from the combined coefficient
     seq = []
@@ -265,11 +291,11 @@ def _assemble_sum(new_args):
         if c is _ZERO:
             continue
         if any(f.is_Add or f.is_Number or _unusual(f) for f in key):
-            raise _Fallback
+            raise Fallback
         if c is _ONE:
-            seq.append(key[0] if len(key) == 1 else _Mul._from_args(key, True))
+            seq.append(key[0] if len(key) == 1 else _Mul(*key, evaluate=False))
         else:
-            seq.append(_Mul._from_args((c,) + key, True))
+            seq.append(_Mul(c, *key, evaluate=False))
     sort_args(seq)
     if coeff is not _ZERO:
         seq.insert(0, coeff)
@@ -277,12 +303,12 @@ def _assemble_sum(new_args):
         return _ZERO
     if len(seq) == 1:
         return seq[0]
-    return _Add._from_args(seq, True)
+    return _Add(*seq, evaluate=False)
 
 
 def sort_args(seq: list) -> None:
-    """``seq.sort(key=_args_sortkey)``: sympy's canonical order of the arguments of a sum
-    or product, in place.
+    """``seq.sort(key=cmp_to_key(Basic.compare))``: sympy's canonical order of the
+    arguments of a sum or product, in place.
 
     ``Basic.compare`` orders by class first (a Symbol before a Mul), then by the
     hashable contents: a symbol's is its name followed by its assumptions, a product's
@@ -293,14 +319,14 @@ def sort_args(seq: list) -> None:
     sorted by sympy's key."""
     keys = _plain_keys(seq)
     if keys is None:
-        seq.sort(key=_args_sortkey)
+        seq.sort(key=_CANONICAL)
         return
     if len(seq) == 2:               # most sums: no sort needed to order two
         ordered = seq[::-1] if keys[1] < keys[0] else list(seq)
     else:
         ordered = [seq[k] for k in sorted(range(len(seq)), key=keys.__getitem__)]
     if _CHECK:
-        ref = sorted(seq, key=_args_sortkey)
+        ref = sorted(seq, key=_CANONICAL)
         if any(a is not b for a, b in zip(ordered, ref)):
             raise AssertionError(f"sort_args({seq}) gave {ordered}, sympy {ref}")
     seq[:] = ordered
@@ -314,16 +340,18 @@ def _plain_keys(seq):
         if kind is _Symbol:
             key, q = (0, t.name), t
         elif kind is _Mul:
-            args = t._args
+            args = t.args
             if len(args) != 2 or args[0] is not _MINUS or type(args[1]) is not _Symbol:
                 return None
             q = args[1]
             key = (1, q.name)
         else:
             return None
+        # a symbol's hashable content is its name and its assumptions: the same
+        # assumptions for all (a model's variables are real), the names decide
         if facts is None:
-            facts = q._assumptions0
-        elif q._assumptions0 is not facts and q._assumptions0 != facts:
+            facts = _facts(q)
+        elif _facts(q) is not facts:
             return None
         keys.append(key)
     return keys

@@ -20,10 +20,11 @@ from functools import lru_cache, partial as bound
 import sympy as sp
 
 from ...components.symbols import der, time
-from .derivative import partial
-from .substitution import _NEGATED, negated, sort_args
-from ..structure.graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER, STATE_SELECT,
-                    UNASSIGNED, Names, Structure)
+from .derivative import partial, symbol_nodes, terms_with
+from .substitution import forget_negated, negated, sort_args
+from ..structure.graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER,
+                               STATE_SELECT, UNASSIGNED, Names, Structure)
+from ...errors import ModelError
 
 __all__ = ["SymbolicEquation", "SymbolicSystem", "ExactText", "coefficient_kind",
            "forget_expressions",
@@ -194,7 +195,6 @@ class SymbolicSystem:
         if self.delays:
             found = [self.delays[q] for q in symbols_of(r) if q in self.delays]
             if found:
-                from ...components.component import ModelError
                 d = found[0]
                 if hasattr(d, "not_differentiable"):     # a top-level input
                     raise ModelError(d.not_differentiable())
@@ -222,13 +222,13 @@ def coefficient_kind(r: sp.Expr, s: sp.Symbol, index: dict, parameters: set) -> 
     """How symbol s enters residual r (graph.LINEAR_CONST ... NONLINEAR)."""
     # most variables enter one term of a sum as s, k*s or p*s: the coefficient is read
     # from that term (what sum_partial returns, without building it)
-    terms = _terms_with(r).get(s, ()) if r.is_Add else (r,)
+    terms = terms_with(r).get(s, ()) if r.is_Add else (r,)
     if len(terms) == 1:
         kind = _factor_kind(terms[0], s, parameters)
         if kind is not None:
             return kind
     c = sum_partial(r, s)
-    if s in _symbol_nodes(c):           # c.has(s)
+    if s in symbol_nodes(c):           # c.has(s)
         return NONLINEAR
     if c.is_number:
         return LINEAR_CONST if c != 0 else NONLINEAR
@@ -268,38 +268,12 @@ def sum_partial(r: sp.Expr, x: sp.Symbol) -> sp.Expr:
     """
     if not r.is_Add:
         return partial(r, x)
-    terms = _terms_with(r).get(x)
+    terms = terms_with(r).get(x)
     if terms is None:
         return sp.S.Zero
     if len(terms) == 1:
         return partial(terms[0], x)
     return sp.Add(*[partial(t, x) for t in terms])
-
-
-@lru_cache(maxsize=200_000)
-def _terms_with(r: sp.Expr) -> dict:
-    """symbol -> the terms of the sum r that contain it, in the order of r's arguments
-    (every symbol a term has, as ``has`` sees them)."""
-    out = {}
-    for t in r.args:
-        for q in _symbol_nodes(t):
-            out.setdefault(q, []).append(t)
-    return out
-
-
-def _symbol_nodes(e: sp.Basic) -> set:
-    """``e.atoms(Symbol)``: every Symbol node of the tree, bound ones included (what
-    ``has`` finds)."""
-    if e.is_Symbol:
-        return {e}
-    out, stack = set(), [e]
-    while stack:
-        node = stack.pop()
-        if node.is_Symbol:
-            out.add(node)
-        else:
-            stack.extend(node.args)
-    return out
 
 
 # -- expression helpers, shared with flattening and alias elimination -------------------
@@ -328,12 +302,12 @@ _PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
 
 
 def forget_expressions() -> None:
-    """Empty the caches of :func:`symbols_of`, ``_terms_with`` and :func:`negated` (a
+    """Empty the caches of :func:`symbols_of`, ``terms_with`` and :func:`negated` (a
     compile's end): the expressions they keep would outlive the compile, in memory and
     in every walk of the garbage collector over the live objects."""
     symbols_of.cache_clear()
-    _terms_with.cache_clear()
-    _NEGATED.clear()
+    terms_with.cache_clear()
+    forget_negated()
 
 
 def derivative_symbol(x: sp.Symbol, derivatives: dict) -> sp.Symbol:
@@ -382,7 +356,7 @@ def signed_sum(coeffs: dict) -> sp.Expr:
     if len(terms) == 1:
         return terms[0]
     sort_args(terms)     # sympy's _addsort
-    return sp.Add._from_args(terms)
+    return sp.Add(*terms, evaluate=False)
 
 
 class ExactText:

@@ -36,45 +36,26 @@ backend and says so in the index report, and ``backend="c"`` raises
 """
 from __future__ import annotations
 
-import ctypes
-import functools
 import hashlib
-import os
-import shutil
-import tempfile
 import threading
 
 import numpy as np
 
-from ...errors import BackendError
+from ... import native
 from ...native import build as cbuild
-from ..cache import files as cachefiles
+from .arraycode import use_array_code
+from .clibrary import attach
+from .cloops import looped_program
+from .codegen import combinations, row_groups
+from .emit import Emitter
+from ...errors import BackendError
 
-__all__ = ["BackendError", "c_source", "build", "start_build", "attach", "reattach",
-           "compiler_available", "cache_dir", "programs", "prepare"]
+__all__ = ["c_source", "programs", "prepare", "Prepared", "bind", "BACKENDS"]
 
 PIECE = 100               # lines per piece of a function compiled at -O2
 PIECE_LARGE = 400         # and at -O0
 FLAGS, FLAGS_LARGE = cbuild.FLAGS, cbuild.FLAGS_LARGE
 LARGE, UNIT = cbuild.LARGE, cbuild.UNIT
-FUNCTIONS = ("residual", "jacobian", "roots", "scales", "expand")
-
-
-def compiler_available() -> str | None:
-    cc = os.environ.get("CC")
-    if cc:
-        return shutil.which(cc)
-    for name in ("cc", "gcc", "clang"):
-        path = shutil.which(name)
-        if path:
-            return path
-    return None
-
-
-def cache_dir() -> str | None:
-    """The compile cache's directory, or None when it cannot be used (then a library is
-    built in a temporary directory and loaded from there, :mod:`acausal.compiler.cache.files`)."""
-    return cachefiles.root()
 
 
 # -- printing ------------------------------------------------------------------------------
@@ -127,7 +108,6 @@ def _index_pointers(index) -> list:
 
 
 def _looped(prefix, prog, index=None):
-    from .cloops import looped_program
     return looped_program(prefix, prog, index)
 
 
@@ -135,8 +115,6 @@ def _c_program(prefix, prog) -> tuple[list, int]:
     """The functions of one Program as (name, statements, calls, outputs), and the size
     of its work array."""
     # imported here: printing needs sympy, loading a library built before does not
-    from .codegen import combinations, row_groups
-    from .emit import Emitter
     n_a = len(prog.assigned)
     slot = {}
     for k, g in prog.grads.items():
@@ -240,191 +218,12 @@ def _c_function(name, statements, calls=(), n_out=0, piece=PIECE) -> str:
     return "\n".join(lines) + "\n"
 
 
-# -- building and loading ---------------------------------------------------------------------
-def build(source: str, cached_only: bool = False,
-          unit_size: int | None = None) -> str | None:
-    """The path of the shared library for source, compiled now or found in the cache
-    (with ``cached_only``: None rather than compiling it).
-
-    A large source is compiled without optimization (the straight-line code of a model
-    gains little from it, and the compiler's time grows faster than the source) and in
-    translation units of about ``unit_size`` characters (:mod:`acausal.native.build`),
-    as many compiled at once as there are processors.  The split does not enter the
-    name of the library: every split of a source gives the same functions."""
-    if cached_only:
-        lib = _library_path(source)
-        return lib if cachefiles.library_ok(lib) else None
-    return start_build(source, unit_size)()
-
-
-def _library_path(source: str) -> str:
-    """Where the library of ``source`` is kept: in the cache, or (no cache) a name that
-    :func:`acausal.compiler.cache.files.load_library` knows for this process only."""
-    cc = compiler_available()
-    if cc is None:
-        raise BackendError("no C compiler found (set CC, or install cc/gcc/clang)")
-    flags = cbuild.flags_for(source)
-    key = hashlib.sha256((source + " ".join([os.path.basename(cc)] + flags)).encode())
-    name = f"model_{key.hexdigest()[:24]}.so"
-    root = cache_dir()
-    return os.path.join(root, name) if root is not None else \
-        os.path.join(tempfile.gettempdir(), "acausal-no-cache", name)
-
-
-def start_build(source: str, unit_size: int | None = None):
-    """:func:`build` begun: the compilers are started now, by this thread; returns
-    ``wait()``, which returns the library's path (it may be called from another
-    thread).  A library found in the cache is taken once its checksum holds
-    (:func:`acausal.compiler.cache.files.library_ok`; a damaged one is built again)."""
-    lib = _library_path(source)
-    if cachefiles.library_ok(lib):
-        return lambda: lib
-    cc, flags = compiler_available(), cbuild.flags_for(source)
-    units = cbuild.split(source, unit_size or cbuild.UNIT_SIZE, cbuild.jobs()) \
-        if len(source) > cbuild.LARGE or unit_size else [source]
-    root = cache_dir()
-    if root is None:          # no cache: built aside, loaded, and the directory removed
-        tmp = cachefiles.transient_build_dir()
-        where = tmp.__enter__()
-        cleanup = functools.partial(tmp.__exit__, None, None, None)
-    else:
-        tmp = cbuild.temporary_dir(root)
-        where, cleanup = tmp.name, tmp.cleanup
-    try:
-        job = cbuild.Compilation(cc, units, flags, where)
-    except BaseException:
-        cleanup()
-        raise
-
-    def wait() -> str:
-        try:
-            built = job.wait()
-            if root is None:
-                cachefiles.load_transient(lib, built)
-            else:     # atomic, its checksum first: a concurrent build finds a whole file
-                cachefiles.publish_library(built, lib)
-        finally:
-            cleanup()
-        return lib
-    return wait
-
-
-class _CFunction:
-    """A compiled function with the contract f(t, y, p, m, out) -> out.
-
-    The arguments are copied into buffers whose addresses are fixed, which costs less
-    than taking the address of each argument array on every call."""
-
-    def __init__(self, fn, fallback, n_work, n_y, n_p, n_m, n_out):
-        self.fn = fn
-        self.fallback = fallback
-        self.bufs = [np.zeros(max(n, 1)) for n in (n_y, n_p, n_m, n_out, n_work)]
-        self.y, self.p, self.m, self.out, _ = self.bufs
-        self.sizes = (n_y, n_p, n_m)
-        self.ptrs = [b.ctypes.data for b in self.bufs]
-
-    def __call__(self, t, y, p, m, out):
-        n_y, n_p, n_m = self.sizes
-        if len(y) != n_y or len(p) != n_p or len(m) < n_m:
-            raise ValueError(f"generated function called with {len(y)} unknowns, "
-                             f"{len(p)} parameters and {len(m)} discrete values; it "
-                             f"reads {n_y}, {n_p} and {n_m}")
-        self.y[:n_y] = y
-        self.p[:n_p] = p
-        self.m[:n_m] = m[:n_m]
-        py, pp, pm, po, pw = self.ptrs
-        bad = self.fn(float(t), py, pp, pm, po, pw)
-        out[:] = self.out[:len(out)]
-        if bad:
-            # what Python raises (sqrt of a negative, 1/0) or returns there
-            return self.fallback(t, y, p, m, out)
-        return out
-
-
-def attach(code, lib_path: str, prefix: str, n_work: int, index=None):
-    """Replace the Python functions of a GeneratedCode by the compiled ones (the Python
-    ones stay as the fallback).  What the wrappers need is kept in ``code.c_layout``, so
-    that a loaded model can attach the library again without the Program; ``index``:
-    the program's index array, when :func:`c_source` left it out of the source."""
-    prog = code.program
-    sizes = (sum(1 for w in prog.refs.values() if w[0] == "y"),
-             sum(1 for w in prog.refs.values() if w[0] == "p"),
-             1 + max((w[1] for w in prog.refs.values() if w[0] == "m"), default=-1))
-    n_out = {}
-    for name in FUNCTIONS:
-        if getattr(code, name, None) is not None:
-            n_out[name] = {"residual": code.n_rows, "jacobian": len(code.jac_rows),
-                           "roots": code.n_roots}.get(name)
-            if n_out[name] is None:
-                n_out[name] = len(prog.functions[name])
-    code.c_layout = {"prefix": prefix, "n_work": n_work, "sizes": sizes, "n_out": n_out,
-                     "index": index}
-    _wrap(code, cachefiles.load_library(lib_path), code.c_layout)
-    code.library = lib_path
-    return code
-
-
-# the index arrays given to loaded libraries, by (library handle, prefix): a library is
-# given its index once and keeps reading it, whichever of the models it serves is freed
-_INDEX_GIVEN: dict = {}
-
-
-def _give_index(lib, prefix, index) -> None:
-    """Point ``<prefix>ix`` of the library at its index array.  The array is kept for
-    the life of the process; the source names its digest, so every model that loads
-    this library has an equal one."""
-    key = (lib._handle, prefix)
-    if key not in _INDEX_GIVEN:
-        kept = np.ascontiguousarray(index, dtype=np.int32)
-        setter = getattr(lib, f"{prefix}set_ix")
-        setter.argtypes, setter.restype = [ctypes.c_void_p], None
-        setter(kept.ctypes.data)
-        _INDEX_GIVEN[key] = kept
-
-
-def _wrap(code, lib, layout) -> None:
-    argtypes = [ctypes.c_double] + [ctypes.c_void_p] * 5
-    if layout.get("index") is not None:
-        _give_index(lib, layout["prefix"], layout["index"])
-    for name, n_out in layout["n_out"].items():
-        py = getattr(code, name)
-        py = getattr(py, "fallback", py)
-        fn = getattr(lib, f"{layout['prefix']}{name}")
-        fn.argtypes = argtypes
-        fn.restype = ctypes.c_int
-        setattr(code, name, _CFunction(fn, py, layout["n_work"], *layout["sizes"], n_out))
-    code.backend = "c"
-
-
-def reattach(code, lib_path: str, source: str, layout: dict) -> str:
-    """Put the library ``lib_path`` behind the Python functions of ``code`` (a loaded
-    model), building it again from ``source`` when it is missing or does not load
-    (another machine, a cleaned cache).  Returns the path of the library in use; raises
-    :class:`BackendError` when it can be neither loaded nor built."""
-    try:
-        # verified first (a damaged library is removed); and dlopen would hand back a
-        # deleted library still mapped in this process
-        lib = cachefiles.load_library(lib_path)
-    except OSError:
-        lib_path = build(source)
-        try:
-            lib = cachefiles.load_library(lib_path)
-        except OSError as exc:
-            raise BackendError(f"the rebuilt library {lib_path} does not load: {exc}") from exc
-    _wrap(code, lib, layout)
-    code.library = lib_path
-    code.c_source = source
-    code.c_layout = layout
-    return lib_path
-
-
 BACKENDS = ("auto", "c", "numpy")
 
 
 def _numpy(mc, report) -> None:
     """The numpy backend: a large model's functions in array form when that is faster
     (:mod:`acausal.compiler.backends.arraycode`)."""
-    from .arraycode import use_array_code
     made = use_array_code(mc.code)
     if made is not None:
         report.notes.append(f"the numpy backend evaluates the residual's {made[0]} "
@@ -438,41 +237,53 @@ def programs(code, initial, whens=None, delays=None) -> dict:
     return {k: c.program for k, c in codes.items() if c is not None}
 
 
-def prepare(progs: dict):
+def prepare(progs: dict) -> "Prepared":
     """Print the C source of ``progs`` ({prefix: Program}) now, start its compiler, and
-    wait for it in a thread; returns ``finish()``, which waits for the compiler and
-    returns the source, its work sizes ({prefix: size}), the library's path and the
-    index arrays ({prefix: array}, :func:`c_source`), or raises what printing or
-    building raised.
+    wait for it in a thread; returns a :class:`Prepared` build.
 
     The compiler is a process of its own: while it runs, this one goes on with the rest
     of the compile (the pipeline calls this as soon as the Programs are made)."""
     outcome, index = {}, {}
     try:
         source, sizes = c_source(progs, index)
-        wait = start_build(source)      # the compiler starts now, not when a thread can
+        build = native.start(source)    # the compiler starts now, not when a thread can
     except Exception as exc:          # noqa: BLE001 - raised where the library is wanted
         outcome["error"] = exc
-        return functools.partial(_finish, outcome, None)
+        return Prepared(outcome, None, None)
 
     def compile_it():
         try:
-            outcome["lib"] = wait()
+            outcome["lib"] = build.wait()
         except BaseException as exc:  # noqa: BLE001 - raised by finish()
             outcome["error"] = exc
 
     thread = threading.Thread(target=compile_it, name="acausal-cc-build", daemon=True)
     thread.start()
-    return functools.partial(_finish, outcome, thread, source, sizes, index)
+    return Prepared(outcome, thread, build, source, sizes, index)
 
 
-def _finish(outcome, thread, *printed):
-    if thread is not None:
-        thread.join()
-    if "error" in outcome:
-        raise outcome["error"]
-    source, sizes, index = printed
-    return source, sizes, outcome["lib"], index
+class Prepared:
+    """A C library being built by :func:`prepare`: calling it waits for the compiler and
+    returns the source, its work sizes ({prefix: size}), the library's path and the
+    index arrays ({prefix: array}, :func:`c_source`), or raises what printing or
+    building raised; :meth:`cancel` stops the compiler and waits for the thread (a
+    compile that ends before it needs the library)."""
+
+    def __init__(self, outcome, thread, build, *printed):
+        self.outcome, self.thread, self.build, self.printed = outcome, thread, build, printed
+
+    def __call__(self):
+        if self.thread is not None:
+            self.thread.join()
+        if "error" in self.outcome:
+            raise self.outcome["error"]
+        source, sizes, index = self.printed
+        return source, sizes, self.outcome["lib"], index
+
+    def cancel(self) -> None:
+        if self.thread is not None:
+            self.build.cancel()
+            self.thread.join()
 
 
 def bind(mc, backend: str, report, prepared=None) -> None:

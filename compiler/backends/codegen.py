@@ -23,17 +23,19 @@ Frozen floor values (:mod:`acausal.compiler.frontend.discrete`) follow the relat
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
 
+from ...components.symbols import no_event, time
 from ..algebra.derivative import partial as _partial
 from ..algebra.derivative import simple_partials
+from ..algebra.symbolic import symbols_of
 from .emit import Emitter, _plain
 from .lazycode import GeneratedModule, ModuleSource
-from ..algebra.symbolic import symbols_of
 
 __all__ = ["GeneratedCode", "Program", "generate", "plan", "python_code", "python_source",
            "extract_relations"]
@@ -59,7 +61,6 @@ class GeneratedCode(ModuleSource):
 def event_form(expr: sp.Expr) -> sp.Expr:
     """abs, min, max and sign as if-expressions, so their kinks generate events (as in
     Modelica, where only noEvent(...) suppresses them); inside no_event(...) they stay."""
-    from ...components.symbols import no_event
     if not expr.has(sp.Abs, sp.Min, sp.Max, sp.sign, no_event):
         return expr
     quiet = {}
@@ -104,7 +105,6 @@ def extract_relations(exprs: list, frozen=None) -> tuple[list, list, dict, list]
     Returns (new exprs, zero-crossing expressions, {mode symbol: relation}, origin) where
     ``origin[k]`` is the index of the first expression that relation k occurs in.
     """
-    from ...components.symbols import no_event
     exprs = [sp.sympify(e) for e in exprs]
     # Why the screening walk: most expressions of a large model hold no if-expression,
     # relation or anything that becomes one; one walk over the nodes of all of them (a
@@ -242,7 +242,6 @@ def plan(residuals, y_syms, params, n_modes=0, crossings=None, assignments=(), o
     of (symbol, expression) computed from z before the rows (the BLT's solved blocks);
     ``outputs``: symbols that ``expand`` returns; ``discretes``: frozen floor values,
     read from ``m[n_modes + j]``; ``scales``: relation magnitudes."""
-    from ...components.symbols import time
     refs = {s: ("y", k) for k, s in enumerate(y_syms)}
     refs.update({a: ("a", k) for k, (a, _) in enumerate(assignments)})
     refs.update({s: ("p", k) for k, s in enumerate(params)})
@@ -342,7 +341,6 @@ def python_code(prog: Program) -> GeneratedCode:
     backend or the numpy backend's array code the Python functions are the fallback for
     an output that is not finite, which most runs never call (printing is a third of
     the code generation of a large model)."""
-    import functools
     res = prog.functions["residual"]
     names = ["residual", "jacobian"] + [n for n in ("roots", "scales", "expand")
                                         if n in prog.functions]

@@ -21,6 +21,8 @@ their arguments already named, so nothing is dropped.
 """
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import And, BooleanFalse, BooleanTrue, Not, Or
@@ -275,6 +277,8 @@ class Emitter:
 
     def _fallback(self, e, done, names) -> str:
         """An operator this printer does not know: sympy prints it, arguments named."""
+        # imported here: sympy's code printers take 60 ms to import, for operators that
+        # few models have
         from sympy.printing.c import C99CodePrinter
         from sympy.printing.pycode import PythonCodePrinter
         subs = [sp.Symbol(self._arg(a, done, names).replace(" ", "")) if a.is_Symbol
@@ -297,7 +301,6 @@ class _NoLines(list):
 
 def _plain(text: str) -> bool:
     """A name, an indexed read or a number: nothing to gain by naming it."""
-    import re
     return re.fullmatch(r"-?[\w.]+(\[\d+\])?", text) is not None
 
 

@@ -12,6 +12,7 @@ it too.
 """
 from __future__ import annotations
 
+import hashlib
 import marshal
 import math
 from importlib.util import MAGIC_NUMBER as _MAGIC
@@ -111,7 +112,6 @@ class ModuleSource:
 
     @property
     def digest(self) -> str:
-        import hashlib
         return hashlib.sha1(self.source.encode()).hexdigest()[:16]
 
 

@@ -41,7 +41,7 @@ find a whole entry or none.  Every entry, side file and index is sealed with the
 of its bytes, and every C library has its checksum beside it, checked before anything is
 unpickled or loaded; a damaged one is removed, with one line saying so, and compiled
 again.  The cache directory is private, and a file that is not this user's is not read
-(:mod:`acausal.compiler.cache.files`, which also skips a cache that cannot be created or
+(:mod:`acausal.native.cachefiles`, which also skips a cache that cannot be created or
 written, with one warning).  The cache is pruned to ``$ACAUSAL_CACHE_SIZE`` bytes
 (default 512 MiB), least recently used entries and C libraries first;
 ``$ACAUSAL_COMPILE_CACHE=0`` switches the entries off.
@@ -59,11 +59,13 @@ from dataclasses import fields, is_dataclass, replace
 
 import numpy as np
 
+from ..backends.clibrary import reattach
 from ..backends.lazycode import GeneratedModule, ModuleSource, install_array_code
-from . import files
 from .keys import fingerprint, flat_key, tree_key
+from ...errors import BackendError
+from ...native import cachefiles as files
 
-__all__ = ["LoadedCode", "ParameterFunction", "portable", "load_notes", "flat_key",
+__all__ = ["from_cache", "find_by_tree", "LoadedCode", "portable", "load_notes", "flat_key",
            "tree_key", "fingerprint", "lookup", "store", "store_index", "enabled",
            "models_dir"]
 
@@ -154,8 +156,6 @@ class LoadedCode(ModuleSource):
         if array_source is not None:
             install_array_code(self, array_source)
         if c is not None:
-            from ...errors import BackendError
-            from ..backends.cbackend import reattach
             try:
                 reattach(self, c["library"], c["source"], c["layout"])
             except (BackendError, OSError) as exc:
@@ -223,7 +223,7 @@ class _ProgramPlace:
     def python_source(self) -> str:
         """The Python source, printed from the Program as the code generator printed
         it when the model was compiled (:func:`acausal.compiler.backends.codegen.python_source`)."""
-        from ...errors import BackendError
+        # imported here: the printer needs sympy, which loading a model does not
         from ..backends.codegen import python_source
         prog = self.get()
         if prog is None:
@@ -231,21 +231,6 @@ class _ProgramPlace:
                                "compile cache entry's side file, which is gone; compile "
                                "the model again")
         return python_source(prog)
-
-
-class ParameterFunction:
-    """f(p): a variable's value as a function of the parameters, from generated Python
-    (``source`` defines ``name``); pickles as its source."""
-
-    def __init__(self, source: str, name: str):
-        self.source, self.name = source, name
-        self._f = _run(source, "<acausal constants>")[name]
-
-    def __call__(self, p):
-        return self._f(p)
-
-    def __reduce__(self):
-        return (ParameterFunction, (self.source, self.name))
 
 
 def _codes(mc) -> dict:
@@ -316,7 +301,7 @@ def enabled() -> bool:
 
 def models_dir() -> str | None:
     """``<cache>/models``, or None when the cache cannot be used (warned once,
-    :mod:`acausal.compiler.cache.files`)."""
+    :mod:`acausal.native.cachefiles`)."""
     return files.subdir("models")
 
 
@@ -339,10 +324,7 @@ def lookup(key: str | None = None, tree: str | None = None):
     """The cached ModelCode for a flat key or a tree key (tried in that order), or None.
     Returns (ModelCode, seconds spent loading).  An entry is unpickled only when its
     checksum holds (a damaged one is removed, with one line saying so, and compiled
-    again).  Entries this process is still storing beside its work (:mod:`sidejobs`)
-    are waited for first."""
-    from ..sidejobs import settle
-    settle()
+    again)."""
     if key is None and tree is not None:
         key = _read_index(tree)
     where = models_dir() if key is not None else None
@@ -373,9 +355,34 @@ def lookup(key: str | None = None, tree: str | None = None):
     return mc, _time.perf_counter() - t0
 
 
+def from_cache(found, seconds: float, how: str):
+    """The ModelCode of a ``lookup`` result, its report noting that it came from the
+    cache (found by ``how``) and the ``seconds`` the look-up took."""
+    mc, _ = found
+    report = mc.report
+    report.timings["cache_lookup"] = seconds
+    report.notes += load_notes(mc)
+    report.notes.append(f"came from the compile cache (found by {how}, loaded in "
+                        f"{seconds * 1e3:.1f} ms); the other timings are those of the "
+                        "original compile")
+    return mc
+
+
+def find_by_tree(model, backend: str) -> tuple:
+    """(ModelCode or None, tree key): the model found in the cache by its instance tree
+    (:func:`~acausal.compiler.cache.keys.tree_key`), without flattening or sympy."""
+    t0 = _time.perf_counter()
+    tree = tree_key(model, backend)
+    found = lookup(tree=tree) if tree is not None else None
+    if found is None:
+        return None, tree
+    model._bind("")     # the instance named as a compile leaves it
+    return from_cache(found, _time.perf_counter() - t0, "its instance tree"), tree
+
+
 def store(key: str, mc, tree: str | None = None) -> None:
     """Write the portable form of ``mc`` under ``key`` (and the index for ``tree``),
-    sealed (:func:`acausal.compiler.cache.files.seal`) and atomically; a cache that
+    sealed (:func:`acausal.native.cachefiles.seal`) and atomically; a cache that
     cannot be written is skipped with one warning, never an error."""
     root = models_dir()
     if root is None:
@@ -419,5 +426,5 @@ def _remove(path: str) -> None:
 
 
 def _prune(root: str) -> None:
-    """:func:`acausal.compiler.cache.files.prune`."""
+    """:func:`acausal.native.cachefiles.prune`."""
     files.prune(root)

@@ -11,11 +11,12 @@ import os
 import sys
 import time as _time
 import types
+from importlib.util import find_spec
 
 import numpy as np
 
+from ... import native
 from ...components.component import Component
-from ..gcpause import gc_paused
 
 __all__ = ["fingerprint", "flat_key", "tree_key"]
 
@@ -70,7 +71,6 @@ def fingerprint() -> str:
 def _sympy_version() -> str:
     """sympy's version from its release file: found, not imported (importing sympy is
     what a cached model saves; reading the installed metadata is slower still)."""
-    from importlib.util import find_spec
     spec = find_spec("sympy")
     if spec is None or not spec.submodule_search_locations:
         return "none"
@@ -84,11 +84,9 @@ def _sympy_version() -> str:
 def _backend_id(backend: str) -> tuple:
     if backend == "numpy":
         return (backend,)
-    from ..backends.cbackend import compiler_available
-    return (backend, compiler_available())
+    return (backend, native.find_compiler())
 
 
-@gc_paused
 def flat_key(flat, backend: str) -> str | None:
     """The SHA-256 of everything of the flat model the compiler reads (see the module
     docstring), the backend and the compiler's :func:`fingerprint`; None when a value
@@ -100,6 +98,8 @@ def flat_key(flat, backend: str) -> str | None:
 
 
 def _flat_key(flat, backend: str) -> str:
+    # sympy and what needs it are imported in the flat key's functions only: the tree
+    # key is taken without sympy (0.3 s to import), which a model found so never loads
     from ...components.symbols import Equation
     ex = _key_text()
 
@@ -217,9 +217,7 @@ def _key_text():
         def _atom(self, node) -> str:
             if type(node) is not sp.Symbol:
                 return super()._atom(node)
-            key = getattr(node, "_assumptions0", None)    # sympy's sorted tuple of them
-            if not isinstance(key, tuple):
-                key = tuple(sorted(node.assumptions0.items()))
+            key = tuple(sorted(node.assumptions0.items()))
             facts = self.facts.get(key)
             if facts is None:
                 facts = ",".join(f"{k}={v}" for k, v in sorted(dict(key).items()))

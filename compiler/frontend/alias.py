@@ -17,15 +17,15 @@ from dataclasses import dataclass, field, replace
 
 import sympy as sp
 
-from ...components.component import InvalidEquation, ModelError
+from ...components.symbols import Assign, Reinit, When
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
-from .flatten import FlatModel
-from ..gcpause import gc_paused
-from ..structure.graph import STATE_SELECT
 from ..algebra.symbolic import symbols_of
+from ..flatmodel import FlatModel
+from ..structure.graph import STATE_SELECT
+from ...errors import InvalidEquation, ModelError
 
-__all__ = ["AliasTable", "eliminate_aliases"]
+__all__ = ["resolve_aliases_in", "AliasTable", "eliminate_aliases"]
 
 
 @dataclass
@@ -43,7 +43,6 @@ class AliasTable:
         return self.aliases.get(name, (1, name))
 
 
-@gc_paused
 def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     """Return a new FlatModel without trivial equations, and the alias table."""
     syms = [v.symbol for v in flat.variables]
@@ -364,7 +363,6 @@ def _derivatives_after_aliases(flat, find, constants, subs) -> dict:
 
 def _when_after_aliases(w, subs, find, constants):
     """A when-clause in representative variables: reinit(a, e) with a = s*r is reinit(r, s*e)."""
-    from ...components.symbols import Assign, Reinit, When
     actions = []
     for act in w.actions:
         if isinstance(act, Assign):          # writes a held value, not a variable
@@ -406,3 +404,23 @@ def _merge_attributes(flat, variables, resolved):
     # value replace() would copy)
     return [v if out[v.symbol] is v.attrs else replace(v, attrs=out[v.symbol])
             for v in variables]
+
+
+def resolve_aliases_in(values, flat, aliases) -> None:
+    """Values found before alias elimination (frozen floor values, delays) whose arguments
+    get the same substitution as the equations: ``mod(u, 1)`` of a ``u`` that is an alias
+    of the state ``x`` reads ``x``."""
+    if not values:
+        return
+    by_name = {v.name: v.symbol for v in flat.variables}
+    subs = {}
+    for v in flat.variables:
+        if v.name in aliases.constants:
+            subs[v.symbol] = sp.sympify(aliases.constants[v.name])
+            continue
+        sign, root = aliases.resolve(v.name)
+        if root != v.name and root in by_name:
+            subs[v.symbol] = sign * by_name[root]
+    for d in values:
+        if d.argument.free_symbols & subs.keys():
+            d.argument = d.argument.xreplace(subs)

@@ -18,9 +18,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ...components.component import ModelError
 from ...components.symbols import delay
-from ..gcpause import gc_paused
+from ...errors import ModelError
 
 __all__ = ["DelayValue", "extract_delays"]
 
@@ -44,7 +43,6 @@ def _innermost(e: sp.Basic) -> list:
                    and not d.args[1].has(delay)), key=sp.srepr)
 
 
-@gc_paused
 def extract_delays(flat) -> list:
     """Replace every delay() in the equations, initial equations and when-clauses of
     ``flat`` by a symbol (in place); return the :class:`DelayValue` list.  A delay time
@@ -117,69 +115,3 @@ def _value(T, params) -> float:
         return float(T)
     except (TypeError, ValueError):
         return float("nan")
-
-
-def feeds_back(system, delays) -> bool:
-    """Whether a delayed value can reach a delayed expression (a loop through a delay),
-    judged on the connectivity of the equations: symbols of one equation, and x with
-    der(x), are connected.  Connectivity over-approximates dependence, so the answer
-    errs towards True.  Without such a loop a discontinuity comes back through a delay
-    once and stops (the runtime then follows one generation instead of six)."""
-    parent = {}
-
-    def find(q):
-        parent.setdefault(q, q)
-        while parent[q] is not q:
-            parent[q] = parent[parent[q]]
-            q = parent[q]
-        return q
-
-    def union(a, b):
-        ra, rb = find(a), find(b)
-        if ra is not rb:
-            parent[ra] = rb
-
-    for eq in system.equations:
-        syms = list(eq.residual.free_symbols)
-        for q in syms[1:]:
-            union(syms[0], q)
-    for x, dx in system.derivatives.items():
-        union(x, dx)
-    roots = {find(d.symbol) for d in delays}
-    return any(find(q) in roots for d in delays for q in d.argument.free_symbols
-               if q in parent)
-
-
-def delay_code(delays, rows, code, parameters, psyms, known, feedback=True):
-    """The :class:`~acausal.compiler.modelcode.DelayCode` of the model: ``code`` computes
-    the delayed expressions (``rows``) from the unknowns; each delay time becomes a
-    float or a function of the tunable parameters ``psyms``."""
-    from ...components.symbols import time
-    from ..modelcode import DelayCode
-    from ..assemble import _parameter_functions
-    for d, row in zip(delays, rows):
-        unknown = sorted(q.name for q in row.free_symbols if q not in known and q != time)
-        if unknown:
-            raise ModelError(f"{d.text} in {d.where}: the delayed expression reads "
-                             f"{', '.join(unknown)}, which the compiled model does not "
-                             "compute")
-    values = {p.symbol: p for p in parameters}
-    tunable = set(psyms)
-    times, exprs = [], {}
-    for d in delays:
-        T = d.T
-        for _ in range(100):                 # parameters bound to others, down to tunables
-            bound = {q: sp.sympify(values[q].value) for q in T.free_symbols
-                     if q in values and q not in tunable}
-            if not bound:
-                break
-            T = T.xreplace(bound)
-        if T.free_symbols:
-            exprs[d.text] = T
-            times.append(None)
-        else:
-            times.append(float(T))
-    funcs = dict(_parameter_functions(exprs, psyms)) if exprs else {}
-    times = [funcs[d.text] if t is None else t for d, t in zip(delays, times)]
-    return DelayCode(code, [d.text for d in delays], times, [d.where for d in delays],
-                     feedback)

@@ -18,7 +18,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..gcpause import gc_paused
+from ...components.symbols import no_event
+
 
 __all__ = ["DiscreteValue", "freeze_integer_functions"]
 
@@ -61,11 +62,9 @@ def _has_type(e: sp.Basic, types: tuple) -> bool:
     return False
 
 
-@gc_paused
 def freeze_integer_functions(flat) -> list:
     """Replace floor atoms in every equation and when-clause of ``flat`` by discrete
     symbols (in place); return the :class:`DiscreteValue` list, in a canonical order."""
-    from ...components.symbols import no_event
     found: dict = {}
 
     def freeze(e):

@@ -12,9 +12,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...components.arrays import elements, parameter_array
-from ...components.component import InvalidValue, Port
+from ...components.component import Port
 from ...components.declarations import Parameter
-from .flatten import FlatParameter, FlatVariable
+from ..flatmodel import FlatParameter, FlatVariable
+from ...errors import InvalidValue
 
 __all__ = ["collect_array", "ArrayElement"]
 

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ...components.component import InvalidEquation
 from ...components.symbols import der, time
 from ..algebra.substitution import fast_xreplace
 from ..algebra.symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
+from ...errors import InvalidEquation
 
 __all__ = ["expand_derivatives", "has_der", "check_der_arguments"]
 

@@ -17,120 +17,26 @@ equations finite (``1/Tt`` with Tt = inf is 0; ``R*i`` with R = inf is not).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import sympy as sp
 
 from ...components import inheritance
-from ...components.component import (Component, Connection, InvalidConnection,
-                                     InvalidEquation, InvalidValue, ModelError, NotInModel,
-                                     Port, compiling, in_context)
-from ...components.declarations import Parameter, VariableAttributes, bound_violation
+from ...components.component import Component, Connection, Port, compiling, in_context
+from ...components.declarations import Parameter, bound_violation
 from ...components.logic import INITIAL
-from ...components.symbols import Equation, When, der, text, time
-from .fastarith import symbol_arithmetic
+from ...components.symbols import Equation, When, der, time
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
+from .flatarrays import collect_array
+from .inputs import find_inputs
 from .flatder import check_der_arguments, expand_derivatives, has_der
-from ..gcpause import gc_paused
 from ..algebra.symbolic import signed_sum, signed_terms, symbols_of
 from .usercode import failed_reading
+from ..flatmodel import FlatEquation, FlatModel, FlatParameter, FlatVariable
+from ...errors import (InvalidConnection, InvalidEquation, InvalidValue, ModelError,
+                       NotInModel)
 
-__all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
-
-
-class _Located:
-    @property
-    def where(self) -> str:
-        """The component, and an equation's label: ``spring (Spring), "Hooke's law"``."""
-        base = f"{self.component or '(model)'} ({self.component_class})"
-        label = getattr(self, "label", None)
-        return f'{base}, "{label}"' if label else base
+__all__ = ["flatten"]
 
 
-@dataclass
-class FlatVariable(_Located):
-    name: str
-    symbol: sp.Symbol
-    attrs: VariableAttributes
-    component: str
-    component_class: str
-    kind: str = "variable"
-    hint: str = ""            # the port's likely-mistake hint, for port variables
-
-
-@dataclass
-class FlatParameter(_Located):
-    name: str
-    symbol: sp.Symbol
-    value: object
-    unit: str = ""
-    description: str = ""
-    component: str = ""
-    component_class: str = ""
-    min: float | None = None
-    max: float | None = None
-    type: object = float      # float, bool or int (Real, Boolean, Integer)
-
-    def describe(self) -> str:
-        """``'R1' (Resistor): parameter R``, as the component's own errors say it."""
-        owner = f"'{self.component}'" if self.component else "the model"
-        local = self.name[len(self.component) + 1:] if self.component else self.name
-        return f"{owner} ({self.component_class}): parameter {local}"
-
-
-@dataclass
-class FlatEquation(_Located):
-    residual: sp.Expr
-    source: object            # the text; or the Equation, or the sum (printed "sum = 0"),
-                              # it is printed from on demand
-    component: str
-    component_class: str
-    kind: str = "equation"       # equation | connect | unconnected | initial
-    label: str | None = None
-    # the residual as flattened when it is a sum of +-symbols and +-der(symbol): while
-    # it is still the residual (``plain is residual``) it holds no function of another
-    # kind, and the passes that look for floor() or delay() need not walk it
-    plain: object = field(default=None, repr=False, compare=False)
-    # the variable alone on the left of ``ac.Eq`` as written (a Boolean or Integer
-    # variable's equation gives its value: compiler/sampled.py), else None
-    defines: object = field(default=None, repr=False, compare=False)
-
-    @property
-    def text(self) -> str:
-        """The equation as written (printed lazily: printing is slow on large models)."""
-        if not isinstance(self.source, str):
-            src = self.source
-            self.source = src.text if isinstance(src, Equation) else f"{text(src)} = 0"
-        return self.source
-
-    def describe(self) -> str:
-        return f"{self.text}   [{self.kind} in {self.where}]"
-
-
-@dataclass
-class FlatModel:
-    name: str
-    variables: list
-    parameters: list
-    equations: list
-    initial_equations: list = field(default_factory=list)
-    derivatives: dict = field(default_factory=dict)   # variable symbol -> der symbol
-    whens: list = field(default_factory=list)         # When clauses (condition, reinits)
-    structural_zeros: list = field(default_factory=list)  # parameters evaluated as 0
-    ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
-    components: dict = field(default_factory=dict)    # path -> class name
-    derived: dict = field(default_factory=dict)       # bound parameter -> (binding, value)
-    uses_initial: bool = False                        # an equation reads initial()
-    inputs: list = field(default_factory=list)        # top-level inputs (frontend/inputs)
-
-    def variable(self, name: str) -> FlatVariable:
-        for v in self.variables:
-            if v.name == name:
-                return v
-        raise KeyError(name)
-
-
-@gc_paused
 def flatten(model: Component) -> FlatModel:
     """Bind the instance tree, collect its declarations and equations, resolve connections."""
     if not isinstance(model, Component):
@@ -141,7 +47,7 @@ def flatten(model: Component) -> FlatModel:
     connections = []
     with_der = set()     # ids of the flat equations whose residuals contain der()
     known = {}           # the classes' own equation methods (inheritance.collect)
-    with compiling(model), symbol_arithmetic():
+    with compiling(model):
         for comp in nodes:
             flat.components[comp.path] = type(comp).__name__
             _collect_declarations(comp, flat)
@@ -167,7 +73,6 @@ def flatten(model: Component) -> FlatModel:
     flat.uses_initial = bool(getattr(model, "_uses_initial", False))
     _check_connections(connections, model)
     flat.equations.extend(_connection_equations(connections, nodes))
-    from .inputs import find_inputs
     flat.inputs = find_inputs(flat, model, connections)
     _check_symbols(flat, with_der)
     # substitution first: a structural zero removes the derivative it multiplies
@@ -231,7 +136,6 @@ def _read(comp: Component, method: str, known: dict) -> list:
 def _collect_declarations(comp: Component, flat: FlatModel) -> None:
     for name, decl in comp.declarations().items():
         if decl.shape is not None:
-            from .flatarrays import collect_array   # it imports this module
             collect_array(comp, name, decl, flat)
             continue
         sym = getattr(comp, name)

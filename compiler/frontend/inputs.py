@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .flatten import FlatEquation
+from ...components.declarations import TYPE_NAMES
+from ..flatmodel import FlatEquation
 
 __all__ = ["InputValue", "find_inputs"]
 
@@ -55,7 +56,6 @@ def find_inputs(flat, model, connections) -> list:
     """The top-level inputs of ``model`` (module docstring): the equations
     ``u.signal = input(u)`` are appended to ``flat.equations``; returns the
     :class:`InputValue` list in declaration order."""
-    from ...components.declarations import TYPE_NAMES
     ports = {name: child for name, child in model.children().items()
              if type(child).__name__ in _INPUT_PORTS}
     if not ports:

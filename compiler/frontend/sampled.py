@@ -38,18 +38,15 @@ from dataclasses import dataclass, replace
 
 import sympy as sp
 
-from ...components.component import InvalidEquation
-from ...components.symbols import Assign, Reinit, Sample, no_event
+from ...components.symbols import Assign, Reinit, Sample, When, no_event
 from ...components.symbols import Pre as pre
-from .flatten import FlatEquation
-from ..gcpause import gc_paused
+from ...components.declarations import TYPE_NAMES
+from ..flatmodel import FlatEquation
+from ...errors import DiscreteVariableError, ModelError
 
-__all__ = ["DiscreteVariableError", "HeldValue", "declare_discrete_variables",
-           "pre_after_aliases", "when_rows", "explain_overdetermined"]
-
-
-class DiscreteVariableError(InvalidEquation):
-    """A discrete-time variable or a when-assignment used against its rules."""
+__all__ = ["HeldValue", "declare_discrete_variables",
+           "pre_after_aliases", "when_rows", "explain_overdetermined",
+           "reinit_targets_are_states"]
 
 
 @dataclass
@@ -90,7 +87,6 @@ def _typed(v) -> bool:
     return getattr(v.attrs, "type", float) is not float
 
 
-@gc_paused
 def declare_discrete_variables(flat) -> list:
     """Check the discrete variables and their assignments, add ``y = held(y)`` for each,
     replace ``pre(y)`` by its symbol everywhere (in place); return the
@@ -159,7 +155,6 @@ def declare_discrete_variables(flat) -> list:
 def _clauses_of_equations(flat, by_symbol) -> None:
     """The equations ``y = expr`` of Boolean and Integer variables y become clauses
     evaluated at every event (in place: taken out of ``flat.equations``)."""
-    from ...components.symbols import When
     kept = []
     for eq in flat.equations:
         v = by_symbol.get(eq.defines) if eq.kind == "equation" else None
@@ -203,7 +198,6 @@ def _tick_of(value):
 
 
 def _type_name(v) -> str:
-    from ...components.declarations import TYPE_NAMES
     return TYPE_NAMES[getattr(v.attrs, "type", float)]
 
 
@@ -283,7 +277,6 @@ def when_rows(whens, z_syms, caus, pairs, helds, assigned):
     conditions (1/0; 0 for a clock; one row per condition of ``when([c1, c2])``, none
     for the equation of a Boolean or Integer variable, which is evaluated at every
     event), reinit values, assigned values, then start and period of each clock."""
-    from ...components.component import ModelError
     z_index = {s: k for k, s in enumerate(z_syms)}
     states = set(range(caus.n_states)) if caus.causal else {a for a, _ in pairs}
     slot = {h.symbol: k for k, h in enumerate(helds)}
@@ -404,3 +397,17 @@ def _level_of(a, deps, by_slot, level, path, values, slots, owners, helds, whens
     path.pop()
     level[a] = lv
     return lv
+
+
+def reinit_targets_are_states(flat) -> None:
+    """A variable that a when-clause re-initializes must be a state (Modelica 3.6, sec.
+    8.3.6: tools treat it as stateSelect = always), so state selection keeps it one,
+    wherever index reduction could otherwise put the states (the motor side of a gear)."""
+    targets = {act.variable for w in flat.whens for act in w.actions
+               if isinstance(act, Reinit)}
+    for k, v in enumerate(flat.variables):
+        if v.symbol in targets:
+            if v.attrs.state_select == "never":
+                raise ModelError(f"reinit({v.name}) in {v.where}: the variable has "
+                                 "state_select='never', but only a state can be re-initialized")
+            flat.variables[k] = replace(v, attrs=replace(v.attrs, state_select="always"))

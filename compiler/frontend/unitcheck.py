@@ -23,6 +23,7 @@ changes the model.
 """
 from __future__ import annotations
 
+import time
 import warnings
 from fractions import Fraction
 
@@ -30,9 +31,8 @@ import sympy as sp
 
 from ...components.symbols import Equation, der, no_event
 from ...components.symbols import Pre as pre
-from ...components.units import (DIMENSIONLESS, MODES, UnitCheck, UnitError, UnitWarning,
-                                 dimension_text, parse_unit)
-from ..gcpause import gc_paused
+from ...components.units import DIMENSIONLESS, MODES, UnitCheck, dimension_text, parse_unit
+from ...errors import UnitError, UnitWarning
 
 __all__ = ["check_units", "complain", "UnitCheck", "MODES"]
 
@@ -66,7 +66,6 @@ class _Mismatch(Exception):
         return f"{self.what}: {first} but '{sp.sstr(self.b)}' is {dimension_text(self.db)}"
 
 
-@gc_paused
 def check_units(flat, mode: str = "warn", known: UnitCheck | None = None,
                 quiet: bool = False) -> UnitCheck:
     """Check every equation of ``flat`` (a FlatModel); see the module docstring.
@@ -76,7 +75,6 @@ def check_units(flat, mode: str = "warn", known: UnitCheck | None = None,
     ``mode`` without checking again, so a cache hit does not load sympy's units.
     ``quiet``: the findings are returned, not reported (:func:`complain` reports them
     where the check ran in a side job, :mod:`acausal.compiler.pipeline`)."""
-    import time
     if mode not in MODES:
         raise ValueError(f"check_units must be one of {MODES}, not {mode!r}")
     result = UnitCheck(mode=mode)

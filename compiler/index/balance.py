@@ -8,8 +8,11 @@ are too many and the variables that nothing determines, with their components.
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
 from ..structure.graph import Structure
-from ..structure.matching import StructuralError, check_structure
+from ..structure.matching import check_structure
+from ...errors import StructuralError
 
 __all__ = ["check_balance", "zero_causes"]
 
@@ -92,7 +95,6 @@ def _removed_for(aliases, involved_names) -> list:
 
 def _with_components(system, s: Structure) -> Structure:
     """A copy of s whose variable names also say which component declares them."""
-    from dataclasses import replace
     names = []
     for sym, info in zip(system.symbols, system.base_infos()):
         hint = _port_hint(info)

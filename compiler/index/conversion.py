@@ -63,8 +63,8 @@ from ..algebra.exact import (coefficient_oracle, exact_rank, exact_value, intege
 from ..structure.graph import UNASSIGNED, Structure
 from .modp import full_row_rank_mod_p
 from ..structure.sigma import SigmaResult, sigma_method, signature_matrix
-from ..structure.matching import IndexReductionFailed, StructuralError, StructurallySingular
 from ..algebra.symbolic import SymbolicEquation, sum_partial, symbols_of
+from ...errors import IndexReductionFailed, StructuralError, StructurallySingular
 
 __all__ = ["Conversion", "NumericBlock", "ConversionResult", "convert", "convert_model",
            "parameter_values", "exact_value", "exact_rank", "left_null_vectors",

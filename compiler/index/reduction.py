@@ -12,11 +12,15 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import partial
 
+from ..algebra.symbolic import symbols_of
 from ..structure.graph import UNASSIGNED, Names, Structure
+from ..structure.matching import base_variables
 from ..structure.pantelides import pantelides
+from ..structure.sigma import signature_matrix, sigma_method
 from ..structure.states import select_states
+from ...errors import IndexReductionFailed, StructuralError
 
-__all__ = ["IndexReduction", "reduce_index"]
+__all__ = ["IndexReduction", "reduce_index", "differentiate", "select", "as_written"]
 
 
 @dataclass
@@ -41,16 +45,28 @@ class IndexReduction:
 
 
 def reduce_index(system, s: Structure, coefficient=None) -> IndexReduction:
-    """Pantelides, then dummy derivatives; `coefficient` (``(eq, var) -> Fraction | None``,
-    see :func:`acausal.compiler.index.conversion.coefficient_oracle`) lets state selection
+    """Pantelides, then dummy derivatives (:func:`differentiate`, then :func:`select`)."""
+    return select(system, differentiate(system, s), s.n_eqs, coefficient)
+
+
+def differentiate(system, s: Structure):
+    """Pantelides on ``s``, the equations it picks differentiated in ``system``
+    (:meth:`SymbolicSystem.differentiate`); returns the
+    :class:`~acausal.compiler.structure.pantelides.PantelidesResult`."""
+    return pantelides(s, differentiate=system.differentiate)
+
+
+def select(system, result, n_orig: int, coefficient=None) -> IndexReduction:
+    """Dummy derivatives on the augmented structure of Pantelides' ``result`` (whose first
+    ``n_orig`` equations are the system's before differentiation); ``coefficient``
+    (``(eq, var) -> Fraction | None``, see
+    :func:`acausal.compiler.index.conversion.coefficient_oracle`) lets state selection
     check constant blocks by exact rank.
 
     The index follows Pryce's convention (as :func:`as_written` does): the largest number
     of differentiations, plus one if some variable has no derivative at all (an
     algebraic variable, Pryce 2001 eq. (13)).
     """
-    n_orig = s.n_eqs
-    result = pantelides(s, differentiate=system.differentiate)
     sr = result.structure
     counts = list(result.diff_counts)[:n_orig]
     selection = select_states(result, coefficient)
@@ -68,25 +84,25 @@ def reduce_index(system, s: Structure, coefficient=None) -> IndexReduction:
 def _check_square(system, red: IndexReduction) -> None:
     n_eq, n_var = len(system.equations), len(system.symbols)
     if n_eq + red.n_states != n_var:
-        from ..structure.matching import IndexReductionFailed
         raise IndexReductionFailed(
             f"after index reduction the system is not square: {n_eq} equations + "
             f"{red.n_states} states for {n_var} variables", [], [])
 
 
-def as_written(flat) -> dict:
+def as_written(flat, checked: bool = False) -> dict:
     """The structural index of the model as the user wrote it (before alias elimination),
     by Pantelides and, independently, by Pryce's Sigma-method; they must agree.
 
     Alias elimination can resolve a constraint before index reduction sees it (two
     capacitors in parallel share one voltage variable), so the index the user's equations
-    have is measured here, on integers only.
+    have is measured here, on integers only.  ``checked``: the alias-reduced system has
+    passed the balance check, so this one is structurally regular too (every equation
+    alias elimination removed held the variable it removed) and Pantelides need not
+    check it again.
     """
-    from ..structure.sigma import signature_matrix, sigma_method
-    from ..structure.matching import StructuralError
     s = _flat_structure(flat)
     try:
-        found = pantelides(s)
+        found = pantelides(s, checked=checked)
         counts = found.diff_counts[: s.n_eqs]
         entries, columns = signature_matrix(s, sparse=True)
         sig = sigma_method(entries, start=_pantelides_transversal(found, columns, s.n_eqs))
@@ -107,7 +123,6 @@ def _pantelides_transversal(found, columns: list, n_eqs: int):
     Sigma-method uses it only if these offsets prove it of highest value, which saves
     it an assignment problem of the model's size; the offsets it reports, the smallest,
     it computes from the transversal, not from Pantelides' counts."""
-    from ..structure.matching import base_variables
     aug = found.structure
     base = base_variables(aug)
     col = {b: k for k, b in enumerate(columns)}
@@ -160,7 +175,6 @@ def _flat_structure(flat) -> Structure:
         add(v.symbol)
     for x, dx in list(flat.derivatives.items()):
         var_to_diff[add(x)] = add(dx)
-    from ..algebra.symbolic import symbols_of
     graph = [sorted(index[q] for q in symbols_of(e.residual) if q in index)
              for e in flat.equations]
     return Structure(graph=graph, var_to_diff=var_to_diff,

@@ -24,10 +24,9 @@ from dataclasses import dataclass, field
 from typing import Mapping, NamedTuple, Optional, Sequence
 
 from .graph import DEFAULT, UNASSIGNED, Structure
+from ...errors import OverdeterminedModel, StructurallySingular, UnderdeterminedModel
 
 __all__ = [
-    "StructuralError", "IndexReductionFailed", "StructurallySingular",
-    "OverdeterminedModel", "UnderdeterminedModel",
     "bipartite_matching", "maximum_matching", "DMParts", "dulmage_mendelsohn",
     "base_variables", "StructuralDiagnosis", "diagnose", "check_structure",
     "make_structure",
@@ -35,41 +34,6 @@ __all__ = [
 
 
 # --------------------------------------------------------------------------- errors
-class StructuralError(Exception):
-    """Base class: a structural pass could not proceed.
-
-    Attributes
-    ----------
-    equations, variables : list of str
-        User names of the equations / variables involved.
-    diagnosis : StructuralDiagnosis or None
-        The full diagnosis (indices, counts) when one was computed.
-    """
-
-    def __init__(self, message: str, equations: Sequence[str] = (),
-                 variables: Sequence[str] = (), diagnosis=None):
-        super().__init__(message)
-        self.equations = list(equations)
-        self.variables = list(variables)
-        self.diagnosis = diagnosis
-
-
-class IndexReductionFailed(StructuralError):
-    """Index reduction (Pantelides) could not make the system matchable."""
-
-
-class StructurallySingular(IndexReductionFailed):
-    """Square, but no perfect matching of equations onto unknowns exists."""
-
-
-class OverdeterminedModel(StructurallySingular):
-    """More (independent) equations than unknowns in some part of the model."""
-
-
-class UnderdeterminedModel(StructurallySingular):
-    """Fewer equations than unknowns in some part of the model."""
-
-
 # --------------------------------------------------------------------------- matching
 def _greedy(adj: list, l2r: list, r2l: list) -> None:
     # A cheap start: take a free neighbour, else free one by moving its owner to

@@ -23,7 +23,8 @@ from functools import partial
 from typing import Callable, Optional
 
 from .graph import DEFAULT, LINEAR_VAR, NONLINEAR, UNASSIGNED, Names, Structure
-from .matching import IndexReductionFailed, _from_sentinel, _to_sentinel, check_structure
+from .matching import _from_sentinel, _to_sentinel, check_structure
+from ...errors import IndexReductionFailed
 
 __all__ = ["PantelidesResult", "pantelides", "predict_derivative"]
 
@@ -182,7 +183,7 @@ def _augment(w: _Work, root: int, stamp: int) -> tuple:
 
 
 def pantelides(s: Structure, differentiate: Optional[Callable] = None,
-               max_rounds: Optional[int] = None) -> PantelidesResult:
+               max_rounds: Optional[int] = None, checked: bool = False) -> PantelidesResult:
     """Differentiate equations of `s` until they match onto highest derivatives.
 
     Parameters
@@ -197,6 +198,10 @@ def pantelides(s: Structure, differentiate: Optional[Callable] = None,
         Safety bound on failed searches per input equation; default
         ``n_eqs + max derivative order + 2`` (never reached once the model has passed
         the structural check).
+    checked : bool
+        The caller has found ``s`` structurally regular already
+        (:func:`~acausal.compiler.structure.matching.check_structure`): it is not
+        checked again.
 
     Returns
     -------
@@ -213,7 +218,8 @@ def pantelides(s: Structure, differentiate: Optional[Callable] = None,
     """
     if any(d is not UNASSIGNED for d in s.eq_to_diff):
         raise ValueError("pantelides() expects a DAE without differentiated equations")
-    check_structure(s)
+    if not checked:
+        check_structure(s)
     w = _Work(s)
     if max_rounds is None:
         max_rounds = s.n_eqs + max((s.order(v) for v in range(s.n_vars)), default=0) + 2

@@ -18,12 +18,14 @@ equation i.
 """
 from __future__ import annotations
 
+import heapq
 from dataclasses import dataclass
 
 import numpy as np
 
 from .graph import Structure
-from .matching import StructurallySingular, _match, base_variables
+from .matching import _match, base_variables
+from ...errors import StructurallySingular
 
 __all__ = ["SigmaResult", "signature_matrix", "sigma_method"]
 
@@ -157,7 +159,6 @@ def _sparse_transversal(n: int, rows: list, cols: list, vals: list) -> np.ndarra
     ``sum d - sum c``, a bound for every transversal).  The rounds are about as many as
     the distinct distances, a few for a model: no dense n x n matrix and no solver
     import at any size."""
-    import heapq
     adj = [[] for _ in range(n)]
     d = [None] * n
     for r, k, v in zip(rows, cols, vals):

@@ -49,7 +49,8 @@ from typing import Callable, Optional, Union
 from .blt import strongly_connected_components
 from .graph import ALWAYS, LINEAR_PARAM, NONLINEAR, UNASSIGNED, Structure
 from .pantelides import PantelidesResult
-from .matching import StructurallySingular, _from_sentinel, _match, _to_sentinel
+from .matching import _from_sentinel, _match, _to_sentinel
+from ...errors import StructurallySingular
 
 __all__ = ["StateSet", "StateSelection", "select_states", "index1_matching"]
 

@@ -5,12 +5,12 @@ import pytest
 from scipy.optimize import brentq
 
 import acausal as ac
-from acausal.analysis import (ModeWarning, OperatingPoint, OperatingPointError,
-                              SteadyStateError, linearize, steady_state)
+from acausal.analysis import OperatingPoint, linearize, steady_state
 from acausal.library import rotational as rot
 from acausal.library.friction.rotational import StribeckFriction
 
 from ..heater import C_TH, G, K_P, Q_MAX, T_AMB, LimitedHeater, heater_equilibrium
+from acausal.errors import ModeWarning, OperatingPointError, SteadyStateError
 
 # start saturated high / unsaturated / far above; equilibria unsaturated / high / low
 @pytest.mark.parametrize("t_set, t_start", [(323.15, T_AMB), (420.0, 415.0),

@@ -4,10 +4,11 @@ import pytest
 import sympy as sp
 
 import acausal as ac
-from acausal.analysis import SteadyStateError, linearize, steady_state
+from acausal.analysis import linearize, steady_state
 from acausal.library.electrical import ConstantVoltage, Ground
 from acausal.library.electromechanical import DCMotor
 from acausal.library.rotational import Damper, Fixed
+from acausal.errors import SteadyStateError
 
 R, L, K, J, B, V = 1.2, 1e-3, 0.05, 1e-4, 2e-4, 24.0
 

@@ -9,9 +9,9 @@ import scipy.signal as ss
 import acausal as ac
 from acausal.analysis import StateSpace, linearize
 from acausal.analysis import realization
-from acausal.analysis.realization import TransferFunctionWarning
 from acausal.library.blocks import PID, Feedback, TransferFunction
 from acausal.ports import RealInput
+from acausal.errors import TransferFunctionWarning
 
 # Nomoto's second-order ship model psi/delta = K (1 + T3 s) / (s (1 + T1 s)(1 + T2 s))
 # (Fossen, Handbook of Marine Craft Hydrodynamics and Motion Control, 7.2) with a PD

@@ -14,7 +14,7 @@ import pytest
 
 import acausal as ac
 from acausal.compiler.backends.arraycode import MIN_STATEMENTS, array_source
-from acausal.compiler.backends.cbackend import compiler_available
+from acausal.native import find_compiler
 from acausal.compiler.backends.lazycode import ArrayFunction, GeneratedModule
 from acausal.library.electromechanical.examples.sampled_speed_control import SampledSpeedLoop
 from acausal.library.friction.examples.stick_slip import StickSlip
@@ -72,7 +72,7 @@ def test_array_functions_equal_the_scalar_functions(cls):
     _compare(compiled.code, compiled.p, np.random.default_rng(7))
 
 
-@pytest.mark.skipif(not compiler_available(), reason="no C compiler")
+@pytest.mark.skipif(not find_compiler(), reason="no C compiler")
 @pytest.mark.parametrize("cls", MODELS, ids=lambda c: c.__name__)
 def test_looped_c_functions_equal_the_scalar_functions(cls, monkeypatch):
     monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
@@ -108,7 +108,7 @@ def test_a_large_model_runs_on_array_code(tmp_path, monkeypatch):
     # array functions back (solvers/cbdf_callbacks.py) when its library is loaded or in
     # this cache, else the Python loop
     assert compiled.n > cbdf.MAX_DENSE
-    loop = "c" if cbdf.library(cached_only=True) is not None else "python"
+    loop = "c" if cbdf.library() is not None else "python"
     res, t = _against_exact(compiled, n)
     assert res.stats["step_loop"] == loop
     # the same model from the compile cache: its array code comes with it
@@ -183,7 +183,7 @@ def test_every_function_of_the_printer_has_its_numpy_form():
         assert np.allclose(got, want, rtol=1e-12, atol=0.0), name
 
 
-@pytest.mark.skipif(not compiler_available(), reason="no C compiler")
+@pytest.mark.skipif(not find_compiler(), reason="no C compiler")
 def test_a_ladder_runs_on_looped_c(monkeypatch):
     """The compiled step loop calling looped C functions, against the exact solution."""
     monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
@@ -223,7 +223,7 @@ def test_a_negated_long_sum_is_one_dot_product(monkeypatch):
     dot = sum(c * by_number[k] for c, k in linear)
     assert abs(dot - float(e.xreplace(leaves))) <= 1e-12 * sum(map(abs, leaves.values()))
     _compare(compiled.code, compiled.p, np.random.default_rng(3))
-    if compiler_available():
+    if find_compiler():
         monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
         looped = ac.compile(Ladder(n), backend="c", cache=False)
         source = looped.code.c_source
@@ -234,7 +234,7 @@ def test_a_negated_long_sum_is_one_dot_product(monkeypatch):
             ("residual", "jacobian", "roots", "scales", "expand")})
 
 
-@pytest.mark.skipif(not compiler_available(), reason="no C compiler")
+@pytest.mark.skipif(not find_compiler(), reason="no C compiler")
 def test_looped_c_reads_its_index_arrays_at_run_time(tmp_path, monkeypatch):
     """A looped library is given its index arrays when it is loaded: two ladders alive
     at once each compute their own exact solution, also after a twin that shared one's

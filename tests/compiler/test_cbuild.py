@@ -14,12 +14,13 @@ import numpy as np
 import pytest
 
 import acausal as ac
+from acausal import native
 from acausal.compiler.backends import cbackend
 from acausal.native import build as cbuild
 from acausal.library.hydraulics.examples.valve_motor import ValveControlledMotor
 from acausal.tests.heater import LimitedHeater
 
-pytestmark = pytest.mark.skipif(cbackend.compiler_available() is None,
+pytestmark = pytest.mark.skipif(native.find_compiler() is None,
                                 reason="no C compiler on this machine")
 
 BROKEN = cbuild.UNIT + "void broken_piece(ARGS) { w[0] = undeclared_name; }\n"
@@ -64,8 +65,8 @@ def test_a_split_build_computes_bitwise_what_one_unit_does(model_class, t_end, t
     # the same source in units of about 600 characters, in a cache of its own (the
     # library's name does not depend on the split)
     monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path / "split"))
-    monkeypatch.setattr(cbackend, "start_build",
-                        functools.partial(cbackend.start_build, unit_size=600))
+    monkeypatch.setattr(native, "start",
+                        functools.partial(native.start, unit_size=600))
     split = ac.compile(model_class(), backend="c", cache=False)
     assert cbuild.last_build["units"] >= 4
     assert split.code.c_source == one.code.c_source
@@ -100,12 +101,12 @@ def test_one_failing_compiler_is_a_backend_error_with_its_message(tmp_path, monk
     monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path))
     source, _ = _source_of(ValveControlledMotor)
     with pytest.raises(cbackend.BackendError) as err:
-        cbackend.build(source + BROKEN, unit_size=600)
+        native.build_library(source + BROKEN, unit_size=600)
     text = str(err.value)
     assert "failed on the generated model (translation unit" in text
     assert "undeclared_name" in text and "error" in text
     # nothing is left behind: no library under the source's name, no build directory
-    assert cbackend.build(source + BROKEN, cached_only=True) is None
+    assert native.build_library(source + BROKEN, cached_only=True) is None
     assert not [f for f in os.listdir(tmp_path) if f.startswith("build_")]
 
 
@@ -118,8 +119,8 @@ def test_auto_falls_back_to_numpy_when_a_unit_fails_and_c_raises(tmp_path, monke
         return source + BROKEN, sizes
 
     monkeypatch.setattr(cbackend, "c_source", broken_source)
-    monkeypatch.setattr(cbackend, "start_build",
-                        functools.partial(cbackend.start_build, unit_size=600))
+    monkeypatch.setattr(native, "start",
+                        functools.partial(native.start, unit_size=600))
     compiled = ac.compile(LimitedHeater(), backend="auto", cache=False)
     assert compiled.backend == "numpy"
     note = [n for n in compiled.report.notes if "C backend is not available" in n]

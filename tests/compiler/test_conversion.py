@@ -15,12 +15,13 @@ from acausal.components.declarations import VariableAttributes
 from acausal.components.symbols import time
 from acausal.compiler.index.conversion import (block_jacobian, coefficient_oracle, convert,
                                          exact_rank, exact_value, left_null_vectors)
-from acausal.compiler.frontend.flatten import FlatEquation, FlatModel, FlatParameter, FlatVariable
+from acausal.compiler.flatmodel import FlatEquation, FlatModel, FlatParameter, FlatVariable
 from acausal.compiler.structure.graph import LINEAR_CONST as K, UNASSIGNED
 from acausal.compiler.structure.pantelides import pantelides
 from acausal.compiler.structure.states import select_states
-from acausal.compiler.structure.matching import StructurallySingular, make_structure
+from acausal.compiler.structure.matching import make_structure
 from acausal.compiler.algebra.symbolic import SymbolicSystem
+from acausal.errors import StructurallySingular
 
 
 def sym(name):

@@ -6,8 +6,8 @@ import pytest
 from acausal.compiler.structure.graph import (
     LINEAR_CONST as C, LINEAR_PARAM as P, LINEAR_VAR as V, NONLINEAR as N, UNASSIGNED)
 from acausal.compiler.structure.pantelides import pantelides, predict_derivative
-from acausal.compiler.structure.matching import (
-    IndexReductionFailed, OverdeterminedModel, StructurallySingular, make_structure)
+from acausal.compiler.structure.matching import make_structure
+from acausal.errors import IndexReductionFailed, OverdeterminedModel, StructurallySingular
 
 DERS = {"x": "der(x)", "y": "der(y)", "vx": "der(vx)", "vy": "der(vy)"}
 

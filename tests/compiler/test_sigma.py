@@ -10,7 +10,8 @@ from acausal.compiler.structure.graph import LINEAR_VAR as V, NONLINEAR as N
 from acausal.compiler.structure.pantelides import pantelides
 from acausal.compiler.structure.sigma import signature_matrix, sigma_method
 from acausal.compiler.structure.states import index1_matching, select_states
-from acausal.compiler.structure.matching import StructurallySingular, diagnose, make_structure
+from acausal.compiler.structure.matching import diagnose, make_structure
+from acausal.errors import StructurallySingular
 
 NEG = -math.inf
 

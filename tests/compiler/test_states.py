@@ -7,7 +7,8 @@ from acausal.compiler.structure.graph import (
     NONLINEAR as N, PREFER, UNASSIGNED)
 from acausal.compiler.structure.pantelides import pantelides
 from acausal.compiler.structure.states import index1_matching, select_states
-from acausal.compiler.structure.matching import StructurallySingular, make_structure
+from acausal.compiler.structure.matching import make_structure
+from acausal.errors import StructurallySingular
 
 
 def pendulum(priority=None):

@@ -4,10 +4,10 @@ import random
 import pytest
 
 from acausal.compiler.structure.graph import LINEAR_CONST as C, LINEAR_PARAM as P, UNASSIGNED
-from acausal.compiler.structure.matching import (
-    OverdeterminedModel, StructurallySingular, UnderdeterminedModel,
-    bipartite_matching, check_structure, diagnose, dulmage_mendelsohn,
-    make_structure, maximum_matching)
+from acausal.compiler.structure.matching import (bipartite_matching, check_structure, diagnose,
+                                                 dulmage_mendelsohn, make_structure,
+                                                 maximum_matching)
+from acausal.errors import OverdeterminedModel, StructurallySingular, UnderdeterminedModel
 
 
 def test_matching_needs_augmenting_path():

@@ -17,11 +17,11 @@ import sympy as sp
 
 import acausal as ac
 from acausal.compiler.frontend.flatten import flatten
-from acausal.components import (InvalidConnection, InvalidEquation, InvalidHierarchy,
-                                InvalidValue, NotInModel)
 from acausal.library.blocks import PI
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
 from acausal.library.electromechanical import DCMotor
+from acausal.errors import (InvalidConnection, InvalidEquation, InvalidHierarchy,
+                            InvalidValue, NotInModel)
 
 
 class RC(ac.Component):

@@ -12,9 +12,9 @@ import pytest
 import sympy as sp
 
 import acausal as ac
-from acausal.components import InvalidValue, NotInModel
 
 from .test_bad_input import RC      # 1 V charging C1 = 10 mF through R1 = 1 Ohm
+from acausal.errors import InvalidValue, NotInModel
 
 
 

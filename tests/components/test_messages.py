@@ -126,7 +126,7 @@ class FloatingLadder(ac.Component):
 
 
 def test_a_structural_error_of_a_large_model_is_of_bounded_length():
-    from acausal.compiler.structure.matching import StructuralError
+    from acausal.errors import StructuralError
     with pytest.raises(StructuralError) as err:
         ac.compile(FloatingLadder())
     text = str(err.value)

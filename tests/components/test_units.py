@@ -12,9 +12,10 @@ import pytest
 import acausal as ac
 from acausal.compiler.frontend.flatten import flatten
 from acausal.compiler.frontend.unitcheck import check_units
-from acausal.components.units import UnitError, UnitWarning, convert_value, parse_unit
+from acausal.components.units import convert_value, parse_unit
 from acausal.library import rotational as rot
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
+from acausal.errors import UnitError, UnitWarning
 
 
 def _library_models():

@@ -9,11 +9,11 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.backends.cbackend import compiler_available
+from acausal.native import find_compiler
 from acausal.ports import BooleanOutput, IntegerOutput, RealOutput
 
 fmpy = pytest.importorskip("fmpy", reason="fmpy (the 'fmi' extra) is not installed")
-if compiler_available() is None:
+if find_compiler() is None:
     pytest.skip("no C compiler: FMUs cannot be built", allow_module_level=True)
 
 from fmpy import read_model_description, simulate_fmu  # noqa: E402

@@ -15,10 +15,10 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.backends.cbackend import compiler_available
+from acausal.native import find_compiler
 
 fmpy = pytest.importorskip("fmpy", reason="fmpy (the 'fmi' extra) is not installed")
-if compiler_available() is None:
+if find_compiler() is None:
     pytest.skip("no C compiler: FMUs cannot be built", allow_module_level=True)
 
 from fmpy import read_model_description, simulate_fmu  # noqa: E402
@@ -216,7 +216,7 @@ def test_fmu_rebuilds_from_its_sources(fmus, tmp_path):
         out = root / "binaries" / "linux64" / f"{md.modelExchange.modelIdentifier}.so"
         out.parent.mkdir(parents=True)
         src = root / "sources"
-        proc = subprocess.run([compiler_available(), "-O2", "-fPIC", "-ffp-contract=off",
+        proc = subprocess.run([find_compiler(), "-O2", "-fPIC", "-ffp-contract=off",
                                "-shared", "-I", str(src), "-o", str(out),
                                *sorted(str(p) for p in src.glob("*.c")), "-lm"],
                               capture_output=True, text=True)

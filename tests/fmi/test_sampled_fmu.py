@@ -7,10 +7,10 @@ values before and after are both right; tests/fmi/models.py, fmu_errors)."""
 import pytest
 
 import acausal as ac
-from acausal.compiler.backends.cbackend import compiler_available
+from acausal.native import find_compiler
 
 fmpy = pytest.importorskip("fmpy", reason="fmpy (the 'fmi' extra) is not installed")
-if compiler_available() is None:
+if find_compiler() is None:
     pytest.skip("no C compiler: FMUs cannot be built", allow_module_level=True)
 
 from fmpy.validation import validate_fmu  # noqa: E402

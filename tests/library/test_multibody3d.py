@@ -8,7 +8,6 @@ import pytest
 from scipy.integrate import cumulative_simpson, solve_ivp
 
 import acausal as ac
-from acausal.compiler.structure.matching import UnderdeterminedModel
 from acausal.library import multibody3d as mb
 from acausal.library.blocks import Constant
 from acausal.library.multibody.examples.pendulums import DoublePendulum as PlanarDoublePendulum
@@ -17,6 +16,7 @@ from acausal.library.multibody3d.examples.pendulums import DoublePendulum
 from acausal.library.multibody3d.examples.slider_crank import SliderCrank, slider_position
 from acausal.library.multibody3d.examples.tops import (RACKET, TOP, HeavyTop, TennisRacket,
                                                        top_precession_rate)
+from acausal.errors import UnderdeterminedModel
 
 G = 9.80665
 

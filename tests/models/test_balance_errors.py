@@ -2,8 +2,8 @@
 import pytest
 
 import acausal as ac
-from acausal.compiler.structure.matching import OverdeterminedModel, UnderdeterminedModel
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
+from acausal.errors import OverdeterminedModel, UnderdeterminedModel
 
 
 class OneTooMany(ac.Component):

@@ -5,11 +5,11 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.compiler.structure.matching import StructuralError
 from acausal.library import rotational as rot
 from acausal.library.electrical import (Capacitor, ConstantVoltage, Ground, Inductor,
                                         OnePort, Resistor, SineVoltage)
 from acausal.library.examples.pendulum import DoublePendulum, Pendulum
+from acausal.errors import StructuralError
 
 G = 9.81
 

@@ -12,11 +12,11 @@ import pytest
 from scipy.signal import cont2discrete
 
 import acausal as ac
-from acausal.compiler.frontend.sampled import DiscreteVariableError
 from acausal.library.blocks import Constant
 from acausal.library.blocks.discrete import Sampler
 from acausal.library.electromechanical.examples.sampled_speed_control import (
     J, K, L, R, W_REF, SampledSpeedLoop, Ti, h, k_m)
+from acausal.errors import DiscreteVariableError
 
 
 def exact_loop(n, y_max=np.inf):

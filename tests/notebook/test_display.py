@@ -133,12 +133,50 @@ def test_dot_engine_without_graphviz_says_so():
         display.component_svg(SeriesRLC(), engine="neato")
 
 
-def test_component_repr_html_has_schematic_and_parameters():
-    html = SeriesRLC(R1={"R": 5.0})._repr_html_()
+def test_component_html_has_schematic_and_parameters():
+    html = display.component_html(SeriesRLC(R1={"R": 5.0}))
     assert "<svg" in html
     rows = _rows(html, "Sub-component parameters")
     assert ["R1", "Resistor", "R", "5", "Ohm", "resistance"] in rows
     assert ["C1", "Capacitor", "C", "0.0001", "F", "capacitance"] in rows
+
+
+_IN_A_SHELL = """
+import sys, json
+from IPython.core.interactiveshell import InteractiveShell
+shell = InteractiveShell.instance()
+import acausal as ac
+from acausal.library.electrical import Ground, Resistor, StepVoltage
+
+class Loop(ac.Component):
+    src = StepVoltage(V=1.0)
+    R1 = Resistor(R=5.0)
+    gnd = Ground()
+
+    def equations(self):
+        return [ac.connect(self.src.p, self.R1.p), ac.connect(self.R1.n, self.src.n, self.gnd.p)]
+
+model = Loop()
+before = "acausal.display" in sys.modules
+data, _ = shell.display_formatter.format(model)
+print(json.dumps([before, hasattr(ac.Component, "_repr_html_"), data.get("text/html", "")]))
+"""
+
+
+def test_a_notebook_finds_the_renderer_from_outside_the_language():
+    # the language imports no renderer: IPython's HTML formatter has it by class name,
+    # registered by `import acausal`, and imports acausal.display when a model is shown
+    import json
+    import subprocess
+    import sys
+    pytest.importorskip("IPython")
+    out = subprocess.run([sys.executable, "-c", _IN_A_SHELL], capture_output=True,
+                         text=True, check=True).stdout
+    before, has_repr, html = json.loads(out.strip().splitlines()[-1])
+    assert before is False and has_repr is False
+    assert "<svg" in html
+    assert ["R1", "Resistor", "R", "5", "Ohm", "resistance"] in \
+        _rows(html, "Sub-component parameters")
 
 
 def test_report_tables_match_the_report(bridge):

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
+from acausal import native
 from acausal.compiler.cache import entries as store
 from acausal.compiler.pipeline import compile_model
 from acausal.runtime import CompiledModel
@@ -50,7 +51,7 @@ def _tau(compiled) -> float:
 def test_a_hit_gives_the_same_model_and_says_so(backend):
     if backend == "c":
         from acausal.compiler.backends import cbackend
-        if cbackend.compiler_available() is None:
+        if native.find_compiler() is None:
             pytest.skip("no C compiler")
     first = _compile(RC(), backend)
     assert not _from_cache(first)
@@ -209,10 +210,8 @@ def test_the_size_bound_prunes_and_the_switch_turns_the_cache_off(cache_dir, mon
 SECOND_PROCESS = """
 import sys
 import acausal as ac
-from acausal.compiler.pipeline import compile_model
-from acausal.runtime import CompiledModel
 from acausal.tests.persist.circuits import RC
-compiled = CompiledModel(compile_model(RC(), "numpy", cache="tree"))
+compiled = ac.compile(RC(), "numpy", cache="tree")
 res = ac.simulate(compiled, t_end=1.0, rtol=1e-9)
 print(any("came from the compile cache" in n for n in compiled.report.notes),
       "sympy" in sys.modules, repr(float(res["C1.v"][-1])))

@@ -9,6 +9,7 @@ import pickle
 import pytest
 
 import acausal as ac
+from acausal import native
 from acausal.compiler.backends import cbackend
 from acausal.compiler.pipeline import compile_model
 from acausal.runtime import CompiledModel
@@ -18,7 +19,7 @@ from acausal.runtime import CompiledModel
 from acausal.tests.persist.circuits import SqrtOfStart
 from .helpers import run_python
 
-pytestmark = pytest.mark.skipif(cbackend.compiler_available() is None,
+pytestmark = pytest.mark.skipif(native.find_compiler() is None,
                                 reason="no C compiler on this machine")
 
 HIT = "came from the compile cache"
@@ -53,10 +54,8 @@ def test_a_fresh_c_model_prints_its_python_at_the_failure():
 LOAD = """
 import sys
 import acausal as ac
-from acausal.compiler.pipeline import compile_model
-from acausal.runtime import CompiledModel
 from acausal.tests.persist.circuits import SqrtOfStart
-compiled = CompiledModel(compile_model(SqrtOfStart(), "c", cache="tree"))
+compiled = ac.compile(SqrtOfStart(), "c", cache="tree")
 loaded = any("came from the compile cache" in n for n in compiled.report.notes)
 without_sympy = "sympy" not in sys.modules
 try:

@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
+from acausal import native
 from acausal.compiler.backends import cbackend
 from acausal.library.examples.pendulum import Pendulum
 from acausal.tests.heater import LimitedHeater
@@ -21,7 +22,7 @@ from acausal.tests.models.test_events import BouncingBall
 from .helpers import assert_same_run, run_python
 
 BACKENDS = ["numpy", pytest.param("c", marks=pytest.mark.skipif(
-    cbackend.compiler_available() is None, reason="no C compiler on this machine"))]
+    native.find_compiler() is None, reason="no C compiler on this machine"))]
 MODELS = [(Pendulum, 3.0), (BouncingBall, 3.0), (LimitedHeater, 600.0)]
 
 
@@ -99,7 +100,7 @@ print(compiled.backend, compiled.p.tolist())
         assert np.max(np.abs(x - y)) <= 1e-12 * np.max(np.abs(y))
 
 
-@pytest.mark.skipif(cbackend.compiler_available() is None, reason="no C compiler")
+@pytest.mark.skipif(native.find_compiler() is None, reason="no C compiler")
 def test_a_missing_c_library_is_rebuilt_from_its_source(tmp_path):
     compiled = ac.compile(LimitedHeater(), backend="c")
     data = pickle.dumps(compiled)
@@ -114,7 +115,7 @@ def test_a_missing_c_library_is_rebuilt_from_its_source(tmp_path):
 
 def test_without_a_library_or_a_compiler_the_loaded_model_runs_in_python(tmp_path,
                                                                         monkeypatch):
-    if cbackend.compiler_available() is None:
+    if native.find_compiler() is None:
         pytest.skip("no C compiler")
     compiled = ac.compile(BouncingBall(), backend="c")
     data = pickle.dumps(compiled)

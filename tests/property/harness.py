@@ -55,6 +55,7 @@ import numpy as np
 from .generators import electrical_network, ill_posed_network, mechanical_network
 from .netlists import SOURCE_KINDS, Chooser, Netlist, build_model
 from .reference import Reference
+from acausal.errors import StructuralError
 
 __all__ = ["Case", "Outcome", "AmbiguousCase", "make_case", "case_from_netlist", "run_case",
            "compare", "STRATEGIES", "CATEGORIES", "RTOL", "ATOL", "TOL", "time_span"]
@@ -220,7 +221,6 @@ def make_case(ch: Chooser, strategy: str) -> Case:
 
 def _typed_errors():
     import acausal as ac
-    from acausal.compiler.structure.matching import StructuralError
     return (ac.ModelError, StructuralError, ac.InitializationFailed)
 
 

@@ -12,8 +12,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.errors import BackendError, SimulationError
-from acausal.solvers import DAEProblem, cbdf
+from acausal.solvers import DAEProblem, cbdf, cbdf_library
 from acausal.library.examples.motor_drive import MotorDrive
 from acausal.library.examples.pendulum import Pendulum
 from acausal.solvers.cbdf import CAPACITY, library
@@ -23,6 +22,7 @@ from acausal.tests.models.test_events import BouncingBall as Ball, _bounce_times
 
 from .problems import (BlowUp, BouncingBall, DampedOscillator, LinearIndex1, Robertson,
                        VanDerPol)
+from acausal.errors import BackendError, SimulationError
 
 pytestmark = pytest.mark.skipif(library() is None, reason="no C compiler on this machine")
 
@@ -210,7 +210,7 @@ def test_the_loop_is_chosen_by_backend_and_model():
 
 def test_without_a_c_compiler_the_python_loop_runs(monkeypatch):
     c = ac.compile(MotorDrive(), backend="c")
-    monkeypatch.setattr(cbdf, "_lib", False)        # as when no compiler was found
+    monkeypatch.setattr(cbdf_library, "_lib", False)  # as when installed without a compiler
     assert ac.simulate(c, t_end=0.01).stats["step_loop"] == "python"
     with pytest.raises(BackendError, match="C compiler"):
         ac.simulate(c, t_end=0.01, step_loop="c")
@@ -220,7 +220,7 @@ def test_dynamic_state_selection_above_max_dense_keeps_the_python_loop(monkeypat
     """The sparse LU keeps one Jacobian pattern and a new choice of states changes it:
     such a model stays in the Python loop, and "c" says why."""
     from types import SimpleNamespace
-    monkeypatch.setattr(cbdf, "_compiled_model", lambda problem: True)
+    monkeypatch.setattr(cbdf, "_loop_model", lambda problem: object())
     big = SimpleNamespace(n=cbdf.MAX_DENSE + 1, dynamic=object(), delays=None)
     assert cbdf.choose_step_loop(big, "auto", stald=False) is None
     with pytest.raises(ValueError, match="dynamic state selection"):
@@ -239,16 +239,3 @@ def test_a_model_with_a_delay_keeps_the_python_loop():
     assert res.success and res.stats["step_loop"] == "python"
     with pytest.raises(ValueError, match="delay"):
         ac.simulate(c, t_end=2.0, step_loop="c")
-
-
-def test_a_failed_build_is_tried_again_with_another_compiler(monkeypatch):
-    """A process that once found no working compiler (CC naming none) loads the loop
-    when CC names one again, instead of keeping the failure for good."""
-    if cbdf.library() is None:
-        pytest.skip("no C compiler on this machine")
-    monkeypatch.setattr(cbdf, "_lib", None)
-    monkeypatch.setattr(cbdf, "_failed_with", ())
-    monkeypatch.setenv("CC", "no-such-compiler-acausal")
-    assert cbdf.library() is None
-    monkeypatch.delenv("CC")
-    assert cbdf.library() is not None

@@ -1,6 +1,6 @@
-"""The dense LU of a small system when neither scipy.linalg nor the compiled step loop's
-library is loaded (the first run of a model on the numpy backend): numpy row operations
-judge the pivots as LAPACK's factors are judged, and ``numpy.linalg.solve`` solves.
+"""The dense LU of a small system where the compiled step loop is not installed: numpy
+row operations judge the pivots as LAPACK's factors are judged, and
+``numpy.linalg.solve`` solves.
 Checked against LAPACK (numpy's solve on the unfactored matrix) and Higham's backward
 error bound, on the same cases as the compiled LU, and whole integrations on it against
 Radau and closed forms."""
@@ -20,17 +20,10 @@ from .problems import DampedOscillator, LinearIndex1, Robertson, VanDerPol
 _EPS = np.finfo(float).eps
 
 
-class _NoScipy:
-    """``sys`` as seen by linalg in a process that has not imported scipy.linalg."""
-    import sys as _sys
-    modules = {k: v for k, v in _sys.modules.items() if k != "scipy.linalg"}
-
-
 @pytest.fixture
 def numpy_lu(monkeypatch):
-    """Counts the factorizations judged by the numpy LU."""
-    monkeypatch.setattr(linalg, "sys", _NoScipy())
-    monkeypatch.setattr(linalg, "_compiled_lu", lambda: None)
+    """Counts the factorizations judged by the numpy LU (the compiled LU not installed)."""
+    monkeypatch.setattr(linalg, "library", lambda: None)
     calls = []
     judge = linalg._numpy_lu
     monkeypatch.setattr(linalg, "_numpy_lu", lambda A: (calls.append(1), judge(A))[1])
@@ -54,7 +47,7 @@ def test_solutions_agree_with_lapack_within_the_backward_error_bound(numpy_lu):
         b = rng.standard_normal(n)
         lin = LinearSolver(n)
         lin.factor(A)
-        assert lin._numpy and lin._getrf is None and not lin._in_c
+        assert lin._numpy and lin._getrf is None and not lin._in_c and lin.kind == "numpy"
         assert_solves(lin, A, b, scipy.linalg.solve(A, b))
 
 
@@ -62,7 +55,7 @@ def test_a_larger_system_keeps_lapack(numpy_lu):
     n = NUMPY_LU_MAX + 1
     lin = LinearSolver(n)
     lin.factor(np.eye(n) * 2.0)
-    assert not lin._numpy and lin._getrf is not None
+    assert not lin._numpy and lin._getrf is not None and lin.kind == "lapack"
     np.testing.assert_allclose(lin.solve(np.ones(n)), 0.5 * np.ones(n), rtol=1e-12)
 
 

@@ -59,8 +59,8 @@ BACKENDS = ["numpy", "c"]
 
 def _backend(backend):
     if backend == "c":
-        from acausal.compiler.backends.cbackend import compiler_available
-        if compiler_available() is None:
+        from acausal.native import find_compiler
+        if find_compiler() is None:
             pytest.skip("no C compiler")
     return backend
 

@@ -11,9 +11,9 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 import acausal as ac
-from acausal.components.component import ModelError
 from acausal.library import electrical as el
 from acausal.library.electrical.interfaces import OnePort
+from acausal.errors import ModelError
 
 IS, VT = 1e-9, 0.05
 

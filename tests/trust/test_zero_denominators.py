@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.components import InvalidEquation
+from acausal.errors import InvalidEquation
 
 BACKENDS = ["numpy", "c"]
 T = np.linspace(0.0, 2.0, 41)

@@ -44,7 +44,7 @@ import tempfile
 import time
 import warnings
 
-from ...errors import CacheError, CacheWarning
+from ..errors import CacheError, CacheWarning
 
 __all__ = ["root", "subdir", "seal", "unseal", "read_sealed", "write_sealed",
            "publish_library", "library_ok", "load_library", "transient_build_dir",
