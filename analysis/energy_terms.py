@@ -24,6 +24,7 @@ import numpy as np
 import sympy as sp
 
 from ..components.component import Component, Port
+from ..components.portgroups import leaf_ports
 from ..components.symbols import der, time
 from ..ports import HeatPort
 from ..ports.base import SignalPort
@@ -186,9 +187,10 @@ def storage_rate(traj, expr, where: str = ""):
 
 # -- ports ------------------------------------------------------------------------------------
 def power_ports(comp) -> list:
-    """The component's own ports that carry power (not signal ports)."""
-    return [c for c in comp.children().values()
-            if isinstance(c, Port) and not isinstance(c, SignalPort)]
+    """The component's own ports that carry power (not signal ports); a group of ports
+    (``ac.PortGroup``) stands for its members."""
+    return [q for c in comp.children().values() if isinstance(c, Port)
+            for q in leaf_ports(c) if not isinstance(q, SignalPort)]
 
 
 def port_power(traj, port) -> np.ndarray:

@@ -27,6 +27,7 @@ from ...components.component import (Component, Connection, InvalidConnection,
                                      Port, compiling, in_context)
 from ...components.declarations import Parameter, VariableAttributes, bound_violation
 from ...components.logic import INITIAL
+from ...components.portgroups import expand_connection, port_owner
 from ...components.symbols import Equation, When, der, text, time
 from .fastarith import symbol_arithmetic
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
@@ -151,7 +152,7 @@ def flatten(model: Component) -> FlatModel:
             for item in _read(comp, "equations", known):
                 if isinstance(item, Connection):
                     item.owner = comp
-                    connections.append(item)
+                    connections.extend(expand_connection(item))
                 elif isinstance(item, When):
                     item.origin, item.origin_class = comp.path, type(comp).__name__
                     flat.whens.append(item)
@@ -324,7 +325,7 @@ def _connection_equations(connections: list, nodes: list) -> list:
     for conn in connections:
         keys = []
         for p in conn.ports:
-            role = "outside" if getattr(p, "_parent", None) is conn.owner else "inside"
+            role = "outside" if port_owner(p) is conn.owner else "inside"
             key = (id(p), role, order[id(p)])
             ports[key] = p
             keys.append(key)
