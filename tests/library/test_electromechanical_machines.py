@@ -81,7 +81,7 @@ def test_machine_with_losses_balances_its_power():
     p_shaft = res[f"{m}.tauShaft"] * w
     # d/dt (Jr w^2/2 + La ia^2/2) = Jr w a + v_La ia
     d_stored = 0.15 * w * res[f"{m}.inertiaRotor.a"] + res[f"{m}.la.v"] * res[f"{m}.la.i"]
-    heat = sum(res[f"{m}.thermalAmbient.heatPort{k}.Q_flow"]
+    heat = sum(res[f"{m}.thermalAmbient.Q_flow{k}"]
                for k in ("Armature", "Core", "StrayLoad", "Friction", "Brush"))
     assert np.all(heat[t > 0.3] > 0)
     balance = p_in - p_shaft - d_stored - heat
