@@ -31,6 +31,16 @@ class Pipe(TwoPort, SimpleFriction):
     g = ac.Parameter(G_N, unit="m/s2", min=0, description="gravitation")
     Q_flowHeatPort = ac.Variable(unit="W", description="heat flow at conditional heatPort")
 
+    def loss_power(self):
+        """The hydraulic power the friction takes, (1 - frictionLoss) V_flow
+        pressureDrop >= 0, that is not fed to the medium (the MSL's model leaves it)."""
+        return (1 - self.frictionLoss) * self.V_flow * self.pressureDrop
+
+    def created_power(self):
+        """-rho g h_g V_flow: the potential energy the medium gains rising h_g, which the
+        medium's energy (m cv T) does not hold."""
+        return -self.medium.rho * self.g * self.h_g * self.V_flow
+
     def equations(self):
         eqs = [ac.Eq(self.volumeFlow, self.V_flow),
                ac.Eq(self.dp, self.pressureDrop + self.medium.rho * self.g * self.h_g),
@@ -81,6 +91,11 @@ class Valve(TwoPort):
     yLim = ac.Variable(unit="1", description="limited valve opening")
     Kv = ac.Variable(unit="m3/s", description="standard flow rate")
 
+    def loss_power(self):
+        """The hydraulic power the valve takes and does not feed to the medium,
+        (1 - frictionLoss) V_flow dp >= 0."""
+        return (1 - self.frictionLoss) * self.V_flow * self.dp
+
     def equations(self):
         opening = self.yLim / self.y1
         if self.LinearCharacteristic:
@@ -124,6 +139,11 @@ class OneWayValve(TwoPort):
     s = ac.Variable(start=0.0, unit="1", description="position on the valve "
                                                      "characteristic")
 
+    def loss_power(self):
+        """The hydraulic power the valve takes and does not feed to the medium,
+        (1 - frictionLoss) V_flow dp >= 0 (both have the sign of s)."""
+        return (1 - self.frictionLoss) * self.V_flow * self.dp
+
     def equations(self):
         backward = self.s < 0
         forward_dp = self.unitVolumeFlowRate * self.dpForward / self.V_flowNominal
@@ -160,6 +180,14 @@ class OpenTank(SinglePort):
     level = RealOutput()
     TTank = RealOutput()
 
+    def stored_energy(self):
+        """The medium's enthalpy H, the potential energy of its column m^2 g/(2 rho
+        ATank) and the work pAmbient m/rho done against the ambient pressure: what the
+        port's H_flow + p m_flow/rho (p = pAmbient + m g/ATank) and the heat port bring."""
+        rho = self.medium.rho
+        return (self.H + self.m**2 * self.g / (2 * rho * self.ATank)
+                + self.pAmbient * self.m / rho)
+
     def equations(self):
         port, md = self.flowPort, self.medium
         eqs = [ac.Eq(self.TTank, self.T),
@@ -194,6 +222,11 @@ class Cylinder(SinglePort, PartialElementaryOneFlangeAndSupport):
     f = ac.Variable(unit="N", description="force at piston")
     m = ac.Variable(unit="kg", description="mass of medium")
     H = ac.Variable(unit="J", description="enthalpy of medium")
+
+    def stored_energy(self):
+        """The medium's enthalpy H: the port's hydraulic power p m_flow/rho = p A der(s)
+        is the work of the piston's force, f der(s) = -p A der(s)."""
+        return self.H
 
     def equations(self):
         port, md = self.flowPort, self.medium

@@ -42,6 +42,8 @@ class Ambient(SinglePort):
                                        description="enable / disable temperature input")
     constantAmbientTemperature = ac.Parameter(293.15, unit="K", min=0,
                                               description="ambient temperature")
+    energy_role = "source"   # an environment outside the model
+
     ambientPressure = ac.Conditional(RealInput(), "usePressureInput")
     ambientTemperature = ac.Conditional(RealInput(), "useTemperatureInput")
     pAmbient = ac.Variable(unit="Pa", description="ambient pressure")
@@ -66,6 +68,8 @@ class AbsolutePressure(SinglePort):
     exchange = False
     p = ac.Parameter(0.0, unit="Pa", description="pressure ground")
 
+    energy_role = "source"   # sets the pressure level from outside the model
+
     def equations(self):
         return [ac.Eq(self.flowPort.p, self.p), ac.Eq(self.flowPort.H_flow, 0)]
 
@@ -76,6 +80,9 @@ class _Source(TwoPort):
 
     tapT = ac.Parameter(1.0, unit="1", min=1, max=1, description="the outlet temperature "
                                                                  "exchanges heat")
+
+    energy_role = "source"   # imposes a flow or a pressure rise from outside the model
+    stored_energy = None     # (its medium's m cv T is part of what it delivers)
 
     def equations(self):
         return [ac.Eq(self.Q_flow, 0)]
@@ -144,6 +151,9 @@ class IdealPump(_Source):
     dp1 = ac.Variable(unit="Pa", description="pressure increase at zero flow and speed w")
     V_flow1 = ac.Variable(unit="m3/s", description="flow at zero pressure increase and "
                                                    "speed w")
+
+    energy_role = None       # converts the shaft's power into hydraulic power, tau w =
+    stored_energy = TwoPort.stored_energy     # -dp V_flow, and stores m cv T
 
     def equations(self):
         x = self.w / self.wNominal
