@@ -18,6 +18,7 @@ import importlib
 import sys
 
 _EXPORTS = {
+<<<<<<< HEAD
     ".components": ("Across", "Component", "Connection", "Eq", "Equation", "Parameter", "Port",
                     "Signal", "Through", "Variable", "When", "assign", "connect", "delay", "der",
                     "if_else", "no_event", "pre", "ref", "reinit", "replaces", "sample",
@@ -32,6 +33,17 @@ _EXPORTS = {
                 "InvalidArgument", "OperatingPointError",
                 "SteadyStateError", "ModeConflict", "UnitWarning", "ModeWarning",
                 "TransferFunctionWarning"),
+=======
+    ".components": ("Across", "Component", "Connection", "Eq", "Equation",
+                    "InvalidConnection", "InvalidEquation", "InvalidHierarchy", "InvalidIndex",
+                    "InvalidInheritance", "InvalidValue", "ModelError", "NotInModel",
+                    "Parameter", "Port", "Signal", "Through", "UnitError", "UnitWarning",
+                    "Variable", "When", "assign", "connect", "delay", "der", "if_else",
+                    "no_event", "pre", "ref", "reinit", "replaces", "sample", "sign", "time",
+                    "when", "edge", "change", "initial", "integer", "Conditional",
+                    "AbsentComponent", "MissingInput", "Init", "PortGroup"),
+    ".errors": ("BackendError", "InitializationFailed", "SimulationError"),
+>>>>>>> thermal2
     ".result": ("Result",),
     ".runtime": ("CompiledModel",),
     ".simulation": ("compile", "initial_values", "simulate"),
@@ -48,7 +60,7 @@ _EXPORTS = {
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
            "Eq", "Equation", "der", "connect", "ref", "when", "When", "reinit", "pre",
            "sample", "assign", "edge", "change", "initial", "integer", "Conditional",
-           "AbsentComponent", "MissingInput", "Init",
+           "AbsentComponent", "MissingInput", "Init", "PortGroup",
            "Connection", "if_else", "no_event", "delay", "sign", "time", "replaces",
            "compile", "simulate", "initial_values", "Result", "CompiledModel",
            "ModelError", "InvalidValue", "InvalidEquation", "DiscreteVariableError",

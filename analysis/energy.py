@@ -60,6 +60,7 @@ import numpy as np
 
 from ..components.component import Component, Connection, Port
 from ..components.inheritance import all_items
+from ..components.portgroups import leaf_ports
 from .energy_terms import (Trajectory, find_component, leaf_port_power, port_power,
                            power_ports, storage_rate, symbolic_term)
 
@@ -187,8 +188,8 @@ def _structural(comp) -> bool:
     ports = power_ports(comp)
     if not ports:
         return True
-    connected = {id(p) for item in all_items(comp, "equations")
-                 if isinstance(item, Connection) for p in item.ports}
+    connected = {id(q) for item in all_items(comp, "equations")
+                 if isinstance(item, Connection) for p in item.ports for q in leaf_ports(p)}
     return all(id(p) in connected for p in ports)
 
 

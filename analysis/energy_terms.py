@@ -18,12 +18,14 @@ fx der(x) + fy der(y) + tau der(phi)).
 """
 from __future__ import annotations
 
+import inspect
 from types import FunctionType
 
 import numpy as np
 import sympy as sp
 
 from ..components.component import Component, Port
+from ..components.portgroups import leaf_ports
 from ..components.symbols import der, time
 from ..ports import HeatPort
 from ..ports.base import SignalPort
@@ -186,23 +188,28 @@ def storage_rate(traj, expr, where: str = ""):
 
 # -- ports ------------------------------------------------------------------------------------
 def power_ports(comp) -> list:
-    """The component's own ports that carry power (not signal ports)."""
-    return [c for c in comp.children().values()
-            if isinstance(c, Port) and not isinstance(c, SignalPort)]
+    """The component's own ports that carry power (not signal ports); a group of ports
+    (``ac.PortGroup``) stands for its members."""
+    return [q for c in comp.children().values() if isinstance(c, Port)
+            for q in leaf_ports(c) if not isinstance(q, SignalPort)]
 
 
 def port_power(traj, port) -> np.ndarray:
     """Power into the component through one port (module docstring).  A port whose
     power is not a sum of across-rate x through products defines ``power(value, rate)``
-    (of functions giving a port variable's values and rates by its name)."""
+    (of functions giving a port variable's values and rates by its name; with a third
+    argument ``parameter``, the function giving a component's parameter in the run,
+    ``parameter(component, name)``)."""
     if not getattr(port, "carries_power", True):
         raise ValueError(f"energy audit: the port '{port.path}' ({type(port).__name__}) "
                          f"carries {port.effort} and {port.flow}, whose product is not a "
                          "power; the audit does not cover this domain")
     own = getattr(type(port), "power", None)
     if isinstance(own, FunctionType):          # a method, not a variable named power
+        extra = ({"parameter": traj.parameter}   # the value of a component's parameter
+                 if "parameter" in inspect.signature(own).parameters else {})
         return own(port, lambda name: traj.value(f"{port.path}.{name}"),
-                   lambda name: traj.value(f"der({port.path}.{name})"))
+                   lambda name: traj.value(f"der({port.path}.{name})"), **extra)
     if isinstance(port, HeatPort):
         return traj.value(f"{port.path}.{port.flow}")
     if port.flow.startswith("der("):

@@ -6,6 +6,7 @@ component classes does not load sympy (their symbols and equations do).
 """
 from .component import Component, Connection, Port, connect
 from .conditional import Conditional
+from .portgroups import PortGroup
 from .initialization import Init
 from .declarations import Across, Parameter, Signal, Through, Variable, ref
 from .inheritance import replaces
@@ -20,7 +21,7 @@ __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidV
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
            "der", "if_else", "no_event", "delay", "when", "When", "reinit", "pre", "sign",
            "time", "sample", "assign", "edge", "change", "initial", "integer", "Conditional",
-           "AbsentComponent", "MissingInput", "Init"]
+           "AbsentComponent", "MissingInput", "Init", "PortGroup"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".symbols": ("Eq", "Equation", "When", "delay", "der", "if_else", "no_event", "reinit",

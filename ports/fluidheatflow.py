@@ -14,7 +14,11 @@ class FlowPort(Port):
     receives as m_flow h and the enthalpy it delivers as m_flow times its own (the MSL's
     ``semiLinear``, ``acausal.library.fluidheatflow.base_classes.semi_linear``).  The MSL's
     FlowPort_a and FlowPort_b differ only in their icons; both are ``FlowPort`` here.
-    p m_flow is not a power: the energy audit does not read these ports.
+
+    The power into the component through the port (the energy audit) is the enthalpy
+    flow and the hydraulic power, H_flow + p m_flow/rho, with rho the density of the
+    medium of the component the port belongs to (the MSL's FlowPort carries that
+    medium, ``flowPort_a(final medium=medium)``).
 
     H_flow has the nominal 1e3 W, its scale in the error test: H_flow = m_flow h passes
     through 0 at every reversal of the flow, at a rate of h (3e2 J/kg for the MSL's
@@ -28,6 +32,15 @@ class FlowPort(Port):
     h = Across(unit="J/kg", description="specific enthalpy of the medium at the port")
     H_flow = Through(unit="W", nominal=1e3, description="enthalpy flow rate into the port")
     effort, flow = "p", "m_flow"
-    carries_power = False
     hint = ("an Ambient or AbsolutePressure (the pressure level) is missing, or a flow "
             "port is not connected")
+
+    def power(self, value, rate, parameter):
+        """Power into the component over a trajectory (the energy audit):
+        H_flow + p m_flow/rho, rho of the medium of the component the port belongs to."""
+        medium = getattr(self._parent, "medium", None)
+        if medium is None:
+            raise ValueError(f"energy audit: the flow port '{self.path}' belongs to a "
+                             f"component without a medium ({type(self._parent).__name__}); "
+                             "its hydraulic power p m_flow/rho needs the medium's density")
+        return value("H_flow") + value("p") * value("m_flow") / parameter(medium, "rho")

@@ -23,6 +23,7 @@ from ...components import inheritance
 from ...components.component import Component, Connection, Port, compiling, in_context
 from ...components.declarations import Parameter, bound_violation
 from ...components.logic import INITIAL
+from ...components.portgroups import expand_connection, port_owner
 from ...components.symbols import Equation, When, der, time
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
 from .flatarrays import collect_array
@@ -57,7 +58,7 @@ def flatten(model: Component) -> FlatModel:
             for item in _read(comp, "equations", known):
                 if isinstance(item, Connection):
                     item.owner = comp
-                    connections.append(item)
+                    connections.extend(expand_connection(item))
                 elif isinstance(item, When):
                     item.origin, item.origin_class = comp.path, type(comp).__name__
                     flat.whens.append(item)
@@ -228,7 +229,7 @@ def _connection_equations(connections: list, nodes: list) -> list:
     for conn in connections:
         keys = []
         for p in conn.ports:
-            role = "outside" if getattr(p, "_parent", None) is conn.owner else "inside"
+            role = "outside" if port_owner(p) is conn.owner else "inside"
             key = (id(p), role, order[id(p)])
             ports[key] = p
             keys.append(key)

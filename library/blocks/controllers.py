@@ -27,10 +27,15 @@ class LimPID(ac.Component):
 
     ``controllerType`` ("PID" by default, "PI", "PD", "P") and ``withFeedForward`` are
     given when it is made; a part the type leaves out is not there (its Constant zero
-    is, as in the MSL).  The integrator and the derivative block start from their
-    states' start values (the MSL's initType = InitialState, with xi_start and xd_start
-    their start values); for the MSL's SteadyState, give the model the initial equation
-    der(I.x) = 0 (and der(D.x) = 0).
+    is, as in the MSL).  ``initType`` (``ac.Init``, given when it is made) initializes
+    the integrator I and the derivative block D as the MSL's table says:
+
+        NoInit         I NoInit, D NoInit (the default: the states start from their
+                       start values, as the MSL's InitialState with xi_start = xd_start
+                       = 0 wherever nothing else fixes them)
+        SteadyState    I SteadyState, D SteadyState
+        InitialState   I at xi_start, D at xd_start
+        InitialOutput  gainPID.y = y_start, I NoInit, D SteadyState
     """
 
     k = ac.Parameter(1.0, min=0, description="gain of the controller")
@@ -43,6 +48,12 @@ class LimPID(ac.Component):
     Ni = ac.Parameter(0.9, min=0, description="Ni Ti is the anti-windup time constant")
     Nd = ac.Parameter(10.0, min=0, description="the higher Nd, the more ideal the derivative")
     kFF = ac.Parameter(1.0, description="gain of the feed-forward input")
+    initType = ac.Init.parameter()
+    xi_start = ac.Parameter(0.0, description="initial value of the integrator output "
+                                             "(InitialState)")
+    xd_start = ac.Parameter(0.0, description="initial value of the derivative block's "
+                                             "state (InitialState)")
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
     unitTime = ac.Parameter(1.0, unit="s", description="1 s (the MSL's constant unitTime)")
     k_I = ac.Parameter(lambda c: c.unitTime / c.Ti, description="unitTime/Ti")
     k_D = ac.Parameter(lambda c: c.Td / c.unitTime, description="Td/unitTime")
@@ -71,8 +82,12 @@ class LimPID(ac.Component):
         super().__init__(**modifications)
 
     def build(self):
+        init = self.initType
         if self.with_I:
-            self.I = Integrator(k=ac.ref("k_I"))
+            self.I = Integrator(k=ac.ref("k_I"), y_start=ac.ref("xi_start"),
+                                initType=init if init in (ac.Init.SteadyState,
+                                                          ac.Init.InitialState)
+                                else ac.Init.NoInit)
             self.addI = Add3(k2=-1.0)
             self.addSat = Add(k1=1.0, k2=-1.0)
             self.gainTrack = Gain(k=ac.ref("k_track"))
@@ -80,13 +95,20 @@ class LimPID(ac.Component):
             self.Izero = Constant(k=0.0)
         if self.with_D:
             self.addD = Add(k1=ac.ref("wd"), k2=-1.0)
-            self.D = Derivative(k=ac.ref("k_D"), T=ac.ref("T_D"))
+            self.D = Derivative(k=ac.ref("k_D"), T=ac.ref("T_D"), x_start=ac.ref("xd_start"),
+                                initType=ac.Init.SteadyState if init == ac.Init.InitialOutput
+                                else init)
         else:
             self.Dzero = Constant(k=0.0)
         if self.withFeedForward:
             self.u_ff = RealInput()
         else:
             self.FFzero = Constant(k=0.0)
+
+    def initial_equations(self):
+        if self.initType == ac.Init.InitialOutput:
+            return [ac.Eq(self.gainPID.y, self.y_start)]
+        return []
 
     def equations(self):
         eqs = [ac.Eq(self.controlError, self.u_s - self.u_m),

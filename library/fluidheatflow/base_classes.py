@@ -115,6 +115,12 @@ class TwoPort(WithMedium):
         T = _initial_temperature(modifications, T0, T0fixed)
         super().__init__(T=T, **modifications)
 
+    def stored_energy(self):
+        """Internal energy of the medium m cv T (relative to T = 0 K).  The ports
+        carry H_flow + p V_flow: a two-port takes in the hydraulic power dp V_flow,
+        which its subclass dissipates (a pipe, a valve) or a source delivers."""
+        return self.m * self.medium.cv * self.T
+
     def equations(self):
         a, b, md = self.flowPort_a, self.flowPort_b, self.medium
         small = self.m_flow_small

@@ -4,7 +4,7 @@ import acausal as ac
 from acausal.ports import FlowPort, HeatPort, RealInput, RealOutput
 
 from ..translational.interfaces import PartialElementaryOneFlangeAndSupport
-from .base_classes import SMALL, SimpleFriction, SinglePort, TwoPort, flag
+from .base_classes import SMALL, SimpleFriction, SinglePort, TwoPort
 
 __all__ = ["Pipe", "HeatedPipe", "Valve", "OneWayValve", "OpenTank", "Cylinder"]
 
@@ -18,22 +18,28 @@ class Pipe(TwoPort, SimpleFriction):
         volumeFlow = V_flow,   dp = pressureDrop + rho g h_g
         Q_flow = Q_flowHeatPort + Q_friction
 
-    ``Pipe(useHeatPort=True)`` has a ``heatPort`` at T_q (heatPort.T = T_q,
+    ``Pipe(useHeatPort=True)`` has the conditional ``heatPort`` at T_q (heatPort.T = T_q,
     heatPort.Q_flow = Q_flowHeatPort, the heat flowing into the medium); without it
     Q_flowHeatPort = 0.
     """
 
+    useHeatPort = ac.Parameter(False, structural=True,
+                               description="= true, if HeatPort is enabled")
+    heatPort = ac.Conditional(HeatPort(), "useHeatPort")
     h_g = ac.Parameter(0.0, unit="m", description="geodetic height (height difference "
                                                   "from flowPort_a to flowPort_b)")
     g = ac.Parameter(G_N, unit="m/s2", min=0, description="gravitation")
-    Q_flowHeatPort = ac.Variable(unit="W", description="heat flow at the heat port")
+    Q_flowHeatPort = ac.Variable(unit="W", description="heat flow at conditional heatPort")
 
-    def __init__(self, *, useHeatPort=False, **modifications):
-        super().__init__(**modifications)
-        object.__setattr__(self, "useHeatPort", flag(type(self).__name__, "useHeatPort",
-                                                      useHeatPort))
-        if useHeatPort:
-            self.heatPort = HeatPort()
+    def loss_power(self):
+        """The hydraulic power the friction takes, (1 - frictionLoss) V_flow
+        pressureDrop >= 0, that is not fed to the medium (the MSL's model leaves it)."""
+        return (1 - self.frictionLoss) * self.V_flow * self.pressureDrop
+
+    def created_power(self):
+        """-rho g h_g V_flow: the potential energy the medium gains rising h_g, which the
+        medium's energy (m cv T) does not hold."""
+        return -self.medium.rho * self.g * self.h_g * self.V_flow
 
     def equations(self):
         eqs = [ac.Eq(self.volumeFlow, self.V_flow),
@@ -50,8 +56,8 @@ class Pipe(TwoPort, SimpleFriction):
 class HeatedPipe(Pipe):
     """A Pipe with its heat port (``Pipe(useHeatPort=True)``; the MSL 3's HeatedPipe)."""
 
-    def __init__(self, **modifications):
-        super().__init__(useHeatPort=True, **modifications)
+    useHeatPort = ac.Parameter(True, structural=True,
+                               description="= true, if HeatPort is enabled")
 
 
 class Valve(TwoPort):
@@ -64,8 +70,11 @@ class Valve(TwoPort):
         dp/dp0 = rho/rho0 (V_flow/Kv) |V_flow/Kv|,   Q_flow = frictionLoss V_flow dp
 
     Kv is the standard flow at the pressure drop dp0 of a medium of density rho0.
-    ``LinearCharacteristic`` is chosen where the valve is made (True by default).
+    ``LinearCharacteristic`` (structural) is given where the valve is made.
     """
+
+    LinearCharacteristic = ac.Parameter(True, structural=True,
+                                        description="type of characteristic")
 
     m = ac.Parameter(0.0, unit="kg", min=0, description="mass of medium")
     tapT = ac.Parameter(1.0, unit="1", min=1, max=1, description="the outlet temperature "
@@ -82,11 +91,10 @@ class Valve(TwoPort):
     yLim = ac.Variable(unit="1", description="limited valve opening")
     Kv = ac.Variable(unit="m3/s", description="standard flow rate")
 
-    def __init__(self, *, LinearCharacteristic=True, **modifications):
-        super().__init__(**modifications)
-        object.__setattr__(self, "LinearCharacteristic",
-                           flag(type(self).__name__, "LinearCharacteristic",
-                                 LinearCharacteristic))
+    def loss_power(self):
+        """The hydraulic power the valve takes and does not feed to the medium,
+        (1 - frictionLoss) V_flow dp >= 0."""
+        return (1 - self.frictionLoss) * self.V_flow * self.dp
 
     def equations(self):
         opening = self.yLim / self.y1
@@ -131,6 +139,11 @@ class OneWayValve(TwoPort):
     s = ac.Variable(start=0.0, unit="1", description="position on the valve "
                                                      "characteristic")
 
+    def loss_power(self):
+        """The hydraulic power the valve takes and does not feed to the medium,
+        (1 - frictionLoss) V_flow dp >= 0 (both have the sign of s)."""
+        return (1 - self.frictionLoss) * self.V_flow * self.dp
+
     def equations(self):
         backward = self.s < 0
         forward_dp = self.unitVolumeFlowRate * self.dpForward / self.V_flowNominal
@@ -149,8 +162,8 @@ class OpenTank(SinglePort):
         H = m h,   der(H) = flowPort.H_flow + Q_flow                    (energy)
         flowPort.p = pAmbient + m g / ATank,   TTank = T
 
-    ``OpenTank(useHeatPort=True)`` has a ``heatPort`` at T that heats the medium
-    (heatPort.Q_flow = Q_flow); without it Q_flow = 0.  The MSL asserts 0 <= level <=
+    ``OpenTank(useHeatPort=True)`` has the conditional ``heatPort`` at T that heats the
+    medium (heatPort.Q_flow = Q_flow); without it Q_flow = 0.  The MSL asserts 0 <= level <=
     hTank (the tank got empty, or full); here the level is not bounded.
     """
 
@@ -158,18 +171,22 @@ class OpenTank(SinglePort):
     hTank = ac.Parameter(1.0, unit="m", description="height of tank")
     pAmbient = ac.Parameter(0.0, unit="Pa", description="ambient pressure")
     g = ac.Parameter(G_N, unit="m/s2", min=0, description="gravitation")
+    useHeatPort = ac.Parameter(False, structural=True,
+                               description="= true, if HeatPort is enabled")
+    heatPort = ac.Conditional(HeatPort(), "useHeatPort")
     m = ac.Variable(unit="kg", description="mass of medium in tank")
     H = ac.Variable(unit="J", description="enthalpy of medium")
     Q_flow = ac.Variable(unit="W", description="heat flow at the optional heatPort")
     level = RealOutput()
     TTank = RealOutput()
 
-    def __init__(self, *, useHeatPort=False, **modifications):
-        super().__init__(**modifications)
-        object.__setattr__(self, "useHeatPort", flag(type(self).__name__, "useHeatPort",
-                                                      useHeatPort))
-        if useHeatPort:
-            self.heatPort = HeatPort()
+    def stored_energy(self):
+        """The medium's enthalpy H, the potential energy of its column m^2 g/(2 rho
+        ATank) and the work pAmbient m/rho done against the ambient pressure: what the
+        port's H_flow + p m_flow/rho (p = pAmbient + m g/ATank) and the heat port bring."""
+        rho = self.medium.rho
+        return (self.H + self.m**2 * self.g / (2 * rho * self.ATank)
+                + self.pAmbient * self.m / rho)
 
     def equations(self):
         port, md = self.flowPort, self.medium
@@ -205,6 +222,11 @@ class Cylinder(SinglePort, PartialElementaryOneFlangeAndSupport):
     f = ac.Variable(unit="N", description="force at piston")
     m = ac.Variable(unit="kg", description="mass of medium")
     H = ac.Variable(unit="J", description="enthalpy of medium")
+
+    def stored_energy(self):
+        """The medium's enthalpy H: the port's hydraulic power p m_flow/rho = p A der(s)
+        is the work of the piston's force, f der(s) = -p A der(s)."""
+        return self.H
 
     def equations(self):
         port, md = self.flowPort, self.medium

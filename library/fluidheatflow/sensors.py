@@ -18,6 +18,8 @@ class AbsoluteSensor(WithMedium):
     flowPort = FlowPort()
     y = RealOutput()
 
+    energy_role = "lossless"  # an ideal sensor takes no power
+
     def equations(self):
         return [ac.Eq(self.flowPort.m_flow, 0), ac.Eq(self.flowPort.H_flow, 0)]
 
@@ -29,6 +31,8 @@ class RelativeSensor(WithMedium):
     flowPort_a = FlowPort()
     flowPort_b = FlowPort()
     y = RealOutput()
+
+    energy_role = "lossless"  # an ideal sensor takes no power
 
     def equations(self):
         a, b = self.flowPort_a, self.flowPort_b
@@ -44,6 +48,9 @@ class FlowSensor(TwoPort):
     tapT = ac.Parameter(1.0, unit="1", min=1, max=1, description="the outlet temperature "
                                                                  "exchanges heat")
     y = RealOutput()
+
+    energy_role = "lossless"  # no mass, no pressure drop: what enters leaves
+    stored_energy = None
 
     def equations(self):
         return [ac.Eq(self.dp, 0), ac.Eq(self.Q_flow, 0)]

@@ -1,31 +1,29 @@
 """Boundary conditions and flow sources of a coolant circuit
 (Modelica.Thermal.FluidHeatFlow.Sources, MSL v4.0.0).
 
-The MSL's optional signal inputs are chosen where a source is made, as other ports that
-exist or not (``useSupport``): ``VolumeFlow(useVolumeFlowInput=True)`` has the input
-``volumeFlow``, else it imposes the parameter ``constantVolumeFlow``.
+The MSL's optional signal inputs are conditional connectors (``ac.Conditional``) under
+the MSL's structural flags: ``VolumeFlow(useVolumeFlowInput=True)`` has the input
+``volumeFlow``, else the parameter ``constantVolumeFlow`` gives the internal value, as
+the MSL writes ``if not useVolumeFlowInput then internalVolumeFlow =
+constantVolumeFlow; end if``.
 """
 import acausal as ac
 from acausal.ports import RealInput, RotationalFlange
 
-from .base_classes import SMALL, SinglePort, TwoPort, flag
+from .base_classes import SMALL, SinglePort, TwoPort
 
 __all__ = ["Ambient", "AbsolutePressure", "VolumeFlow", "PressureIncrease", "IdealPump"]
 
 
-class _Optional:
-    """The value of an optional input: the input when it exists, else the parameter."""
-
-    def _input_or(self, choice: str, port: str, parameter: str):
-        return getattr(self, port) if getattr(self, choice) else getattr(self, parameter)
-
-    def _make_input(self, choice: str, port: str, value) -> None:
-        object.__setattr__(self, choice, flag(type(self).__name__, choice, value))
-        if value:
-            setattr(self, port, RealInput())
+def _input_or_constant(component, flag: str, port: str, internal, constant):
+    """The MSL's ``RealInput port = internal if flag`` and ``if not flag then internal =
+    constant; end if``."""
+    if getattr(component, flag):
+        return ac.Eq(getattr(component, port), internal)
+    return ac.Eq(internal, constant)
 
 
-class Ambient(_Optional, SinglePort):
+class Ambient(SinglePort):
     """Ambient with constant or prescribed pressure and temperature
     (Modelica.Thermal.FluidHeatFlow.Sources.Ambient):
 
@@ -37,21 +35,27 @@ class Ambient(_Optional, SinglePort):
     has its temperature; medium entering it mixes into it (SinglePort).
     """
 
+    usePressureInput = ac.Parameter(False, structural=True,
+                                    description="enable / disable pressure input")
     constantAmbientPressure = ac.Parameter(0.0, unit="Pa", description="ambient pressure")
+    useTemperatureInput = ac.Parameter(False, structural=True,
+                                       description="enable / disable temperature input")
     constantAmbientTemperature = ac.Parameter(293.15, unit="K", min=0,
                                               description="ambient temperature")
+    energy_role = "source"   # an environment outside the model
 
-    def __init__(self, *, usePressureInput=False, useTemperatureInput=False,
-                 **modifications):
-        super().__init__(**modifications)
-        self._make_input("usePressureInput", "ambientPressure", usePressureInput)
-        self._make_input("useTemperatureInput", "ambientTemperature", useTemperatureInput)
+    ambientPressure = ac.Conditional(RealInput(), "usePressureInput")
+    ambientTemperature = ac.Conditional(RealInput(), "useTemperatureInput")
+    pAmbient = ac.Variable(unit="Pa", description="ambient pressure")
+    TAmbient = ac.Variable(unit="K", nominal=300.0, description="ambient temperature")
 
     def equations(self):
-        return [ac.Eq(self.flowPort.p, self._input_or("usePressureInput", "ambientPressure",
-                                                      "constantAmbientPressure")),
-                ac.Eq(self.T, self._input_or("useTemperatureInput", "ambientTemperature",
-                                             "constantAmbientTemperature"))]
+        return [_input_or_constant(self, "usePressureInput", "ambientPressure",
+                                   self.pAmbient, self.constantAmbientPressure),
+                _input_or_constant(self, "useTemperatureInput", "ambientTemperature",
+                                   self.TAmbient, self.constantAmbientTemperature),
+                ac.Eq(self.flowPort.p, self.pAmbient),
+                ac.Eq(self.T, self.TAmbient)]
 
 
 class AbsolutePressure(SinglePort):
@@ -64,6 +68,8 @@ class AbsolutePressure(SinglePort):
     exchange = False
     p = ac.Parameter(0.0, unit="Pa", description="pressure ground")
 
+    energy_role = "source"   # sets the pressure level from outside the model
+
     def equations(self):
         return [ac.Eq(self.flowPort.p, self.p), ac.Eq(self.flowPort.H_flow, 0)]
 
@@ -75,46 +81,51 @@ class _Source(TwoPort):
     tapT = ac.Parameter(1.0, unit="1", min=1, max=1, description="the outlet temperature "
                                                                  "exchanges heat")
 
+    energy_role = "source"   # imposes a flow or a pressure rise from outside the model
+    stored_energy = None     # (its medium's m cv T is part of what it delivers)
+
     def equations(self):
         return [ac.Eq(self.Q_flow, 0)]
 
 
-class VolumeFlow(_Optional, _Source):
+class VolumeFlow(_Source):
     """Imposed volume flow (Modelica.Thermal.FluidHeatFlow.Sources.VolumeFlow):
 
-        V_flow = constantVolumeFlow,  or the input volumeFlow [m3/s]
+        V_flow = internalVolumeFlow = constantVolumeFlow,  or the input volumeFlow [m3/s]
         (``useVolumeFlowInput=True``)
     """
 
+    useVolumeFlowInput = ac.Parameter(False, structural=True,
+                                      description="enable / disable volume flow input")
     constantVolumeFlow = ac.Parameter(1.0, unit="m3/s", description="volume flow rate")
-
-    def __init__(self, *, useVolumeFlowInput=False, **modifications):
-        super().__init__(**modifications)
-        self._make_input("useVolumeFlowInput", "volumeFlow", useVolumeFlowInput)
+    volumeFlow = ac.Conditional(RealInput(), "useVolumeFlowInput")
+    internalVolumeFlow = ac.Variable(unit="m3/s", description="volume flow rate")
 
     def equations(self):
-        return [ac.Eq(self.V_flow, self._input_or("useVolumeFlowInput", "volumeFlow",
-                                                  "constantVolumeFlow"))]
+        return [_input_or_constant(self, "useVolumeFlowInput", "volumeFlow",
+                                   self.internalVolumeFlow, self.constantVolumeFlow),
+                ac.Eq(self.V_flow, self.internalVolumeFlow)]
 
 
-class PressureIncrease(_Optional, _Source):
+class PressureIncrease(_Source):
     """Imposed pressure increase (Modelica.Thermal.FluidHeatFlow.Sources.PressureIncrease):
 
-        dp = -constantPressureIncrease,  or -the input pressureIncrease [Pa]
+        dp = -internalPressureIncrease,   internalPressureIncrease =
+        constantPressureIncrease,  or the input pressureIncrease [Pa]
         (``usePressureIncreaseInput=True``)
     """
 
+    usePressureIncreaseInput = ac.Parameter(False, structural=True, description="enable / "
+                                            "disable pressure increase input")
     constantPressureIncrease = ac.Parameter(1.0, unit="Pa", description="pressure increase")
-
-    def __init__(self, *, usePressureIncreaseInput=False, **modifications):
-        super().__init__(**modifications)
-        self._make_input("usePressureIncreaseInput", "pressureIncrease",
-                         usePressureIncreaseInput)
+    pressureIncrease = ac.Conditional(RealInput(), "usePressureIncreaseInput")
+    internalPressureIncrease = ac.Variable(unit="Pa", description="pressure increase")
 
     def equations(self):
-        return [ac.Eq(self.dp, -self._input_or("usePressureIncreaseInput",
-                                               "pressureIncrease",
-                                               "constantPressureIncrease"))]
+        return [_input_or_constant(self, "usePressureIncreaseInput", "pressureIncrease",
+                                   self.internalPressureIncrease,
+                                   self.constantPressureIncrease),
+                ac.Eq(self.dp, -self.internalPressureIncrease)]
 
 
 class IdealPump(_Source):
@@ -140,6 +151,9 @@ class IdealPump(_Source):
     dp1 = ac.Variable(unit="Pa", description="pressure increase at zero flow and speed w")
     V_flow1 = ac.Variable(unit="m3/s", description="flow at zero pressure increase and "
                                                    "speed w")
+
+    energy_role = None       # converts the shaft's power into hydraulic power, tau w =
+    stored_energy = TwoPort.stored_energy     # -dp V_flow, and stores m cv T
 
     def equations(self):
         x = self.w / self.wNominal

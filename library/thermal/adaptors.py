@@ -3,9 +3,9 @@
 GeneralTemperatureToHeatFlowAdaptor, MSL v4.0.0, after Modelica.Blocks.Interfaces.
 Adaptors.FlowToPotentialAdaptor / PotentialToFlowAdaptor).
 
-The MSL's optional derivative connectors are chosen where the adaptor is made, as
-other ports that exist or not (``useSupport``): ``use_pder=True`` (the MSL's default)
-adds ``pder``, the time derivative of the temperature.  The second derivatives and the
+The MSL's optional derivative connector is a conditional connector (``ac.Conditional``)
+under the MSL's structural flag: ``use_pder=True`` (the MSL's default) gives ``pder``,
+the time derivative of the temperature.  The second derivatives and the
 derivatives of the heat flow (``use_pder2``, ``use_fder``, ``use_fder2``) are final
 false in the MSL's heat-port adaptors and are not here either.
 """
@@ -16,20 +16,13 @@ __all__ = ["GeneralHeatFlowToTemperatureAdaptor", "GeneralTemperatureToHeatFlowA
 
 
 class _Adaptor(ac.Component):
-    """The heat port and the ``use_pder`` choice shared by both adaptors."""
+    """The heat port and the ``use_pder`` flag shared by both adaptors."""
 
+    use_pder = ac.Parameter(True, structural=True, description="use the input/output "
+                                                               "for the derivative of p")
     heatPort = HeatPort()
 
     energy_role = "source"   # the heat port's power comes from outside through signals
-
-    def __init__(self, *, use_pder=True, **modifications):
-        super().__init__(**modifications)
-        if not isinstance(use_pder, bool):
-            raise ac.ModelError(f"{type(self).__name__}: use_pder must be True or False, "
-                                f"not {use_pder!r}")
-        object.__setattr__(self, "use_pder", use_pder)
-        if use_pder:
-            self.pder = self._pder_port()
 
 
 class GeneralHeatFlowToTemperatureAdaptor(_Adaptor):
@@ -42,10 +35,7 @@ class GeneralHeatFlowToTemperatureAdaptor(_Adaptor):
 
     p = RealOutput()
     f = RealInput()
-
-    @staticmethod
-    def _pder_port():
-        return RealOutput()
+    pder = ac.Conditional(RealOutput(), "use_pder")
 
     def equations(self):
         eqs = [ac.Eq(self.p, self.heatPort.T), ac.Eq(self.heatPort.Q_flow, self.f)]
@@ -69,10 +59,7 @@ class GeneralTemperatureToHeatFlowAdaptor(_Adaptor):
 
     p = RealInput()
     f = RealOutput()
-
-    @staticmethod
-    def _pder_port():
-        return RealInput()
+    pder = ac.Conditional(RealInput(), "use_pder")
 
     def equations(self):
         return [ac.Eq(self.heatPort.T, self.p), ac.Eq(self.f, -self.heatPort.Q_flow)]

@@ -36,6 +36,11 @@ class PartialElementaryConditionalHeatPort(ac.Component):
                                                   "heatPort")
     TheatPort = ac.Variable(unit="K", description="temperature of heatPort")
 
+    def loss_power(self):
+        """P_loss = lossPower, dissipated in the component; with the heat port the losses
+        leave through it as heat (the port's power), and nothing is lost inside."""
+        return 0 * self.lossPower if self.useHeatPort else self.lossPower
+
     def equations(self):
         if self.useHeatPort:
             return [ac.Eq(self.heatPort.T, self.TheatPort),
@@ -54,6 +59,11 @@ class PartialElementaryConditionalHeatPortWithoutT(ac.Component):
     heatPort = ac.Conditional(HeatPort(), "useHeatPort")
     lossPower = ac.Variable(unit="W", description="loss power leaving the component via "
                                                   "heatPort")
+
+    def loss_power(self):
+        """P_loss = lossPower, dissipated in the component; with the heat port the losses
+        leave through it as heat (the port's power), and nothing is lost inside."""
+        return 0 * self.lossPower if self.useHeatPort else self.lossPower
 
     def equations(self):
         if self.useHeatPort:

@@ -81,7 +81,7 @@ def test_machine_with_losses_balances_its_power():
     p_shaft = res[f"{m}.tauShaft"] * w
     # d/dt (Jr w^2/2 + La ia^2/2) = Jr w a + v_La ia
     d_stored = 0.15 * w * res[f"{m}.inertiaRotor.a"] + res[f"{m}.la.v"] * res[f"{m}.la.i"]
-    heat = sum(res[f"{m}.thermalAmbient.heatPort{k}.Q_flow"]
+    heat = sum(res[f"{m}.thermalAmbient.Q_flow{k}"]
                for k in ("Armature", "Core", "StrayLoad", "Friction", "Brush"))
     assert np.all(heat[t > 0.3] > 0)
     balance = p_in - p_shaft - d_stored - heat
@@ -157,17 +157,90 @@ def test_records_reach_the_loss_components():
 
 
 @pytest.mark.parametrize("module, name", [
-    ("dcpm_with_losses", "DCPM_withLosses"), ("dcee_start", "DCEE_Start"),
-    ("dcse_start", "DCSE_Start"), ("dc_compare_characteristics", "DC_CompareCharacteristics")])
+    ("msl.dcpm_with_losses", "DCPM_withLosses"), ("msl.dcee_start", "DCEE_Start"),
+    ("msl.dcse_start", "DCSE_Start"), ("msl.dc_compare_characteristics",
+                                       "DC_CompareCharacteristics"),
+    ("msl.dcpm_temperature", "DCPM_Temperature"), ("dcpm_cooling", "DCPM_Cooling")])
 def test_the_energy_audit_of_every_part_of_the_machines_closes(module, name):
     """Every part declares its energy (inductances and the air gap store it, the losses
     leave through their heat ports, the excitation is lossless) and the audit finds the
-    balance and each part consistent."""
+    balance and each part consistent, with the losses in a thermal ambient or, through
+    the machine's thermal port, in heat capacities and a coolant flow."""
     import importlib
     cls = getattr(importlib.import_module(
-        f"acausal.library.electromechanical.examples.msl.{module}"), name)
+        f"acausal.library.electromechanical.examples.{module}"), name)
     model = cls()
     res = _simulate(model, t_end=min(cls.stop_time, 2.0), rtol=1e-9)
     audit = ac.energy_balance(res, model)
     assert audit.ok, audit.violations[:3]
     assert not audit.unclassified
+
+
+def test_dcpm_cooling_against_an_independent_solution():
+    """DCPM_Cooling: the machine (default data, the copper armature's Ra at 80 degC) and
+    its cooling, solved independently over each load pulse:
+
+        La ia' = Va - Ra(Ta) ia - kPhi w,     (Jr + JLoad) w' = kPhi ia + tauLoad(t)
+        Ca Ta' = Ra(Ta) ia^2 - Gac (Ta - Tc),  Cc Tc' = Gac (Ta - Tc) - Q
+        Q = Gcc (Tc - Tin - Q/(2 m_flow cp))   (the pipe's heat port at the coolant's
+                                                mean temperature, tapT = 1/2)
+
+    and the coolant leaves at Tin + Q/(m_flow cp)."""
+    from acausal.library.electromechanical.examples import dcpm_cooling as ex
+    alpha = convertAlpha(alpha20Copper, 353.15)
+    G = ex.G_armature_core
+    mcp = ex.CoolantFlow * 1.0 * 1.0                    # rho = cp = 1
+
+    def Ra(Ta):
+        return 0.05 * (1 + alpha * (Ta - 353.15))
+
+    def rhs(t, x, tau):
+        ia, w, Ta, Tc = x
+        Q = G * (Tc - 293.15) / (1 + G / (2 * mcp))
+        return [(100.0 - Ra(Ta) * ia - K_PHI * w) / 0.0015,
+                (K_PHI * ia + tau) / (0.15 + 0.15),
+                (Ra(Ta) * ia**2 - G * (Ta - Tc)) / ex.Ca,
+                (G * (Ta - Tc) - Q) / ex.Cc]
+
+    t_end = 6.0
+    t = np.linspace(0.0, t_end, 121)
+    x = [0.0, ex.w0, 293.15, 293.15]
+    exact = []
+    for k in range(int(round(t_end / 0.5))):           # pulses: on for half of each second
+        a, b = 0.5 * k, 0.5 * (k + 1)
+        tau = -1.5 * ex.TLoad if k % 2 == 0 else 0.0
+        ts = np.append(t[(t >= a) & (t < b)], b)
+        sol = solve_ivp(rhs, (a, b), x, args=(tau,), method="Radau", t_eval=ts,
+                        rtol=1e-11, atol=1e-10)
+        exact.append(sol.y[:, :-1])
+        x = sol.y[:, -1]
+    exact = np.concatenate(exact, axis=1)
+    res = _simulate(ex.DCPM_Cooling(), t_end=t_end, rtol=1e-9, t_eval=t[:-1])
+    ia, w, Ta, Tc = exact
+    assert np.max(np.abs(res["dcpm.ia"] - ia)) < 1e-6 * np.max(np.abs(ia))
+    assert np.max(np.abs(res["loadInertia.w"] - w)) < 1e-7 * np.max(w)
+    assert np.max(np.abs(res["armature.T"] - Ta)) < 1e-6 * np.ptp(Ta)
+    assert np.max(np.abs(res["core.T"] - Tc)) < 1e-6 * np.ptp(Tc)
+    Q = G * (Tc - 293.15) / (1 + G / (2 * mcp))
+    assert np.max(np.abs(res["cooling.T"] - (293.15 + Q / mcp))) < 1e-6 * np.ptp(Q / mcp)
+
+
+def test_conditional_thermal_port_and_ambient():
+    """useThermalPort: the machine's thermal port exists with it, its thermal ambient
+    without it (the MSL's ``if useThermalPort`` / ``if not useThermalPort``); an
+    ambient's temperature inputs exist with useTemperatureInputs."""
+    cold = machines.DC_PermanentMagnet()
+    assert isinstance(cold.thermalAmbient, machines.ThermalAmbientDCPM)
+    with pytest.raises(ac.AbsentComponent, match="useThermalPort"):
+        cold.thermalPort
+    warm = machines.DC_ElectricalExcited(useThermalPort=True)
+    assert set(warm.thermalPort.members()) == {
+        "heatPortArmature", "heatPortCore", "heatPortStrayLoad", "heatPortFriction",
+        "heatPortBrush", "heatPortExcitation"}
+    with pytest.raises(ac.AbsentComponent, match="useThermalPort"):
+        warm.thermalAmbient
+    with pytest.raises(ac.AbsentComponent, match="useTemperatureInputs"):
+        machines.ThermalAmbientDCSE().T_se
+    assert machines.ThermalAmbientDCSE(useTemperatureInputs=True).T_se is not None
+    with pytest.raises(ac.AbsentComponent, match="useTemperatureInputs"):
+        machines.ThermalAmbientDCSE(useTemperatureInputs=True).constTse

@@ -357,3 +357,83 @@ def test_water_pump_delivers_its_operating_point_and_the_check_valve_holds():
     assert np.allclose(res["volumeFlowSensor.y.signal"][1:], V, rtol=1e-7)
     leak = -1e-6 / 5e5 * rho * 9.80665 * 25.0
     assert res["volumeFlowSensor.y.signal"][0] == pytest.approx(leak, rel=1e-6)
+
+
+# -- energy: the ports carry H_flow + p V_flow ---------------------------------------------
+
+class HeatedLoop(ac.Component):
+    """A pump at constant speed drives water up a pipe that feeds half its friction
+    losses to the medium and takes heat from a heater."""
+
+    ambient1 = fhf.Ambient(medium=fhf.Water(), constantAmbientPressure=1e5)
+    pump = fhf.IdealPump(medium=fhf.Water(), m=0.0, wNominal=100.0, dp0=3e5,
+                         V_flow0=0.2)
+    pipe = fhf.Pipe(medium=fhf.Water(), m=2.0, h_g=5.0, V_flowLaminar=0.01,
+                    dpLaminar=1e3, V_flowNominal=0.2, dpNominal=5e4, frictionLoss=0.5,
+                    useHeatPort=True, T0=TAmb, T0fixed=True)
+    ambient2 = fhf.Ambient(medium=fhf.Water(), constantAmbientPressure=1e5)
+    speed = Speed()
+    w = Constant(k=100.0)
+    heater = PrescribedHeatFlow()
+    heat = Ramp(height=2e4, duration=2.0)
+
+    def equations(self):
+        return [ac.connect(self.ambient1.flowPort, self.pump.flowPort_a),
+                ac.connect(self.pump.flowPort_b, self.pipe.flowPort_a),
+                ac.connect(self.pipe.flowPort_b, self.ambient2.flowPort),
+                ac.connect(self.w.y, self.speed.w_ref),
+                ac.connect(self.speed.flange, self.pump.flange_a),
+                ac.connect(self.heat.y, self.heater.Q_flow),
+                ac.connect(self.heater.port, self.pipe.heatPort)]
+
+
+def test_the_pipe_dissipates_what_it_does_not_feed_to_the_medium():
+    """The audit's books: the pump's shaft power is its hydraulic power dp V_flow; the
+    pipe loses (1 - frictionLoss) of its friction power, lifts the water by h_g (the
+    created power -rho g h_g V_flow) and stores m cv T; the balance closes."""
+    model = HeatedLoop()
+    t = np.linspace(0.0, 3.0, 31)
+    res = _simulate(model, t_end=3.0, rtol=1e-10, atol=1e-8, t_eval=t)
+    audit = ac.energy_balance(res, model)
+    assert audit.ok, audit.summary()
+    assert audit.roles["pump"] == "storage" and audit.roles["pipe"] == "storage+dissipation"
+    V, drop = res["pipe.V_flow"], res["pipe.pressureDrop"]
+    assert np.allclose(audit.dissipated["pipe"], 0.5 * V * drop, rtol=1e-9)
+    assert np.allclose(audit.created["pipe"], -995.6 * 9.80665 * 5.0 * V, rtol=1e-9)
+    shaft = res["pump.flange_a.tau"] * res["pump.w"]
+    assert np.allclose(shaft, -res["pump.dp"] * V, rtol=1e-9)
+    assert np.allclose(audit.stored["pipe"], 2.0 * 4177.0 * res["pipe.T"], rtol=1e-12)
+
+
+@pytest.mark.parametrize("name", ["TwoTanks", "TestCylinder", "PumpAndValve", "TwoMass"])
+def test_the_examples_energy_closes(name):
+    """Tanks store their enthalpy, the potential energy of their columns and the work
+    against the ambient pressure; cylinders their enthalpy, the piston's work crossing
+    the flow port as p V_flow."""
+    from acausal.tests.msl.harness import examples
+    cls = examples()[f"Modelica.Thermal.FluidHeatFlow.Examples.{name}"]
+    model = cls()
+    res = _simulate(model, t_end=min(cls.stop_time, 2.0), rtol=1e-9,
+                    **getattr(cls, "msl_simulate", {}))
+    audit = ac.energy_balance(res, model)
+    assert audit.ok, audit.summary()
+    assert not audit.unclassified
+
+
+def test_conditional_ports_exist_with_their_flags():
+    """The MSL's conditional connectors: a heat port with useHeatPort, an input with
+    use...Input; an absent one names its flag."""
+    assert fhf.Pipe(useHeatPort=True).heatPort is not None
+    assert fhf.HeatedPipe().heatPort is not None
+    for component, port, flag in [(fhf.Pipe(), "heatPort", "useHeatPort"),
+                                  (fhf.OpenTank(), "heatPort", "useHeatPort"),
+                                  (fhf.VolumeFlow(), "volumeFlow", "useVolumeFlowInput"),
+                                  (fhf.PressureIncrease(), "pressureIncrease",
+                                   "usePressureIncreaseInput"),
+                                  (fhf.Ambient(), "ambientPressure", "usePressureInput"),
+                                  (fhf.Ambient(), "ambientTemperature",
+                                   "useTemperatureInput")]:
+        with pytest.raises(ac.AbsentComponent, match=flag):
+            getattr(component, port)
+    with pytest.raises(ac.InvalidValue):
+        fhf.Pipe(useHeatPort=1.0)

@@ -255,3 +255,30 @@ def test_heat_flow_with_temperature_coefficient_and_celsius_boundaries():
     assert np.allclose(res["through.Q_flow.signal"], G * (T - Tw), atol=1e-6)
     assert np.allclose(res["body.der_T"], -a / C * (300.0 - T_inf) * np.exp(-a * t / C),
                        atol=1e-7)
+
+
+def test_controlled_temperature_holds_the_band_and_heats_as_its_ode():
+    """ControlledTemperature: the first heating, C T' = R(T) i^2 - G (T - TAmb) with i =
+    10 V / (R(T) + Ron), reaches the band's top 26 degC when an independent solution
+    does; from then the temperature stays within +-TDif/2 = 1 K of the reference."""
+    from acausal.library.thermal.examples.msl.controlled_temperature import \
+        ControlledTemperature
+    t = np.linspace(0.0, 10.0, 2001)
+    res = ac.simulate(ControlledTemperature(), t_end=10.0, t_eval=t, rtol=1e-9, atol=1e-9)
+
+    def heating(_, T):
+        R = 10.0 * (1 + (T[0] - 293.15) / 255)
+        i = 10.0 / (R + 1e-5)
+        return [R * i**2 - 0.1 * (T[0] - 293.15)]
+
+    top = lambda _, T: T[0] - (273.15 + 26.0)           # noqa: E731
+    top.terminal = True
+    exact = solve_ivp(heating, (0.0, 5.0), [293.15], events=top, rtol=1e-12, atol=1e-12)
+    t_off = exact.t_events[0][0]
+    switched = [float(e) for e in res.events
+                if any(c[0] == "logicalNot.y.signal" and c[2] for c in e.changes)]
+    assert switched[0] == pytest.approx(t_off, rel=1e-6)     # T to ~1e-8 of 300 K
+    reference = 25.0 + 25.0 * np.clip((t - 2.0) / 6.0, 0.0, 1.0)
+    error = res["temperatureSensor.T"] - reference
+    assert np.all(np.abs(error[t > t_off]) <= 1.0 + 1e-6)
+    assert np.min(error[t > t_off]) < -0.99 and np.max(error[t > t_off]) > 0.99

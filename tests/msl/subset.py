@@ -18,6 +18,7 @@ QUICK = {
     "Modelica.Thermal.FluidHeatFlow.Examples.OneMass",
     "Modelica.Electrical.Machines.Examples.DCMachines.DCPM_Start",
     "Modelica.Electrical.Machines.Examples.DCMachines.DCEE_Start",
+    "Modelica.Electrical.Machines.Examples.DCMachines.DCPM_Temperature",
     "Modelica.Electrical.Analog.Examples.CauerLowPassOPV",
     "Modelica.Electrical.Analog.Examples.OpAmps.InvertingAmplifier",
     "Modelica.Electrical.Analog.Examples.NandGate",

@@ -9,28 +9,19 @@ from ...electrical.interfaces import OnePort
 __all__ = ["AirGapDC", "CompoundDCExcitation", "InductorDC"]
 
 
-def _quasi_static(kind, value) -> bool:
-    if not isinstance(value, bool):
-        raise ac.ModelError(f"{kind}: quasiStatic must be True or False, not {value!r}")
-    return value
-
-
 class InductorDC(OnePort):
     """Inductor of a DC machine (BasicMachines.Components.InductorDC):
 
         v = L der(i),   or v = 0 when ``quasiStatic=True`` (no electrical transients)
     """
 
+    quasiStatic = ac.Parameter(False, structural=True,
+                               description="no electrical transients if true")
     L = ac.Parameter(1.0, unit="H", description="inductance")
 
     def stored_energy(self):
         """Magnetic energy L i^2/2 (none when quasi-static)."""
         return 0 * self.i if self.quasiStatic else self.L * self.i**2 / 2
-
-    def __init__(self, *, quasiStatic=False, **modifications):
-        super().__init__(**modifications)
-        object.__setattr__(self, "quasiStatic", _quasi_static(type(self).__name__,
-                                                              quasiStatic))
 
     def equations(self):
         return [ac.Eq(self.v, 0 if self.quasiStatic else self.L * ac.der(self.i))]
@@ -48,6 +39,8 @@ class AirGapDC(ac.Component):
         flange.tau = -tauElectrical,   support.tau = tauElectrical
     """
 
+    quasiStatic = ac.Parameter(False, structural=True,
+                               description="no electrical transients if true")
     turnsRatio = ac.Parameter(1.0, unit="1", description="ratio of armature turns over "
                               "number of turns of the excitation winding")
     Le = ac.Parameter(1.0, unit="H", description="excitation inductance")
@@ -70,11 +63,6 @@ class AirGapDC(ac.Component):
         """Magnetic energy of the excitation Le ie^2/2 (vei ie = its rate; none when
         quasi-static); vai ia = tauElectrical w is converted without loss."""
         return 0 * self.ie if self.quasiStatic else self.Le * self.ie**2 / 2
-
-    def __init__(self, *, quasiStatic=False, **modifications):
-        super().__init__(**modifications)
-        object.__setattr__(self, "quasiStatic", _quasi_static(type(self).__name__,
-                                                              quasiStatic))
 
     def equations(self):
         return [ac.Eq(self.vai, self.pin_ap.v - self.pin_an.v),

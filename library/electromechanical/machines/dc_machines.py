@@ -9,9 +9,12 @@ braked by friction and stray load; the stator (inertiaStator, Js) is fixed, or, 
 ``useSupport=True``, mounted on a ``support`` flange that takes the reaction torque.
 The excitation: a constant current of 1 A in an inductance of 1 H (permanent magnet),
 re -> lesigma -> a CompoundDCExcitation (its shunt side, or its series side) on the air
-gap.  Every loss leaves through a heat port into ``thermalAmbient``, which holds the
-armature at TaOperational, the excitation at TeOperational and the rest at 20 degC (the
-MSL's ``useThermalPort = false``; the machines' thermal port is not here yet).
+gap.  Every loss leaves through a heat port of ``internalThermalPort``, a group of heat
+ports (``machines.interfaces``): without a thermal port (the MSL's default
+``useThermalPort = false``) it is connected to ``thermalAmbient``, which holds the
+armature at TaOperational, the excitation at TeOperational and the rest at 20 degC;
+``useThermalPort=True`` gives the machine its conditional ``thermalPort``, to be
+connected to a thermal network (every heat port of it).
 
 turnsRatio = ViNominal / (wNominal psi_eNominal) scales the air gap so that the machine
 induces ViNominal, the nominal voltage less the resistive and brush drops at IaNominal
@@ -24,10 +27,13 @@ from ...electrical import ConstantCurrent, Ground, HeatingResistor
 from ...rotational import Fixed, Inertia
 from .components import AirGapDC, CompoundDCExcitation, InductorDC
 from .losses import Brush, Core, Friction, StrayLoad, brushVoltageDrop
+from .interfaces import (PartialThermalPortDCMachines, ThermalPortDCEE, ThermalPortDCPM,
+                         ThermalPortDCSE)
 from .records import (BrushParameters, CoreParameters, FrictionParameters,
                       StrayLoadParameters, passed)
-from .thermal import (ThermalAmbientDCEE, ThermalAmbientDCPM, ThermalAmbientDCSE,
-                      convertAlpha, convertResistance)
+from .thermal import (PartialThermalAmbientDCMachines, ThermalAmbientDCEE,
+                      ThermalAmbientDCPM, ThermalAmbientDCSE, convertAlpha,
+                      convertResistance)
 
 __all__ = ["PartialBasicMachine", "PartialBasicDCMachine", "DC_PermanentMagnet",
            "DC_ElectricalExcited", "DC_SeriesExcited"]
@@ -61,6 +67,8 @@ class PartialBasicMachine(ac.Component):
                                           "fixed")
     support = ac.Conditional(RotationalFlange(), "useSupport")
     fixed = ac.Conditional(Fixed(), "useSupport", when=False)
+    useThermalPort = ac.Parameter(False, structural=True, description="enable / disable "
+                                  "(= fixed temperatures) thermal port")
 
     def build(self):
         self.frictionParameters = FrictionParameters()
@@ -124,6 +132,10 @@ class PartialBasicDCMachine(PartialBasicMachine):
     ia = ac.Variable(start=0.0, unit="A", description="armature current")
     pin_ap = PositivePin()
     pin_an = NegativePin()
+    thermalPort = ac.Conditional(PartialThermalPortDCMachines(), "useThermalPort")
+    thermalAmbient = ac.Conditional(PartialThermalAmbientDCMachines(Ta=ac.ref(
+        "TaOperational")), "useThermalPort", when=False)
+    internalThermalPort = PartialThermalPortDCMachines()
 
     def build(self):
         super().build()
@@ -157,7 +169,9 @@ class PartialBasicDCMachine(PartialBasicMachine):
         return [*super().support_side(), self.strayLoad.support, self.airGapDC.support]
 
     def equations(self):
-        port = self.thermalAmbient
+        port = self.internalThermalPort
+        outside = (self.thermalPort if self.useThermalPort
+                   else self.thermalAmbient.thermalPort)
         return [ac.Eq(self.va, self.pin_ap.v - self.pin_an.v),
                 ac.Eq(self.ia, self.pin_ap.i),
                 ac.connect(self.la.p, self.ra.n),
@@ -174,7 +188,8 @@ class PartialBasicDCMachine(PartialBasicMachine):
                 ac.connect(self.brush.heatPort, port.heatPortBrush),
                 ac.connect(self.strayLoad.heatPort, port.heatPortStrayLoad),
                 ac.connect(self.friction.heatPort, port.heatPortFriction),
-                ac.connect(self.ra.heatPort, port.heatPortArmature)]
+                ac.connect(self.ra.heatPort, port.heatPortArmature),
+                ac.connect(port, outside)]
 
 
 class DC_PermanentMagnet(PartialBasicDCMachine):
@@ -196,11 +211,11 @@ class DC_PermanentMagnet(PartialBasicDCMachine):
         description="nominal induced voltage")
     eGround = Ground()
     ie = ConstantCurrent(I=ac.ref("IeNominal"))
-
-    def build(self):
-        super().build()
-        self.thermalAmbient = ThermalAmbientDCPM(Ta=ac.ref("TaOperational"),
-                                                 Tpm=ac.ref("TpmOperational"))
+    thermalPort = ac.Conditional(ThermalPortDCPM(), "useThermalPort")
+    thermalAmbient = ac.Conditional(ThermalAmbientDCPM(Ta=ac.ref("TaOperational"),
+                                                       Tpm=ac.ref("TpmOperational")),
+                                    "useThermalPort", when=False)
+    internalThermalPort = ThermalPortDCPM()
 
     def equations(self):
         return [ac.connect(self.eGround.p, self.ie.p),
@@ -267,11 +282,11 @@ class DC_ElectricalExcited(_ExcitedDCMachine):
         c.Ra, c.TaRef, c.alpha20a, c.TaNominal) * c.IaNominal - c.nominal_drop(), unit="V",
         description="nominal induced voltage")
     groundSE = Ground()
-
-    def build(self):
-        super().build()
-        self.thermalAmbient = ThermalAmbientDCEE(Ta=ac.ref("TaOperational"),
-                                                 Te=ac.ref("TeOperational"))
+    thermalPort = ac.Conditional(ThermalPortDCEE(), "useThermalPort")
+    thermalAmbient = ac.Conditional(ThermalAmbientDCEE(Ta=ac.ref("TaOperational"),
+                                                       Te=ac.ref("TeOperational")),
+                                    "useThermalPort", when=False)
+    internalThermalPort = ThermalPortDCEE()
 
     def equations(self):
         cde = self.compoundDCExcitation
@@ -279,7 +294,7 @@ class DC_ElectricalExcited(_ExcitedDCMachine):
                 ac.connect(self.groundSE.p, cde.pin_sen),
                 ac.connect(self.pin_en, cde.pin_en),
                 ac.connect(cde.pin_ep, self.lesigma.n),
-                ac.connect(self.re.heatPort, self.thermalAmbient.heatPortExcitation)]
+                ac.connect(self.re.heatPort, self.internalThermalPort.heatPortExcitation)]
 
 
 class DC_SeriesExcited(_ExcitedDCMachine):
@@ -305,11 +320,11 @@ class DC_SeriesExcited(_ExcitedDCMachine):
         + convertResistance(c.Re, c.TeRef, c.alpha20e, c.TeNominal)) * c.IaNominal
         - c.nominal_drop(), unit="V", description="nominal induced voltage")
     groundE = Ground()
-
-    def build(self):
-        super().build()
-        self.thermalAmbient = ThermalAmbientDCSE(Ta=ac.ref("TaOperational"),
-                                                 Tse=ac.ref("TeOperational"))
+    thermalPort = ac.Conditional(ThermalPortDCSE(), "useThermalPort")
+    thermalAmbient = ac.Conditional(ThermalAmbientDCSE(Ta=ac.ref("TaOperational"),
+                                                       Tse=ac.ref("TeOperational")),
+                                    "useThermalPort", when=False)
+    internalThermalPort = ThermalPortDCSE()
 
     def equations(self):
         cde = self.compoundDCExcitation
@@ -317,4 +332,5 @@ class DC_SeriesExcited(_ExcitedDCMachine):
                 ac.connect(cde.pin_sen, self.pin_en),
                 ac.connect(cde.pin_sep, self.lesigma.n),
                 ac.connect(cde.pin_en, self.groundE.p),
-                ac.connect(self.re.heatPort, self.thermalAmbient.heatPortSeriesExcitation)]
+                ac.connect(self.re.heatPort,
+                           self.internalThermalPort.heatPortSeriesExcitation)]

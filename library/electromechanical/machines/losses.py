@@ -1,43 +1,20 @@
 """Losses of DC machines (Modelica.Electrical.Machines.Losses, MSL v4.0.0): friction,
 brushes, core and stray load, each with its parameter record and an optional heat port.
 
-A loss component dissipates lossPower.  ``useHeatPort=True`` (what the machines use)
-gives it a ``heatPort`` through which the losses leave, heatPort.Q_flow = -lossPower
-(the MSL's PartialElementaryConditionalHeatPortWithoutT); without it, it takes no heat
-port and its losses leave the model.
+A loss component dissipates lossPower (the MSL's
+PartialElementaryConditionalHeatPortWithoutT): ``useHeatPort=True`` (what the machines
+use) gives it the conditional ``heatPort`` through which the losses leave,
+heatPort.Q_flow = -lossPower; without it the losses leave the model.
 """
 import acausal as ac
-from acausal.ports import HeatPort, RotationalFlange
+from acausal.ports import RotationalFlange
 
 from ...electrical.interfaces import OnePort
+from ...thermal.conditional import PartialElementaryConditionalHeatPortWithoutT
 from .records import (BrushParameters, CoreParameters, FrictionParameters,
                       StrayLoadParameters)
 
 __all__ = ["FlangeSupport", "Friction", "Brush", "Core", "StrayLoad", "brushVoltageDrop"]
-
-
-class _LossHeatPort(ac.Component):
-    """lossPower, and the heat port it leaves through with useHeatPort=True."""
-
-    lossPower = ac.Variable(unit="W", description="loss power leaving the component")
-
-    def __init__(self, *, useHeatPort=False, **modifications):
-        super().__init__(**modifications)
-        if not isinstance(useHeatPort, bool):
-            raise ac.ModelError(f"{type(self).__name__}: useHeatPort must be True or "
-                                f"False, not {useHeatPort!r}")
-        object.__setattr__(self, "useHeatPort", useHeatPort)
-        if useHeatPort:
-            self.heatPort = HeatPort()
-
-    def loss_power(self):
-        """P_loss = lossPower (the MSL's), unless it leaves through the heat port."""
-        return 0 * self.lossPower if self.useHeatPort else self.lossPower
-
-    def equations(self):
-        if self.useHeatPort:
-            return [ac.Eq(self.heatPort.Q_flow, -self.lossPower)]
-        return []
 
 
 class FlangeSupport(ac.Component):
@@ -60,7 +37,7 @@ class FlangeSupport(ac.Component):
                 ac.Eq(self.tau, self.support.tau)]
 
 
-class Friction(_LossHeatPort, FlangeSupport):
+class Friction(FlangeSupport, PartialElementaryConditionalHeatPortWithoutT):
     """Speed dependent friction losses (Modelica.Electrical.Machines.Losses.Friction):
 
         tau = -tauRef sign(w) (|w|/wRef)^power_w     (|w| > wLinear)
@@ -90,7 +67,7 @@ def brushVoltageDrop(brushParameters, i):
     return ac.max(-V, ac.min(V, V * i / ILinear))
 
 
-class Brush(_LossHeatPort, OnePort):
+class Brush(OnePort, PartialElementaryConditionalHeatPortWithoutT):
     """Voltage drop of carbon brushes (Modelica.Electrical.Machines.Losses.DCMachines.
     Brush):
 
@@ -108,7 +85,7 @@ class Brush(_LossHeatPort, OnePort):
                 ac.Eq(self.lossPower, self.v * i)]
 
 
-class Core(_LossHeatPort, OnePort):
+class Core(OnePort, PartialElementaryConditionalHeatPortWithoutT):
     """Core losses, a conductance across the induced voltage
     (Modelica.Electrical.Machines.Losses.DCMachines.Core):
 
@@ -127,7 +104,7 @@ class Core(_LossHeatPort, OnePort):
                 ac.Eq(self.lossPower, self.v * self.i)]
 
 
-class StrayLoad(_LossHeatPort, OnePort, FlangeSupport):
+class StrayLoad(OnePort, FlangeSupport, PartialElementaryConditionalHeatPortWithoutT):
     """Stray load losses, a braking torque that grows with current and speed
     (Modelica.Electrical.Machines.Losses.DCMachines.StrayLoad):
 

@@ -6,9 +6,10 @@ Periodic losses from a table (winding: 100 W for 360 s, then 1000 W for 240 s; c
 core is cooled by forced convection (Gc = 25 W/K) to the environment at 20 degC.  The
 winding losses grow with the winding's temperature, (1 + alpha (T - T_ref)).
 
-MAP-LIB's reference result of this example (v4.0.0) is not in the copy this library is
-checked against, so it is not among the examples under ``examples.msl``; its test
-(``tests/library/test_thermal.py``) solves the same two equations independently.
+No reference is available: MAP-LIB's result of this example is not in the copy this
+library is checked against (for v4.0.0 nor v3.2.3), so it is not among the examples under
+``examples.msl``; its test (``tests/library/test_thermal.py``) solves the same two
+equations independently.
 """
 import acausal as ac
 from acausal.library.blocks import CombiTimeTable, Constant
