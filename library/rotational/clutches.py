@@ -46,7 +46,7 @@ class _PressedFriction(PartialFriction, PartialTwoFlanges):
         self.mu_pos = friction_table(mu_pos, type(self).__name__)
         self.mu0 = table_at_zero(self.mu_pos)
 
-    def free(self):
+    def free_condition(self):
         return self.fn <= 0
 
     def tau0(self):
@@ -125,7 +125,7 @@ class OneWayClutch(Clutch):
 
     backward = False
 
-    def free(self):
+    def free_condition(self):
         return None                       # the freewheel acts whatever fn is
 
     def tau0_max(self):
@@ -196,7 +196,7 @@ class BearingFriction(_ShaftOnHousing, PartialFriction):
         self.tau_pos = friction_table(tau_pos, type(self).__name__, "tau_pos", "tau")
         self.tau_at_rest = table_at_zero(self.tau_pos)
 
-    def free(self):
+    def free_condition(self):
         return None
 
     def tau0(self):

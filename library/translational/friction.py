@@ -26,7 +26,7 @@ class PartialFriction(FrictionModes):
 
     A subclass declares ``v_relfric`` (relative velocity of the rubbing surfaces),
     ``a_relfric`` = der(v_relfric) and ``f`` (friction force, positive against
-    v_relfric > 0), and the methods ``free()`` (a relation, or None), ``f0()``,
+    v_relfric > 0), and the methods ``free_condition()`` (a relation, or None), ``f0()``,
     ``f0_max()`` (the force at v = 0 sliding, the most it holds at rest) and
     ``sliding_force(v)`` (while sliding forwards at v >= 0; backwards it is
     -sliding_force(-v)).
@@ -109,7 +109,7 @@ class Brake(_SlideOnSupport, PartialFriction):
         self.mu_pos = friction_table(mu_pos, type(self).__name__, speed="v_rel")
         self.mu0 = table_at_zero(self.mu_pos)
 
-    def free(self):
+    def free_condition(self):
         return self.fn <= 0
 
     def f0(self):
