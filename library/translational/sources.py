@@ -7,6 +7,7 @@ takes the reaction (support.f = -flange.f), and its position and speed are then
 relative to the support.  Without it the housing is fixed.
 """
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPort
 from acausal.ports import RealInput
 
 from ..blocks import signals
@@ -161,18 +162,18 @@ class SignForce(_PartialForce):
         return [ac.Eq(self.f, -self.f_nominal * regularized_sign(self.v, self.v0, self.reg))]
 
 
-class EddyCurrentForce(_PartialForce):
+class EddyCurrentForce(_PartialForce, PartialElementaryConditionalHeatPort):
     """Translational eddy current brake (MSL Sources.EddyCurrentForce), always braking,
     its speed for the maximum force rising with the temperature of its material; with
     f = flange.f:
 
         f = 2 f_nominal v_n / (1 + v_n^2),
-        v_n = v / (v_nominal (1 + alpha (T - TRef))),
+        v_n = v / (v_nominal (1 + alpha (TheatPort - TRef))),
         alpha = alpha20 / (1 + alpha20 (TRef - 293.15 K))
         lossPower = f v
 
-    The temperature is the parameter ``T`` (the MSL's with useHeatPort = false; the
-    heat port waits for conditional connectors in the language).
+    The temperature TheatPort is that of ``heatPort`` with ``useHeatPort=True`` (the
+    losses leave through it, heatPort.Q_flow = -lossPower), else the parameter ``T``.
     """
 
     f_nominal = ac.Parameter(1.0, unit="N", description="maximum force (always braking)")
@@ -180,9 +181,7 @@ class EddyCurrentForce(_PartialForce):
                              description="nominal speed (of the maximum force) at TRef")
     TRef = ac.Parameter(293.15, unit="K", description="reference temperature")
     alpha20 = ac.Parameter(0.0, unit="1/K", description="temperature coefficient at 20 degC")
-    T = ac.Parameter(293.15, unit="K", description="temperature of the brake")
-    v_normalized = ac.Variable(description="relative speed v / v_nominal(T)")
-    lossPower = ac.Variable(unit="W", description="power dissipated, f v")
+    v_normalized = ac.Variable(description="relative speed v / v_nominal(TheatPort)")
 
     def loss_power(self):
         return self.lossPower
@@ -190,7 +189,8 @@ class EddyCurrentForce(_PartialForce):
     def equations(self):
         alpha = self.alpha20 / (1 + self.alpha20 * (self.TRef - 293.15))
         v_n = self.v_normalized
-        return [ac.Eq(v_n, self.v / (self.v_nominal * (1 + alpha * (self.T - self.TRef)))),
+        return [ac.Eq(v_n, self.v / (self.v_nominal
+                                     * (1 + alpha * (self.TheatPort - self.TRef)))),
                 ac.Eq(self.f, 2 * self.f_nominal * v_n / (1 + v_n * v_n)),
                 ac.Eq(self.lossPower, self.f * self.v)]
 
