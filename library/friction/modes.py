@@ -35,6 +35,10 @@ events like every relation (Modelica's pre() of the mode is the frozen value):
 
     w > 0,   w < 0,   sa > f_max,   sa < f_min
 
+Sliding is entered from rest only past break-away: the sliding relations hold where w
+> 0 (w < 0) and the element slid that way before the event, was free, or its force
+exceeds f_max (f_min), ``pre(mode)`` telling which (the MSL's finite state machine), so
+an element that comes to rest sticks unless the force it must carry exceeds its limit.
 A sliding element whose speed reaches zero leaves its sliding mode at that event:
 neither w > 0 nor w < 0 keeps its rate once the friction force of that side acts (the
 runtime judges a relation at zero by its rate in the mode it leads to,
@@ -190,11 +194,18 @@ class FrictionModes(ac.Component):
         """The relations that decide the mode (module docstring), by name."""
         w, sa = self.relfric()[0], self.sa
         f_max, f_min = self.break_away()
-        rel = {"forward": w > 0, "start forward": sa > f_max}
+        # sliding is entered from rest only past break-away (or from free or initially):
+        # an element that comes to rest sticks unless the force exceeds f_max
+        was = ac.pre(self.mode)
+        rel = {"forward": (w > 0) & (sp.Eq(was, self.Forward) | sp.Eq(was, self.Free)
+                                     | (sa > f_max)),
+               "start forward": sa > f_max}
         if self.free_condition() is not None:
             rel["free"] = self.free_condition()
         if self.backward:
-            rel.update({"backward": w < 0, "start backward": sa < f_min})
+            rel.update({"backward": (w < 0) & (sp.Eq(was, self.Backward)
+                                               | sp.Eq(was, self.Free) | (sa < f_min)),
+                        "start backward": sa < f_min})
         return rel
 
     def mode_equations(self) -> dict:
