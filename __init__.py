@@ -38,6 +38,7 @@ _EXPORTS = {
     ".sweeps": ("sweep", "ensemble"),
     ".functions": ("sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan",
                    "atan2", "sinh", "cosh", "tanh", "abs", "min", "max", "pi"),
+    ".components.userfunctions": ("function", "Function"),
 }
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
@@ -53,7 +54,8 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "SteadyStateError", "OperatingPointError", "ModeWarning", "TransferFunctionWarning",
            "energy_balance", "is_passive", "estimate", "BackendError", "export_fmu",
            "load_result", "animate", "sweep", "ensemble", "sqrt", "exp", "log", "log10", "sin", "cos",
-           "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi"]
+           "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi", "function",
+           "Function"]
 # ac.abs, ac.min and ac.max exist too, but not in __all__: `import *` must not shadow builtins
 
 

@@ -29,7 +29,9 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     from .backends.codegen import extract_relations, generate
     from .index.numeric import CoefficientValues
     from .frontend.sampled import when_rows as clause_rows
+    from ..components.userfunctions import inline_functions
     syms = system.symbols
+    _inline_after_index_reduction(system, reduction)
     if reduction.dynamic:
         caus = full_form(reduction, len(syms), len(system.equations))
     else:
@@ -59,6 +61,8 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     delay_rows = [d.argument for d in delays]
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
     everything = [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows
+    # user-defined functions are inlined once index reduction has differentiated them
+    everything = [inline_functions(e) for e in everything]
     uses_initial = bool(getattr(flat, "uses_initial", False))
     # m: relation values, floor values, then held(y) and pre(y) of the discrete
     # variables, then initial() if the model reads it
@@ -315,6 +319,18 @@ def _adjacency(rows, cols, n_rows) -> list:
     for r, c in zip(rows.tolist(), cols.tolist()):
         adj[r].append(c)
     return [sorted(set(a)) for a in adj]
+
+
+def _inline_after_index_reduction(system, reduction) -> None:
+    """User-defined functions replaced by their bodies once index reduction has
+    differentiated them (Modelica's InlineAfterIndexReduction): an equation's incidence
+    then holds the inputs the body reads, so the BLT orders it after them."""
+    from ..components.userfunctions import has_calls, inline_functions
+    s = reduction.structure
+    for e, eq in enumerate(system.equations):
+        if has_calls(eq.residual):
+            eq.residual = inline_functions(eq.residual)
+            s.graph[e], s.coeff[e] = system.incidence(eq.residual)
 
 
 def solve_linear(residual, x):
