@@ -12,11 +12,12 @@ from acausal.ports import RealInput
 
 from ..blocks import signals
 from ..friction.regularization import check_regularization, regularized_sign
+from ..rotational.move import position
 from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
 __all__ = ["ConstantForce", "ForceStep", "Force", "Force2", "LinearSpeedDependentForce",
            "QuadraticSpeedDependentForce", "SignForce", "EddyCurrentForce", "ConstantSpeed",
-           "Speed", "Accelerate", "Position"]
+           "Speed", "Accelerate", "Position", "Move"]
 
 
 class ConstantForce(PartialElementaryOneFlangeAndSupport):
@@ -255,3 +256,29 @@ class Position(PartialElementaryOneFlangeAndSupport):
 
     def equations(self):
         return [ac.Eq(self.flange.s - self.s_support(), self.s_ref)]
+
+
+class Move(PartialElementaryOneFlangeAndSupport):
+    """Forced movement of a flange according to a position, velocity and acceleration
+    signal (Modelica.Mechanics.Translational.Sources.Move):
+
+        s = flange.s - s_support,   s = position(u, time)
+        d/dt position = u[1],   d2/dt2 position = u[2]
+
+    ``u``: three inputs, u[0] the position, u[1] the velocity, u[2] the acceleration of
+    the flange relative to the support (the MSL's u[1], u[2], u[3]), which must be
+    consistent; the function and its derivative annotation are the rotational Move's
+    (:mod:`acausal.library.rotational.move`).
+    """
+
+    s = ac.Variable(unit="m", description="distance between flange and support")
+
+    energy_role = "source"  # drives the flange from outside the model
+
+    def build(self):
+        self.u = [RealInput() for _ in range(3)]
+
+    def equations(self):
+        u = [port.signal for port in self.u]
+        return [ac.Eq(self.s, self.flange.s - self.s_support()),
+                ac.Eq(self.s, position(u, ac.time))]

@@ -119,3 +119,27 @@ def test_a_changed_body_is_another_function_for_the_compile_cache():
     first = ac.function(lambda x: 2 * x, name="f")
     second = ac.function(lambda x: 3 * x, name="f")
     assert first.digest != second.digest
+
+
+def test_translational_move_reads_velocity_and_acceleration_from_its_inputs():
+    from acausal.library import translational as tr
+
+    class Moved(ac.Component):
+        mass = tr.Mass(m=2.0)
+        move = tr.Move()
+        position = Sine(amplitude=1.0, f=1 / (2 * np.pi))
+        velocity = Sine(amplitude=2.0, f=1 / (2 * np.pi), phase=np.pi / 2)
+        acceleration = Constant(k=0.5)
+
+        def equations(self):
+            return [ac.connect(self.move.flange, self.mass.flange_a),
+                    ac.connect(self.position.y, self.move.u[0]),
+                    ac.connect(self.velocity.y, self.move.u[1]),
+                    ac.connect(self.acceleration.y, self.move.u[2])]
+
+    t = np.linspace(0.0, 1.0, 11)
+    res = ac.simulate(Moved(), t_end=1.0, rtol=1e-8, t_eval=t)
+    assert res.success
+    np.testing.assert_allclose(res["mass.s"], np.sin(t), atol=1e-12)
+    np.testing.assert_allclose(res["mass.v"], 2 * np.cos(t), atol=1e-12)
+    np.testing.assert_allclose(res["move.flange.f"], -2.0 * 0.5, atol=1e-10)
