@@ -180,3 +180,52 @@ def test_rotational_heat_losses_balance_the_work_of_the_source():
     springs += np.where(np.abs(backlash) > 5e-4, 0.5 * 1e5 * (np.abs(backlash) - 5e-4)**2, 0)
     balance = res["work"] - kinetic - springs - res["heat"]
     assert np.max(np.abs(balance)) <= 1e-5 * np.max(np.abs(res["work"]))
+
+
+# -- the MultiBody force elements ------------------------------------------------------
+
+def _hanging(element):
+    """A 2 kg body on a horizontal Prismatic (no gravity along it), pulled back by
+    ``element`` from the World, its heat port on a heat capacitor."""
+    from acausal.library import multibody3d as mb
+
+    class Hanging(ac.Component):
+        world = mb.World(g=9.81)
+        guide = mb.Prismatic(n_1=1.0, n_2=0.0, s={"start": 0.8, "fixed": True},
+                             v={"start": 1.5, "fixed": True})
+        body = mb.Body(m=2.0)
+        force = element
+        capacitor = HeatCapacitor(C=C, T={"start": T0, "fixed": True})
+
+        def equations(self):
+            return [ac.connect(self.world.frame_b, self.guide.frame_a, self.force.frame_a),
+                    ac.connect(self.guide.frame_b, self.body.frame_a, self.force.frame_b),
+                    ac.connect(self.force.heatPort, self.capacitor.port)]
+    return Hanging()
+
+
+@pytest.mark.parametrize("kind", ["Damper", "SpringDamperParallel", "SpringDamperSeries"])
+def test_multibody_force_elements_send_their_losses_to_the_heat_port(kind):
+    """m v^2/2 + the spring's energy + C (T - T0) is constant; for the damper alone the
+    motion is v = v0 exp(-d t / m)."""
+    from acausal.library import multibody3d as mb
+    element = {"Damper": lambda: mb.Damper(d=3.0, useHeatPort=True),
+               "SpringDamperParallel": lambda: mb.SpringDamperParallel(
+                   c=50.0, d=3.0, s_unstretched=0.5, useHeatPort=True),
+               "SpringDamperSeries": lambda: mb.SpringDamperSeries(
+                   c=50.0, d=3.0, s_unstretched=0.5, useHeatPort=True,
+                   s_damper={"start": 0.1})}[kind]()
+    t = np.linspace(0.0, 2.0, 201)
+    res = ac.simulate(_hanging(element), t_end=2.0, rtol=1e-9, t_eval=t)
+    assert res.success
+    v, s = res["guide.v"], res["guide.s"]
+    if kind == "Damper":
+        np.testing.assert_allclose(v, 1.5 * np.exp(-3.0 * t / 2.0), rtol=1e-6)
+        stored = 0.0
+    elif kind == "SpringDamperParallel":
+        stored = 50.0 * (s - 0.5)**2 / 2
+    else:
+        stored = 50.0 * (s - 0.5 - res["force.s_damper"])**2 / 2
+    energy = 0.5 * 2.0 * v**2 + stored + C * (res["capacitor.T"] - T0)
+    assert np.max(np.abs(energy - energy[0])) <= 1e-6 * energy[0]
+    assert res["capacitor.T"][-1] - T0 > 0.1 * energy[0] / C
