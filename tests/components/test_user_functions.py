@@ -143,3 +143,17 @@ def test_translational_move_reads_velocity_and_acceleration_from_its_inputs():
     np.testing.assert_allclose(res["mass.s"], np.sin(t), atol=1e-12)
     np.testing.assert_allclose(res["mass.v"], 2 * np.cos(t), atol=1e-12)
     np.testing.assert_allclose(res["move.flange.f"], -2.0 * 0.5, atol=1e-10)
+
+
+def test_der_of_a_call_is_its_derivative_function():
+    """ac.der(square(y)) written in an equation: 2 y der(y), by square_der."""
+    class Model(ac.Component):
+        y = ac.Variable(start=1.0, fixed=True)
+        z = ac.Variable()
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.y), -self.y), ac.Eq(self.z, ac.der(square(self.y)))]
+
+    t = np.linspace(0.0, 1.0, 11)
+    res = ac.simulate(Model(), t_end=1.0, rtol=1e-10, t_eval=t)
+    np.testing.assert_allclose(res["z"], -2 * np.exp(-2 * t), rtol=1e-7)
