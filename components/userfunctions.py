@@ -8,38 +8,45 @@ the derivative function the user gives instead of by its body::
     def position_der2(q_qd_qdd, dummy, dummy_der, dummy_der2):
         return q_qd_qdd[2]
 
-    @ac.function(derivative=position_der2, no_derivative=("q_qd_qdd",))
+    @ac.function(derivative=position_der2, no_derivative=("q_qd_qdd", "dummy_der"))
     def position_der(q_qd_qdd, dummy, dummy_der):
         return q_qd_qdd[1]
 
-    @ac.function(derivative=position_der, no_derivative=("q_qd_qdd",))
+    @ac.function(derivative=position_der, no_derivative="q_qd_qdd")
     def position(q_qd_qdd, dummy):
         return q_qd_qdd[0]
 
     ac.Eq(self.phi, position(self.u, ac.time))     # (Rotational.Sources.Move)
 
 Called with numbers it is its body.  Called with an expression among its arguments it is
-a node of the equation that the passes before code generation treat as a function of
-its arguments (their values, each element of an array argument one argument), and
-whose time derivative is, as the specification has it,
+a node of the equation (a sympy function of its arguments' values, each element of an
+array argument one argument) until index reduction is done, and its time derivative is,
+as the specification has it,
 
     d/dt f(x1, ..., xn) = f_der(x1, ..., xn, der(x1), ..., der(xm))
 
 with one derivative argument, of its argument's shape, for each input not listed in
-``no_derivative`` (in their order; ``order`` of the specification is the derivative's
-own ``derivative=``).  ``no_derivative`` names the inputs whose derivative the result
-does not need: the user asserts that d/dt f does not depend on it (Move's signals u
-carry their own derivatives), so it is never differentiated.  The derivative function
-is linear in its derivative arguments (it is a chain rule), so its value at the unit
-vector of an input is the partial derivative d f / d x_k that the compiler's
-differentiation takes.  A function that index reduction must differentiate but has no
-derivative is refused, naming it.
+``no_derivative``, in their order (:func:`time_derivative`, which the compiler's time
+differentiation calls for an expression holding a call).  The derivative of a derivative
+function is its own ``derivative=`` (the specification's ``order=2`` form: list the
+first derivative's derivative inputs that need no derivative of their own, such as
+``dummy_der`` above, in its ``no_derivative``).  ``no_derivative`` names the inputs
+whose derivative the result does not need: the user asserts that d/dt f does not
+depend on it (Move's signals u carry their own derivatives), so it is never
+differentiated, and the structural passes (index reduction, the signature matrix) do not
+count it as an incidence of the equation (:func:`structural_symbols`).  A partial
+derivative d f / d x_k (a Jacobian entry) is the body's.  A call that index reduction
+must differentiate, whose derivative needs an input's derivative, is refused if the
+function has no derivative, naming it.
 
-After index reduction every node is replaced by its body (``InlineAfterIndexReduction``:
-:func:`inline_functions`), so the Jacobian, the code and the units see the body itself.
-The body must therefore be written with the operations of an equation (``+``, ``*``,
-indexing, ``ac.sin``, ``ac.if_else``, ...), not with Python control flow on its
-arguments' values.
+After index reduction every call is replaced by its body (Modelica's
+``InlineAfterIndexReduction``, :func:`inline_functions`; the assembly then takes the
+equation's incidence again, so the BLT orders it after what the body reads), and the
+Jacobian and the code see the body itself.  The body must therefore be written with the
+operations of an equation (``+``, ``*``, indexing, ``ac.sin``, ``ac.if_else``, ...), not
+with Python control flow on its arguments' values.  The class of a call is named with a
+digest of the body and its derivatives, so the compile cache tells a changed function
+from the old one.
 """
 from __future__ import annotations
 
@@ -48,7 +55,8 @@ import inspect
 
 import numpy as np
 
-__all__ = ["function", "Function", "inline_functions"]
+__all__ = ["function", "Function", "inline_functions", "has_calls", "time_derivative",
+           "structural_symbols", "calls_outside"]
 
 
 def _sympy():
