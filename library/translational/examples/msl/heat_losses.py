@@ -5,6 +5,15 @@ Every dissipating element (dampers, spring-dampers, an elasto-gap, support frict
 brake and a mass with stops and friction) has its heat port enabled; the ports meet
 at a convection element (Gc = 20 W/K) to an ambient at 25 degC, whose heat flow is the
 total loss.
+
+The dampers, spring-dampers and the elasto-gap keep the MSL's default
+``stateSelect=StateSelect.prefer`` (``stateSelect="prefer"`` here, whose default is
+"default"): their relative position and speed are states.  It matters at the hard stop
+of massWithStopAndFriction (t = 0.4285 s), whose ``reinit(v, 0)`` then leaves
+springDamper1's relative speed as it was, so that mass3 stops with the mass, as in the
+reference; with mass3's own speed as a state, the reinit leaves mass3 moving at
+0.68 m/s into the stiff springDamper1 (d = 1000 N.s/m), which compresses it by a further
+0.68 mm, and the chain downstream differs (springDamper1.s_rel by 0.47 x amplitude).
 """
 import acausal as ac
 from acausal.library import translational as tr
@@ -22,21 +31,15 @@ class HeatLosses(ac.Component):
 
     msl_name = "Modelica.Mechanics.Translational.Examples.HeatLosses"
     stop_time = 2.0
-    msl_known_failure = (
-        "the reference holds massWithStopAndFriction stuck (mode 0, v = 2.98e-12 "
-        "constant) from its lock-up at t = 1.0685 s to 1.2 s, but at the lock-up "
-        "(t = 1.06812 s here, at rtol 1e-6 and 1e-9 alike) springDamper1 pushes it "
-        "with 3.110 N > f0_max = 1.001 (F_Coulomb + F_Stribeck) = 3.003 N, so by the "
-        "element's own equations it breaks away forwards (mode 1, creeping at < 1e-4 "
-        "m/s); the chain downstream then differs: springDamper1.s_rel 0.69 x "
-        "amplitude, damper/springDamper 1.5e-3 to 4.9e-3, the mass itself 4e-4")
     tolerance = 1e-6
 
     mass1 = tr.Mass(m=1.0, s={"fixed": True}, L=0.1, v={"fixed": True})
+    # stateSelect="prefer" is the MSL's default (module docstring)
     springDamper = tr.SpringDamper(s_rel={"fixed": True}, v_rel={"fixed": True}, c=100.0,
-                                   d=10.0, useHeatPort=True)
-    damper = tr.Damper(d=10.0, useHeatPort=True)
-    elastoGap = tr.ElastoGap(c=100.0, d=20.0, s_rel0=-0.02, useHeatPort=True)
+                                   d=10.0, useHeatPort=True, stateSelect="prefer")
+    damper = tr.Damper(d=10.0, useHeatPort=True, stateSelect="prefer")
+    elastoGap = tr.ElastoGap(c=100.0, d=20.0, s_rel0=-0.02, useHeatPort=True,
+                             stateSelect="prefer")
     fixed1 = tr.Fixed()
     force = tr.Force()
     sine1 = Sine(f=1.0, amplitude=20.0)
@@ -54,7 +57,7 @@ class HeatLosses(ac.Component):
     TAmbient = FixedTemperature(T=25.0)
     fixed2 = tr.Fixed()
     springDamper1 = tr.SpringDamper(c=10000.0, d=1000.0, useHeatPort=True,
-                                    s_rel={"fixed": True})
+                                    s_rel={"fixed": True}, stateSelect="prefer")
 
     def equations(self):
         solid = self.convection.solid
