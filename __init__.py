@@ -18,12 +18,11 @@ import importlib
 import sys
 
 _EXPORTS = {
-<<<<<<< HEAD
     ".components": ("Across", "Component", "Connection", "Eq", "Equation", "Parameter", "Port",
                     "Signal", "Through", "Variable", "When", "assign", "connect", "delay", "der",
                     "if_else", "no_event", "pre", "ref", "reinit", "replaces", "sample",
                     "sign", "time", "when", "edge", "change", "initial", "integer",
-                    "Conditional", "Init"),
+                    "Conditional", "Init", "PortGroup"),
     ".errors": ("ModelError", "InvalidValue", "InvalidEquation", "DiscreteVariableError",
                 "InvalidConnection", "InvalidHierarchy", "InvalidInheritance", "InvalidIndex",
                 "NotInModel", "AbsentComponent", "MissingInput", "UnitError",
@@ -33,17 +32,6 @@ _EXPORTS = {
                 "InvalidArgument", "OperatingPointError",
                 "SteadyStateError", "ModeConflict", "UnitWarning", "ModeWarning",
                 "TransferFunctionWarning"),
-=======
-    ".components": ("Across", "Component", "Connection", "Eq", "Equation",
-                    "InvalidConnection", "InvalidEquation", "InvalidHierarchy", "InvalidIndex",
-                    "InvalidInheritance", "InvalidValue", "ModelError", "NotInModel",
-                    "Parameter", "Port", "Signal", "Through", "UnitError", "UnitWarning",
-                    "Variable", "When", "assign", "connect", "delay", "der", "if_else",
-                    "no_event", "pre", "ref", "reinit", "replaces", "sample", "sign", "time",
-                    "when", "edge", "change", "initial", "integer", "Conditional",
-                    "AbsentComponent", "MissingInput", "Init", "PortGroup"),
-    ".errors": ("BackendError", "InitializationFailed", "SimulationError"),
->>>>>>> thermal2
     ".result": ("Result",),
     ".runtime": ("CompiledModel",),
     ".simulation": ("compile", "initial_values", "simulate"),
@@ -55,6 +43,7 @@ _EXPORTS = {
     ".sweeps": ("sweep", "ensemble"),
     ".functions": ("sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan",
                    "atan2", "sinh", "cosh", "tanh", "abs", "min", "max", "pi"),
+    ".components.userfunctions": ("function", "Function"),
 }
 
 __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "Signal",
@@ -74,7 +63,8 @@ __all__ = ["Component", "Port", "Parameter", "Variable", "Across", "Through", "S
            "energy_balance", "is_passive", "estimate", "CacheError", "CacheWarning",
            "InvalidArgument", "export_fmu",
            "load_result", "animate", "sweep", "ensemble", "sqrt", "exp", "log", "log10", "sin", "cos",
-           "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi"]
+           "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "pi", "function",
+           "Function"]
 # ac.abs, ac.min and ac.max exist too, but not in __all__: `import *` must not shadow builtins
 
 

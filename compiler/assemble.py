@@ -14,6 +14,7 @@ from ..components.declarations import TYPE_NAMES
 from ..components.logic import INITIAL
 from ..components.symbols import time
 from ..components.units import output_tables
+from ..components.userfunctions import has_calls, inline_functions
 from .algebra.derivative import solve_linear
 from .algebra.symbolic import symbols_of
 from .backends.cbackend import programs
@@ -41,6 +42,7 @@ def assemble(system, reduction, reduced, report, discretes, helds=()):
     BLT order and tearing decide what the solver vector holds, torn blocks checked
     numerically at the compile-time values of their coefficients."""
     syms = system.symbols
+    _inline_after_index_reduction(system, reduction)
     if reduction.dynamic:
         caus = full_form(reduction, len(syms), len(system.equations))
     else:
@@ -81,6 +83,8 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
     delay_rows = [d.argument for d in delays]
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
     everything = [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows
+    # user-defined functions are inlined once index reduction has differentiated them
+    everything = [inline_functions(e) for e in everything]
     uses_initial = bool(getattr(flat, "uses_initial", False))
     # m: relation values, floor values, then held(y) and pre(y) of the discrete
     # variables, then initial() if the model reads it
@@ -328,6 +332,17 @@ def _adjacency(rows, cols, n_rows) -> list:
     for r, c in zip(rows.tolist(), cols.tolist()):
         adj[r].append(c)
     return [sorted(set(a)) for a in adj]
+
+
+def _inline_after_index_reduction(system, reduction) -> None:
+    """User-defined functions replaced by their bodies once index reduction has
+    differentiated them (Modelica's InlineAfterIndexReduction): an equation's incidence
+    then holds the inputs the body reads, so the BLT orders it after them."""
+    s = reduction.structure
+    for e, eq in enumerate(system.equations):
+        if has_calls(eq.residual):
+            eq.residual = inline_functions(eq.residual)
+            s.graph[e], s.coeff[e] = system.incidence(eq.residual)
 
 
 def _dynamic(reduction) -> DynamicSets:

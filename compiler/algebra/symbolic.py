@@ -139,7 +139,9 @@ class SymbolicSystem:
 
     # -- Structure ---------------------------------------------------------------------
     def incidence(self, r: sp.Expr) -> tuple[list, dict]:
-        vars_ = sorted(self.index[s] for s in symbols_of(r) if s in self.index)
+        from ...components.userfunctions import has_calls, structural_symbols
+        found = structural_symbols(r, symbols_of) if has_calls(r) else symbols_of(r)
+        vars_ = sorted(self.index[s] for s in found if s in self.index)
         coeff = {v: coefficient_kind(r, self.symbols[v], self.index, self.parameters)
                  for v in vars_}
         return vars_, coeff
@@ -204,6 +206,13 @@ class SymbolicSystem:
                     "imposed on a mass); a delay cannot be differentiated: delay a "
                     "signal that enters the model through an integrator or a force, or "
                     "use PadeDelay")
+        from ...components.userfunctions import has_calls
+        if has_calls(r):        # a user-defined function: by its derivative function
+            from ...components.userfunctions import time_derivative
+            return time_derivative(r, self._chain_rule)
+        return self._chain_rule(r)
+
+    def _chain_rule(self, r: sp.Expr) -> sp.Expr:
         dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
         for sym in sorted((q for q in symbols_of(r) if q in self.index),
                           key=lambda q: self.index[q]):

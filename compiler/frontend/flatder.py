@@ -89,6 +89,12 @@ def _replace_der(expr, var_syms, derivatives, der_syms):
 
     def total_derivative(arg):
         arg = _replace_der(arg, var_syms, derivatives, der_syms) if arg.has(der) else arg
+        from ...components.userfunctions import has_calls, time_derivative
+        if has_calls(arg):          # a user-defined function: by its derivative function
+            return time_derivative(arg, chain_rule)
+        return chain_rule(arg)
+
+    def chain_rule(arg):
         if arg in var_syms:
             return der_symbol(arg)
         out = sp.diff(arg, time) if arg.has(time) else sp.Integer(0)

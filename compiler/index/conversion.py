@@ -269,7 +269,7 @@ def _lc_step(system, rows, u, res, chains, exact, symbolic, values, value) -> Co
     # the coefficient of each cancelled derivative is sum_i u_i J_ij = 0 exactly, so it
     # is dropped; distributing the products lets equal lower terms cancel as well
     cancelled = [_derivative(system, chains[j][0], d[j] - theta) for j in cols]
-    total = sp.expand_mul(total.xreplace({q: 0 for q in cancelled if q is not None}))
+    total = sp.expand_mul(_drop(total, {q: 0 for q in cancelled if q is not None}))
     eq_l = system.equations[target]
     text = _combination_text(terms)
     _check_nontrivial(system, total, terms, text)
@@ -285,6 +285,15 @@ def _lc_step(system, rows, u, res, chains, exact, symbolic, values, value) -> Co
     return Conversion(target, terms, [q.name for q in cancelled if q is not None], matrix,
                       _parameter_dependent(symbolic, const_rows, values), value, text=text,
                       algebraic=algebraic, residual=total)
+
+
+def _drop(total, zeros: dict):
+    """``total`` with the cancelled derivatives set to 0, except in the arguments of
+    user-defined functions: there a derivative is a value the function's derivative
+    reads (its derivative annotation), not a term of zero coefficient."""
+    from ...components.userfunctions import calls_outside
+    kept, total = calls_outside(total)
+    return total.xreplace(zeros).xreplace(kept)
 
 
 def _derivative(system, x: sp.Symbol, k: int):

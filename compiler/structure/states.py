@@ -132,7 +132,11 @@ def _level_columns(s: Structure, rows: list, allowed) -> list:
             if allowed is None:       # step 1: highest derivatives that are derivatives
                 if s.var_to_diff[v] is UNASSIGNED and s.diff_to_var[v] is not UNASSIGNED:
                     cols.add(v)
-            elif v in allowed:        # step 3: antiderivatives of selected columns
+            elif v in allowed and s.diff_to_var[v] is not UNASSIGNED:
+                # step 3: antiderivatives of selected columns that are derivatives
+                # themselves (a variable that is no derivative enters a differentiated
+                # equation only as a value: a function's input whose derivative the
+                # function's derivative does not need)
                 cols.add(v)
     return sorted(cols)
 

@@ -35,6 +35,10 @@ events like every relation (Modelica's pre() of the mode is the frozen value):
 
     w > 0,   w < 0,   sa > f_max,   sa < f_min
 
+Sliding is entered from rest only past break-away: the sliding relations hold where w
+> 0 (w < 0) and the element slid that way before the event, was free, or its force
+exceeds f_max (f_min), ``pre(mode)`` telling which (the MSL's finite state machine), so
+an element that comes to rest sticks unless the force it must carry exceeds its limit.
 A sliding element whose speed reaches zero leaves its sliding mode at that event:
 neither w > 0 nor w < 0 keeps its rate once the friction force of that side acts (the
 runtime judges a relation at zero by its rate in the mode it leads to,
@@ -149,7 +153,7 @@ class FrictionModes(ac.Component):
     friction force (positive against a positive speed), and through :meth:`per` the
     factor unit_a / unit_force that reads sa as an acceleration.  An element provides
 
-    * ``free()``: the relation under which the surfaces do not touch, or None where
+    * ``free_condition()``: the relation under which the surfaces do not touch, or None where
       there is no free mode;
     * ``break_away()``: (f_max, f_min), the most it holds forwards (> 0) and backwards
       (< 0) at rest;
@@ -162,6 +166,19 @@ class FrictionModes(ac.Component):
 
     backward = True
 
+    # the MSL's configurations of PartialFriction (Integer constants of ``mode``)
+    Free, Forward, Stuck, Backward = 2, 1, 0, -1
+
+    free = ac.Variable(type=bool, description="= true, if frictional element is not active")
+    startForward = ac.Variable(type=bool, description="= true, if w_rel = 0 and start of "
+                                                      "forward sliding")
+    startBackward = ac.Variable(type=bool, description="= true, if w_rel = 0 and start of "
+                                                       "backward sliding")
+    locked = ac.Variable(type=bool, description="= true, if w_rel = 0 and not sliding")
+    mode = ac.Variable(type=int, start=2, description="mode of friction (-1: backward "
+                                                      "sliding, 0: stuck, 1: forward "
+                                                      "sliding, 2: inactive)")
+
     def relfric(self) -> tuple:
         """(speed, acceleration, friction force) of the rubbing surfaces."""
         raise NotImplementedError
@@ -170,18 +187,25 @@ class FrictionModes(ac.Component):
         """unit_a / unit_force: sa read as an acceleration."""
         raise NotImplementedError
 
-    def free(self):
+    def free_condition(self):
         return None
 
     def mode_relations(self) -> dict:
         """The relations that decide the mode (module docstring), by name."""
         w, sa = self.relfric()[0], self.sa
         f_max, f_min = self.break_away()
-        rel = {"forward": w > 0, "start forward": sa > f_max}
-        if self.free() is not None:
-            rel["free"] = self.free()
+        # sliding is entered from rest only past break-away (or from free or initially):
+        # an element that comes to rest sticks unless the force exceeds f_max
+        was = ac.pre(self.mode)
+        rel = {"forward": (w > 0) & (sp.Eq(was, self.Forward) | sp.Eq(was, self.Free)
+                                     | (sa > f_max)),
+               "start forward": sa > f_max}
+        if self.free_condition() is not None:
+            rel["free"] = self.free_condition()
         if self.backward:
-            rel.update({"backward": w < 0, "start backward": sa < f_min})
+            rel.update({"backward": (w < 0) & (sp.Eq(was, self.Backward)
+                                               | sp.Eq(was, self.Free) | (sa < f_min)),
+                        "start backward": sa < f_min})
         return rel
 
     def mode_equations(self) -> dict:
@@ -193,7 +217,7 @@ class FrictionModes(ac.Component):
         per = self.per()
         modes = {"forward": (per * sa, forward),
                  "start forward": (a - per * (sa - f_max), forward), "locked": (a, sa)}
-        if self.free() is not None:
+        if self.free_condition() is not None:
             modes["free"] = (per * sa, sp.Integer(0))
         if self.backward:
             modes.update({"backward": (per * sa, backward),
@@ -224,6 +248,29 @@ class FrictionModes(ac.Component):
     def equations(self):
         return self.mode_system()
 
+    def mode_value(self, values: dict, otherwise):
+        """The value ``values[mode]`` of the current mode (``otherwise`` in the modes
+        not listed): branches on the mode relations in their order, the first that
+        holds deciding, as the equations of the modes do (so the relations are the
+        same, and change at the same events)."""
+        rel = self.mode_relations()
+        out = values.get("locked", otherwise)
+        for mode in reversed([m for m in MODES[:-1] if m in rel]):
+            out = ac.if_else(rel[mode], values.get(mode, otherwise), out)
+        return out
+
+    def mode_variables(self) -> list:
+        """The MSL's Boolean ``free``, ``startForward``, ``startBackward``, ``locked``
+        and Integer ``mode`` (Free, Forward, Stuck, Backward) of the current mode:
+        ``mode`` is Stuck while the element breaks away at rest, as the MSL's
+        (``startForward`` holds then)."""
+        one = {"free": self.free, "start forward": self.startForward,
+               "start backward": self.startBackward, "locked": self.locked}
+        eqs = [ac.Eq(var, self.mode_value({mode: 1}, 0)) for mode, var in one.items()]
+        mode = self.mode_value({"free": self.Free, "forward": self.Forward,
+                                "backward": self.Backward}, self.Stuck)
+        return eqs + [ac.Eq(self.mode, mode)]
+
     def mode_system(self) -> list:
         """The two equations whose branches are the modes: 0 = the acceleration
         equation, f = the friction force (an element that has no modes in some
@@ -234,7 +281,7 @@ class FrictionModes(ac.Component):
         for mode in reversed(order):
             accel = ac.if_else(rel[mode], eqs[mode][0], accel)
             force = ac.if_else(rel[mode], eqs[mode][1], force)
-        return [ac.Eq(0, accel), ac.Eq(self.relfric()[2], force)]
+        return [ac.Eq(0, accel), ac.Eq(self.relfric()[2], force), *self.mode_variables()]
 
     def loss_power(self):
         """f w >= 0: sliding friction opposes the motion, a locked element does not

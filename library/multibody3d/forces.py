@@ -9,6 +9,7 @@ from __future__ import annotations
 from acausal._sympy import sympy as sp
 
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPort
 from acausal.ports import RealInput, TranslationalFlange
 from acausal.ports.spatial import Frame
 
@@ -16,6 +17,7 @@ from .frames import force, orientation, position, resolve1, resolve2, torque
 from .interfaces import PartialTwoFrames, equal, world_of
 
 __all__ = ["LineForceBase", "PartialLineForce", "Spring", "Damper", "SpringDamperParallel",
+           "SpringDamperSeries",
            "LineForceWithMass", "LineForceWithTwoMasses", "WorldForce", "WorldTorque",
            "ForceAndTorque", "RESOLVE_IN_FRAME"]
 
@@ -170,38 +172,78 @@ class Spring(_OneMassOnLine):
                 *self.line_forces(self.f, -self.f)]
 
 
-class Damper(PartialLineForce):
-    """Linear damper along the line (MSL MultiBody.Forces.Damper, without its heat
-    port):  f = d der(s)."""
+class Damper(PartialLineForce, PartialElementaryConditionalHeatPort):
+    """Linear damper along the line (MSL MultiBody.Forces.Damper):
+
+        f = d der(s),   lossPower = f der(s)
+
+    ``useHeatPort=True``: lossPower leaves through ``heatPort``."""
 
     d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
 
     def loss_power(self):
         """f der(s) = d der(s)^2."""
-        return self.f * ac.der(self.s)
+        return self.lossPower
 
     def equations(self):
-        return [ac.Eq(self.f, self.d * ac.der(self.s))]
+        return [ac.Eq(self.f, self.d * ac.der(self.s)),
+                ac.Eq(self.lossPower, self.f * ac.der(self.s))]
 
 
-class SpringDamperParallel(PartialLineForce):
+class SpringDamperParallel(PartialLineForce, PartialElementaryConditionalHeatPort):
     """Spring and damper in parallel (MSL MultiBody.Forces.SpringDamperParallel):
 
-        f = c (s - s_unstretched) + d der(s)
+        f_d = d der(s),   f = c (s - s_unstretched) + f_d,   lossPower = f_d der(s)
+
+    ``useHeatPort=True``: lossPower leaves through ``heatPort``.
     """
 
     c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")
     s_unstretched = ac.Parameter(0.0, unit="m", description="unstretched spring length")
     d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
+    f_d = ac.Variable(unit="N", description="damping force")
 
     def stored_energy(self):
         return self.c * (self.s - self.s_unstretched)**2 / 2
 
     def loss_power(self):
-        return self.d * ac.der(self.s)**2
+        return self.lossPower
 
     def equations(self):
-        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched) + self.d * ac.der(self.s))]
+        return [ac.Eq(self.f_d, self.d * ac.der(self.s)),
+                ac.Eq(self.f, self.c * (self.s - self.s_unstretched) + self.f_d),
+                ac.Eq(self.lossPower, self.f_d * ac.der(self.s))]
+
+
+class SpringDamperSeries(PartialLineForce, PartialElementaryConditionalHeatPort):
+    """Linear spring and linear damper in series along the line (MSL
+    MultiBody.Forces.SpringDamperSeries; frame_a - damper - spring - frame_b):
+
+        f = c (s - s_unstretched - s_damper),   d der(s_damper) = f
+        lossPower = f der(s_damper)
+
+    s_damper, the damper's length, starts from its start value, fixed (the MSL's
+    parameter s_damper_start is ``s_damper={"start": ...}`` here).
+    ``useHeatPort=True``: lossPower leaves through ``heatPort``.
+    """
+
+    c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")
+    s_unstretched = ac.Parameter(0.0, unit="m", description="unstretched spring length")
+    d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
+    s_damper = ac.Variable(start=0.0, fixed=True, unit="m",
+                           description="actual length of damper (frame_a - damper - "
+                                       "spring - frame_b)")
+
+    def stored_energy(self):
+        return self.c * (self.s - self.s_unstretched - self.s_damper)**2 / 2
+
+    def loss_power(self):
+        return self.lossPower
+
+    def equations(self):
+        return [ac.Eq(self.f, self.c * (self.s - self.s_unstretched - self.s_damper)),
+                ac.Eq(self.d * ac.der(self.s_damper), self.f),
+                ac.Eq(self.lossPower, self.f * ac.der(self.s_damper))]
 
 
 class LineForceWithMass(_OneMassOnLine):

@@ -13,7 +13,7 @@ __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativ
            "PartialFriction", "LossyGear", "TorqueToAngleAdaptor", "AngleToTorqueAdaptor",
            "ConstantTorque", "TorqueStep", "Torque", "Torque2", "LinearSpeedDependentTorque",
            "QuadraticSpeedDependentTorque", "SignTorque", "EddyCurrentTorque", "ConstantSpeed",
-           "Speed", "Accelerate", "Position",
+           "Speed", "Accelerate", "Position", "Move",
            "AngleSensor", "SpeedSensor", "AccSensor", "RelAngleSensor", "RelSpeedSensor",
            "RelAccSensor", "TorqueSensor", "PowerSensor", "MultiSensor"]
 
@@ -33,6 +33,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                     "PartialElementaryTwoFlangesAndSupport", "PartialRelativeSensor",
                     "PartialTwoFlanges"),
     ".lossy_gear": ("LossyGear",),
+    ".move": ("Move",),
     ".sensors": ("AccSensor", "AngleSensor", "MultiSensor", "PowerSensor", "RelAccSensor",
                  "RelAngleSensor", "RelSpeedSensor", "SpeedSensor", "TorqueSensor"),
     ".sources": ("Accelerate", "ConstantSpeed", "ConstantTorque", "EddyCurrentTorque",

@@ -2,53 +2,46 @@
 .TorqueToAngleAdaptor and AngleToTorqueAdaptor), which turn a flange into signals (a
 model with signal inputs and outputs, as an FMU has).
 
-Their optional signals (``use_w``, ``use_a``) are constructor arguments, because they
-add a port.  An AngleToTorqueAdaptor that takes the speed and acceleration as inputs
-(use_w or use_a true, the MSL's default) imposes the angle with those inputs as its
-derivatives, which the MSL writes as a function with a ``derivative`` annotation
-(Sources.Move); the language has no such functions yet, so only the angle alone
-(``use_w=False, use_a=False``) can be imposed, and the others are refused.
+Their optional signals are conditional ports (``ac.Conditional``) of the structural
+flags ``use_w`` and ``use_a``.  An AngleToTorqueAdaptor imposes the angle with its speed
+and acceleration inputs as the angle's derivatives, through the functions with a
+derivative annotation of :mod:`acausal.library.rotational.move` (the MSL's
+Sources.Move and Move_w), so index reduction reads the inputs instead of
+differentiating the angle signal.
 """
 from __future__ import annotations
 
 import acausal as ac
 from acausal.ports import RealInput, RealOutput, RotationalFlange
 
-__all__ = ["TorqueToAngleAdaptor", "AngleToTorqueAdaptor", "optional_ports"]
+from .move import position, position_w
 
-
-def optional_ports(comp, ports: dict, flags: dict) -> None:
-    """Create the ports {name: (port class, flags that must all be true)} whose flags
-    (``flags``: {flag: value}, each kept on the instance) are given True."""
-    for flag, use in flags.items():
-        if not isinstance(use, bool):
-            raise ac.ModelError(f"{type(comp).__name__}: {flag} must be True or False, "
-                                f"not {use!r}")
-        object.__setattr__(comp, flag, use)
-    for name, (port, needs) in ports.items():
-        if all(flags[f] for f in needs):
-            setattr(comp, name, port())
+__all__ = ["TorqueToAngleAdaptor", "AngleToTorqueAdaptor"]
 
 
 class TorqueToAngleAdaptor(ac.Component):
     """Signal adaptor of a flange driven by a torque signal, with the angle, speed and
     acceleration as outputs (MSL Rotational.Components.TorqueToAngleAdaptor):
 
-        flange.tau = tau,   phi = flange.phi,   w = der(phi),   a = der(w)
+        flange.tau = tau,   phi = flange.phi,
+        w = der(phi) (use_w),   a = der(w) (use_a; 0 without use_w)
 
     ``use_w`` / ``use_a`` (default True) create the outputs w and a.
     """
 
+    use_w = ac.Parameter(True, structural=True,
+                         description="= true, enable the output connector w (angular "
+                                     "velocity)")
+    use_a = ac.Parameter(True, structural=True,
+                         description="= true, enable the output connector a (angular "
+                                     "acceleration)")
     flange = RotationalFlange()
     phi = RealOutput()
+    w = ac.Conditional(RealOutput(), "use_w")
+    a = ac.Conditional(RealOutput(), "use_a")
     tau = RealInput()
 
     energy_role = "source"  # the torque signal comes from outside the mechanics
-
-    def __init__(self, *, use_w=True, use_a=True, **modifications):
-        super().__init__(**modifications)
-        optional_ports(self, {"w": (RealOutput, ("use_w",)), "a": (RealOutput, ("use_a",))},
-                       {"use_w": use_w, "use_a": use_a})
 
     def equations(self):
         eqs = [ac.Eq(self.phi, self.flange.phi), ac.Eq(self.flange.tau, self.tau)]
@@ -60,34 +53,45 @@ class TorqueToAngleAdaptor(ac.Component):
 
 
 class AngleToTorqueAdaptor(ac.Component):
-    """Signal adaptor of a flange driven by an angle signal, with the torque that needs
-    as the output (MSL Rotational.Components.AngleToTorqueAdaptor), with
-    ``use_w=False, use_a=False``:
+    """Signal adaptor of a flange driven by an angle signal, and its speed and
+    acceleration, with the torque that needs as the output (MSL
+    Rotational.Components.AngleToTorqueAdaptor):
 
-        flange.phi = phi,   tau = -flange.tau
+        flange.phi = position({phi, w, a}, time)   use_a (Sources.Move)
+        flange.phi = position_w({phi, w}, time)    use_w, not use_a (Move_w)
+        flange.phi = phi                           neither
+        tau = -flange.tau
 
-    (tau is the torque acting on what the flange drives).  The MSL's default takes the
-    speed w and acceleration a as inputs as well, as the derivatives of phi (use_w,
-    use_a true); that needs a function with a derivative annotation, which the language
-    does not have yet (module docstring): those are refused.
+    where d/dt position = w and d2/dt2 position = a (the inputs must be consistent: w
+    the derivative of phi, a of w).  tau is the torque acting on what the flange drives.
+    The input w exists with use_w or use_a (``use_a=True`` makes ``use_w`` True), a
+    with use_a.
     """
 
+    use_w = ac.Parameter(True, structural=True,
+                         description="= true, enable the input connector w (angular "
+                                     "velocity)")
+    use_a = ac.Parameter(True, structural=True,
+                         description="= true, enable the input connector a (angular "
+                                     "acceleration)")
     flange = RotationalFlange()
     phi = RealInput()
+    w = ac.Conditional(RealInput(), "use_w")
+    a = ac.Conditional(RealInput(), "use_a")
     tau = RealOutput()
 
     energy_role = "source"  # the motion is imposed from outside the mechanics
 
-    def __init__(self, *, use_w=True, use_a=True, **modifications):
+    def __init__(self, **modifications):
+        if modifications.get("use_a", True):       # w if use_w or use_a
+            modifications["use_w"] = True
         super().__init__(**modifications)
-        if use_w or use_a:
-            raise ac.ModelError(
-                f"{type(self).__name__}(use_w={use_w!r}, use_a={use_a!r}): imposing the "
-                "angle with the speed and acceleration inputs as its derivatives needs a "
-                "function with a derivative annotation (the MSL's Sources.Move), which the "
-                "language does not have yet; AngleToTorqueAdaptor(use_w=False, use_a=False) "
-                "imposes the angle alone")
-        optional_ports(self, {}, {"use_w": use_w, "use_a": use_a})
 
     def equations(self):
-        return [ac.Eq(self.flange.phi, self.phi), ac.Eq(self.tau, -self.flange.tau)]
+        if self.use_a:
+            phi = position([self.phi, self.w, self.a], ac.time)
+        elif self.use_w:
+            phi = position_w([self.phi, self.w], ac.time)
+        else:
+            phi = self.phi
+        return [ac.Eq(self.flange.phi, phi), ac.Eq(self.tau, -self.flange.tau)]

@@ -10,6 +10,7 @@ the rigid gear whose flanks meet in plastic impacts.
 from acausal._sympy import sympy as sp
 
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPortWithoutT
 
 from .interfaces import PartialCompliantWithRelativeStates, PartialTwoFlanges
 
@@ -20,7 +21,8 @@ B_EPS = 1e-10
 """The smallest backlash [rad] (the MSL's bEps): below it the element is a spring-damper."""
 
 
-class _PartialElastoBacklash(PartialCompliantWithRelativeStates):
+class _PartialElastoBacklash(PartialCompliantWithRelativeStates,
+                             PartialElementaryConditionalHeatPortWithoutT):
     """The spring and damper of an elastic backlash, with phi_diff = phi_rel - phi_rel0
     and the backlash between bMin = -b/2 and bMax = b/2:
 
@@ -32,6 +34,7 @@ class _PartialElastoBacklash(PartialCompliantWithRelativeStates):
 
     A subclass gives the flange torque ``tau`` and ``lossPower`` in contact
     (``contact_torque``, ``contact_loss``; each element returns its two sides).
+    ``useHeatPort=True``: lossPower leaves through ``heatPort``.
     """
 
     c = ac.Parameter(1.0e5, unit="N.m/rad", min=0, description="spring constant (c > 0)")

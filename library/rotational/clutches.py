@@ -8,7 +8,9 @@ fn = fn_max f_normalized (f_normalized in [0, 1], an input signal) and rubs with
     |tau| <= peak cgeo mu(0) fn        stuck, tau from the torque balance (a = 0)
 
 ``cgeo`` [m] turns the normal force into a torque (N (r_o + r_i)/2 for N friction
-interfaces between radii r_i and r_o, uniform wear).  The modes, their events and the
+interfaces between radii r_i and r_o, uniform wear).  The power rubbed away,
+lossPower = tau w (0 while a one-way clutch is stuck), leaves through ``heatPort`` with
+``useHeatPort=True`` (heatPort.Q_flow = -lossPower).  The modes, their events and the
 way the stuck torque is found are those of
 :class:`acausal.library.friction.modes.FrictionModes` (through
 :class:`acausal.library.rotational.friction_modes.PartialFriction`).
@@ -16,6 +18,7 @@ way the stuck torque is found are those of
 from acausal._sympy import sympy as sp
 
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPortWithoutT
 from acausal.ports import BooleanInput, RealInput
 
 from .friction_modes import PartialFriction, friction_table, table_at_zero, table_value
@@ -24,7 +27,8 @@ from .interfaces import PartialElementaryTwoFlangesAndSupport, PartialTwoFlanges
 __all__ = ["Clutch", "Brake", "OneWayClutch", "BearingFriction"]
 
 
-class _PressedFriction(PartialFriction, PartialTwoFlanges):
+class _PressedFriction(PartialFriction, PartialTwoFlanges,
+                       PartialElementaryConditionalHeatPortWithoutT):
     """The parameters of a friction element pressed by a normal force, the force
     fn = fn_max f_normalized and the sliding law cgeo fn mu(w).  With
     ``booleanControl=True`` a ``BooleanInput`` ``engaged`` replaces the Real input
@@ -46,7 +50,7 @@ class _PressedFriction(PartialFriction, PartialTwoFlanges):
         self.mu_pos = friction_table(mu_pos, type(self).__name__)
         self.mu0 = table_at_zero(self.mu_pos)
 
-    def free(self):
+    def free_condition(self):
         return self.fn <= 0
 
     def tau0(self):
@@ -83,6 +87,7 @@ class Clutch(_PressedFriction):
         flange_b.tau = tau,  flange_a.tau = -tau
         fn = fn_max f_normalized,   free while fn <= 0
         tau = cgeo fn mu(w_rel) sgn(w_rel) sliding,  |tau| <= peak cgeo mu0 fn stuck
+        lossPower = tau w_rel
 
     ``mu_pos``: rows [w_rel, mu] of the friction coefficient for w_rel >= 0 (one row: a
     constant coefficient), interpolated linearly.
@@ -103,12 +108,17 @@ class Clutch(_PressedFriction):
     def a_relfric(self):
         return self.a_rel
 
+    def rubbing_power(self):
+        """The power the friction turns into heat."""
+        return self.tau * self.w_rel
+
     def equations(self):
         return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
                 ac.Eq(self.w_rel, ac.der(self.phi_rel)),
                 ac.Eq(self.a_rel, ac.der(self.w_rel)),
                 ac.Eq(self.flange_b.tau, self.tau),
-                ac.Eq(self.flange_a.tau, -self.tau)]
+                ac.Eq(self.flange_a.tau, -self.tau),
+                ac.Eq(self.lossPower, self.rubbing_power())]
 
 
 class OneWayClutch(Clutch):
@@ -121,11 +131,21 @@ class OneWayClutch(Clutch):
     backward sliding: start with w_rel >= 0.  Since it is locked even at fn = 0, the
     break-away torque has a floor of 1e-4 cgeo mu0 fn_max (the MSL's eps0), so that
     an open clutch is not at its threshold for ever.
+
+        stuck = not (w_rel > 0)   (locked, or at rest breaking away)
+        lossPower = 0 if stuck else tau w_rel
     """
 
     backward = False
+    stuck = ac.Variable(type=bool, description="w_rel = 0 (locked or start forward sliding)")
 
-    def free(self):
+    def rubbing_power(self):
+        return ac.if_else(self.stuck, 0, self.tau * self.w_rel)
+
+    def equations(self):
+        return [ac.Eq(self.stuck, self.mode_value({"forward": 0}, 1))]
+
+    def free_condition(self):
         return None                       # the freewheel acts whatever fn is
 
     def tau0_max(self):
@@ -139,6 +159,7 @@ class _ShaftOnHousing(PartialElementaryTwoFlangesAndSupport):
 
         phi = flange_a.phi - phi_support = flange_b.phi - phi_support,
         w = der(phi),  a = der(w),  0 = flange_a.tau + flange_b.tau - tau
+        lossPower = tau w        (through ``heatPort`` with useHeatPort)
         (support.tau = -flange_a.tau - flange_b.tau = -tau)
     """
 
@@ -160,7 +181,8 @@ class _ShaftOnHousing(PartialElementaryTwoFlangesAndSupport):
                 ac.Eq(self.flange_b.phi, self.flange_a.phi),
                 ac.Eq(self.w, ac.der(self.phi)),
                 ac.Eq(self.a, ac.der(self.w)),
-                ac.Eq(0, self.flange_a.tau + self.flange_b.tau - self.tau)]
+                ac.Eq(0, self.flange_a.tau + self.flange_b.tau - self.tau),
+                ac.Eq(self.lossPower, self.tau * self.w)]
 
 
 class Brake(_ShaftOnHousing, _PressedFriction):
@@ -175,7 +197,8 @@ class Brake(_ShaftOnHousing, _PressedFriction):
     """
 
 
-class BearingFriction(_ShaftOnHousing, PartialFriction):
+class BearingFriction(_ShaftOnHousing, PartialFriction,
+                      PartialElementaryConditionalHeatPortWithoutT):
     """Bearing friction (Modelica.Mechanics.Rotational.Components.BearingFriction):
     Coulomb friction of a shaft in its housing (the ``support`` with
     ``useSupport=True``) given as a torque table, always engaged:
@@ -196,7 +219,7 @@ class BearingFriction(_ShaftOnHousing, PartialFriction):
         self.tau_pos = friction_table(tau_pos, type(self).__name__, "tau_pos", "tau")
         self.tau_at_rest = table_at_zero(self.tau_pos)
 
-    def free(self):
+    def free_condition(self):
         return None
 
     def tau0(self):

@@ -1,6 +1,7 @@
 """Rotational components (Modelica.Mechanics.Rotational.Components; Egeland & Gravdahl 3.2)."""
 import acausal as ac
 from acausal.ports import RotationalFlange
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPortWithoutT
 
 from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
                          PartialElementaryOneFlange,
@@ -76,12 +77,15 @@ class Spring(PartialCompliant):
         return [ac.Eq(self.tau, self.c * (self.phi_rel - self.phi_rel0))]
 
 
-class Damper(PartialCompliantWithRelativeStates):
+class Damper(PartialCompliantWithRelativeStates,
+             PartialElementaryConditionalHeatPortWithoutT):
     """Linear torsional damper (MSL Rotational.Components.Damper):
 
         tau = d w_rel,   lossPower = d w_rel^2
 
-    ``Damper(stateSelect="prefer")`` makes phi_rel and w_rel preferred states.
+    ``Damper(stateSelect="prefer")`` makes phi_rel and w_rel preferred states;
+    ``useHeatPort=True`` gives the ``heatPort`` through which lossPower leaves
+    (heatPort.Q_flow = -lossPower).
     """
 
     d = ac.Parameter(0.0, unit="N.m.s/rad", min=0, description="damping constant")
@@ -96,13 +100,15 @@ class Damper(PartialCompliantWithRelativeStates):
                 ac.Eq(self.lossPower, self.d * self.w_rel**2)]
 
 
-class SpringDamper(PartialCompliantWithRelativeStates):
+class SpringDamper(PartialCompliantWithRelativeStates,
+                   PartialElementaryConditionalHeatPortWithoutT):
     """Spring and damper in parallel (MSL Rotational.Components.SpringDamper):
 
         tau = c (phi_rel - phi_rel0) + d w_rel,   lossPower = d w_rel^2
 
     With ``stateSelect="prefer"`` phi_rel and w_rel are preferred states: a stiff
     shaft keeps its twist accurate however far its ends have turned.
+    ``useHeatPort=True``: lossPower leaves through ``heatPort``.
     """
 
     c = ac.Parameter(1.0e5, unit="N.m/rad", min=0, description="spring constant")

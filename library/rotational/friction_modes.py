@@ -23,7 +23,7 @@ class PartialFriction(FrictionModes):
     surfaces), ``a_relfric`` = der(w_relfric) and ``tau`` (friction torque, positive
     against w_relfric > 0), and the methods
 
-    * ``free()``: the relation under which the surfaces do not touch (fn <= 0), or
+    * ``free_condition()``: the relation under which the surfaces do not touch (fn <= 0), or
       None where there is no free mode;
     * ``tau0()``, ``tau0_max()``: friction torque at w = 0 sliding, and the most the
       element holds at w = 0 (``peak`` tau0), the same both ways;

@@ -8,6 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPortWithoutT
 
 from ..friction.modes import FrictionModes, check_speed_column, table_at_zero, table_value
 from .friction_modes import PartialFriction
@@ -41,7 +42,8 @@ def loss_table(table, owner: str) -> np.ndarray:
     return data
 
 
-class LossyGear(PartialFriction, PartialElementaryTwoFlangesAndSupport):
+class LossyGear(PartialFriction, PartialElementaryTwoFlangesAndSupport,
+                PartialElementaryConditionalHeatPortWithoutT):
     """Gear with mesh efficiency and bearing friction, stuck or rolling (MSL
     Rotational.Components.LossyGear), the angles taken from its housing:
 
@@ -70,6 +72,7 @@ class LossyGear(PartialFriction, PartialElementaryTwoFlangesAndSupport):
 
     ``lossTable`` is given where the gear is made (a table, as the MSL's parameter
     array); the ideal table [0, 1, 1, 0, 0] (the default) has no losses and no modes.
+    ``useHeatPort=True``: lossPower leaves through ``heatPort``.
     """
 
     ratio = ac.Parameter(1.0, description="transmission ratio flange_a.phi / flange_b.phi")

@@ -8,6 +8,7 @@ housing: ``useSupport=True`` gives it a ``support`` flange that takes the reacti
 then relative to the support.  Without it the housing is fixed.
 """
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPort
 from acausal.ports import RealInput
 
 from ..blocks import signals
@@ -166,17 +167,17 @@ class SignTorque(_PartialTorque):
                 ac.Eq(self.tau, self.tau_nominal * regularized_sign(self.w, self.w0, self.reg))]
 
 
-class EddyCurrentTorque(_PartialTorque):
+class EddyCurrentTorque(_PartialTorque, PartialElementaryConditionalHeatPort):
     """Eddy current brake (MSL Sources.EddyCurrentTorque), always braking, its speed for
     the maximum torque rising with the temperature of its material:
 
         tau = flange.tau = 2 tau_nominal w_n / (1 + w_n^2),
-        w_n = w / (w_nominal (1 + alpha (T - TRef))),
+        w_n = w / (w_nominal (1 + alpha (TheatPort - TRef))),
         alpha = alpha20 / (1 + alpha20 (TRef - 293.15 K))
         lossPower = tau w
 
-    The temperature is the parameter ``T`` (the MSL's with useHeatPort = false; the
-    heat port waits for conditional connectors in the language).
+    The temperature TheatPort is that of ``heatPort`` with ``useHeatPort=True`` (the
+    losses leave through it, heatPort.Q_flow = -lossPower), else the parameter ``T``.
     """
 
     tau_nominal = ac.Parameter(1.0, unit="N.m", description="maximum torque (always braking)")
@@ -184,10 +185,8 @@ class EddyCurrentTorque(_PartialTorque):
                              description="nominal speed (of the maximum torque) at TRef")
     TRef = ac.Parameter(293.15, unit="K", description="reference temperature")
     alpha20 = ac.Parameter(0.0, unit="1/K", description="temperature coefficient at 20 degC")
-    T = ac.Parameter(293.15, unit="K", description="temperature of the brake")
     tau = ac.Variable(unit="N.m", description="braking torque, flange.tau")
-    w_normalized = ac.Variable(description="relative speed w / w_nominal(T)")
-    lossPower = ac.Variable(unit="W", description="power dissipated, tau w")
+    w_normalized = ac.Variable(description="relative speed w / w_nominal(TheatPort)")
 
     def loss_power(self):
         return self.lossPower
@@ -196,7 +195,8 @@ class EddyCurrentTorque(_PartialTorque):
         alpha = self.alpha20 / (1 + self.alpha20 * (self.TRef - 293.15))
         w_n = self.w_normalized
         return [ac.Eq(self.tau, self.flange.tau),
-                ac.Eq(w_n, self.w / (self.w_nominal * (1 + alpha * (self.T - self.TRef)))),
+                ac.Eq(w_n, self.w / (self.w_nominal
+                                     * (1 + alpha * (self.TheatPort - self.TRef)))),
                 ac.Eq(self.tau, 2 * self.tau_nominal * w_n / (1 + w_n * w_n)),
                 ac.Eq(self.lossPower, self.tau * self.w)]
 

@@ -11,7 +11,7 @@ __all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
            "GeneralForceToPositionAdaptor", "GeneralPositionToForceAdaptor",
            "ConstantForce", "ForceStep", "Force", "Force2",
            "LinearSpeedDependentForce", "QuadraticSpeedDependentForce", "SignForce",
-           "EddyCurrentForce", "ConstantSpeed", "Speed", "Accelerate", "Position",
+           "EddyCurrentForce", "ConstantSpeed", "Speed", "Accelerate", "Position", "Move",
            "PositionSensor", "SpeedSensor", "AccSensor", "RelPositionSensor",
            "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor", "MultiSensor"]
 
@@ -28,7 +28,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".sensors": ("AccSensor", "ForceSensor", "MultiSensor", "PositionSensor", "PowerSensor",
                  "RelAccSensor", "RelPositionSensor", "RelSpeedSensor", "SpeedSensor"),
     ".sources": ("Accelerate", "ConstantForce", "ConstantSpeed", "EddyCurrentForce", "Force",
-                 "Force2", "ForceStep", "LinearSpeedDependentForce", "Position",
+                 "Force2", "ForceStep", "LinearSpeedDependentForce", "Move", "Position",
                  "QuadraticSpeedDependentForce", "SignForce", "Speed"),
     ".vehicle": ("RollingResistance", "Vehicle"),
 })

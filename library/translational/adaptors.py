@@ -3,23 +3,31 @@
 Modelica.Blocks.Interfaces.Adaptors), which turn a flange into signals (a model with
 signal inputs and outputs, as an FMU has).
 
-Their optional signals (``use_pder``, ``use_pder2``) are constructor arguments, because
-they add a port.  A GeneralPositionToForceAdaptor that takes the speed (and
-acceleration) as inputs (use_pder true, the MSL's default) imposes the position with
-those inputs as its derivatives, which the MSL writes as a function with a
-``derivative`` annotation (Adaptors.Functions.state1, state2); the language has no such
-functions yet, so only the position alone (``use_pder=False``) can be imposed, and the
-others are refused.  The flow's derivatives (use_fder, use_fder2) are false in both, as
-in the MSL (final).
+Their optional signals are conditional ports (``ac.Conditional``) of the structural
+flags ``use_pder`` and ``use_pder2``.  A GeneralPositionToForceAdaptor imposes the
+position with its speed and acceleration inputs as the position's derivatives, through
+the functions with a derivative annotation of the MSL's Adaptors.Functions.state1 and
+state2 (the same functions as the rotational Move's,
+:mod:`acausal.library.rotational.move`), so index reduction reads the inputs instead of
+differentiating the position signal.  The flow's derivatives (use_fder, use_fder2) are
+false in both, as in the MSL (final).
 """
 from __future__ import annotations
 
 import acausal as ac
 from acausal.ports import RealInput, RealOutput, TranslationalFlange
 
-from ..rotational.adaptors import optional_ports
+from ..rotational.move import position as state2
+from ..rotational.move import position_w as state1
 
 __all__ = ["GeneralForceToPositionAdaptor", "GeneralPositionToForceAdaptor"]
+
+
+def _pder2_needs_pder(modifications: dict) -> dict:
+    """pder2 exists only with pder (the MSL's ``if use_pder and use_pder2``)."""
+    if not modifications.get("use_pder", True):
+        modifications["use_pder2"] = False
+    return modifications
 
 
 class GeneralForceToPositionAdaptor(ac.Component):
@@ -33,17 +41,21 @@ class GeneralForceToPositionAdaptor(ac.Component):
     outputs pder and pder2.
     """
 
+    use_pder = ac.Parameter(True, structural=True,
+                            description="use output for 1st derivative of potential")
+    use_pder2 = ac.Parameter(True, structural=True,
+                             description="use output for 2nd derivative of potential "
+                                         "(only if 1st derivative is used, too)")
     flange = TranslationalFlange()
     p = RealOutput()
+    pder = ac.Conditional(RealOutput(), "use_pder")
+    pder2 = ac.Conditional(RealOutput(), "use_pder2")
     f = RealInput()
 
     energy_role = "source"  # the force signal comes from outside the mechanics
 
-    def __init__(self, *, use_pder=True, use_pder2=True, **modifications):
-        super().__init__(**modifications)
-        optional_ports(self, {"pder": (RealOutput, ("use_pder",)),
-                              "pder2": (RealOutput, ("use_pder", "use_pder2"))},
-                       {"use_pder": use_pder, "use_pder2": use_pder2})
+    def __init__(self, **modifications):
+        super().__init__(**_pder2_needs_pder(modifications))
 
     def equations(self):
         eqs = [ac.Eq(self.p, self.flange.s), ac.Eq(self.flange.f, self.f)]
@@ -55,34 +67,40 @@ class GeneralForceToPositionAdaptor(ac.Component):
 
 
 class GeneralPositionToForceAdaptor(ac.Component):
-    """Signal adaptor of a flange driven by a position signal ``p``, with the force that
-    needs as the output ``f`` (MSL Translational.Components
-    .GeneralPositionToForceAdaptor), with ``use_pder=False``:
+    """Signal adaptor of a flange driven by a position signal ``p``, and its speed
+    ``pder`` and acceleration ``pder2``, with the force that needs as the output ``f``
+    (MSL Translational.Components.GeneralPositionToForceAdaptor):
 
-        flange.s = p,   f = -flange.f
+        flange.s = state2({p, pder, pder2}, time)   use_pder and use_pder2
+        flange.s = state1({p, pder}, time)          use_pder alone
+        flange.s = p                                neither
+        f = -flange.f
 
-    (f is the force acting on what the flange drives).  The MSL's default takes the
-    speed and acceleration as inputs as well, as the derivatives of p; that needs a
-    function with a derivative annotation, which the language does not have yet
-    (module docstring): those are refused.
+    where d/dt state = pder and d2/dt2 state = pder2 (the inputs must be consistent).
+    f is the force acting on what the flange drives.
     """
 
+    use_pder = ac.Parameter(True, structural=True,
+                            description="use input for 1st derivative of potential")
+    use_pder2 = ac.Parameter(True, structural=True,
+                             description="use input for 2nd derivative of potential "
+                                         "(only if 1st derivative is used, too)")
     flange = TranslationalFlange()
     p = RealInput()
+    pder = ac.Conditional(RealInput(), "use_pder")
+    pder2 = ac.Conditional(RealInput(), "use_pder2")
     f = RealOutput()
 
     energy_role = "source"  # the motion is imposed from outside the mechanics
 
-    def __init__(self, *, use_pder=True, use_pder2=True, **modifications):
-        super().__init__(**modifications)
-        if use_pder:
-            raise ac.ModelError(
-                f"{type(self).__name__}(use_pder=True): imposing the position with the "
-                "speed (and acceleration) inputs as its derivatives needs a function with a "
-                "derivative annotation (the MSL's Adaptors.Functions.state1/state2), which "
-                "the language does not have yet; GeneralPositionToForceAdaptor("
-                "use_pder=False) imposes the position alone")
-        optional_ports(self, {}, {"use_pder": use_pder, "use_pder2": use_pder2})
+    def __init__(self, **modifications):
+        super().__init__(**_pder2_needs_pder(modifications))
 
     def equations(self):
-        return [ac.Eq(self.flange.s, self.p), ac.Eq(self.f, -self.flange.f)]
+        if self.use_pder and self.use_pder2:
+            s = state2([self.p, self.pder, self.pder2], ac.time)
+        elif self.use_pder:
+            s = state1([self.p, self.pder], ac.time)
+        else:
+            s = self.p
+        return [ac.Eq(self.flange.s, s), ac.Eq(self.f, -self.flange.f)]

@@ -3,6 +3,7 @@ hard stops)."""
 from acausal._sympy import sympy as sp
 
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPortWithoutT
 
 from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
                          PartialElementaryOneFlange, PartialRigid, PartialTwoFlanges)
@@ -70,12 +71,15 @@ class Spring(PartialCompliant):
         return [ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0))]
 
 
-class Damper(PartialCompliantWithRelativeStates):
+class Damper(PartialCompliantWithRelativeStates,
+             PartialElementaryConditionalHeatPortWithoutT):
     """Linear damper (Egeland & Gravdahl (2.57); MSL Translational.Components.Damper):
 
         f = d v_rel,   lossPower = d v_rel^2
 
-    ``Damper(stateSelect="prefer")`` makes s_rel and v_rel preferred states.
+    ``Damper(stateSelect="prefer")`` makes s_rel and v_rel preferred states;
+    ``useHeatPort=True`` gives the ``heatPort`` through which lossPower leaves
+    (heatPort.Q_flow = -lossPower).
     """
 
     d = ac.Parameter(0.0, unit="N.s/m", min=0, description="damping constant")
@@ -91,10 +95,13 @@ class Damper(PartialCompliantWithRelativeStates):
                 ac.Eq(self.lossPower, self.d * self.v_rel**2)]
 
 
-class SpringDamper(PartialCompliantWithRelativeStates):
+class SpringDamper(PartialCompliantWithRelativeStates,
+                   PartialElementaryConditionalHeatPortWithoutT):
     """Spring and damper in parallel (MSL Translational.Components.SpringDamper):
 
         f = c (s_rel - s_rel0) + d v_rel,   lossPower = d v_rel^2
+
+    ``useHeatPort=True``: lossPower leaves through ``heatPort``.
     """
 
     c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")
@@ -115,7 +122,8 @@ class SpringDamper(PartialCompliantWithRelativeStates):
                 ac.Eq(self.lossPower, self.d * self.v_rel**2)]
 
 
-class ElastoGap(PartialCompliantWithRelativeStates):
+class ElastoGap(PartialCompliantWithRelativeStates,
+                PartialElementaryConditionalHeatPortWithoutT):
     """Spring and damper in parallel that act only when the gap is closed (MSL
     Translational.Components.ElastoGap), contact = s_rel < s_rel0:
 
@@ -127,6 +135,7 @@ class ElastoGap(PartialCompliantWithRelativeStates):
     The damping force is limited by the spring force, so the contact force starts from
     zero, is continuous, and never pulls.  Entering and leaving contact are events; the
     limiting inside the contact is evaluated without events (the MSL's noEvent).
+    ``useHeatPort=True``: lossPower leaves through ``heatPort``.
     """
 
     c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")

@@ -12,6 +12,7 @@ from __future__ import annotations
 from acausal._sympy import sympy as sp
 
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPortWithoutT
 from acausal.ports import RealInput
 
 from ..friction.modes import FrictionModes, friction_table, table_at_zero, table_value
@@ -26,7 +27,7 @@ class PartialFriction(FrictionModes):
 
     A subclass declares ``v_relfric`` (relative velocity of the rubbing surfaces),
     ``a_relfric`` = der(v_relfric) and ``f`` (friction force, positive against
-    v_relfric > 0), and the methods ``free()`` (a relation, or None), ``f0()``,
+    v_relfric > 0), and the methods ``free_condition()`` (a relation, or None), ``f0()``,
     ``f0_max()`` (the force at v = 0 sliding, the most it holds at rest) and
     ``sliding_force(v)`` (while sliding forwards at v >= 0; backwards it is
     -sliding_force(-v)).
@@ -56,12 +57,14 @@ class PartialFriction(FrictionModes):
         return self.sliding_force(self.v_relfric), -self.sliding_force(-self.v_relfric)
 
 
-class _SlideOnSupport(PartialElementaryTwoFlangesAndSupport):
+class _SlideOnSupport(PartialElementaryTwoFlangesAndSupport,
+                      PartialElementaryConditionalHeatPortWithoutT):
     """A rod through the element (flange_a = flange_b) rubbing on the support (fixed
     unless ``useSupport=True``):
 
         s = flange_a.s - s_support = flange_b.s - s_support,   v = der(s),   a = der(v)
         0 = flange_a.f + flange_b.f - f          (support.f = -f)
+        lossPower = f v                          (through ``heatPort`` with useHeatPort)
     """
 
     s = ac.Variable(start=0.0, unit="m", description="position of the flanges to the support")
@@ -82,7 +85,8 @@ class _SlideOnSupport(PartialElementaryTwoFlangesAndSupport):
                 ac.Eq(self.flange_b.s, self.flange_a.s),
                 ac.Eq(self.v, ac.der(self.s)),
                 ac.Eq(self.a, ac.der(self.v)),
-                ac.Eq(0, self.flange_a.f + self.flange_b.f - self.f)]
+                ac.Eq(0, self.flange_a.f + self.flange_b.f - self.f),
+                ac.Eq(self.lossPower, self.f * self.v)]
 
 
 class Brake(_SlideOnSupport, PartialFriction):
@@ -109,7 +113,7 @@ class Brake(_SlideOnSupport, PartialFriction):
         self.mu_pos = friction_table(mu_pos, type(self).__name__, speed="v_rel")
         self.mu0 = table_at_zero(self.mu_pos)
 
-    def free(self):
+    def free_condition(self):
         return self.fn <= 0
 
     def f0(self):
@@ -153,7 +157,8 @@ class SupportFriction(_SlideOnSupport, PartialFriction):
         return table_value(self.f_pos, v / self.unit_v) * self.unit_f
 
 
-class MassWithStopAndFriction(PartialRigid, PartialFriction):
+class MassWithStopAndFriction(PartialRigid, PartialFriction,
+                              PartialElementaryConditionalHeatPortWithoutT):
     """Sliding mass with hard stops and Stribeck friction (MSL
     Translational.Components.MassWithStopAndFriction): a rigid mass of length L, its
     centre at s, between stops that its ends meet at smin and smax:
@@ -161,6 +166,7 @@ class MassWithStopAndFriction(PartialRigid, PartialFriction):
         v = der(s),   a = der(v),   m a = flange_a.f + flange_b.f - f
         f = F_prop v + F_Coulomb + F_Stribeck exp(-fexp |v|)   sliding, sign of v
         |f| <= 1.001 (F_Coulomb + F_Stribeck)                  stuck (a = 0)
+        lossPower = f v                     (through ``heatPort`` with useHeatPort)
 
     Reaching a stop (s = smax - L/2 or smin + L/2) is an event that sets v = 0 (a
     plastic impact) and s on the stop; there the mass is stuck (the stop's force is
@@ -228,6 +234,7 @@ class MassWithStopAndFriction(PartialRigid, PartialFriction):
     def equations(self):
         return [ac.Eq(self.v, ac.der(self.s)),
                 ac.Eq(self.a, ac.der(self.v)),
+                ac.Eq(self.lossPower, self.f * self.v),
                 ac.Eq(self.m * self.a, self.flange_a.f + self.flange_b.f - self.f),
                 ac.when(self.at_max(), ac.reinit(self.s, self.smax - self.L / 2),
                         ac.reinit(self.v, 0)),

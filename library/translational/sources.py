@@ -7,15 +7,17 @@ takes the reaction (support.f = -flange.f), and its position and speed are then
 relative to the support.  Without it the housing is fixed.
 """
 import acausal as ac
+from acausal.library.thermal.conditional import PartialElementaryConditionalHeatPort
 from acausal.ports import RealInput
 
 from ..blocks import signals
 from ..friction.regularization import check_regularization, regularized_sign
+from ..rotational.move import position
 from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
 __all__ = ["ConstantForce", "ForceStep", "Force", "Force2", "LinearSpeedDependentForce",
            "QuadraticSpeedDependentForce", "SignForce", "EddyCurrentForce", "ConstantSpeed",
-           "Speed", "Accelerate", "Position"]
+           "Speed", "Accelerate", "Position", "Move"]
 
 
 class ConstantForce(PartialElementaryOneFlangeAndSupport):
@@ -161,18 +163,18 @@ class SignForce(_PartialForce):
         return [ac.Eq(self.f, -self.f_nominal * regularized_sign(self.v, self.v0, self.reg))]
 
 
-class EddyCurrentForce(_PartialForce):
+class EddyCurrentForce(_PartialForce, PartialElementaryConditionalHeatPort):
     """Translational eddy current brake (MSL Sources.EddyCurrentForce), always braking,
     its speed for the maximum force rising with the temperature of its material; with
     f = flange.f:
 
         f = 2 f_nominal v_n / (1 + v_n^2),
-        v_n = v / (v_nominal (1 + alpha (T - TRef))),
+        v_n = v / (v_nominal (1 + alpha (TheatPort - TRef))),
         alpha = alpha20 / (1 + alpha20 (TRef - 293.15 K))
         lossPower = f v
 
-    The temperature is the parameter ``T`` (the MSL's with useHeatPort = false; the
-    heat port waits for conditional connectors in the language).
+    The temperature TheatPort is that of ``heatPort`` with ``useHeatPort=True`` (the
+    losses leave through it, heatPort.Q_flow = -lossPower), else the parameter ``T``.
     """
 
     f_nominal = ac.Parameter(1.0, unit="N", description="maximum force (always braking)")
@@ -180,9 +182,7 @@ class EddyCurrentForce(_PartialForce):
                              description="nominal speed (of the maximum force) at TRef")
     TRef = ac.Parameter(293.15, unit="K", description="reference temperature")
     alpha20 = ac.Parameter(0.0, unit="1/K", description="temperature coefficient at 20 degC")
-    T = ac.Parameter(293.15, unit="K", description="temperature of the brake")
-    v_normalized = ac.Variable(description="relative speed v / v_nominal(T)")
-    lossPower = ac.Variable(unit="W", description="power dissipated, f v")
+    v_normalized = ac.Variable(description="relative speed v / v_nominal(TheatPort)")
 
     def loss_power(self):
         return self.lossPower
@@ -190,7 +190,8 @@ class EddyCurrentForce(_PartialForce):
     def equations(self):
         alpha = self.alpha20 / (1 + self.alpha20 * (self.TRef - 293.15))
         v_n = self.v_normalized
-        return [ac.Eq(v_n, self.v / (self.v_nominal * (1 + alpha * (self.T - self.TRef)))),
+        return [ac.Eq(v_n, self.v / (self.v_nominal
+                                     * (1 + alpha * (self.TheatPort - self.TRef)))),
                 ac.Eq(self.f, 2 * self.f_nominal * v_n / (1 + v_n * v_n)),
                 ac.Eq(self.lossPower, self.f * self.v)]
 
@@ -255,3 +256,29 @@ class Position(PartialElementaryOneFlangeAndSupport):
 
     def equations(self):
         return [ac.Eq(self.flange.s - self.s_support(), self.s_ref)]
+
+
+class Move(PartialElementaryOneFlangeAndSupport):
+    """Forced movement of a flange according to a position, velocity and acceleration
+    signal (Modelica.Mechanics.Translational.Sources.Move):
+
+        s = flange.s - s_support,   s = position(u, time)
+        d/dt position = u[1],   d2/dt2 position = u[2]
+
+    ``u``: three inputs, u[0] the position, u[1] the velocity, u[2] the acceleration of
+    the flange relative to the support (the MSL's u[1], u[2], u[3]), which must be
+    consistent; the function and its derivative annotation are the rotational Move's
+    (:mod:`acausal.library.rotational.move`).
+    """
+
+    s = ac.Variable(unit="m", description="distance between flange and support")
+
+    energy_role = "source"  # drives the flange from outside the model
+
+    def build(self):
+        self.u = [RealInput() for _ in range(3)]
+
+    def equations(self):
+        u = [port.signal for port in self.u]
+        return [ac.Eq(self.s, self.flange.s - self.s_support()),
+                ac.Eq(self.s, position(u, ac.time))]

@@ -113,9 +113,40 @@ def test_a_direct_inertia_block_integrates_its_drive(block, drive, outputs):
         assert np.max(np.abs(res[f"direct.{name}"] - exact)) < 1e-7 * np.max(np.abs(exact))
 
 
-def test_the_adaptors_that_need_a_derivative_annotation_are_refused():
-    with pytest.raises(ac.ModelError, match="derivative annotation"):
-        AngleToTorqueAdaptor()
-    with pytest.raises(ac.ModelError, match="derivative annotation"):
-        GeneralPositionToForceAdaptor(use_pder2=False)
+def test_the_adaptors_ports_follow_their_flags():
+    """use_w, use_a, use_pder, use_pder2 are conditional ports (ac.Conditional): w
+    exists with use_w or use_a, pder2 only with use_pder."""
     assert set(TorqueToAngleAdaptor(use_a=False).children()) == {"flange", "phi", "tau", "w"}
+    assert set(AngleToTorqueAdaptor(use_w=False, use_a=True).children()) == {
+        "flange", "phi", "tau", "w", "a"}
+    assert set(AngleToTorqueAdaptor(use_w=False, use_a=False).children()) == {
+        "flange", "phi", "tau"}
+    assert set(GeneralPositionToForceAdaptor(use_pder=False).children()) == {
+        "flange", "p", "f"}
+    with pytest.raises(ac.AbsentComponent, match="use_a"):
+        AngleToTorqueAdaptor(use_a=False).a  # noqa: B018
+
+
+class _InverseInertia(ac.Component):
+    """An inertia J driven by an AngleToTorqueAdaptor whose inputs are phi, w, a: the
+    torque it needs is J a, with a the input (its derivative annotation), not the
+    second derivative of the angle input."""
+
+    inverse = rot_util.InverseInertia(J=J_A)
+    phi = Sine(amplitude=1.0, f=1 / (2 * np.pi))
+    w = Sine(amplitude=2.0, f=1 / (2 * np.pi), phase=np.pi / 2)     # not der(phi)
+    a = Constant(k=0.5)                                              # not der(w)
+
+    def equations(self):
+        return [ac.connect(self.phi.y, self.inverse.phi), ac.connect(self.w.y, self.inverse.w),
+                ac.connect(self.a.y, self.inverse.a)]
+
+
+def test_the_inverse_inertia_reads_speed_and_acceleration_from_its_inputs():
+    t = np.linspace(0.0, 2.0, 41)
+    res = ac.simulate(_InverseInertia(), t_end=2.0, rtol=1e-8, t_eval=t)
+    assert res.success
+    np.testing.assert_allclose(res["inverse.inertia.phi"], np.sin(t), atol=1e-12)
+    np.testing.assert_allclose(res["inverse.inertia.w"], 2 * np.cos(t), atol=1e-12)
+    np.testing.assert_allclose(res["inverse.inertia.a"], 0.5, atol=1e-12)
+    np.testing.assert_allclose(res["inverse.tau"], J_A * 0.5, atol=1e-10)

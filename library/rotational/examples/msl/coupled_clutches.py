@@ -4,10 +4,6 @@ with three dynamically coupled clutches.
 A sine torque (10 N.m, 5 Hz) drives J1 (spinning at 10 rad/s); clutch1 couples it to J2,
 clutch2 to J3 and clutch3 to J4.  clutch1 is pressed by a slow cosine (0.2 Hz), clutch2
 from 0.4 s on, clutch3 from 0.9 s on.
-
-Not yet compared with its reference: MAP-LIB compares the clutches' ``mode`` (Integer)
-and ``startForward``/``startBackward`` (Boolean) besides their Real signals, and the
-language has no Integer or Boolean variables yet.
 """
 import acausal as ac
 from acausal.library.blocks import Sine, Step
@@ -22,6 +18,7 @@ class CoupledClutches(ac.Component):
     """J = 1 kg.m2 each; clutches peak 1.1, fn_max 20 N; f = 0.2 Hz, T2 = 0.4 s,
     T3 = 0.9 s."""
 
+    msl_name = "Modelica.Mechanics.Rotational.Examples.CoupledClutches"
     stop_time = 1.5
     tolerance = 1e-6
 

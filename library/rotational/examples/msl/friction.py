@@ -4,10 +4,6 @@ clutch and a brake.
 A sine torque (200 N.m, 50/pi Hz) drives inertia3 until 0.5 s; a clutch (always engaged)
 couples it to inertia2, a spring-damper to inertia1 through a brake that is applied at
 0.5 s.  The clutch and the brake slide, stick and break away.
-
-Not yet compared with its reference: MAP-LIB compares the clutch's and brake's ``mode``
-(Integer) and ``startForward``/``startBackward`` (Boolean) besides their Real signals,
-and the language has no Integer or Boolean variables yet.
 """
 import acausal as ac
 from acausal.library.blocks import Constant, Product, Sine, Step
@@ -20,6 +16,7 @@ class Friction(ac.Component):
     """J = 1, 0.05, 1 kg.m2 at 100, 90, 90 rad/s; clutch fn_max 160 N, brake 1600 N;
     spring c = 160 N.m/rad, d = 1 N.m.s/rad."""
 
+    msl_name = "Modelica.Mechanics.Rotational.Examples.Friction"
     stop_time = 3.0
     tolerance = 1e-6
 

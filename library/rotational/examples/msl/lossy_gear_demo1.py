@@ -5,9 +5,6 @@ A sine torque (10 N.m, 1 Hz) drives Inertia1 against a load torque ramped from -
 -5 N.m on Inertia2, through a lossy gear (ratio 2, mesh efficiency 0.5 both ways, no
 bearing friction).  When neither side can drive the other through the losses, the
 gear locks.
-
-Not yet compared with its reference: MAP-LIB compares the gear's ``mode`` (an Integer)
-besides its Real signals, and the language has no Integer variables yet.
 """
 import acausal as ac
 from acausal.library.blocks import Ramp, Sine
@@ -19,7 +16,14 @@ __all__ = ["LossyGearDemo1"]
 class LossyGearDemo1(ac.Component):
     """J1 = 1, J2 = 1.5 kg.m2 (at rest); ratio 2, lossTable [0, 0.5, 0.5, 0, 0]."""
 
+    msl_name = "Modelica.Mechanics.Rotational.Examples.LossyGearDemo1"
     stop_time = 0.5
+    msl_known_failure = (
+        "defect (state selection): the states chosen are gear.phi_a/gear.w_a (declared "
+        "first, nominal 1), where the reference keeps Inertia2.phi/w (fixed starts); "
+        "Inertia2.phi, of amplitude 1.3e-3 rad, is then held to rtol 1e-6 of the "
+        "gear's angle only: 1.67e-3 x amplitude (Inertia2.w 3.8e-5, gear.mode exact); "
+        "with Inertia2 as states it passes at 6.5e-5")
     tolerance = 1e-6
 
     PowerLoss = ac.Variable(unit="W", description="power lost in the gear")

@@ -4,9 +4,6 @@ driving side is not obvious (it made the earlier LossyGear fail).
 Two small inertias (1 g.m2) spinning at 10 rad/s on either side of a lossy gear
 (ratio 1, efficiency 0.25 both ways, bearing friction 0.625 and 2.5 N.m) run down; at
 0.5 s a torque of 1 N.m acts on the output side.
-
-Not yet compared with its reference: MAP-LIB compares the gear's ``mode`` (an Integer)
-besides its Real signals, and the language has no Integer variables yet.
 """
 import acausal as ac
 from acausal.library.blocks import Step
@@ -18,6 +15,7 @@ __all__ = ["LossyGearDemo3"]
 class LossyGearDemo3(ac.Component):
     """J = 0.001 kg.m2 each at 10 rad/s; ratio 1, lossTable [0, 0.25, 0.25, 0.625, 2.5]."""
 
+    msl_name = "Modelica.Mechanics.Rotational.Examples.LossyGearDemo3"
     stop_time = 1.0
     tolerance = 1e-6
 

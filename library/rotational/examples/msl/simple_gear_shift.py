@@ -5,10 +5,6 @@ The engine drives the sun of a planetary gear whose carrier drives the load (a f
 torque quadratic in speed).  First the brake holds the ring: a reduction; from 2 s a
 ramp closes the clutch between sun and ring and opens the brake (f = 1 - clutch), so
 the planetary turns as a block: direct drive.
-
-Not yet compared with its reference: MAP-LIB compares the clutch's and brake's ``mode``
-(Integer) and ``startForward``/``startBackward`` (Boolean) besides their Real signals,
-and the language has no Integer or Boolean variables yet.
 """
 import acausal as ac
 from acausal.library.blocks import Constant, Feedback, Ramp
@@ -22,6 +18,7 @@ class SimpleGearShift(ac.Component):
     """Engine 1 kg.m2 with a 20 N.m step at 0.5 s; planetary ratio 75/50; load
     10 kg.m2, -20 N.m at 100 rpm; clutch and brake cgeo 2 m, fn_max 100 N."""
 
+    msl_name = "Modelica.Mechanics.Rotational.Examples.SimpleGearShift"
     stop_time = 5.0
     tolerance = 1e-6
 

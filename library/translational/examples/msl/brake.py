@@ -3,10 +3,6 @@
 Two masses at 1 m/s are braked from 0.1 s on (f_normalized = 2, so the normal force is
 twice fn_max): one by a brake whose housing is fixed implicitly, the other by a brake
 on a support flange fixed explicitly.  Both stop in the same way.
-
-Not yet compared with its reference: MAP-LIB compares the brakes' ``mode`` (Integer) and
-``startForward``/``startBackward`` (Boolean) besides their Real signals, and the
-language has no Integer or Boolean variables yet.
 """
 import acausal as ac
 from acausal.library import translational as tr
@@ -18,6 +14,7 @@ __all__ = ["Brake"]
 class Brake(ac.Component):
     """m = 1 kg at 1 m/s; fn_max = 1 N, mu = 0.5; the step of height 2 at 0.1 s."""
 
+    msl_name = "Modelica.Mechanics.Translational.Examples.Brake"
     stop_time = 2.0
     tolerance = 1e-6
 

@@ -6,10 +6,6 @@ hard stops.
 table is the same Stribeck curve: it moves as the first.  3) A mass with friction
 between close stops (+-0.9 m, length 1 m) starts at -5 m/s on a stiff spring: it hits
 the stops.
-
-Not yet compared with its reference: MAP-LIB compares the elements' ``mode`` (Integer)
-and ``startForward``/``startBackward`` (Boolean) besides their Real signals, and the
-language has no Integer or Boolean variables yet.
 """
 import acausal as ac
 from acausal.library import translational as tr
@@ -27,6 +23,7 @@ class Friction(ac.Component):
     fexp 2 s/m; stop2: F_Coulomb 3 N, F_Stribeck 5 N, stops at +-0.9 m, v0 = -5 m/s, on
     a spring c = 500 N/m from -1.75 m."""
 
+    msl_name = "Modelica.Mechanics.Translational.Examples.Friction"
     stop_time = 5.0
     tolerance = 1e-6
 

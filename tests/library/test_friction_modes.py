@@ -1,0 +1,111 @@
+"""The MSL's Integer ``mode`` and Boolean ``free``, ``startForward``, ``startBackward`` and
+``locked`` of the friction elements (Modelica.Mechanics.*.Interfaces.PartialFriction),
+against a closed form: a mass on a brake, pushed by a ramp force F = k t.
+
+Stuck (mode Stuck, locked) while k t <= f0_max = peak mu cgeo fn; it breaks away at
+t* = f0_max / k (startForward at that instant, mode still Stuck), then slides forwards
+(mode Forward) with the constant friction f0 = mu cgeo fn:
+
+    m v(t) = k (t^2 - t*^2) / 2 - f0 (t - t*)          t >= t*
+"""
+import numpy as np
+import pytest
+
+import acausal as ac
+from acausal.library import translational as tr
+from acausal.library.blocks import Constant, Ramp
+
+M, K, MU, FN, PEAK = 2.0, 10.0, 0.5, 4.0, 1.5
+F0 = MU * FN                       # sliding friction, cgeo = 1
+F0_MAX = PEAK * F0                 # most held at rest
+T_BREAK = F0_MAX / K
+
+
+class PushedBrake(ac.Component):
+    """A mass on a translational brake, pushed by F = direction k t (the force is k
+    times a unit ramp)."""
+
+    direction = ac.Parameter(1.0, description="+1 push forwards, -1 backwards")
+    k = ac.Parameter(K, unit="N", description="force per unit of the ramp")
+    mass = tr.Mass(m=M, s={"start": 0.0, "fixed": True}, v={"start": 0.0, "fixed": True})
+    brake = tr.Brake(fn_max=FN, peak=PEAK, mu_pos=[[0.0, MU]])
+    force = tr.Force()
+    ramp = Ramp(height=ac.ref("direction"), duration=1.0)
+    pressed = Constant(k=1.0)
+
+    def equations(self):
+        return [ac.connect(self.force.flange, self.mass.flange_a),
+                ac.connect(self.mass.flange_b, self.brake.flange_a),
+                ac.Eq(self.force.f, self.k * self.ramp.y),
+                ac.connect(self.pressed.y, self.brake.f_normalized)]
+
+
+def _run(direction):
+    model = PushedBrake(direction=direction)
+    return ac.simulate(model, t_end=1.0, rtol=1e-8, t_eval=np.linspace(0.0, 1.0, 401))
+
+
+@pytest.mark.parametrize("direction", [1.0, -1.0])
+def test_mode_follows_stick_break_away_and_slide(direction):
+    res = _run(direction)
+    assert res.success
+    t, v = res.t, res["mass.v"]
+    mode, locked = res["brake.mode"], res["brake.locked"]
+    assert mode.dtype.kind == "i" and locked.dtype == bool
+    away = np.abs(t - T_BREAK) > 5e-3
+    before, after = away & (t < T_BREAK), away & (t > T_BREAK)
+    sliding = 1 if direction > 0 else -1
+    assert np.all(mode[before] == 0) and np.all(locked[before])
+    assert np.all(mode[after] == sliding) and not np.any(locked[after])
+    assert not np.any(res["brake.free"])
+    # startForward/startBackward hold only at the break-away instant itself
+    assert not np.any(res["brake.startForward"][away])
+    assert not np.any(res["brake.startBackward"][away])
+    # the break-away is an event at t* and the motion is the closed form
+    assert min(abs(float(e) - T_BREAK) for e in res.events) < 1e-8
+    ts = np.maximum(t - T_BREAK, 0.0)
+    exact = direction * (K * ts * (ts + 2 * T_BREAK) / 2 - F0 * ts) / M
+    assert np.max(np.abs(v - exact)) <= 1e-6 * np.max(np.abs(exact))
+
+
+def test_start_forward_is_the_break_away_mode():
+    """At the break-away event, the iteration passes through startForward (a = sa -
+    f0_max, w = 0) before w > 0 makes the mode Forward: the event's record says so."""
+    res = _run(1.0)
+    event = min(res.events, key=lambda e: abs(float(e) - T_BREAK))
+    assert abs(float(event) - T_BREAK) < 1e-8
+    after = res["brake.mode"][res.t > T_BREAK + 5e-3]
+    assert np.all(after == 1)
+
+
+def test_a_brake_without_normal_force_is_free():
+    model = PushedBrake(pressed={"k": 0.0})
+    res = ac.simulate(model, t_end=0.5, rtol=1e-8, t_eval=np.linspace(0.0, 0.5, 51))
+    assert res.success
+    assert np.all(res["brake.free"]) and np.all(res["brake.mode"] == 2)
+    assert not np.any(res["brake.locked"] | res["brake.startForward"])
+    # free: m v = k t^2 / 2
+    exact = K * res.t**2 / 2 / M
+    assert np.max(np.abs(res["mass.v"] - exact)) <= 1e-6 * np.max(exact)
+
+
+class _TornBoolean(ac.Component):
+    """A Boolean that reads an unknown of an implicit equation (y^3 + y = x, y solved by
+    Newton) which itself reads no Boolean: no loop among the discrete variables."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    y = ac.Variable(start=0.0)
+    high = ac.Variable(type=bool)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1.0),
+                ac.Eq(self.y**3 + self.y, self.x),
+                ac.Eq(self.high, self.y > 1.0)]
+
+
+def test_a_boolean_may_read_an_unknown_of_an_implicit_equation():
+    res = ac.simulate(_TornBoolean(), t_end=3.0, rtol=1e-8, t_eval=np.linspace(0, 3, 31))
+    assert res.success
+    # y = 1 where x = t = 2
+    assert min(abs(float(e) - 2.0) for e in res.events) < 1e-7
+    assert np.array_equal(res["high"], res.t > 2.0)
