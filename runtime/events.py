@@ -146,12 +146,17 @@ class WhenClauses:
             self.tick[due] += 1
         if not fired.any():
             return None
-        new = z.copy()
         act = fired[self.owners]
+        # every equation of a clause reads the values before the event: the
+        # assignments see the states as they were, and the re-initializations (their
+        # values computed from those same values) take effect after them
+        new = self._assign(model, t, z, p, fired[self.assign_owners])
+        if new is z:
+            new = z.copy()
         new[self.targets[act]] = before[self.n_when:self._assign_row][act]   # pre values
         self.log.append((t, np.flatnonzero(fired).tolist(), self.targets[act].tolist(),
                          z[self.targets[act]].tolist(), new[self.targets[act]].tolist()))
-        return self._assign(model, t, new, p, fired[self.assign_owners])
+        return new
 
     def _assign(self, model, t, z, p, act):
         """The assignments of the fired clauses, level by level (a level reads the held
