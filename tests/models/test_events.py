@@ -273,6 +273,49 @@ def test_no_event_of_a_structural_zero_is_zero():
     assert res["y"][-1] == pytest.approx(np.exp(-1.0), rel=1e-8)
 
 
+class GuardedDivision(ac.Component):
+    """v = if x < 1e-15 then 1e-15 else x; y = 1/v, with x = 0 held (x' = 0) until a
+    clause restarts another state at t = 0.5: x sits at round-off distance from the
+    threshold but does not cross it, so the relation holds (0 < 1e-15) and y = 1e15."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    s = ac.Variable(start=0.0, fixed=True)
+    v = ac.Variable()
+    y = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 0), ac.Eq(ac.der(self.s), 1),
+                ac.Eq(self.v, ac.if_else(self.x < 1e-15, 1e-15, self.x)),
+                ac.Eq(self.y, 1 / self.v),
+                ac.when(self.s > 0.5, ac.reinit(self.s, 0))]
+
+
+def test_a_relation_near_its_threshold_takes_the_side_its_value_says():
+    res = ac.simulate(GuardedDivision(), t_end=1.0, rtol=1e-8, t_eval=[0.0, 0.25, 0.75, 1.0])
+    assert res.success and len(res.events) == 1
+    assert list(res["v"]) == [1e-15] * 4
+    assert list(res["y"]) == pytest.approx([1e15] * 4, rel=1e-15)
+
+
+class TwoFloorsOfOneRamp(ac.Component):
+    """y = floor(x) + floor(2 x), x = time: floor(2 x) steps at 0.5, 1, 1.5 and floor(x)
+    at 1 too, so the run has three event instants, one of them two items at once."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    y = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1), ac.Eq(self.y, sp.floor(self.x) + sp.floor(2 * self.x))]
+
+
+def test_items_crossing_at_one_instant_make_one_event():
+    t = np.array([0.25, 0.75, 1.25, 1.75])
+    res = ac.simulate(TwoFloorsOfOneRamp(), t_end=1.8, rtol=1e-8, t_eval=t)
+    events = np.array(res.events)
+    assert len(events) == 3 and np.max(np.abs(events - [0.5, 1.0, 1.5])) < 1e-8
+    assert list(res["y"]) == [0, 1, 3, 4]
+
+
 class SawOfAnAlias(ac.Component):
     """y = mod(u, 1) with u = x an alias of the state x' = 1: the frozen floor value reads
     x once alias elimination has removed u; y is the sawtooth mod(t, 1)."""
