@@ -245,6 +245,11 @@ class no_event(sp.Function):
 
     nargs = 1
 
+    @classmethod
+    def eval(cls, arg):
+        if isinstance(arg, sp.Expr) and arg.is_Number:
+            return arg         # a number makes no event: no_event(0) is 0
+
     def fdiff(self, argindex=1):
         return sp.Integer(1)   # the identity: d no_event(u) = du
 

@@ -145,12 +145,17 @@ class WhenClauses:
             self.tick[due] += 1
         if not fired.any():
             return None
-        new = z.copy()
         act = fired[self.owners]
+        # every equation of a clause reads the values before the event: the
+        # assignments see the states as they were, and the re-initializations (their
+        # values computed from those same values) take effect after them
+        new = self._assign(model, t, z, p, fired[self.assign_owners])
+        if new is z:
+            new = z.copy()
         new[self.targets[act]] = before[self.n_when:self._assign_row][act]   # pre values
         self.log.append((t, np.flatnonzero(fired).tolist(), self.targets[act].tolist(),
                          z[self.targets[act]].tolist(), new[self.targets[act]].tolist()))
-        return self._assign(model, t, new, p, fired[self.assign_owners])
+        return new
 
     def _assign(self, model, t, z, p, act):
         """The assignments of the fired clauses, level by level (a level reads the held
@@ -229,7 +234,8 @@ def iterate_event(model, t, z, zp, crossed, initial: bool = False) -> EventActio
         bad = disc.contradicted(t, z, p) & ~decided
         if not bad.any():
             before = model.m.copy()
-            if not _follow_new_rates(model, t, z, decided):
+            if not (_follow_new_rates(model, t, z, decided)
+                    or _crossing_too(model, t, z, decided)):
                 break
             if any(np.array_equal(model.m, m) for m in seen):
                 model.discrete.m[:] = before     # no side holds for good: keep the
@@ -268,7 +274,8 @@ def _fire_clauses(model, t, z, m_prev):
         m_prev = m_now
         zp_new = np.zeros(model.n)
         zp_new[model.state_index] = model.state_derivatives(t, z)
-        disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), model.resolution)
+        disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), model.resolution,
+                     resting="kept")
     return z, fired
 
 
@@ -306,7 +313,8 @@ def discrete_iteration(model, t, z, m_prev, initial: bool = False, decided=None)
         if moved:                   # a state was re-initialized: every item again
             zp_new = np.zeros(model.n)
             zp_new[model.state_index] = model.state_derivatives(t, z)
-            disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), model.resolution)
+            disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), model.resolution,
+                         resting="kept")
         else:                       # the items that read what changed
             bad = disc.contradicted(t, z, p)
             if decided is not None:
@@ -330,6 +338,37 @@ def _cycling(model, t, history) -> InitializationFailed:
         f"after {_DISCRETE_ROUNDS} rounds, the values cycle ({seq}); an equation that "
         "reads its own variable through the others must read its value before the "
         "event, pre(...)", t, variables=names)
+
+
+def _crossing_too(model, t, z, at_zero) -> bool:
+    """Floor values that cross at this instant too: at zero at the event point
+    (``at_zero``, within the band the event is located in) and moving across, by the
+    rates of their arguments in the discrete state the event has settled, faster than
+    their band per unit of time (floor(x) and floor(2 x) at x = 1).  They switch at
+    this event, not at a second one a hair later.  (Relations are not moved by their
+    rates here: a relation of an algebraic unknown at its threshold, a spool at its
+    stop, has a rate that says nothing about where it goes; a relation that the event
+    takes clearly across its threshold is switched by its value.)  Time events are
+    exact and wait for their own time.  True if one switched."""
+    disc = model.discrete
+    R = disc.n_rel
+    near = at_zero[R:] & ~disc._timed[R:]
+    if not near.any():
+        return False
+    u = disc.values(t, z, model.p)[R:]
+    rate = model.rates(t, z, consistent_derivatives(model, t, z))[R:]
+    tol = disc.tolerance(t, z, model.p)[R:]
+    band = 2.0 * (2.0 * tol + np.nan_to_num(np.abs(rate), posinf=0.0) * model.resolution)
+    with np.errstate(invalid="ignore"):
+        near &= np.isfinite(rate) & (np.abs(rate) > band)
+        near &= np.abs(u - np.round(u)) <= band
+    after = np.round(u) - (rate < 0)
+    across = near & (after != disc.m[R:R + disc.n_disc])
+    if not across.any():
+        return False
+    k = np.flatnonzero(across)
+    disc.m[R + k] = after[k]
+    return True
 
 
 def _at_zero(model, t, z, zp) -> np.ndarray:

@@ -13,10 +13,11 @@ variable in the full form).  The equations are the model's rows G(t0, z) = 0 plu
 Start values of everything else are guesses for Newton's method (damped Newton, then a
 Newton homotopy: :func:`acausal.solvers.initialization.solve_with_fallback`).
 
-Relations take part as in Modelica's initialization: the system is solved with the
-relations frozen, then every relation takes the value it has at the solution (the side
-the dynamics choose where it sits at zero), and the system is solved again, until the
-values agree with the solution (a fixed point on the discrete state).
+Relations take part as in Modelica's initialization: they first take their values at
+the start values (repeatedly, as one relation may read another's value), the system is
+solved with the relations frozen, then every relation takes the value it has at the
+solution (the side the dynamics choose where it sits at zero), and the system is solved
+again, until the values agree with the solution (a fixed point on the discrete state).
 
 Then the derivatives of *every* unknown are made consistent: z'[S] of the states from the
 model, and z'[A] of the algebraic unknowns from the derivative of G = 0 along the
@@ -81,8 +82,7 @@ class InitialConditions:
 def initialize(model, t0: float):
     """Consistent (z, z') at t0 with the discrete state settled (module docstring)."""
     z = model.start.copy()
-    model.discrete.set_all(t0, z, model.p, lambda: np.zeros(model.discrete.n_rel
-                                                            + model.discrete.n_disc))
+    _settle_at_start(model, t0, z)
     if model.dynamic is not None:
         model.dynamic.switches = []
         model.reselect_states(t0, z, hysteresis=1.0)
@@ -106,6 +106,17 @@ def initialize(model, t0: float):
         f"initialization at t = {t0}: the relations do not settle (each solution "
         "contradicts the values it was computed with): "
         + "; ".join(model.discrete.describe(k) for k in flipping[:5]), t0)
+
+
+def _settle_at_start(model, t0, z) -> None:
+    """The relations take their values at the start values, repeatedly until they agree:
+    a relation's operand may read another relation's value (``ramp.y > 0.5`` of a ramp
+    that is ``if time < startTime then offset else ...``), which must be settled before
+    it is read, not taken from the all-false values the discrete state starts with."""
+    zeros = np.zeros(model.discrete.n_rel + model.discrete.n_disc)
+    for _ in range(_MODE_ITERATIONS):
+        if not model.discrete.set_all(t0, z, model.p, lambda: zeros):
+            return
 
 
 def _finite_derivatives(model, t0, zp) -> None:

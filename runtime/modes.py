@@ -196,12 +196,18 @@ class DiscreteState:
         bad_disc = (u < n - tol_u) | (u >= n + 1.0 + tol_u)
         return np.concatenate([bad_rel, bad_disc])
 
-    def settle(self, t, z, p, which, rates, resolution: float = 0.0) -> bool:
+    def settle(self, t, z, p, which, rates, resolution: float = 0.0,
+               resting: str = "closed") -> bool:
         """Items in ``which`` take their value just after t; True if any changed.
 
         ``rates()`` returns d/dt of ``values`` along the solution.  At an event located
         to within ``resolution`` in time, an item counts as at zero within its tolerance,
-        its hysteresis and ``|rate| resolution`` (where the crossing may lie).
+        its hysteresis and ``|rate| resolution`` (where the crossing may lie).  A
+        relation at zero whose rate does not decide takes, by ``resting``: ``"closed"``
+        its value at exactly zero (>= and <= hold: an item that crossed and stays there),
+        ``"value"`` the side its value g says (an item that is not crossing: x < 1e-15
+        holds at x = 0 though 1e-15 is within x's round-off), ``"kept"`` the value it
+        has (an item that was not crossing before either).
         """
         if not which.any():
             return False
@@ -219,22 +225,25 @@ class DiscreteState:
             vdot = rates()
         for k in np.flatnonzero(which):
             if k < self.n_rel:
-                self.m[k] = float(self._relation_after(k, v[k], tol[k], at_zero[k], vdot))
+                self.m[k] = float(self._relation_after(k, v[k], tol[k], at_zero[k], vdot,
+                                                       resting))
             else:
                 self.m[k] = self._floor_after(v[k], tol[k], at_zero[k], vdot, k)
         return not np.array_equal(before, self.m)
 
-    def set_all(self, t, z, p, rates, resolution: float = 0.0) -> bool:
-        """Every item takes its value just after t (the start, or after a reinit)."""
+    def set_all(self, t, z, p, rates, resolution: float = 0.0, resting: str = "value") -> bool:
+        """Every item takes its value just after t: at the start (an item at zero whose
+        rate does not decide takes the side its value says), or after a reinit
+        (``resting="kept"``: such an item keeps its value)."""
         return self.settle(t, z, p, np.ones(self.n_rel + self.n_disc, dtype=bool), rates,
-                           resolution)
+                           resolution, resting)
 
     def _distance(self, v) -> np.ndarray:
         """Distance of each item from its switching point (g; u from the nearest integer)."""
         u = v[self.n_rel:]
         return np.concatenate([v[: self.n_rel], u - np.round(u)])
 
-    def _relation_after(self, k, g, tol, at_zero, vdot) -> bool:
+    def _relation_after(self, k, g, tol, at_zero, vdot, resting="closed") -> bool:
         if not at_zero:
             return self._holds(k, g)
         rate = vdot[k] if vdot is not None else 0.0
@@ -242,6 +251,10 @@ class DiscreteState:
         # time is round-off (a stuck speed whose acceleration is solved to 1e-17)
         if math.isfinite(rate) and abs(rate) > tol:
             return (rate > 0) == bool(self.upward[k])
+        if resting == "value":
+            return self._holds(k, g)              # not crossing: the side it is on
+        if resting == "kept":
+            return bool(self.m[k] > 0.5)
         return not bool(self.strict[k])           # at zero to stay: >= and <= hold
 
     def _holds(self, k, g) -> bool:

@@ -124,7 +124,8 @@ def extract_relations(exprs: list, frozen=None) -> tuple[list, list, dict, list]
     new = list(exprs)
     for i in eventful:
         new[i] = _freeze(exprs[i], modes, no_event)
-    crossings = [rel.lhs - rel.rhs for rel in ordered]
+    # a relation's operands may read no_event(...): its functions are evaluated directly
+    crossings = [_unwrapped(rel.lhs - rel.rhs, no_event) for rel in ordered]
     return new, crossings, {modes[r]: r for r in ordered}, [relations[r] for r in ordered]
 
 
@@ -161,12 +162,25 @@ def _event_piecewise(e, no_event):
 
 
 def _freeze(e, modes, no_event):
-    """Relations -> mode symbols, except inside no_event(...), which is unwrapped."""
+    """Relations -> mode symbols, except inside no_event(...), which is unwrapped.
+
+    One top-down replacement: a relation is replaced where it is met, before the walk
+    reaches a no_event(...) among its operands (``x > no_event(abs(u))`` is an event on
+    x), and a no_event(...) met first is replaced by its argument, the relations inside
+    it left to be evaluated directly."""
     if not modes and not e.has(no_event):
         return e
-    quiet = {q: sp.Dummy() for q in e.atoms(no_event)}
-    out = e.xreplace(quiet).xreplace(modes) if modes else e.xreplace(quiet)
-    return out.xreplace({d: q.args[0] for q, d in quiet.items()})
+    rule = dict(modes)
+    for q in e.atoms(no_event):
+        rule[q] = _unwrapped(q.args[0], no_event)
+    return e.xreplace(rule)
+
+
+def _unwrapped(e, no_event):
+    """e with every no_event(u) inside it replaced by u."""
+    if not e.has(no_event):
+        return e
+    return e.xreplace({q: _unwrapped(q.args[0], no_event) for q in e.atoms(no_event)})
 
 
 def _relations_in(cond, frozen=None):

@@ -17,7 +17,7 @@ explicit-stack walk:
   both targets evaluate the same floating-point operations in the same order.
 
 Operators sympy has and this printer does not are printed by sympy's own printer with
-their arguments already named, so nothing is dropped.
+their arguments already named, so nothing is dropped; ``no_event(u)`` prints as ``u``.
 """
 from __future__ import annotations
 
@@ -26,6 +26,8 @@ import re
 import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import And, BooleanFalse, BooleanTrue, Not, Or
+
+from ...components.symbols import no_event
 
 __all__ = ["Emitter", "CHUNK"]
 
@@ -152,6 +154,10 @@ class Emitter:
         if isinstance(e, Not):
             c = self._cond(e.args[0], done, names)
             return f"(not {c})" if self.lang == "py" else f"(!{c})"
+        if isinstance(e, no_event):
+            # what is left of no_event(u) here is evaluated directly, as u: relations to
+            # be frozen were replaced before (codegen.extract_relations)
+            return self._arg(e.args[0], done, names)
         if isinstance(e, sp.Abs):
             return f"{'abs' if self.lang == 'py' else 'fabs'}({self._arg(e.args[0], done, names)})"
         if isinstance(e, (sp.Min, sp.Max)):

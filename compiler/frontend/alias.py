@@ -379,6 +379,14 @@ def _when_after_aliases(w, subs, find, constants):
     return out
 
 
+def _same_value(a, b) -> bool:
+    """Two start values are the same value: numerically for numbers (sympy's integer 0,
+    the signed copy of a float 0.0, is not *structurally* equal to Float 0.0),
+    structurally for expressions of parameters."""
+    d = sp.sympify(a) - sp.sympify(b)
+    return bool(d == 0 or d.is_zero)
+
+
 def _merge_attributes(flat, variables, resolved):
     """Carry start/fixed/nominal/state_select from aliases onto their representative
     (``resolved``: each flat variable's (sign, representative))."""
@@ -392,7 +400,8 @@ def _merge_attributes(flat, variables, resolved):
         new = r
         if a.start is not None and (r.start is None or (a.fixed and not r.fixed)):
             new = replace(new, start=sign * a.start, fixed=a.fixed or r.fixed)
-        elif a.fixed and r.start is not None and r.fixed and sign * a.start != r.start:
+        elif a.fixed and r.start is not None and r.fixed and \
+                not _same_value(sign * a.start, r.start):
             raise ModelError(f"'{v.name}' and '{root.name}' are the same variable "
                              f"(alias) but have different fixed start values")
         if a.nominal and (not r.nominal or a.nominal > r.nominal):

@@ -239,9 +239,34 @@ def _substitute(flat, helds) -> None:
 
 def pre_after_aliases(reduced, aliases, helds) -> None:
     """pre() of a variable that alias elimination found equal to a discrete variable (an
-    input connected to a sampler's output) is that variable's pre value (in place)."""
-    if not helds:
-        return
+    input connected to a sampler's output) is that variable's pre value (in place).
+    What pre() is left reads a continuous-time variable outside a when-clause's body:
+    a :class:`DiscreteVariableError` (:func:`_pre_of_continuous`)."""
+    if helds:
+        _pre_of_discrete_aliases(reduced, aliases, helds)
+    for eq in reduced.equations:
+        if eq.residual.has(pre):
+            _pre_of_continuous(eq.residual, f"the equation '{eq.text}' in {eq.where}")
+    for w in reduced.whens:
+        if w.condition.has(pre):
+            _pre_of_continuous(w.condition, f"the condition of {_clause_text(w)}")
+
+
+def _pre_of_continuous(expr, where):
+    """pre(x) of a continuous-time x is defined where x is a discrete-time expression:
+    in the body of a when-clause (its value before the event there).  In a continuous
+    equation or a when-condition it is not (Modelica Language Specification 3.6, sec.
+    3.7.5 with 3.8.5)."""
+    names = sorted(sp.sstr(q.args[0]) for q in expr.atoms(pre))
+    shown = ", ".join(f"pre({n})" for n in names[:4])
+    raise DiscreteVariableError(
+        f"{shown} in {where}: {', '.join(names[:4])} "
+        f"{'is a continuous-time variable' if len(names) == 1 else 'are continuous-time'}; "
+        "pre() reads the value before an event of a discrete variable (discrete=True, "
+        "Boolean, Integer), or of any variable inside a when-clause's reinit or assign")
+
+
+def _pre_of_discrete_aliases(reduced, aliases, helds) -> None:
     to_pre = {}
     by_name = {v.name: v.symbol for v in reduced.variables}
     for h in helds:

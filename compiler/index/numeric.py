@@ -13,7 +13,7 @@ import math
 
 import sympy as sp
 
-from ...components.symbols import time
+from ...components.symbols import no_event, time
 from ..algebra.derivative import partial
 from ..algebra.symbolic import symbols_of
 
@@ -44,6 +44,11 @@ class CoefficientValues:
 
     def _evaluate(self, e, v):
         c = partial(self.system.equations[e].residual, self.system.symbols[v])
+        if c.has(no_event):
+            # a coefficient under no_event switches during the run without an event
+            # (a flow regularised in a band around 0): its value at the compile-time
+            # point says nothing about the block elsewhere, so it is not sampled
+            return None
         if not c.is_number:
             c = c.xreplace({q: x for q in symbols_of(c)
                             if (x := self._point(q)) is not None})

@@ -1,9 +1,11 @@
 """Alias elimination: trivial equations leave, every variable keeps its name."""
 import numpy as np
+import pytest
 
 import acausal as ac
 from acausal.compiler.frontend.alias import eliminate_aliases
 from acausal.compiler.frontend.flatten import flatten
+from acausal.library.electrical import Capacitor, Ground, Resistor
 from acausal.library.rotational import Fixed, Inertia, Spring
 
 from ..models.test_electrical_circuits import RCCharging as RC
@@ -53,3 +55,53 @@ def test_variable_fixed_to_a_parameter_is_a_constant_and_tunable():
     assert np.max(np.abs(res["J.phi"] - (0.1 + 0.4 * np.cos(np.sqrt(10) * t)))) < 1e-7
 
 
+
+
+
+class TwoCapacitorsInParallel(ac.Component):
+    """Two capacitors on the same node pair, both with v fixed at the start (as the
+    MSL's GenerationOfFMUs fixes a capacitor and its copy behind signal adaptors), and
+    a resistor discharging them: v = v0 exp(-t / (R (C1 + C2)))."""
+
+    C1 = Capacitor(C=1e-3, v={"start": 0.0, "fixed": True})
+    C2 = Capacitor(C=2e-3, v={"start": 0.0, "fixed": True})
+    R = Resistor(R=10.0)
+    gnd = Ground()
+
+    def equations(self):
+        return [ac.connect(self.C1.p, self.C2.p, self.R.p),
+                ac.connect(self.C1.n, self.C2.n, self.R.n, self.gnd.p)]
+
+
+class TwoCapacitorsAntiParallel(TwoCapacitorsInParallel):
+    """The same with C2 turned round: C2.v = -C1.v."""
+
+    @ac.replaces(TwoCapacitorsInParallel)
+    def equations(self):
+        return [ac.connect(self.C1.p, self.C2.n, self.R.p),
+                ac.connect(self.C1.n, self.C2.p, self.R.n, self.gnd.p)]
+
+
+def test_aliases_with_the_same_fixed_start_zero_are_one_variable():
+    """0 and 0.0 are the same start value (the signed copy of a float 0.0 is sympy's
+    integer 0): the two fixed starts agree and the capacitors share one state."""
+    t = np.linspace(0.0, 0.1, 11)
+    res = ac.simulate(TwoCapacitorsInParallel(), t_end=0.1, rtol=1e-9, t_eval=t)
+    assert np.all(res["C1.v"] == 0.0) and np.all(res["C2.v"] == 0.0)
+    # the same with another start on both
+    two = {"v": {"start": 2.0, "fixed": True}}
+    res = ac.simulate(TwoCapacitorsInParallel(C1=two, C2=two),
+                      t_end=0.1, rtol=1e-10, t_eval=t)
+    tau = 10.0 * 3e-3
+    assert np.max(np.abs(res["C2.v"] - 2.0 * np.exp(-t / tau))) < 1e-7
+    # a reversed copy: 0.0 and -0.0, then 2 and -2
+    res = ac.simulate(TwoCapacitorsAntiParallel(), t_end=0.1, rtol=1e-9, t_eval=t)
+    assert np.all(res["C1.v"] == 0.0) and np.all(res["C2.v"] == 0.0)
+    res = ac.simulate(TwoCapacitorsAntiParallel(
+        C1=two, C2={"v": {"start": -2.0, "fixed": True}}), t_end=0.1, rtol=1e-10, t_eval=t)
+    assert np.max(np.abs(res["C1.v"] - 2.0 * np.exp(-t / tau))) < 1e-7
+
+
+def test_aliases_with_different_fixed_starts_are_refused():
+    with pytest.raises(ac.ModelError, match="different fixed start values"):
+        ac.compile(TwoCapacitorsInParallel(C2={"v": {"start": 1.0, "fixed": True}}))

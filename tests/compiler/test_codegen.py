@@ -40,6 +40,18 @@ def test_relations_become_modes_and_zero_crossings():
     assert not exprs[1].has(sp.StrictGreaterThan)
 
 
+def test_a_relation_reading_no_event_is_frozen_and_its_operand_is_not():
+    """if x > no_event(|u|): the relation is a mode (an event on x); the abs under
+    no_event is no relation of its own, and nothing of no_event is left to print."""
+    from acausal.components.symbols import no_event
+    x, u = sp.symbols("x u")
+    rel = x > no_event(sp.Abs(u))
+    exprs, crossings, modes, _ = extract_relations([sp.Piecewise((-1, rel), (1, True))])
+    assert list(modes.values()) == [rel]
+    assert exprs[0] == sp.Piecewise((-1, list(modes)[0]), (1, True))
+    assert crossings == [x - sp.Abs(u)]
+
+
 def test_compiled_jacobian_matches_finite_differences():
     compiled = ac.compile(DoublePendulum())
     z = ac.initial_values(compiled)

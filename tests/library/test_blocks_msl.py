@@ -212,9 +212,6 @@ def test_mean_rms_and_harmonics_of_a_known_signal_after_each_period():
     assert res["third.y_arg"][-1] == pytest.approx(math.pi / 2 - 0.3, abs=1e-7)
 
 
-@pytest.mark.xfail(strict=True, reason="the runtime judges the limiter's relation u < 1e-15 "
-                   "at u = 0 as at its switching point, and the division it guards makes "
-                   "every output of the first period NaN")
 def test_total_harmonic_distortion_of_a_fundamental_and_its_third_harmonic():
     class Distorted(ac.Component):
         w = ac.Parameter(2 * math.pi * 50.0, unit="rad/s", description="2 pi 50 Hz")

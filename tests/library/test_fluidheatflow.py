@@ -287,10 +287,6 @@ def test_sensors_read_flows_pressures_and_the_heating():
     assert np.allclose(res["pipe.T"], 305.0, rtol=1e-12)
 
 
-@pytest.mark.xfail(strict=True, reason="initialization reads relations with the modes' "
-                   "initial values before they are settled (runtime/initial.initialize): "
-                   "a relation on a variable that another relation's mode determines is "
-                   "armed wrong, and the first Newton solve fails as singular")
 def test_initial_relations_are_read_with_settled_modes():
     """u = ramp (0 until 0.5 s); in the branch of "u > 0.5" the equation 0 y = 1 - u is
     singular, in the other y = 1 - u.  At t = 0 the right branch is the second."""

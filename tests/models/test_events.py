@@ -209,6 +209,113 @@ def test_no_event_keeps_if_expressions_from_making_events():
     assert res["w"][-1] == pytest.approx(0.5, abs=1e-3)   # integrated across the jump
 
 
+class ThresholdUnderNoEvent(ac.Component):
+    """y = if x > no_event(|1 - time|) then -1 else 1 with x = time: the relation is an
+    event (x crosses its threshold at t = 0.5), its threshold's kink at t = 1 is not."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    y = ac.Variable()
+    w = ac.Variable(start=0.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1.0),
+                ac.Eq(self.y, ac.if_else(self.x > ac.no_event(sp.Abs(1 - ac.time)), -1, 1)),
+                ac.Eq(ac.der(self.w), ac.no_event(sp.Abs(1 - ac.time)))]
+
+
+def test_a_relation_with_no_event_in_its_operand_is_an_event():
+    compiled = ac.compile(ThresholdUnderNoEvent())
+    assert compiled.n_roots == 1                 # x > ..., not the kink of the abs
+    t = np.array([0.25, 0.49, 0.51, 1.5])
+    res = ac.simulate(compiled, t_end=1.5, rtol=1e-10, atol=1e-12, t_eval=t)
+    assert list(res["y"]) == [1.0, 1.0, -1.0, -1.0]
+    events = np.array(res.events)
+    assert len(events) == 1 and abs(events[0] - 0.5) < 1e-9
+    # w' = |1 - t| integrated straight across its kink: 1/2 + 1/8
+    assert res["w"][-1] == pytest.approx(0.625, abs=1e-6)
+
+
+class ParametersUnderNoEvent(ac.Component):
+    """no_event of parameters alone (a value and an equation): x' = |k|, c = |k|."""
+
+    k = ac.Parameter(-2.0)
+    c = ac.Parameter(lambda s: ac.no_event(sp.Abs(s.k)))
+    x = ac.Variable(start=0.0, fixed=True)
+    v = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), ac.no_event(sp.Abs(self.k))), ac.Eq(self.v, self.c)]
+
+
+def test_no_event_of_parameters_alone_is_their_value():
+    res = ac.simulate(ParametersUnderNoEvent(), t_end=1.0, rtol=1e-9, t_eval=[0.0, 1.0])
+    assert res["x"][-1] == pytest.approx(2.0, rel=1e-9)
+    assert list(res["v"]) == [2.0, 2.0]
+    res = ac.simulate(ParametersUnderNoEvent(), t_end=1.0, rtol=1e-9, t_eval=[0.0, 1.0],
+                      parameters={"k": 3.0})
+    assert res["x"][-1] == pytest.approx(3.0, rel=1e-9)
+
+
+class ZeroUnderNoEvent(ac.Component):
+    """x = no_event(k y) with k = 0 a constant: x is the structural zero."""
+
+    k = 0
+    x = ac.Variable()
+    y = ac.Variable(start=1.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.y), -self.y), ac.Eq(self.x, ac.no_event(self.k * self.y))]
+
+
+def test_no_event_of_a_structural_zero_is_zero():
+    res = ac.simulate(ZeroUnderNoEvent(), t_end=1.0, rtol=1e-9, t_eval=[0.0, 1.0])
+    assert list(res["x"]) == [0.0, 0.0]
+    assert res["y"][-1] == pytest.approx(np.exp(-1.0), rel=1e-8)
+
+
+class GuardedDivision(ac.Component):
+    """v = if x < 1e-15 then 1e-15 else x; y = 1/v, with x = 0 held (x' = 0) until a
+    clause restarts another state at t = 0.5: x sits at round-off distance from the
+    threshold but does not cross it, so the relation holds (0 < 1e-15) and y = 1e15."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    s = ac.Variable(start=0.0, fixed=True)
+    v = ac.Variable()
+    y = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 0), ac.Eq(ac.der(self.s), 1),
+                ac.Eq(self.v, ac.if_else(self.x < 1e-15, 1e-15, self.x)),
+                ac.Eq(self.y, 1 / self.v),
+                ac.when(self.s > 0.5, ac.reinit(self.s, 0))]
+
+
+def test_a_relation_near_its_threshold_takes_the_side_its_value_says():
+    res = ac.simulate(GuardedDivision(), t_end=1.0, rtol=1e-8, t_eval=[0.0, 0.25, 0.75, 1.0])
+    assert res.success and len(res.events) == 1
+    assert list(res["v"]) == [1e-15] * 4
+    assert list(res["y"]) == pytest.approx([1e15] * 4, rel=1e-15)
+
+
+class TwoFloorsOfOneRamp(ac.Component):
+    """y = floor(x) + floor(2 x), x = time: floor(2 x) steps at 0.5, 1, 1.5 and floor(x)
+    at 1 too, so the run has three event instants, one of them two items at once."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    y = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1), ac.Eq(self.y, sp.floor(self.x) + sp.floor(2 * self.x))]
+
+
+def test_items_crossing_at_one_instant_make_one_event():
+    t = np.array([0.25, 0.75, 1.25, 1.75])
+    res = ac.simulate(TwoFloorsOfOneRamp(), t_end=1.8, rtol=1e-8, t_eval=t)
+    events = np.array(res.events)
+    assert len(events) == 3 and np.max(np.abs(events - [0.5, 1.0, 1.5])) < 1e-8
+    assert list(res["y"]) == [0, 1, 3, 4]
+
+
 class SawOfAnAlias(ac.Component):
     """y = mod(u, 1) with u = x an alias of the state x' = 1: the frozen floor value reads
     x once alias elimination has removed u; y is the sawtooth mod(t, 1)."""

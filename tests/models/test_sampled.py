@@ -223,3 +223,60 @@ def test_a_clock_on_a_variable_is_an_error():
     with pytest.raises(DiscreteVariableError, match=r"sample\(\) are numbers or parameters, "
                                                     r"not variables \(x\)"):
         ac.compile(m)
+
+
+# -- a when-clause's equations read the values before the event ---------------------------
+class SawtoothWithMemory(ac.Component):
+    """x' = 1, restarted at 0 by each tick of a clock of period 1 from t = 1; at the same
+    tick d := 2 x and e := pre(x) + 1: x before the restart (1), so d = 2 and e = 2
+    after every tick (Modelica Language Specification 3.6, sec. 8.3.6: the value of a
+    reinit takes effect at the end of the event iteration step)."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    d = ac.Variable(discrete=True, start=-1.0)
+    e = ac.Variable(discrete=True, start=-1.0)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1.0),
+                ac.when(ac.sample(1.0, 1.0), ac.assign(self.d, 2 * self.x),
+                        ac.reinit(self.x, 0), ac.assign(self.e, ac.pre(self.x) + 1))]
+
+
+class ResetAtThreshold(SawtoothWithMemory):
+    """The same with a state event: when x > 1, restart x and keep 2 x in d."""
+
+    @ac.replaces(SawtoothWithMemory)
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1.0),
+                ac.when(self.x > 1.0, ac.reinit(self.x, 0), ac.assign(self.d, 2 * self.x),
+                        ac.assign(self.e, ac.pre(self.x) + 1))]
+
+
+@pytest.mark.parametrize("model", [SawtoothWithMemory, ResetAtThreshold])
+def test_assignments_beside_a_reinit_read_the_state_before_it(model):
+    t = np.array([0.5, 1.5, 2.5])
+    res = ac.simulate(model(), t_end=2.5, rtol=1e-10, atol=1e-12, t_eval=t)
+    assert np.allclose(res["x"], 0.5, atol=1e-8)
+    assert res["d"][0] == -1.0 and res["e"][0] == -1.0
+    assert np.allclose(res["d"][1:], 2.0, atol=1e-8)
+    assert np.allclose(res["e"][1:], 2.0, atol=1e-8)
+
+
+def test_pre_of_a_continuous_variable_outside_a_when_clause_is_an_error():
+    m = _model(lambda s: [ac.when(ac.sample(0, s.T), ac.assign(s.d, s.x + ac.pre(s.x)))])
+    ac.compile(m)                             # in a when-clause's body: allowed
+
+    class Continuous(_Base):
+        y = ac.Variable()
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.x), 1.0), ac.Eq(self.y, ac.pre(self.x)),
+                    ac.when(ac.sample(0, self.T), ac.assign(self.d, self.x))]
+
+    with pytest.raises(DiscreteVariableError, match=r"pre\(x\) in the equation 'y = pre\(x\)'"
+                                                    r".*continuous-time"):
+        ac.compile(Continuous())
+    m = _model(lambda s: [ac.when(s.x > ac.pre(s.x) + 1, ac.assign(s.d, s.x))])
+    with pytest.raises(DiscreteVariableError, match=r"pre\(x\) in the condition of when "
+                                                    r".*continuous-time"):
+        ac.compile(m)

@@ -6,11 +6,8 @@ The two series sine sources of the MSL (SineVoltage with startTime) are SignalVo
 driven by Sine blocks with that start time: the electrical SineVoltage here has no
 startTime.
 
-Known to fail: before the sources start (0 .. 0.02 s) the THD blocks divide by their
-limiter's lower bound (the MSL's eps = 1e-15) and acausal judges the relation u < 1e-15
-at u = 0 as at its switching point: the division by 0 of the other side makes every
-output of that stretch NaN, though the run succeeds (reported as a defect of the
-runtime's relations; the values after 0.02 s are right).
+Before the sources start (0 .. 0.02 s) the THD blocks divide by their limiter's lower
+bound (the MSL's eps = 1e-15): the relation u < 1e-15 holds at u = 0.
 """
 import math
 
@@ -30,9 +27,6 @@ class TotalHarmonicDistortionExample(ac.Component):
     stop_time = 0.1
     tolerance = 1e-7
     msl_signals = MSLNames()
-    msl_known_failure = (
-        "defect: the relation u < 1e-15 at u = 0 is judged at its switching point and "
-        "the division it guards makes every output NaN before the sources start")
 
     f1 = ac.Parameter(50.0, unit="Hz", description="fundamental wave frequency")
     V1 = ac.Parameter(100.0, unit="V", description="fundamental wave RMS voltage")

@@ -20,9 +20,6 @@ class GenerationOfFMUs(ac.Component):
     both driven by 1 (A or V) sines of 2 Hz."""
 
     msl_name = "Modelica.Electrical.Analog.Examples.GenerationOfFMUs"
-    msl_known_failure = (
-        "alias elimination refuses two aliases with the same fixed start 0 (sympy's Zero "
-        '!= 0.0)')
     stop_time = 1.0
     tolerance = 1e-06
 
