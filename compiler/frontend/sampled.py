@@ -356,8 +356,10 @@ def assignment_levels(values, slots, owners, helds, whens, z_syms, algebraic, as
 
     torn = {z_syms[k] for k in algebraic}
     own = {h.variable: k for k, h in enumerate(helds)}
+    unknowns = set(z_syms)
     deps = []
     for e in values:
+        e = _without_modes(e, expr_of, unknowns)
         d = reads(e)
         for q in _closure(e, expr_of) & torn:
             # a discrete variable solved as an unknown (the full form) reads its own
@@ -369,6 +371,19 @@ def assignment_levels(values, slots, owners, helds, whens, z_syms, algebraic, as
     for start in range(len(values)):
         _level_of(start, deps, by_slot, level, [], values, slots, owners, helds, whens)
     return level
+
+
+def _without_modes(e, expr_of, unknowns):
+    """``e`` with its relations on the solver's unknowns replaced by a placeholder: such
+    a relation is a mode, frozen between events and switched by the event iteration
+    when the unknowns it reads contradict it, so an equation of a Boolean that reads it
+    (``off = s < 0 or pre(off) and not fire``, where s depends on off) reads no value
+    assigned at the same instant through it (Modelica 3.6, sec. 8.6)."""
+    if isinstance(e, no_event):
+        return e
+    modes = {r: sp.true for r in e.atoms(sp.core.relational.Relational)
+             if _closure(r, expr_of) & unknowns}
+    return e.xreplace(modes) if modes else e
 
 
 def _closure(e, expr_of) -> set:
