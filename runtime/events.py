@@ -236,14 +236,14 @@ def iterate_event(model, t, z, zp, crossed, initial: bool = False) -> EventActio
                 model.discrete.m[:] = before     # no side holds for good: keep the
                 break                            # one the dynamics before chose
             if equations:
-                z, again = discrete_iteration(model, t, z, before)
+                z, again = discrete_iteration(model, t, z, before, decided=decided)
                 fired |= again
             seen.append(model.m.copy())
             continue
         before = model.m.copy()
         disc.settle(t, z, p, bad, lambda zz=z: model.rates(t, zz, np.zeros(model.n)))
         if equations:
-            z, again = discrete_iteration(model, t, z, before)
+            z, again = discrete_iteration(model, t, z, before, decided=decided)
             fired |= again
         if any(np.array_equal(model.m, m) for m in seen):
             z = _solve_live(model, t, z, decided)
@@ -273,7 +273,7 @@ def _fire_clauses(model, t, z, m_prev):
     return z, fired
 
 
-def discrete_iteration(model, t, z, m_prev, initial: bool = False):
+def discrete_iteration(model, t, z, m_prev, initial: bool = False, decided=None):
     """Modelica's event iteration over the Boolean and Integer equations and the
     when-clauses (Language Specification 3.6, sec. 8.6): the equations are evaluated
     with pre() as it is, the clauses whose condition became true since ``m_prev`` fire;
@@ -310,6 +310,8 @@ def discrete_iteration(model, t, z, m_prev, initial: bool = False):
             disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), model.resolution)
         else:                       # the items that read what changed
             bad = disc.contradicted(t, z, p)
+            if decided is not None:
+                bad &= ~decided
             if bad.any():
                 zeros = np.zeros(disc.n_rel + disc.n_disc)
                 disc.settle(t, z, p, bad, lambda: zeros)
