@@ -2,7 +2,8 @@
 against closed forms and an independent integration: the ideal thyristor latching from
 its firing to its current zero, the GTO thyristor stopping with its fire signal, the
 triac clamping both half waves, the Boolean two-way and intermediate switches, and the
-closer and opener with an arc (the arc voltage's ramp, the quench)."""
+closer and opener with an arc (the arc voltage's ramp, the quench), the switched
+capacitor of the MSL's CauerLowPassSC (a charge C v a period)."""
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
@@ -10,6 +11,7 @@ from scipy.integrate import solve_ivp
 import acausal as ac
 from acausal.library import electrical as el
 from acausal.library.blocks import BooleanConstant, BooleanPulse, BooleanStep
+from acausal.library.electrical.examples.msl.utilities import SwitchedCapacitor
 
 U, F, VKNEE, R_LOAD, RON, GOFF = 10.0, 1.0, 1.0, 1.0, 1e-5, 1e-5
 
@@ -256,3 +258,40 @@ def test_switch_with_arc_holds_the_current_until_the_arc_quenches(cls, opener):
     assert np.max(np.abs(res["sw.v"][burning] - ramp)) < 1e-9 * VMAX
     assert res["sw.tSwitch"][-1] == pytest.approx(0.6, abs=1e-12)
     assert np.min(res["sw.LossPower"]) > -1e-9
+
+
+class SwitchedCapacitorBench(ac.Component):
+    """1 V through a switched capacitor (clock 10 ms, C = clock/|R|) into Cbig = 1 mF; the
+    switches' Goff 1e-12 S (their leak would move 1e-5 V a period)."""
+
+    def __init__(self, R, **mods):
+        super().__init__(**mods)
+        self.src = el.ConstantVoltage(V=1.0)
+        self.sc = SwitchedCapacitor(clock=0.01, R=R,
+                                    Capacitor={"v": {"start": 0.0, "fixed": True}},
+                                    IdealCommutingSwitch1={"Goff": 1e-12},
+                                    IdealCommutingSwitch2={"Goff": 1e-12})
+        self.Cbig = el.Capacitor(C=1e-3, v={"start": 0.0, "fixed": True})
+        self.gnd = el.Ground()
+
+    def equations(self):
+        return [ac.connect(self.src.p, self.sc.p), ac.connect(self.sc.n, self.Cbig.p),
+                ac.connect(self.src.n, self.Cbig.n, self.gnd.p)]
+
+
+@pytest.mark.parametrize("R", [100.0, -100.0])
+def test_switched_capacitor_moves_a_charge_c_v_each_period(R):
+    """Each period (the clock's first half true) the capacitor C = clock/|R| = 0.1 mF
+    shares its charge with Cbig: R > 0, discharged then put between 1 V and Cbig,
+    v_k = (Cbig v_k-1 + C)/(Cbig + C); R < 0, charged to 1 V then its + plate grounded,
+    v_k = (Cbig v_k-1 - C)/(Cbig + C).  So v_k = +-(1 - a^k), a = Cbig/(Cbig + C): a
+    resistance |R| = clock/C, negative for R < 0."""
+    clock, C, Cbig = 0.01, 1e-4, 1e-3
+    t = clock * (np.arange(1, 21) - 0.25)          # in the second half of each period
+    res = ac.simulate(SwitchedCapacitorBench(R), t_end=0.2, rtol=1e-8, t_eval=t,
+                      raise_on_failure=True)
+    k = np.arange(1, 21)
+    exact = np.sign(R) * (1 - (Cbig / (Cbig + C))**k)
+    # Ron = 1e-5 Ohm: the charge settles within nanoseconds
+    assert np.max(np.abs(res["Cbig.v"] - exact)) < 1e-8
+    assert res.compiled.derived_parameters["sc.C"] == pytest.approx(C, rel=1e-12)
