@@ -3,7 +3,8 @@ import acausal as ac
 from acausal.ports import HeatPort, NegativePin, PositivePin
 
 __all__ = ["OnePort", "TwoPin", "TwoPort", "FourPin", "ConditionalHeatPort",
-           "IdealSemiconductor", "IdealSwitch", "IdealSwitchWithArc"]
+           "LeanConditionalHeatPort", "IdealSemiconductor", "IdealSwitch",
+           "IdealSwitchWithArc"]
 
 
 class TwoPin(ac.Component):
@@ -94,17 +95,53 @@ class ConditionalHeatPort(ac.Component):
     heatPort = ac.Conditional(HeatPort(), "useHeatPort")
     LossPower = ac.Variable(unit="W", description="loss power leaving the component via "
                                                   "heatPort")
-    T_heatPort = ac.Variable(unit="K", description="temperature of heatPort")
+    # SI.Temperature's start and nominal, as the MSL declares it
+    T_heatPort = ac.Variable(start=288.15, nominal=300.0, unit="K",
+                             description="temperature of heatPort")
 
     def loss_power(self):
-        """P_loss = LossPower (the MSL's lossPower)."""
-        return self.LossPower
+        """P_loss = LossPower (the MSL's lossPower) without the heat port; with it the
+        loss leaves through heatPort (heatPort.Q_flow = -LossPower), a flow of energy to
+        the thermal network, so the component itself keeps none."""
+        return 0 if self.useHeatPort else self.LossPower
 
     def equations(self):
         if self.useHeatPort:
             return [ac.Eq(self.heatPort.T, self.T_heatPort),
                     ac.Eq(self.heatPort.Q_flow, -self.LossPower)]
         return [ac.Eq(self.T_heatPort, self.T)]
+
+
+class LeanConditionalHeatPort(ConditionalHeatPort):
+    """The :class:`ConditionalHeatPort` of an element that is one equation without its
+    heat port (the linear resistor and conductor): at the fixed device temperature T its
+    law reads T itself, and LossPower, T_heatPort (and the names in ``heat_variables``)
+    are variables only with ``useHeatPort=True``, so a ladder of a thousand resistors
+    keeps its size.  Without the port the loss is ``loss_power()`` (v i).
+    """
+
+    heat_variables = ("LossPower", "T_heatPort")
+
+    def declarations(self) -> dict:
+        decls = super().declarations()
+        if self.useHeatPort:
+            return decls
+        return {n: d for n, d in decls.items() if n not in self.heat_variables}
+
+    def device_temperature(self):
+        """T_heatPort with the heat port, else the parameter T."""
+        return self.T_heatPort if self.useHeatPort else self.T
+
+    def loss_power(self):
+        """The loss v i without the heat port; with it the loss leaves through heatPort."""
+        return 0 if self.useHeatPort else self.v * self.i
+
+    @ac.replaces(ConditionalHeatPort)
+    def equations(self):
+        if self.useHeatPort:
+            return [ac.Eq(self.heatPort.T, self.T_heatPort),
+                    ac.Eq(self.heatPort.Q_flow, -self.LossPower)]
+        return []
 
 
 class IdealSemiconductor(OnePort, ConditionalHeatPort):
@@ -129,10 +166,6 @@ class IdealSemiconductor(OnePort, ConditionalHeatPort):
     s = ac.Variable(start=0.0, description="auxiliary variable for actual position on the "
                                            "ideal diode characteristic")
 
-    def loss_power(self):
-        """P_loss = v i >= 0 (the characteristic lies in the first and third quadrants)."""
-        return self.v * self.i
-
     def equations(self):
         off = self.off
         return [ac.Eq(self.v, self.s * ac.if_else(off, 1, self.Ron) + self.Vknee),
@@ -153,10 +186,6 @@ class IdealSwitch(OnePort, ConditionalHeatPort):
     Goff = ac.Parameter(1e-5, unit="S", min=0, description="opened switch conductance")
     off = ac.Variable(type=bool, description="indicates off-state")
     s = ac.Variable(start=0.0, description="auxiliary variable (i when closed, v when open)")
-
-    def loss_power(self):
-        """P_loss = v i = s^2 Ron (closed), s^2 Goff (open)."""
-        return self.v * self.i
 
     def equations(self):
         off = self.off
@@ -196,10 +225,6 @@ class IdealSwitchWithArc(OnePort, ConditionalHeatPort):
     tSwitch = ac.Variable(discrete=True, start=-1e60, fixed=True, unit="s",
                           description="last switch off time instant (the MSL's start is "
                                       "-inf)")
-
-    def loss_power(self):
-        """P_loss = v i >= 0 (the arc voltage opposes the current)."""
-        return self.v * self.i
 
     def equations(self):
         v, i, off, quenched = self.v, self.i, self.off, self.quenched
