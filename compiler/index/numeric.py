@@ -49,10 +49,12 @@ class CoefficientValues:
             # (a flow regularised in a band around 0): its value at the compile-time
             # point says nothing about the block elsewhere, so it is not sampled
             return None
-        if not c.is_number:
-            c = c.xreplace({q: x for q in symbols_of(c)
-                            if (x := self._point(q)) is not None})
         try:
+            if not c.is_number:
+                # a relation whose operand is not a number there (0/0 at start values of
+                # 0) is refused by sympy with a TypeError: no value at this point
+                c = c.xreplace({q: x for q in symbols_of(c)
+                                if (x := self._point(q)) is not None})
             x = float(c)
         except (TypeError, ValueError):
             return None

@@ -2,9 +2,9 @@
 from acausal._sympy import sympy as sp
 
 import acausal as ac
-from acausal.ports import HeatPort, Pin, RealInput
+from acausal.ports import HeatPort, NegativePin, Pin, PositivePin, RealInput
 
-from .interfaces import ConditionalHeatPort, OnePort, TwoPort
+from .interfaces import ConditionalHeatPort, LeanConditionalHeatPort, OnePort, TwoPort
 
 __all__ = ["Ground", "Resistor", "Conductor", "Capacitor", "Inductor", "HeatingResistor",
            "VariableResistor", "VariableConductor", "VariableCapacitor", "VariableInductor",
@@ -22,53 +22,71 @@ class Ground(ac.Component):
         return [ac.Eq(self.p.v, 0)]
 
 
-class Resistor(OnePort):
+class Resistor(OnePort, LeanConditionalHeatPort):
     """Ideal linear resistor (Modelica.Electrical.Analog.Basic.Resistor, MSL v4.0.0),
     Ohm's law with a linear temperature coefficient:
 
-        R_actual = R (1 + alpha (T_heatPort - T_ref)),   v = R_actual i
+        R_actual = R (1 + alpha (T_heatPort - T_ref)),   v = R_actual i,   LossPower = v i
 
-    Without the MSL's heat port (useHeatPort, not here yet) the device is at its
-    reference temperature (the MSL's T = T_ref), so R_actual = R; T_ref and alpha act
-    once the port is there.  The loss is declared by ``loss_power``.
+    With ``useHeatPort=True`` the resistor is at the temperature of its ``heatPort``,
+    through which its loss leaves (heatPort.Q_flow = -LossPower); without it, at the
+    fixed device temperature T (T_ref by default), it is the one equation
+    v = R (1 + alpha (T - T_ref)) i, and R_actual, LossPower and T_heatPort are not
+    variables (:class:`~.interfaces.LeanConditionalHeatPort`; its loss is
+    ``loss_power()``).
     """
 
-    R = ac.Parameter(1.0, unit="Ohm", description="resistance")
+    R = ac.Parameter(1.0, unit="Ohm", description="resistance at temperature T_ref")
     T_ref = ac.Parameter(300.15, unit="K", min=0, description="reference temperature")
     alpha = ac.Parameter(0.0, unit="1/K",
                          description="temperature coefficient of resistance (R_actual = "
                                      "R (1 + alpha (T_heatPort - T_ref)))")
+    T = ac.Parameter(lambda c: c.T_ref, unit="K", min=0,
+                     description="fixed device temperature if useHeatPort = false")
+    R_actual = ac.Variable(unit="Ohm",
+                           description="actual resistance = R (1 + alpha (T_heatPort - T_ref))")
 
-    def loss_power(self):
-        """P_loss = R i^2 (to the environment; the audit checks it against v i)."""
-        return self.R * self.i**2
+    heat_variables = ("LossPower", "T_heatPort", "R_actual")
 
     def equations(self):
-        return [ac.Eq(self.v, self.R * self.i)]
+        R_actual = self.R * (1 + self.alpha * (self.device_temperature() - self.T_ref))
+        if not self.useHeatPort:
+            return [ac.Eq(self.v, R_actual * self.i)]
+        return [ac.Eq(self.R_actual, R_actual),
+                ac.Eq(self.v, self.R_actual * self.i),
+                ac.Eq(self.LossPower, self.v * self.i)]
 
 
-class Conductor(OnePort):
+class Conductor(OnePort, LeanConditionalHeatPort):
     """Ideal linear conductor (Modelica.Electrical.Analog.Basic.Conductor, MSL v4.0.0)
     with a linear temperature coefficient:
 
-        G_actual = G / (1 + alpha (T_heatPort - T_ref)),   i = G_actual v
+        G_actual = G / (1 + alpha (T_heatPort - T_ref)),   i = G_actual v,   LossPower = v i
 
-    (at its reference temperature without the MSL's heat port, as :class:`Resistor`:
-    G_actual = G).
+    at the temperature of its ``heatPort`` with ``useHeatPort=True``, else the one
+    equation i = G/(1 + alpha (T - T_ref)) v at the fixed device temperature T (T_ref by
+    default), as :class:`Resistor`.
     """
 
     G = ac.Parameter(1.0, unit="S", description="conductance at temperature T_ref")
     T_ref = ac.Parameter(300.15, unit="K", min=0, description="reference temperature")
     alpha = ac.Parameter(0.0, unit="1/K",
-                         description="temperature coefficient of resistance (G_actual = "
+                         description="temperature coefficient of conductance (G_actual = "
                                      "G/(1 + alpha (T_heatPort - T_ref)))")
+    T = ac.Parameter(lambda c: c.T_ref, unit="K", min=0,
+                     description="fixed device temperature if useHeatPort = false")
+    G_actual = ac.Variable(unit="S",
+                           description="actual conductance = G/(1 + alpha (T_heatPort - T_ref))")
 
-    def loss_power(self):
-        """P_loss = G v^2 (the audit checks it against v i)."""
-        return self.G * self.v**2
+    heat_variables = ("LossPower", "T_heatPort", "G_actual")
 
     def equations(self):
-        return [ac.Eq(self.i, self.G * self.v)]
+        G_actual = self.G / (1 + self.alpha * (self.device_temperature() - self.T_ref))
+        if not self.useHeatPort:
+            return [ac.Eq(self.i, G_actual * self.v)]
+        return [ac.Eq(self.G_actual, G_actual),
+                ac.Eq(self.i, self.G_actual * self.v),
+                ac.Eq(self.LossPower, self.v * self.i)]
 
 
 class Capacitor(OnePort):
@@ -225,47 +243,51 @@ class VariableInductor(OnePort):
                 ac.Eq(self.v, ac.der(self.Psi))]
 
 
-class Potentiometer(ac.Component):
-    """Adjustable resistor with a sliding contact (MSL Analog.Basic.Potentiometer), the
-    contact at r between pin_n (r = 0) and pin_p (r = 1):
+class Potentiometer(ConditionalHeatPort):
+    """Adjustable resistor with a sliding contact (Modelica.Electrical.Analog.Basic.
+    Potentiometer, MSL v4.0.0), the contact at r between pin_n (r = 0) and pin_p (r = 1):
 
-        Rp = R (1 - r_c),   Rn = R r_c,   r_c = min(1, max(0, r))
+        r_c = min(1, max(0, r)),   R_T = R (1 + alpha (T_heatPort - T_ref))
+        Rp = R_T (1 - r_c),   Rn = R_T r_c
         pin_p.v - contact.v = Rp pin_p.i,   pin_n.v - contact.v = Rn pin_n.i
         pin_p.i + pin_n.i + contact.i = 0
+        LossPower = (pin_p.v - contact.v) pin_p.i + (pin_n.v - contact.v) pin_n.i
 
     r is the parameter rConstant, or with ``Potentiometer(useRinput=True)`` the signal
-    input ``r`` (a structural choice, as the MSL's useRinput).  Without the MSL's heat
-    port the device is at T_ref, and R is not changed by alpha (as :class:`Resistor`).
+    input ``r`` (the MSL's useRinput); the temperature is the heat port's with
+    ``useHeatPort=True``, else the fixed T (T_ref by default).
     """
 
     R = ac.Parameter(1.0, unit="Ohm", description="resistance at temperature T_ref")
     T_ref = ac.Parameter(293.15, unit="K", min=0, description="reference temperature")
     alpha = ac.Parameter(0.0, unit="1/K",
-                         description="temperature coefficient of resistance")
+                         description="temperature coefficient of resistance (R_actual = "
+                                     "R (1 + alpha (T_heatPort - T_ref)))")
+    T = ac.Parameter(lambda c: c.T_ref, unit="K", min=0,
+                     description="fixed device temperature if useHeatPort = false")
     rConstant = ac.Parameter(0.5, min=0, max=1,
-                             description="contact position without the input r")
-    pin_p = Pin()
-    pin_n = Pin()
-    contact = Pin()
-    Rp = ac.Variable(unit="Ohm", description="resistance between pin_p and contact")
-    Rn = ac.Variable(unit="Ohm", description="resistance between contact and pin_n")
+                             description="contact between n (r = 0) and p (r = 1)")
+    pin_p = PositivePin()
+    pin_n = NegativePin()
+    contact = PositivePin()
+    Rp = ac.Variable(unit="Ohm", description="actual resistance between pin_p and contact")
+    Rn = ac.Variable(unit="Ohm", description="actual resistance between contact and pin_n")
 
     useRinput = ac.Parameter(False, structural=True,
-                             description="the contact position is the input r")
+                             description="use input for 0 < r < 1 (else constant)")
     r = ac.Conditional(RealInput(), "useRinput")
-
-    def loss_power(self):
-        """Rp pin_p.i^2 + Rn pin_n.i^2."""
-        return self.Rp * self.pin_p.i**2 + self.Rn * self.pin_n.i**2
 
     def equations(self):
         # the parameter is checked against [0, 1]; only the signal needs the clipping
         r_c = ac.min(1, ac.max(0, self.r.signal)) if self.useRinput else self.rConstant
+        R_T = self.R * (1 + self.alpha * (self.T_heatPort - self.T_ref))
         return [ac.Eq(0, self.pin_p.i + self.pin_n.i + self.contact.i),
-                ac.Eq(self.Rp, self.R * (1 - r_c)),
-                ac.Eq(self.Rn, self.R * r_c),
+                ac.Eq(self.Rp, R_T * (1 - r_c)),
+                ac.Eq(self.Rn, R_T * r_c),
                 ac.Eq(self.pin_p.v - self.contact.v, self.Rp * self.pin_p.i),
-                ac.Eq(self.pin_n.v - self.contact.v, self.Rn * self.pin_n.i)]
+                ac.Eq(self.pin_n.v - self.contact.v, self.Rn * self.pin_n.i),
+                ac.Eq(self.LossPower, (self.pin_p.v - self.contact.v) * self.pin_p.i
+                      + (self.pin_n.v - self.contact.v) * self.pin_n.i)]
 
 
 class Transformer(TwoPort):

@@ -14,7 +14,8 @@ from acausal.ports import NegativePin, PositivePin
 from .ideal import IdealDiode
 from .interfaces import ConditionalHeatPort, OnePort
 
-__all__ = ["Diode", "ZDiode", "Thyristor", "SimpleTriac", "exlin", "exlin2", "powlin"]
+__all__ = ["Diode", "ZDiode", "Thyristor", "SimpleTriac", "exlin", "exlin2", "powlin",
+           "TemperatureDependentHeatPort"]
 
 
 def boltzmann():
@@ -46,7 +47,18 @@ def powlin(x, y):
     return ac.no_event(ac.if_else(x > 0, 1 + y * x, (1 - x) ** (-y)))
 
 
-class Diode(OnePort, ConditionalHeatPort):
+class TemperatureDependentHeatPort(ConditionalHeatPort):
+    """The MSL's ``ConditionalHeatPort(useHeatPort=useTemperatureDependency)`` of the
+    diode and the transistors: a device whose law depends on its temperature has its heat
+    port unless ``useHeatPort=False`` is given."""
+
+    def __init__(self, **modifications):
+        modifications.setdefault("useHeatPort",
+                                 modifications.get("useTemperatureDependency", False))
+        super().__init__(**modifications)
+
+
+class Diode(OnePort, TemperatureDependentHeatPort):
     """Simple diode (Modelica.Electrical.Analog.Semiconductors.Diode, MSL v4.0.0): the
     Shockley law continued linearly above Maxexp, with a parallel ohmic resistance:
 
@@ -58,8 +70,9 @@ class Diode(OnePort, ConditionalHeatPort):
         vt_t = k T_heatPort / q,   aux = (T_heatPort/TNOM - 1) EG / (N vt_t)
         i = Ids (exlin(v/(N vt_t), Maxexp) - 1) (T_heatPort/TNOM)^(XTI/N) exp(aux) + v/R
 
-    LossPower = v i.  (The MSL also gives the diode its heat port when it depends on
-    temperature; without it the device is at the fixed temperature T.)
+    LossPower = v i.  As the MSL's, the diode has its heat port (at whose temperature
+    T_heatPort it is) when it depends on temperature, unless ``useHeatPort=False``;
+    without the port it is at the fixed temperature T.
     """
 
     Ids = ac.Parameter(1e-6, unit="A", description="saturation current")
@@ -75,7 +88,9 @@ class Diode(OnePort, ConditionalHeatPort):
     XTI = ac.Parameter(3.0, description="temperature exponent of saturation current")
     k = boltzmann()
     q = electron_charge()
-    vt_t = ac.Variable(unit="V", description="temperature voltage")
+    # start: k T/q at 20 degC, the Newton guess where vt_t is solved with the heat port's
+    # temperature (the MSL leaves it to the tool's 0, where v/(N vt_t) is not a number)
+    vt_t = ac.Variable(start=0.02526, unit="V", description="temperature voltage")
     id = ac.Variable(unit="A", description="diode current")
 
     def equations(self):

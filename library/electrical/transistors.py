@@ -2,23 +2,24 @@
 bipolar transistors ``NPN`` and ``PNP`` and the MOS transistors ``NMOS`` and ``PMOS``.
 
 With ``useTemperatureDependency=True`` (structural) their parameters follow the device
-temperature T_heatPort; the MSL then also gives them their heat port, which is not here
-yet: the device is at the fixed temperature T (:class:`~.interfaces.ConditionalHeatPort`).
-The substrate pin of the bipolar transistors (``useSubstrate``) is not here either: the
-substrate is grounded, as with the MSL's default useSubstrate = false.
+temperature T_heatPort, that of their heat port, which they then have as the MSL's (its
+``useHeatPort`` defaults to ``useTemperatureDependency``); without the port the device is
+at the fixed temperature T (:class:`~.interfaces.ConditionalHeatPort`).  The substrate
+pin of the bipolar transistors (``useSubstrate``) is not here: the substrate is
+grounded, as with the MSL's default useSubstrate = false.
 """
 from acausal._sympy import sympy as sp
 
 import acausal as ac
 from acausal.ports import Pin
 
-from .interfaces import ConditionalHeatPort
-from .semiconductors import boltzmann, electron_charge, exlin2, powlin
+from .semiconductors import (TemperatureDependentHeatPort, boltzmann, electron_charge,
+                             exlin2, powlin)
 
 __all__ = ["NPN", "PNP", "NMOS", "PMOS"]
 
 
-class _BipolarTransistor(ConditionalHeatPort):
+class _BipolarTransistor(TemperatureDependentHeatPort):
     """Parameters, temperature laws and substrate of the MSL's NPN and PNP."""
 
     Bf = ac.Parameter(50.0, description="forward beta")
@@ -192,7 +193,7 @@ class PNP(_BipolarTransistor):
                       + (self.icb - self.ieb) * self.qbk * (self.C.v - self.E.v))]
 
 
-class _MOS(ConditionalHeatPort):
+class _MOS(TemperatureDependentHeatPort):
     """Parameters and temperature laws of the MSL's NMOS and PMOS."""
 
     W = ac.Parameter(20.0e-6, unit="m", description="width")

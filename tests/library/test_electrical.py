@@ -5,7 +5,7 @@ from scipy.integrate import solve_ivp
 
 import acausal as ac
 from acausal.library import electrical as el
-from acausal.library.blocks import Sine, Step
+from acausal.library.blocks import BooleanStep, Sine
 
 
 class HalfWaveRectifier(ac.Component):
@@ -297,8 +297,8 @@ class SwitchedRC(ac.Component):
     """2 V charges C = 1 mF through 1 kOhm once a switch closes at 0.5 s; a second
     switch in series opens at 2 s and the capacitor keeps its charge."""
 
-    close_at = Step(height=1.0, startTime=0.5)
-    open_at = Step(height=1.0, startTime=2.0)
+    close_at = BooleanStep(startTime=0.5)
+    open_at = BooleanStep(startTime=2.0)
     source = el.ConstantVoltage(V=2.0)
     closing = el.IdealClosingSwitch(Goff=0.0)
     opening = el.IdealOpeningSwitch(Goff=0.0)

@@ -54,24 +54,27 @@ def test_saturating_inductor_refuses_an_order_other_than_lzer_lnom_linf():
 class HotResistors(ac.Component):
     """10 V across a VariableResistor (R = 5) and a VariableConductor (G = 0.2), at
     T = 350 K with alpha = 4e-3 1/K about T_ref = 300 K, and across a Resistor, a
-    Conductor and a Potentiometer with the same alpha and T_ref (without a heat port:
-    at T_ref)."""
+    Conductor and a Potentiometer with the same alpha and T_ref, at T = 350 K (the fixed
+    device temperature without a heat port) and at their default T = T_ref."""
 
     src = el.ConstantVoltage(V=10.0)
-    R = el.Resistor(R=5.0, T_ref=300.0, alpha=4e-3)
-    G = el.Conductor(G=0.2, T_ref=300.0, alpha=4e-3)
+    R = el.Resistor(R=5.0, T_ref=300.0, alpha=4e-3, T=350.0)
+    G = el.Conductor(G=0.2, T_ref=300.0, alpha=4e-3, T=350.0)
     VR = el.VariableResistor(T_ref=300.0, alpha=4e-3, T=350.0)
     VG = el.VariableConductor(T_ref=300.0, alpha=4e-3, T=350.0)
-    pot = el.Potentiometer(R=5.0, T_ref=300.0, alpha=4e-3, rConstant=0.25)
+    pot = el.Potentiometer(R=5.0, T_ref=300.0, alpha=4e-3, rConstant=0.25, T=350.0)
+    R0 = el.Resistor(R=5.0, T_ref=300.0, alpha=4e-3)
+    G0 = el.Conductor(G=0.2, T_ref=300.0, alpha=4e-3)
     r = Ramp(offset=5.0, height=0.0)
     g = Ramp(offset=0.2, height=0.0)
     gnd = el.Ground()
 
     def equations(self):
         top, bottom = self.src.p, self.src.n
-        return [ac.connect(top, self.R.p, self.G.p, self.VR.p, self.VG.p, self.pot.pin_p),
+        return [ac.connect(top, self.R.p, self.G.p, self.VR.p, self.VG.p, self.pot.pin_p,
+                           self.R0.p, self.G0.p),
                 ac.connect(bottom, self.R.n, self.G.n, self.VR.n, self.VG.n,
-                           self.pot.pin_n, self.gnd.p),
+                           self.pot.pin_n, self.R0.n, self.G0.n, self.gnd.p),
                 ac.connect(self.r.y, self.VR.R), ac.connect(self.g.y, self.VG.G)]
 
 
@@ -82,12 +85,16 @@ def test_temperature_coefficient_of_the_resistive_elements():
     assert res["VR.R_actual"][0] == pytest.approx(5.0 * factor, rel=1e-12)
     assert res["VG.i"][0] == pytest.approx(0.2 / factor * 10.0, rel=1e-12)
     assert res["VR.LossPower"][0] == pytest.approx(100.0 / (5.0 * factor), rel=1e-12)
-    # at their reference temperature: no change of resistance
-    assert res["R.i"][0] == pytest.approx(2.0, rel=1e-12)
-    assert res["G.i"][0] == pytest.approx(2.0, rel=1e-12)
-    assert res["pot.pin_p.i"][0] == pytest.approx(2.0, rel=1e-12)
-    with pytest.raises(ac.NotInModel):
-        el.Resistor(T=350.0)           # no temperature of its own without the heat port
+    assert res["R.i"][0] == pytest.approx(10.0 / (5.0 * factor), rel=1e-12)
+    assert res["G.i"][0] == pytest.approx(0.2 / factor * 10.0, rel=1e-12)
+    assert res["pot.pin_p.i"][0] == pytest.approx(10.0 / (5.0 * factor), rel=1e-12)
+    assert res["pot.LossPower"][0] == pytest.approx(100.0 / (5.0 * factor), rel=1e-12)
+    # at their reference temperature (T = T_ref by default): no change of resistance
+    assert res["R0.i"][0] == pytest.approx(2.0, rel=1e-12)
+    assert res["G0.i"][0] == pytest.approx(2.0, rel=1e-12)
+    # without the heat port a resistor is one equation: no R_actual, LossPower, T_heatPort
+    with pytest.raises(KeyError, match="R_actual"):
+        res["R.R_actual"]
 
 
 def test_resistor_accepts_a_negative_resistance_as_the_msl_does():

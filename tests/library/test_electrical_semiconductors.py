@@ -55,9 +55,10 @@ def test_diode_characteristic_with_its_linear_continuation():
 
 def test_diode_temperature_dependency_at_a_fixed_temperature():
     """useTemperatureDependency: vt_t = k T/q and the saturation current scaled by
-    (T/TNOM)^(XTI/N) exp((T/TNOM - 1) EG/(N vt_t)), the device at T = 350 K."""
+    (T/TNOM)^(XTI/N) exp((T/TNOM - 1) EG/(N vt_t)), the device at T = 350 K (without the
+    heat port it would have by default)."""
     T, TNOM, EG, XTI, N = 350.0, 300.15, 1.11, 3.0, 1.0
-    res = _sweep(el.Diode(useTemperatureDependency=True, T=T), -1.0, 0.6)
+    res = _sweep(el.Diode(useTemperatureDependency=True, useHeatPort=False, T=T), -1.0, 0.6)
     v, i = res["dut.v"], res["dut.i"]
     vt = K_Q * T
     scale = (T / TNOM) ** (XTI / N) * math.exp((T / TNOM - 1) * EG / (N * vt))

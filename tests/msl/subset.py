@@ -25,4 +25,5 @@ QUICK = {
     "Modelica.Electrical.Analog.Examples.CauerLowPassOPV",
     "Modelica.Electrical.Analog.Examples.OpAmps.InvertingAmplifier",
     "Modelica.Electrical.Analog.Examples.NandGate",
+    "Modelica.Electrical.Analog.Examples.HeatingRectifier",
 }

@@ -42,7 +42,7 @@ def test_help_shows_description_unit_bounds_and_the_class_docstring():
     assert "T_ref : float [K], default 300.15 (min 0)" in text
     assert "resistance" in text
     assert "<acausal.components.declarations.Parameter object>" not in text
-    assert "Parameter(1.0, unit='Ohm', description='resistance')" in text
+    assert "Parameter(1.0, unit='Ohm', description='resistance at temperature T_ref')" in text
     assert "p : PositivePin" in text                   # ports listed too
 
 
@@ -81,8 +81,9 @@ def test_summary_paragraph_is_kept():
 
 
 def test_repr_shows_values_with_units():
-    assert repr(Resistor()) == "<Resistor (unbound): R=1.0 Ohm, T_ref=300.15 K, alpha=0.0 1/K>"
-    assert repr(Resistor(R=5.0)).startswith("<Resistor (unbound): R=5.0 Ohm, T_ref=")
+    assert repr(Resistor()) == ("<Resistor (unbound): useHeatPort=False, T=computed K, "
+                                "R=1.0 Ohm, T_ref=300.15 K, alpha=0.0 1/K>")
+    assert "R=5.0 Ohm, T_ref=" in repr(Resistor(R=5.0))
     motor = DCMotor(L=2e-3)
     assert "L=0.002 H" in repr(motor) and "k=0.05 N.m/A" in repr(motor)
     assert repr(Resistor().p) == "<PositivePin (unbound)>"    # ports stay short

@@ -1,16 +1,20 @@
 """Modelica.Electrical.Analog.Examples.Utilities (MSL v4.0.0): the sub-circuits the
 examples are built of."""
+from acausal._sympy import sympy as sp
+
 import acausal as ac
-from acausal.library.electrical import (NMOS, NPN, PMOS, Capacitor,
+from acausal.library.blocks import (BooleanPulse, Constant, LessEqualThreshold,
+                                    LogicalSwitch, Not)
+from acausal.library.electrical import (NMOS, NPN, PMOS, Capacitor, IdealTwoWaySwitch,
                                         Conductor as BasicConductor, GeneralCurrentToVoltageAdaptor,
                                         GeneralVoltageToCurrentAdaptor, Ground, Inductor,
                                         OnePort, Resistor as BasicResistor, SignalCurrent,
                                         SignalVoltage)
-from acausal.ports import Pin, RealInput, RealOutput
+from acausal.ports import NegativePin, Pin, PositivePin, RealInput, RealOutput
 
 __all__ = ["NonlinearResistor", "Transistor", "Nand", "DirectCapacitor",
            "InverseCapacitor", "DirectInductor", "InverseInductor", "Resistor",
-           "Conductor"]
+           "Conductor", "SwitchedCapacitor"]
 
 
 class NonlinearResistor(OnePort):
@@ -239,3 +243,50 @@ class Conductor(ac.Component):
                 c(self.currentToVoltage1.pin_n, self.conductor.n),
                 c(self.conductor.n, self.currentToVoltage2.pin_n),
                 c(self.conductor.n, self.ground.p)]
+
+
+class SwitchedCapacitor(ac.Component):
+    """Switched capacitor which can represent a positive or negative resistance
+    (Modelica.Electrical.Analog.Examples.Utilities.SwitchedCapacitor, MSL v4.0.0): a
+    capacitor C = clock/|R| between two two-way switches.  Each clock period the
+    capacitor is charged between the pins and discharged to ground, passing a charge
+    C v = v clock/|R| per period, the current of a resistance |R|; for R <= 0 the first
+    switch turns with the inverted clock, so the charge passes the other way round (a
+    negative resistance).  ``Resistance`` is the MSL's RealExpression y = R (here a
+    constant); ``C`` is the capacitor's binding, clock/max(eps 1 Ohm, |R|).
+    """
+
+    clock = ac.Parameter(1.0, unit="s", description="clock")
+    R = ac.Parameter(1.0, unit="Ohm", description="resistance")
+    oneOhm = ac.Parameter(1.0, unit="Ohm", description="1 Ohm (the MSL's oneOhm)")
+    C = ac.Parameter(lambda c: c.clock / sp.Max(2.220446049250313e-16 * c.oneOhm,
+                                                sp.Abs(c.R)),
+                     unit="F", description="capacitance clock/max(eps 1 Ohm, |R|)")
+    BooleanPulse = BooleanPulse(period=ac.ref("clock"))
+    Capacitor = Capacitor(C=ac.ref("C"))
+    IdealCommutingSwitch1 = IdealTwoWaySwitch()
+    IdealCommutingSwitch2 = IdealTwoWaySwitch()
+    Ground1 = Ground()
+    Ground2 = Ground()
+    p = PositivePin()
+    n = NegativePin()
+    lessEqualThreshold = LessEqualThreshold()
+    Resistance = Constant(k=ac.ref("R"))
+    not1 = Not()
+    logicalSwitch = LogicalSwitch()
+
+    def equations(self):
+        c = ac.connect
+        return [c(self.IdealCommutingSwitch1.p, self.Capacitor.p),
+                c(self.Capacitor.n, self.IdealCommutingSwitch2.p),
+                c(self.IdealCommutingSwitch2.control, self.BooleanPulse.y),
+                c(self.Ground1.p, self.IdealCommutingSwitch1.n2),
+                c(self.Ground2.p, self.IdealCommutingSwitch2.n2),
+                c(self.IdealCommutingSwitch1.n1, self.p),
+                c(self.IdealCommutingSwitch2.n1, self.n),
+                c(self.Resistance.y, self.lessEqualThreshold.u),
+                c(self.logicalSwitch.y, self.IdealCommutingSwitch1.control),
+                c(self.logicalSwitch.u3, self.BooleanPulse.y),
+                c(self.logicalSwitch.u1, self.not1.y),
+                c(self.not1.u, self.BooleanPulse.y),
+                c(self.lessEqualThreshold.y, self.logicalSwitch.u2)]
