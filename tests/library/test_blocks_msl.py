@@ -143,8 +143,8 @@ def test_kinematic_ptp_moves_its_distance_within_its_limits():
     class Move(ac.Component):
         ptp = KinematicPTP(deltaq=[2.0, -1.0], qd_max=[1.0, 1.0], qdd_max=[2.0, 2.0],
                            startTime=0.2)
-        v = Integrator(x={"start": 0.0, "fixed": True})
-        q = Integrator(x={"start": 0.0, "fixed": True})
+        v = Integrator()
+        q = Integrator()
 
         def equations(self):
             return [ac.connect(self.ptp.y[0], self.v.u), ac.connect(self.v.y, self.q.u)]
