@@ -20,10 +20,11 @@ __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidV
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
            "der", "if_else", "no_event", "delay", "when", "When", "reinit", "pre", "sign",
            "time", "sample", "assign", "edge", "change", "initial", "integer", "Conditional",
-           "AbsentComponent", "MissingInput", "Init"]
+           "AbsentComponent", "MissingInput", "Init", "ExpandableConnector"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
     ".arrays": ("InvalidIndex",),
+    ".expandable": ("ExpandableConnector",),
     ".symbols": ("Eq", "Equation", "When", "delay", "der", "if_else", "no_event", "reinit",
                  "sign", "time", "when", "sample", "assign"),
     ".logic": ("pre", "edge", "change", "initial", "integer"),

@@ -459,6 +459,10 @@ class Connection:
 def connect(a: Port, b: Port, *more: Port) -> Connection:
     """Connect ports of the same type: ``ac.connect(self.R1.n, self.C1.p)``."""
     ports = (a, b) + more
+    if any(getattr(p, "_bus_end", False) for p in ports):
+        from .expandable import check_connection      # through a bus: typed when flattened
+        check_connection(ports)
+        return Connection(ports)
     for p in ports:
         if isinstance(p, Component) and not isinstance(p, Port):
             own = [n for n, c in p.children().items() if isinstance(c, Port)]

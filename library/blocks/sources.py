@@ -9,7 +9,7 @@ from .interfaces import SO, SignalSource
 
 __all__ = ["Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid",
            "Sinc", "SineVariableFrequencyAndAmplitude", "CosineVariableFrequencyAndAmplitude",
-           "KinematicPTP"]
+           "KinematicPTP", "RealExpression"]
 
 
 class Constant(SO):
@@ -19,6 +19,12 @@ class Constant(SO):
 
     def equations(self):
         return [ac.Eq(self.y, self.k)]
+
+
+class RealExpression(SO):
+    """A Real output given by an equation of the enclosing model,
+    ``ac.Eq(self.realExpression.y, ac.time)`` (Modelica.Blocks.Sources.RealExpression,
+    whose ``y`` is bound to the expression)."""
 
 
 class Step(SignalSource):
