@@ -10,7 +10,7 @@ __all__ = ["SO", "SISO", "SI2SO", "SignalSource", "Constant", "Step", "Ramp", "S
            "SineVariableFrequencyAndAmplitude", "CosineVariableFrequencyAndAmplitude",
            "KinematicPTP", "RealExpression", "LimPID", "LimitedPI", "LimitedPID", "InverseBlockConstraints", "MultiProduct",
            "RectangularToPolar", "Pythagoras", "Mean", "RootMeanSquare", "Harmonic",
-           "TotalHarmonicDistortion",
+           "TotalHarmonicDistortion", "MultiSum", "MinMax", "LinearDependency", "MultiSwitch",
            # Boolean and Integer signals (logical, boolean_sources, integer_sources,
            # conversions; math_boolean and math_integer by module: their names are the MSL's)
            "And", "Or", "Xor", "Nor", "Nand", "Not", "Pre", "Edge", "FallingEdge", "Change",
@@ -33,7 +33,8 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".filters": ("Filter", "CriticalDamping"),
     ".interfaces": ("SI2SO", "SISO", "SO", "SignalSource"),
     ".math": ("Abs", "Add", "Add3", "Division", "Feedback", "Gain", "Max", "Min", "Product",
-              "Sqrt", "InverseBlockConstraints"),
+              "Sqrt", "InverseBlockConstraints", "MultiSum", "MinMax", "LinearDependency",
+              "MultiSwitch"),
     ".nonlinear": ("DeadZone", "Limiter", "Saturation", "SlewRateLimiter"),
     ".sources": ("Constant", "Cosine", "ExpSine", "Pulse", "Ramp", "Sine", "Step",
                  "Trapezoid", "Sinc", "SineVariableFrequencyAndAmplitude",

@@ -12,8 +12,8 @@ import pytest
 
 import acausal as ac
 from acausal.library.blocks import (Constant, CriticalDamping, Der, Filter, Harmonic,
-                                    Integrator, KinematicPTP, LimPID, Mean, RootMeanSquare,
-                                    Sinc, Sine, SineVariableFrequencyAndAmplitude,
+                                    Integrator, KinematicPTP, LimPID, Mean, Pythagoras,
+                                    Ramp, RootMeanSquare, Sinc, Sine, SineVariableFrequencyAndAmplitude,
                                     SlewRateLimiter, Step, TotalHarmonicDistortion)
 from acausal.library.blocks import filter_design
 
@@ -212,7 +212,27 @@ def test_mean_rms_and_harmonics_of_a_known_signal_after_each_period():
     assert res["third.y_arg"][-1] == pytest.approx(math.pi / 2 - 0.3, abs=1e-7)
 
 
-@pytest.mark.xfail(strict=True, reason="the runtime judges the limiter's relation u < 1e-15 "
+def test_pythagoras_leg_is_valid_while_the_hypotenuse_is_the_longer():
+    class Triangle(ac.Component):
+        one = Constant(k=1.0)
+        ramp = Ramp(height=2.0, duration=1.0)
+        leg = Pythagoras(u1IsHypotenuse=True)
+        hypotenuse = Pythagoras()
+
+        def equations(self):
+            return [ac.connect(self.one.y, self.leg.u1, self.hypotenuse.u1),
+                    ac.connect(self.ramp.y, self.leg.u2, self.hypotenuse.u2)]
+
+    t = np.linspace(0, 1, 41)
+    res = ac.simulate(Triangle(), t_end=1.0, rtol=1e-10, t_eval=t)
+    u2 = 2 * t
+    assert np.max(np.abs(res["leg.y"] - np.sqrt(np.maximum(1 - u2**2, 0)))) < 1e-12
+    assert list(res["leg.valid"]) == list(u2 <= 1)
+    assert np.max(np.abs(res["hypotenuse.y"] - np.hypot(1, u2))) < 1e-12
+    assert res["hypotenuse.valid"].all()
+
+
+@pytest.mark.xfail(strict=True, reason="the runtime judges the limiter's relation u < eps "
                    "at u = 0 as at its switching point, and the division it guards makes "
                    "every output of the first period NaN")
 def test_total_harmonic_distortion_of_a_fundamental_and_its_third_harmonic():
@@ -228,3 +248,5 @@ def test_total_harmonic_distortion_of_a_fundamental_and_its_third_harmonic():
     res = ac.simulate(Distorted(), t_end=0.05, rtol=1e-10, atol=1e-10, n_points=51)
     assert np.all(np.isfinite(res["thd.y"]))
     assert res["thd.y"][-1] == pytest.approx(0.2, rel=1e-7)
+    # valid once the first period (1/50 s) has given a first harmonic
+    assert list(res["thd.valid"]) == list(res.t >= 0.02)
