@@ -95,10 +95,9 @@ class Mean(SISO):
     t0 = ac.Parameter(0.0, unit="s", description="start of the first period")
     x = ac.Variable(start=0.0, description="integrator state")
     y_last = ac.Variable(start=0.0, fixed=True, description="the last period's mean")
-
-    def __init__(self, *, yGreaterOrEqualZero: bool = False, **modifications):
-        self.yGreaterOrEqualZero = bool(yGreaterOrEqualZero)
-        super().__init__(**modifications)
+    yGreaterOrEqualZero = ac.Parameter(False, structural=True,
+                                       description="true if the output y is guaranteed to "
+                                                   "be >= 0 for the exact solution")
 
     def initial_equations(self):
         return [ac.Eq(self.x, self.x0)]
@@ -155,10 +154,9 @@ class Harmonic(ac.Component):
     mean1 = Mean(f=ac.ref("f"), x0=ac.ref("x0Cos"))
     mean2 = Mean(f=ac.ref("f"), x0=ac.ref("x0Sin"))
     rectangularToPolar = RectangularToPolar()
-
-    def __init__(self, *, useConjugateComplex: bool = False, **modifications):
-        self.useConjugateComplex = bool(useConjugateComplex)
-        super().__init__(**modifications)
+    useConjugateComplex = ac.Parameter(False, structural=True,
+                                       description="gives the conjugate complex result if "
+                                                   "true")
 
     def build(self):
         self.gain = Gain(k=-1.0 if self.useConjugateComplex else 1.0)

@@ -1,4 +1,6 @@
 """Static signal operations (Modelica.Blocks.Math)."""
+from acausal._sympy import sympy as sp
+
 import acausal as ac
 
 from acausal.ports import BooleanInput, RealInput, RealOutput
@@ -7,7 +9,7 @@ from .interfaces import SI2SO, SISO, SO
 
 __all__ = ["Gain", "Add", "Add3", "Feedback", "Product", "Division", "Abs", "Sqrt", "Min",
            "Max", "InverseBlockConstraints", "MultiSum", "MinMax", "LinearDependency",
-           "MultiSwitch"]
+           "MultiSwitch", "WrapAngle"]
 
 
 class Gain(SISO):
@@ -199,4 +201,22 @@ class MultiSwitch(SO):
         y = self.y_default
         for u, value in reversed(list(zip(self.u, self.values))):
             y = ac.if_else(u, value, y)
+        return [ac.Eq(self.y, y)]
+
+
+class WrapAngle(SISO):
+    """Wrap an angle to the interval ]-pi, pi] or, with ``positiveRange``, [0, 2 pi[ (MSL
+    Blocks.Math.WrapAngle, Modelica.Math.wrapAngle):
+
+        y = mod(u, 2 pi),  less 2 pi where that exceeds pi (not positiveRange)
+
+    The wraps are events (``mod`` and the comparison)."""
+
+    positiveRange = ac.Parameter(False, structural=True,
+                                 description="use only positive output range, if true")
+
+    def equations(self):
+        y = sp.Mod(self.u.signal, 2 * sp.pi)
+        if not self.positiveRange:
+            y = ac.if_else(y > sp.pi, y - 2 * sp.pi, y)
         return [ac.Eq(self.y, y)]
