@@ -332,7 +332,7 @@ def _connection_equations(connections: list, nodes: list) -> list:
     for conn in connections:
         keys = []
         for p in conn.ports:
-            role = "outside" if getattr(p, "_parent", None) is conn.owner else "inside"
+            role = "outside" if _connector_owner(p) is conn.owner else "inside"
             key = (id(p), role, order[id(p)])
             ports[key] = p
             keys.append(key)
@@ -352,6 +352,15 @@ def _connection_equations(connections: list, nodes: list) -> list:
                 out.append(FlatEquation(sym, f"{sym.name} = 0", comp.path,
                                         type(comp).__name__, "unconnected"))
     return out
+
+
+def _connector_owner(p):
+    """The component whose connector ``p`` is: its parent, or for a member of a port (a
+    pin of a plug) the parent of the outermost port."""
+    owner = getattr(p, "_parent", None)
+    while isinstance(owner, Port):
+        owner = owner._parent
+    return owner
 
 
 def _node_equations(members: list, connections: list) -> list:
