@@ -21,9 +21,10 @@ __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidV
            "Parameter", "Variable", "Across", "Through", "Signal", "ref", "Eq", "Equation",
            "der", "if_else", "no_event", "delay", "when", "When", "reinit", "pre", "sign",
            "time", "sample", "assign", "edge", "change", "initial", "integer", "Conditional",
-           "AbsentComponent", "MissingInput", "Init", "PortGroup"]
+           "AbsentComponent", "MissingInput", "Init", "PortGroup", "ExpandableConnector"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
+    ".expandable": ("ExpandableConnector",),
     ".symbols": ("Eq", "Equation", "When", "delay", "der", "if_else", "no_event", "reinit",
                  "sign", "time", "when", "sample", "assign"),
     ".logic": ("pre", "edge", "change", "initial", "integer"),

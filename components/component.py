@@ -407,8 +407,16 @@ class Connection:
 
 
 def connect(a: Port, b: Port, *more: Port) -> Connection:
-    """Connect ports of the same type: ``ac.connect(self.R1.n, self.C1.p)``."""
+    """Connect ports of the same type: ``ac.connect(self.R1.n, self.C1.p)``.
+
+    A port made of ports (a polyphase plug of pins, Modelica's hierarchical connector)
+    connects member by member: the result is then a list of connections, one per
+    member."""
     ports = (a, b) + more
+    if any(getattr(p, "_bus_end", False) for p in ports):
+        from .expandable import check_connection      # through a bus: typed when flattened
+        check_connection(ports)
+        return Connection(ports)
     for p in ports:
         if isinstance(p, Component) and not isinstance(p, Port):
             own = [n for n, c in p.children().items() if isinstance(c, Port)]
@@ -430,7 +438,18 @@ def connect(a: Port, b: Port, *more: Port) -> Connection:
             raise InvalidConnection(f"{text}: port '{_port_name(p)}' appears more than "
                                     "once")
         seen.add(id(p))
+    members = _member_ports(ports[0])
+    if members:
+        return [connect(*(p._children[name] for p in ports)) for name in members]
     return Connection(ports)
+
+
+def _member_ports(port) -> list:
+    """The names of the ports a port is made of (a plug's ``pin[0]``, ...), if it declares
+    no variables of its own."""
+    if port.declarations():
+        return []
+    return [name for name, c in port._children.items() if isinstance(c, Port)]
 
 
 def in_context(err: ModelError, where: str) -> ModelError:
@@ -450,6 +469,9 @@ def _connection_type(self):
     """Ports connect when they carry the same across/through variable names, of the same
     value types (a Boolean signal does not connect to a Real one)."""
     decls = self.declarations()
+    members = _member_ports(self)
+    if members:     # a port made of ports: the same members, each of the same type
+        return ("members",) + tuple((n, self._children[n].connection_type()) for n in members)
     across = tuple(self.across())
     types = tuple(getattr(decls[n], "type", float).__name__ for n in across)
     return (across, tuple(self.through()), types)

@@ -54,9 +54,10 @@ def expand_connection(conn: Connection) -> list:
 
 
 def port_owner(port: Port):
-    """The component a port belongs to: its parent, above the groups it is in."""
+    """The component a port belongs to: its parent, above the groups (or the ports made
+    of ports, such as a polyphase plug of pins) it is in."""
     node = getattr(port, "_parent", None)
-    while isinstance(node, PortGroup):
+    while isinstance(node, Port):
         node = node._parent
     return node
 

@@ -47,6 +47,8 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
         if key in children:
             child = children[key]
             inner = f"'{_child_path(where, key)}' ({type(child).__name__})"
+            if _is_signal_port(child) and not (isinstance(mod, dict) and "signal" in mod):
+                mod = {"signal": mod}      # a signal port by its value: FirstOrder(y=1.0)
             if not isinstance(mod, dict):
                 raise InvalidValue(f"{where}: modification of sub-component '{key}' must "
                                    f"be a dict of its parameters, got {mod!r}")
@@ -82,6 +84,14 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
             raise NotInModel(f"{where} has no parameter, variable or sub-component named "
                              f"'{key}'{suggestion(key, known)} (it has: {', '.join(known)})")
     return out
+
+
+def _is_signal_port(comp) -> bool:
+    """A port that carries one signal (RealInput, BooleanOutput, ...): a modification of
+    it that is a number or a dict of attributes is its signal's (``FirstOrder(y=1.0)``
+    starts y at 1, as results name the signal by its port)."""
+    from .component import Port
+    return isinstance(comp, Port) and list(_declarations(type(comp))) == ["signal"]
 
 
 def _child_path(where: str, key: str) -> str:

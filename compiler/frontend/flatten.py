@@ -22,6 +22,7 @@ import sympy as sp
 from ...components import inheritance
 from ...components.component import Component, Connection, Port, compiling, in_context
 from ...components.declarations import Parameter, bound_violation
+from ...components.expandable import drop_bus_members, resolve_buses
 from ...components.logic import INITIAL
 from ...components.portgroups import expand_connection, port_owner
 from ...components.symbols import Equation, When, der, time
@@ -43,7 +44,7 @@ def flatten(model: Component) -> FlatModel:
     if not isinstance(model, Component):
         raise ModelError(f"acausal compiles Components, got {model!r}")
     model._bind("")
-    nodes = list(_walk(model))
+    nodes = drop_bus_members(list(_walk(model)))
     flat = FlatModel(name=type(model).__name__, variables=[], parameters=[], equations=[])
     connections = []
     with_der = set()     # ids of the flat equations whose residuals contain der()
@@ -73,6 +74,13 @@ def flatten(model: Component) -> FlatModel:
                 flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
     flat.uses_initial = bool(getattr(model, "_uses_initial", False))
     _check_connections(connections, model)
+    connections, members = resolve_buses(connections, model)
+    for member in members:         # the signals and buses on the model's buses
+        nodes.append(member)
+        flat.components[member.path] = type(member).__name__
+        flat.ports.append((member.path, type(member).__name__, member.effort, member.flow))
+        with compiling(model):
+            _collect_declarations(member, flat)
     flat.equations.extend(_connection_equations(connections, nodes))
     flat.inputs = find_inputs(flat, model, connections)
     _check_symbols(flat, with_der)

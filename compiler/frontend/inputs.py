@@ -49,7 +49,8 @@ class InputValue:
 
 def _drives(port, inputs) -> bool:
     """Whether ``port`` can give a connection set its value: anything but an input."""
-    return type(port).__name__ not in _INPUT_PORTS and port not in inputs
+    return (type(port).__name__ not in _INPUT_PORTS and port not in inputs
+            and not getattr(port, "bus_member", False))     # a bus passes signals on
 
 
 def find_inputs(flat, model, connections) -> list:

@@ -1,38 +1,64 @@
-"""Linear dynamic blocks and controllers (Modelica.Blocks.Continuous).
+"""Linear dynamic blocks (Modelica.Blocks.Continuous, MSL v4.0.0).
 
-Every block with dynamics keeps its state in a variable ``x`` (a list of cells for
-``TransferFunction``).  ``initType`` chooses how it starts, as in the MSL
-(``ac.Init``): ``"NoInit"`` (the default here: the state's start value, 0 unless given,
-``FirstOrder(x=1.0)``, where the model does not fix it otherwise), ``"SteadyState"``
-(der(x) = 0), ``"InitialState"`` (x = x_start, or y_start where the state is the
-output) or ``"InitialOutput"`` (y = y_start).  The MSL's Integrator defaults to
-InitialState with y_start = 0, which NoInit gives wherever nothing else fixes its state.
+As in the MSL, the state of ``Integrator``, ``FirstOrder``, ``SecondOrder`` (with its
+``yd``) and ``SlewRateLimiter`` is the output ``y`` itself; ``Derivative`` and ``PI`` keep
+a state ``x``, ``TransferFunction`` the cells ``state[i].x``.  ``initType`` chooses how
+a block starts (``ac.Init``): ``"NoInit"`` (the state's start value, where the model does
+not fix it otherwise), ``"SteadyState"`` (der(state) = 0), ``"InitialState"`` (state =
+its start parameter) or ``"InitialOutput"`` (y = y_start); the defaults are the MSL's
+(Integrator and PID: InitialState, the others NoInit).  ``y_start`` given as a number
+where the block is made is also the output's start value (the MSL's ``y(start =
+y_start)``), the value a NoInit state starts from; ``FirstOrder(y=1.0)`` sets that start
+alone.
 """
 
 import acausal as ac
+from acausal.ports import BooleanInput, RealInput
 
-from .interfaces import SISO
-from .nonlinear import clip
+from .interfaces import SISO, start_from
+from .math import Add3, Gain
 
 __all__ = ["Integrator", "Der", "Derivative", "FirstOrder", "SecondOrder", "TransferFunction",
            "PI", "PID"]
 
 
 class Integrator(SISO):
-    """y = x,  der(x) = k u."""
+    """Output the integral of the input (MSL Blocks.Continuous.Integrator):
 
-    k = ac.Parameter(1.0, description="integrator gain")
-    x = ac.Variable(start=0.0, description="state (the integral)")
-    initType = ac.Init.parameter()
-    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
-                                            "InitialOutput)")
+        der(y) = k u,   when reset: reinit(y, set)  (use_reset; set = y_start
+        without use_set)
+
+    Starts at y = y_start (initType InitialState, the MSL's default; InitialOutput the
+    same), in steady state der(y) = 0, or from y's start value (NoInit).
+    """
+
+    k = ac.Parameter(1.0, unit="1", description="integrator gain")
+    use_reset = ac.Parameter(False, structural=True, description="enable the reset port")
+    use_set = ac.Parameter(False, structural=True,
+                           description="enable the set port, the value at a reset")
+    initType = ac.Init.parameter("InitialState")
+    y_start = ac.Parameter(0.0, description="initial or guess value of output (= state)")
+    reset = ac.Conditional(BooleanInput(), "use_reset")
+    set = ac.Conditional(RealInput(), "use_set")
+
+    def __init__(self, **modifications):
+        super().__init__(**start_from(modifications, "y_start"))
+
+    def build(self):
+        if self.use_set and not self.use_reset:
+            raise ac.InvalidValue("Integrator: use_set = True needs use_reset = True (the "
+                                  "set value is taken at a reset)")
 
     def initial_equations(self):
-        return ac.Init.equations(self.initType, [self.x], [self.y_start], self.y,
-                                 self.y_start)
+        init = "InitialState" if self.initType == "InitialOutput" else self.initType
+        return ac.Init.equations(init, [self.y.signal], [self.y_start])
 
     def equations(self):
-        return [ac.Eq(ac.der(self.x), self.k * self.u), ac.Eq(self.y, self.x)]
+        eqs = [ac.Eq(ac.der(self.y.signal), self.k * self.u)]
+        if self.use_reset:
+            value = self.set.signal if self.use_set else self.y_start
+            eqs.append(ac.when(self.reset, ac.reinit(self.y.signal, value)))
+        return eqs
 
 
 class Der(SISO):
@@ -46,72 +72,85 @@ class Der(SISO):
 
 
 class Derivative(SISO):
-    """Filtered derivative  y = k s / (T s + 1) u:
+    """Approximated derivative  y = k s / (T s + 1) u (MSL Blocks.Continuous.Derivative):
 
-        T der(x) = u - x,   y = (k / T) (u - x)
+        der(x) = (u - x)/T,   y = (k/T) (u - x)
     """
 
-    k = ac.Parameter(1.0, description="gain")
-    T = ac.Parameter(0.01, unit="s", min=0, description="filter time constant")
-    x = ac.Variable(start=0.0, description="filter state")
+    k = ac.Parameter(1.0, unit="1", description="gain")
+    T = ac.Parameter(0.01, unit="s", min=0, description="time constant (T > 0 required)")
+    x = ac.Variable(start=0.0, description="state of block")
     initType = ac.Init.parameter()
-    x_start = ac.Parameter(0.0, description="initial value of the state (InitialState)")
-    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
+    x_start = ac.Parameter(0.0, description="initial or guess value of state")
+    y_start = ac.Parameter(0.0, description="initial value of output (InitialOutput)")
 
     def initial_equations(self):
         return ac.Init.equations(self.initType, [self.x], [self.x_start], self.y,
                                  self.y_start, free_at_output=[])
 
     def equations(self):
-        return [ac.Eq(self.T * ac.der(self.x), self.u - self.x),
+        return [ac.Eq(ac.der(self.x), (self.u - self.x) / self.T),
                 ac.Eq(self.y, self.k / self.T * (self.u - self.x))]
 
 
 class FirstOrder(SISO):
-    """First-order lag  y = k / (T s + 1) u:   T der(x) = k u - x,  y = x."""
+    """First order transfer function  y = k / (T s + 1) u (MSL
+    Blocks.Continuous.FirstOrder):
 
-    k = ac.Parameter(1.0, description="gain")
+        der(y) = (k u - y)/T
+    """
+
+    k = ac.Parameter(1.0, unit="1", description="gain")
     T = ac.Parameter(1.0, unit="s", description="time constant")
-    x = ac.Variable(start=0.0, description="state (the output)")
     initType = ac.Init.parameter()
-    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
-                                            "InitialOutput)")
+    y_start = ac.Parameter(0.0, description="initial or guess value of output (= state)")
+
+    def __init__(self, **modifications):
+        super().__init__(**start_from(modifications, "y_start"))
 
     def initial_equations(self):
-        return ac.Init.equations(self.initType, [self.x], [self.y_start], self.y,
-                                 self.y_start)
+        init = "InitialState" if self.initType == "InitialOutput" else self.initType
+        return ac.Init.equations(init, [self.y.signal], [self.y_start])
 
     def equations(self):
-        return [ac.Eq(self.T * ac.der(self.x), self.k * self.u - self.x), ac.Eq(self.y, self.x)]
+        return [ac.Eq(ac.der(self.y.signal), (self.k * self.u - self.y) / self.T)]
 
 
 class SecondOrder(SISO):
-    """Second-order system  y = k w^2 / (s^2 + 2 D w s + w^2) u:
+    """Second order transfer function  y = k w^2 / (s^2 + 2 D w s + w^2) u (MSL
+    Blocks.Continuous.SecondOrder):
 
-        der(x) = xd,   der(xd) = w^2 (k u - x) - 2 D w xd,   y = x
+        der(y) = yd,   der(yd) = w (w (k u - y) - 2 D yd)
+
+    InitialState and InitialOutput both start at y = y_start, yd = yd_start (the
+    MSL's).
     """
 
-    k = ac.Parameter(1.0, description="gain")
-    w = ac.Parameter(1.0, unit="rad/s", description="natural frequency")
-    D = ac.Parameter(1.0, description="damping ratio")
-    x = ac.Variable(start=0.0, description="state (the output)")
-    xd = ac.Variable(start=0.0, description="state (der of the output)")
+    k = ac.Parameter(1.0, unit="1", description="gain")
+    w = ac.Parameter(1.0, description="angular frequency")
+    D = ac.Parameter(1.0, description="damping")
     initType = ac.Init.parameter()
-    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
-                                            "InitialOutput)")
-    yd_start = ac.Parameter(0.0, description="initial value of der(y) (InitialState)")
+    y_start = ac.Parameter(0.0, description="initial or guess value of output (= state)")
+    yd_start = ac.Parameter(0.0, description="initial or guess value of derivative of "
+                                             "output (= state)")
+    yd = ac.Variable(start=0.0, description="derivative of y")
+
+    def __init__(self, **modifications):
+        modifications = start_from(modifications, "y_start")
+        value = modifications.get("yd_start")
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            modifications.setdefault("yd", float(value))
+        super().__init__(**modifications)
 
     def initial_equations(self):
-        # InitialOutput: y = y_start and der(y) = 0, the MSL's
-        return ac.Init.equations(self.initType, [self.x, self.xd],
-                                 [self.y_start, self.yd_start], self.y, self.y_start,
-                                 free_at_output=[self.x])
+        init = "InitialState" if self.initType == "InitialOutput" else self.initType
+        return ac.Init.equations(init, [self.y.signal, self.yd],
+                                 [self.y_start, self.yd_start])
 
     def equations(self):
-        return [ac.Eq(ac.der(self.x), self.xd),
-                ac.Eq(ac.der(self.xd), self.w**2 * (self.k * self.u - self.x)
-                      - 2 * self.D * self.w * self.xd),
-                ac.Eq(self.y, self.x)]
+        return [ac.Eq(ac.der(self.y.signal), self.yd),
+                ac.Eq(ac.der(self.yd), self.w * (self.w * (self.k * self.u - self.y)
+                                                 - 2 * self.D * self.yd))]
 
 
 class _State(ac.Component):
@@ -182,69 +221,89 @@ class TransferFunction(SISO):
         return eqs + [ac.Eq(self.y, y)]
 
 
-class _LimitedController(SISO):
-    """Output limits and back-calculation anti-windup shared by PI and PID.
+class PI(SISO):
+    """Proportional-integral controller (MSL Blocks.Continuous.PI):
 
-    v is the unlimited controller output, y = clip(v, yMin, yMax); the integral state
-    x_i (in output units) is driven by k/Ti u + (y - v)/Tt, so while the output is
-    limited x_i tracks the limit with time constant Tt instead of winding up.
+        der(x) = u/T,   y = k (x + u)
+
+    so that y = k (1 + 1/(T s)) u.  Output limits and anti-windup: ``LimitedPI`` or
+    the MSL's ``LimPID``.
     """
 
-    k = ac.Parameter(1.0, description="proportional gain")
-    Ti = ac.Parameter(1.0, unit="s", min=0, description="integral time")
-    yMax = ac.Parameter(float("inf"), description="upper output limit")
-    yMin = ac.Parameter(float("-inf"), description="lower output limit")
-    Tt = ac.Parameter(lambda c: c.Ti, unit="s", min=0,
-                      description="anti-windup tracking time constant (default Ti)")
-    v = ac.Variable(description="unlimited controller output")
-    x_i = ac.Variable(start=0.0, description="integral state, in output units")
+    k = ac.Parameter(1.0, unit="1", description="gain")
+    T = ac.Parameter(1.0, unit="s", min=1e-60, description="time constant (T > 0 required)")
     initType = ac.Init.parameter()
-    xi_start = ac.Parameter(0.0, description="initial integral state, in output units "
-                                             "(InitialState)")
-    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
+    x_start = ac.Parameter(0.0, description="initial or guess value of state")
+    y_start = ac.Parameter(0.0, description="initial value of output (InitialOutput)")
+    x = ac.Variable(start=0.0, description="state of block")
 
-    def states(self) -> list:
-        return [self.x_i]
+    def __init__(self, **modifications):
+        value = modifications.get("x_start")
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            modifications.setdefault("x", float(value))
+        super().__init__(**modifications)
 
     def initial_equations(self):
-        starts = [self.xi_start] + [getattr(self, "xd_start", 0)] * (len(self.states()) - 1)
-        return ac.Init.equations(self.initType, self.states(), starts, self.y, self.y_start)
+        return ac.Init.equations(self.initType, [self.x], [self.x_start], self.y,
+                                 self.y_start, free_at_output=[])
 
     def equations(self):
-        return [ac.Eq(self.y, clip(self.v, self.yMax, self.yMin)),
-                ac.Eq(ac.der(self.x_i), self.k / self.Ti * self.u + (self.y - self.v) / self.Tt)]
+        return [ac.Eq(ac.der(self.x), self.u / self.T),
+                ac.Eq(self.y, self.k * (self.x + self.u))]
 
 
-class PI(_LimitedController):
-    """PI controller  y = clip(k (1 + 1/(Ti s)) u, yMin, yMax), with anti-windup:
+# the initialization of PID's integrator and derivative for the PID's initType (the
+# MSL's table): InitialOutput holds y = y_start with the derivative in steady state
+_I_INIT = {"NoInit": "NoInit", "SteadyState": "SteadyState", "InitialState": "InitialState",
+           "InitialOutput": "NoInit"}
+_D_INIT = {"NoInit": "NoInit", "SteadyState": "SteadyState", "InitialState": "InitialState",
+           "InitialOutput": "SteadyState"}
 
-        v = k u + x_i,   der(x_i) = (k/Ti) u + (y - v)/Tt,   y = clip(v, yMin, yMax)
+
+class PID(SISO):
+    """PID controller in additive description form (MSL Blocks.Continuous.PID), built
+    as the MSL builds it, from its parts ``P``, ``I``, ``D``, ``Add`` and ``Gain``:
+
+        y = k (u + I.y + D.y),   der(I.y) = u/Ti,
+        D.y = Td s/(1 + (Td/Nd) s) u   (Derivative with k = Td, T = Td/Nd)
+
+    i.e. y = k (1 + 1/(Ti s) + Td s/(1 + Td s/Nd)) u.  ``initType`` (default
+    InitialState) sets the parts' initialization as the MSL's table: NoInit, SteadyState
+    and InitialState for both, InitialOutput y = y_start with the integrator free and
+    the derivative in steady state.  No limits: ``LimPID`` (the MSL's) or
+    ``LimitedPID``.
     """
 
+    k = ac.Parameter(1.0, unit="1", description="gain")
+    Ti = ac.Parameter(0.5, unit="s", min=1e-60, description="time constant of integrator")
+    Td = ac.Parameter(0.1, unit="s", min=0, description="time constant of derivative block")
+    Nd = ac.Parameter(10.0, min=1e-60,
+                      description="the higher Nd, the more ideal the derivative block")
+    initType = ac.Init.parameter("InitialState")
+    xi_start = ac.Parameter(0.0, description="initial or guess value for integrator output "
+                                             "(= integrator state)")
+    xd_start = ac.Parameter(0.0, description="initial or guess value for state of "
+                                             "derivative block")
+    y_start = ac.Parameter(0.0, description="initial value of output (InitialOutput)")
+    unitTime = ac.Parameter(1.0, unit="s", description="1 s (the MSL's constant unitTime)")
+    k_I = ac.Parameter(lambda c: c.unitTime / c.Ti, unit="1", description="unitTime/Ti")
+    k_D = ac.Parameter(lambda c: c.Td / c.unitTime, unit="1", description="Td/unitTime")
+    T_D = ac.Parameter(lambda c: c.Td / c.Nd, unit="s", description="Td/Nd")
+    P = Gain(k=1.0)
+    Add = Add3()
+    Gain = Gain(k=ac.ref("k"))
+
+    def build(self):
+        self.I = Integrator(k=ac.ref("k_I"), y_start=ac.ref("xi_start"),
+                            initType=_I_INIT[self.initType])
+        self.D = Derivative(k=ac.ref("k_D"), T=ac.ref("T_D"), x_start=ac.ref("xd_start"),
+                            initType=_D_INIT[self.initType])
+
+    def initial_equations(self):
+        return [ac.Eq(self.y, self.y_start)] if self.initType == "InitialOutput" else []
+
     def equations(self):
-        return [ac.Eq(self.v, self.k * self.u + self.x_i)]
-
-
-class PID(_LimitedController):
-    """PID controller with a filtered derivative, output limits and anti-windup:
-
-        v = k u + x_i + k Nd (u - x_d),   (Td/Nd) der(x_d) = u - x_d,
-        der(x_i) = (k/Ti) u + (y - v)/Tt,   y = clip(v, yMin, yMax)
-
-    so that, unlimited, y = k (1 + 1/(Ti s) + Td s/(1 + Td s/Nd)) u.  ``Ti = inf``
-    gives a PD controller.
-    """
-
-    Td = ac.Parameter(0.1, unit="s", min=0, description="derivative time")
-    Nd = ac.Parameter(10.0, min=0, description="derivative filter: high-frequency gain")
-    x_d = ac.Variable(start=0.0, description="derivative filter state")
-    xd_start = ac.Parameter(0.0, description="initial derivative filter state "
-                                             "(InitialState)")
-
-    def states(self) -> list:
-        return [self.x_i, self.x_d]
-
-    def equations(self):
-        d = self.k * self.Nd * (self.u - self.x_d)
-        return [ac.Eq(self.v, self.k * self.u + self.x_i + d),
-                ac.Eq(self.Td / self.Nd * ac.der(self.x_d), self.u - self.x_d)]
+        c = ac.connect
+        return [c(self.u, self.P.u), c(self.u, self.I.u), c(self.u, self.D.u),
+                c(self.P.y, self.Add.u1), c(self.D.y, self.Add.u2), c(self.I.y, self.Add.u3),
+                c(self.Add.y, self.Gain.u), c(self.Gain.y, self.y)]

@@ -12,9 +12,11 @@ import math
 from acausal._sympy import sympy as sp
 
 import acausal as ac
-from acausal.ports import RealInput, RealOutput
+from acausal.ports import BooleanOutput, RealInput, RealOutput
 
+from .boolean_sources import BooleanExpression
 from .interfaces import SI2SO, SISO
+from .logical import And, GreaterThreshold, Switch
 from .math import Division, Gain, Sqrt
 from .nonlinear import Limiter
 from .sources import Cosine, Sine
@@ -55,23 +57,24 @@ class RectangularToPolar(ac.Component):
 class Pythagoras(SI2SO):
     """The hypotenuse or a leg of a right triangle (MSL Blocks.Math.Pythagoras):
 
-        y = sqrt(u1^2 + u2^2),  or with u1IsHypotenuse = True,
-        y = sqrt(u1^2 - u2^2) where u1^2 >= u2^2, else 0
+        y2 = u1^2 + u2^2,  y = sqrt(y2),  valid = true,  or with u1IsHypotenuse = True,
+        y2 = u1^2 - u2^2,  valid = y2 >= 0,  y = sqrt(y2) where y2 >= 0, else 0
 
-    ``u1IsHypotenuse`` is given when it is made.  The MSL's Boolean output ``valid``
-    (u1^2 >= u2^2) waits for Boolean signals.
+    ``u1IsHypotenuse`` is given when it is made (the MSL evaluates it).
     """
 
-    def __init__(self, *, u1IsHypotenuse: bool = False, **modifications):
-        self.u1IsHypotenuse = bool(u1IsHypotenuse)
-        super().__init__(**modifications)
+    u1IsHypotenuse = ac.Parameter(False, structural=True,
+                                  description="true if u1 is the hypotenuse and y is one leg")
+    valid = BooleanOutput()
+    y2 = ac.Variable(description="square of y")
 
     def equations(self):
         u1, u2 = self.u1.signal, self.u2.signal
         if not self.u1IsHypotenuse:
-            return [ac.Eq(self.y, ac.sqrt(u1**2 + u2**2))]
-        y2 = u1**2 - u2**2
-        return [ac.Eq(self.y, ac.no_event(ac.if_else(y2 >= 0, ac.sqrt(y2), 0)))]
+            return [ac.Eq(self.y2, u1**2 + u2**2), ac.Eq(self.y, ac.sqrt(self.y2)),
+                    ac.Eq(self.valid, sp.true)]
+        return [ac.Eq(self.y2, u1**2 - u2**2), ac.Eq(self.valid, self.y2 >= 0),
+                ac.Eq(self.y, ac.no_event(ac.if_else(self.y2 >= 0, ac.sqrt(self.y2), 0)))]
 
 
 class Mean(SISO):
@@ -92,10 +95,9 @@ class Mean(SISO):
     t0 = ac.Parameter(0.0, unit="s", description="start of the first period")
     x = ac.Variable(start=0.0, description="integrator state")
     y_last = ac.Variable(start=0.0, fixed=True, description="the last period's mean")
-
-    def __init__(self, *, yGreaterOrEqualZero: bool = False, **modifications):
-        self.yGreaterOrEqualZero = bool(yGreaterOrEqualZero)
-        super().__init__(**modifications)
+    yGreaterOrEqualZero = ac.Parameter(False, structural=True,
+                                       description="true if the output y is guaranteed to "
+                                                   "be >= 0 for the exact solution")
 
     def initial_equations(self):
         return [ac.Eq(self.x, self.x0)]
@@ -152,10 +154,9 @@ class Harmonic(ac.Component):
     mean1 = Mean(f=ac.ref("f"), x0=ac.ref("x0Cos"))
     mean2 = Mean(f=ac.ref("f"), x0=ac.ref("x0Sin"))
     rectangularToPolar = RectangularToPolar()
-
-    def __init__(self, *, useConjugateComplex: bool = False, **modifications):
-        self.useConjugateComplex = bool(useConjugateComplex)
-        super().__init__(**modifications)
+    useConjugateComplex = ac.Parameter(False, structural=True,
+                                       description="gives the conjugate complex result if "
+                                                   "true")
 
     def build(self):
         self.gain = Gain(k=-1.0 if self.useConjugateComplex else 1.0)
@@ -176,33 +177,45 @@ class Harmonic(ac.Component):
 
 class TotalHarmonicDistortion(SISO):
     """The total harmonic distortion of u over each period 1/f (MSL
-    Blocks.Math.TotalHarmonicDistortion): the RMS of u's harmonics other than the first,
-    sqrt(RMS^2 - H1^2), over the first harmonic H1 (``useFirstHarmonic``, the default)
-    or over the RMS (given when it is made):
+    Blocks.Math.TotalHarmonicDistortion), built as the MSL builds it: the RMS of u's
+    harmonics other than the first, sqrt(RMS^2 - H1^2) (``pythagoras``), over the first
+    harmonic H1 (``useFirstHarmonic``, the default) or over the RMS, limited below by
+    eps (``limiter``):
 
-        y = sqrt(RMS^2 - H1^2) / max(H1 or RMS, eps)
+        y = sqrt(RMS^2 - H1^2) / max(H1 or RMS, eps),   valid = H1 > 0 and RMS >= H1
 
-    The MSL's Boolean output ``valid`` (H1 > 0 and RMS >= H1) waits for Boolean
-    signals; the switch between H1 and the RMS is the structural choice it is.
+    ``valid`` is false before the first period ends and for a zero input.
     """
 
     f = ac.Parameter(1.0, unit="Hz", description="base frequency")
+    useFirstHarmonic = ac.Parameter(True, description="THD with respect to first harmonic, "
+                                                      "if true; otherwise with respect to "
+                                                      "total RMS")
+    eps = ac.Parameter(2.220446049250313e-16,
+                       description="the limiter's lower limit (the MSL's Constants.eps)")
+    valid = BooleanOutput()
     harmonic = Harmonic(f=ac.ref("f"), k=1.0, x0Cos=0.0, x0Sin=0.0)
     rootMeanSquare = RootMeanSquare(f=ac.ref("f"), x0=0.0)
+    greaterThreshold = GreaterThreshold()
     division = Division()
-    limiter = Limiter(uMin=1e-15, uMax=float("inf"))
+    limiter = Limiter(uMin=ac.ref("eps"), uMax=float("inf"))
     pythagoras = Pythagoras(u1IsHypotenuse=True)
-
-    def __init__(self, *, useFirstHarmonic: bool = True, **modifications):
-        self.useFirstHarmonic = bool(useFirstHarmonic)
-        super().__init__(**modifications)
+    andValid = And()
+    booleanExpression = BooleanExpression()
+    switch1 = Switch()
 
     def equations(self):
-        reference = self.harmonic.y_rms if self.useFirstHarmonic else self.rootMeanSquare.y
-        return [ac.connect(self.u, self.rootMeanSquare.u), ac.connect(self.u, self.harmonic.u),
-                ac.connect(self.division.y, self.y),
-                ac.connect(self.pythagoras.u1, self.rootMeanSquare.y),
-                ac.connect(self.pythagoras.y, self.division.u1),
-                ac.connect(self.limiter.y, self.division.u2),
-                ac.connect(self.harmonic.y_rms, self.pythagoras.u2),
-                ac.connect(reference, self.limiter.u)]
+        c = ac.connect
+        return [ac.Eq(self.booleanExpression.y, ~self.useFirstHarmonic),
+                c(self.u, self.rootMeanSquare.u), c(self.u, self.harmonic.u),
+                c(self.harmonic.y_rms, self.greaterThreshold.u), c(self.division.y, self.y),
+                c(self.pythagoras.u1, self.rootMeanSquare.y),
+                c(self.pythagoras.y, self.division.u1),
+                c(self.pythagoras.valid, self.andValid.u1),
+                c(self.greaterThreshold.y, self.andValid.u2), c(self.andValid.y, self.valid),
+                c(self.limiter.y, self.division.u2),
+                c(self.harmonic.y_rms, self.pythagoras.u2),
+                c(self.switch1.u1, self.rootMeanSquare.y),
+                c(self.harmonic.y_rms, self.switch1.u3),
+                c(self.booleanExpression.y, self.switch1.u2),
+                c(self.switch1.y, self.limiter.u)]

@@ -30,12 +30,19 @@ class IntegerValue(ac.Component):
 
 
 class RealValue(ac.Component):
-    """Shows the Real ``numberPort``:  showNumber = numberPort."""
+    """Shows a Real value:  showNumber = numberPort, or with ``use_numberPort=False``
+    showNumber = number, an input the enclosing model gives by an equation,
+    ``ac.Eq(self.showValue.number, self.multiSwitch.y)`` (the MSL binds ``number`` to
+    the expression)."""
 
-    numberPort = RealInput()
+    use_numberPort = ac.Parameter(True, structural=True,
+                                  description="use the numberPort input, else number")
+    numberPort = ac.Conditional(RealInput(), "use_numberPort")
+    number = ac.Conditional(RealInput(), "use_numberPort", when=False)
     showNumber = RealOutput()
     significantDigits = ac.Parameter(2, type=int, min=1,
                                      description="number of significant digits to be shown")
 
     def equations(self):
-        return [ac.connect(self.numberPort, self.showNumber)]
+        shown = self.numberPort if self.use_numberPort else self.number
+        return [ac.connect(shown, self.showNumber)]

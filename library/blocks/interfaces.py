@@ -8,7 +8,7 @@ happen to be explicit, so it can drive a source (``SignalVoltage``) or read a se
 import acausal as ac
 from acausal.ports import RealInput, RealOutput
 
-__all__ = ["SO", "SISO", "SI2SO", "SignalSource"]
+__all__ = ["SO", "SISO", "SI2SO", "SignalSource", "start_from"]
 
 
 class SO(ac.Component):
@@ -35,3 +35,13 @@ class SignalSource(SO):
 
     offset = ac.Parameter(0.0, description="output before startTime")
     startTime = ac.Parameter(0.0, unit="s", description="time the signal starts")
+
+
+def start_from(mods: dict, given: str, port: str = "y") -> dict:
+    """``mods`` with the start value of output ``port`` taken from the parameter
+    ``given`` where it is given as a number (the MSL's ``y(start = y_start)``), unless the
+    output itself is modified."""
+    value = mods.get(given)
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        mods.setdefault(port, {"signal": {"start": float(value)}})
+    return mods

@@ -1,7 +1,7 @@
 """Static nonlinearities (Modelica.Blocks.Nonlinear).  Their corners are events."""
 import acausal as ac
 
-from .interfaces import SISO
+from .interfaces import SISO, start_from
 
 __all__ = ["Limiter", "Saturation", "DeadZone", "SlewRateLimiter", "clip"]
 
@@ -43,25 +43,38 @@ class DeadZone(SISO):
 
 
 class SlewRateLimiter(SISO):
-    """Limits the slew rate of a signal (MSL Blocks.Nonlinear.SlewRateLimiter, strict =
-    false): the output follows the input with the time constant Td, at a rate between
-    Falling and Rising,
+    """Limits the slew rate of a signal (MSL Blocks.Nonlinear.SlewRateLimiter): the
+    output follows the input with the time constant Td, at a rate between Falling and
+    Rising,
 
-        der(x) = clip((u - x)/Td, Falling, Rising),   y = x
+        val = (u - y)/Td,   der(y) = Falling if val < Falling, Rising if val > Rising,
+                            val otherwise
 
-    Its state is x, as in the library's other blocks (the MSL's y): it starts from its
-    start value, ``SlewRateLimiter(x=y_start)`` (the MSL's initType = InitialOutput; its
-    default, SteadyState, y = u, is not offered).
+    ``initType``: SteadyState (the MSL's default) starts at y = u, InitialState and
+    InitialOutput at y = y_start, NoInit from y's start value.  ``strict`` (the MSL's
+    noEvent variant) is not offered: the corners are events.
     """
 
-    Rising = ac.Parameter(1.0, min=0, description="maximum rising slew rate (> 0), the "
-                                                  "input's unit per second")
+    Rising = ac.Parameter(1.0, min=0, description="maximum rising slew rate [+small..+inf) "
+                                                  "[1/s]")
     Falling = ac.Parameter(lambda c: -c.Rising, max=0,
-                           description="maximum falling slew rate (< 0), default -Rising")
-    Td = ac.Parameter(0.001, unit="s", min=0, description="derivative time constant (> 0)")
-    x = ac.Variable(start=0.0, description="state (the output)")
+                           description="maximum falling slew rate (-inf..-small] [1/s]")
+    Td = ac.Parameter(0.001, unit="s", min=0, description="derivative time constant")
+    initType = ac.Init.parameter("SteadyState",
+                                 description="type of initialization (SteadyState implies "
+                                             "y = u)")
+    y_start = ac.Parameter(0.0, description="initial or guess value of output (= state)")
+
+    def __init__(self, **modifications):
+        super().__init__(**start_from(modifications, "y_start"))
+
+    def initial_equations(self):
+        if self.initType == "SteadyState":
+            return [ac.Eq(self.y, self.u)]
+        if self.initType in ("InitialState", "InitialOutput"):
+            return [ac.Eq(self.y, self.y_start)]
+        return []
 
     def equations(self):
-        val = (self.u.signal - self.x) / self.Td
-        return [ac.Eq(ac.der(self.x), clip(val, self.Rising, self.Falling)),
-                ac.Eq(self.y, self.x)]
+        val = (self.u.signal - self.y.signal) / self.Td
+        return [ac.Eq(ac.der(self.y.signal), clip(val, self.Rising, self.Falling))]

@@ -9,7 +9,7 @@ from .interfaces import SO, SignalSource
 
 __all__ = ["Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid",
            "Sinc", "SineVariableFrequencyAndAmplitude", "CosineVariableFrequencyAndAmplitude",
-           "KinematicPTP"]
+           "KinematicPTP", "RealExpression"]
 
 
 class Constant(SO):
@@ -19,6 +19,12 @@ class Constant(SO):
 
     def equations(self):
         return [ac.Eq(self.y, self.k)]
+
+
+class RealExpression(SO):
+    """A Real output given by an equation of the enclosing model,
+    ``ac.Eq(self.realExpression.y, ac.time)`` (Modelica.Blocks.Sources.RealExpression,
+    whose ``y`` is bound to the expression)."""
 
 
 class Step(SignalSource):
@@ -149,22 +155,16 @@ class _VariableFrequencyAndAmplitude(SO):
     ``useConstantAmplitude=True`` / ``useConstantFrequency=True`` (then it has no such
     input, and ``constantAmplitude`` / ``constantFrequency`` hold them)."""
 
+    useConstantAmplitude = ac.Parameter(False, structural=True,
+                                        description="enable constant amplitude")
+    useConstantFrequency = ac.Parameter(False, structural=True,
+                                        description="enable constant frequency")
+    amplitude = ac.Conditional(RealInput(), "useConstantAmplitude", when=False)
+    f = ac.Conditional(RealInput(), "useConstantFrequency", when=False)
     constantAmplitude = ac.Parameter(1.0, description="the amplitude, if constant")
     constantFrequency = ac.Parameter(1.0, unit="Hz", description="the frequency, if constant")
     offset = ac.Parameter(0.0, description="offset of the wave")
     phi = ac.Variable(start=0.0, unit="rad", description="phase of the wave")
-
-    def __init__(self, *, useConstantAmplitude: bool = False,
-                 useConstantFrequency: bool = False, **modifications):
-        self.useConstantAmplitude = bool(useConstantAmplitude)
-        self.useConstantFrequency = bool(useConstantFrequency)
-        super().__init__(**modifications)
-
-    def build(self):
-        if not self.useConstantAmplitude:
-            self.amplitude = RealInput()
-        if not self.useConstantFrequency:
-            self.f = RealInput()
 
     def inputs(self):
         """The amplitude and the frequency, as expressions."""

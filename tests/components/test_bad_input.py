@@ -17,7 +17,7 @@ import sympy as sp
 
 import acausal as ac
 from acausal.compiler.frontend.flatten import flatten
-from acausal.library.blocks import PI
+from acausal.library.blocks import LimitedPI
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
 from acausal.library.electromechanical import DCMotor
 from acausal.errors import (InvalidConnection, InvalidEquation, InvalidHierarchy,
@@ -590,7 +590,7 @@ def test_bindings_functions_and_expressions_of_parameters_still_work():
 
 
 def test_infinite_values_where_the_equations_have_a_finite_limit():
-    flat = flatten(PI(Tt=float("inf")))         # (y - v)/Tt -> 0; yMax = inf by default
+    flat = flatten(LimitedPI(Tt=float("inf")))         # (y - v)/Tt -> 0; yMax = inf by default
     assert math.isinf(next(p.value for p in flat.parameters if p.name == "Tt"))
 
 

@@ -103,7 +103,7 @@ def test_integrator_derivative_first_order():
 
     class Linear(ac.Component):
         u = bl.Ramp(height=1.0, duration=10.0)
-        integ = bl.Integrator(k=2.0, x=1.0)
+        integ = bl.Integrator(k=2.0, y_start=1.0)
         deriv = bl.Derivative(k=3.0, T=0.05)
         lag = bl.FirstOrder(k=2.0, T=0.3)
 
@@ -168,11 +168,11 @@ def test_pid_closed_loop_matches_scipy():
 
 
 class WindUp(ac.Component):
-    """A PI with a constant error 1 and output limit 2 (k = 1, Ti = 1)."""
+    """A LimitedPI with a constant error 1 and output limit 2 (k = 1, Ti = 1)."""
 
     error = bl.Constant(k=1.0)
-    pi = bl.PI(k=1.0, Ti=1.0, yMax=2.0, yMin=-2.0, Tt=0.5)
-    free = bl.PI(k=1.0, Ti=1.0, yMax=2.0, yMin=-2.0, Tt=float("inf"))
+    pi = bl.LimitedPI(k=1.0, Ti=1.0, yMax=2.0, yMin=-2.0, Tt=0.5)
+    free = bl.LimitedPI(k=1.0, Ti=1.0, yMax=2.0, yMin=-2.0, Tt=float("inf"))
 
     def equations(self):
         return [ac.connect(self.error.y, self.pi.u, self.free.u)]
@@ -206,3 +206,97 @@ def test_limiter_saturation_dead_zone():
     assert np.allclose(res["saturation.y.signal"], np.clip(u, -0.8, 0.8), atol=1e-12)
     dead = np.where(u > 0.4, u - 0.4, np.where(u < -1.0, u + 1.0, 0.0))
     assert np.allclose(res["dead.y.signal"], dead, atol=1e-12)
+
+
+class LoopWithPI(ac.Component):
+    """Unit step reference, the MSL's PI on the plant 1/(0.5 s + 1)."""
+
+    reference = bl.Step(height=1.0)
+    error = bl.Feedback()
+    controller = bl.PI(k=2.0, T=0.4)
+    plant = bl.FirstOrder(T=0.5)
+
+    def equations(self):
+        return [ac.connect(self.reference.y, self.error.u1),
+                ac.connect(self.plant.y, self.error.u2),
+                ac.connect(self.error.y, self.controller.u),
+                ac.connect(self.controller.y, self.plant.u)]
+
+
+def test_msl_pi_closed_loop_matches_scipy():
+    """C(s) = k (T s + 1)/(T s) (MSL Continuous.PI), P(s) = 1/(0.5 s + 1)."""
+    k, T = 2.0, 0.4
+    open_num, open_den = k * np.array([T, 1.0]), np.polymul([T, 0.0], [0.5, 1.0])
+    closed = sig.lti(open_num, np.polyadd(open_den, open_num))
+    t = np.linspace(0, 4, 81)
+    _, expected = sig.step(closed, T=t)
+    res = ac.simulate(LoopWithPI(), t_end=4, rtol=1e-10, t_eval=t)
+    assert np.max(np.abs(res["plant.y"] - expected)) < 1e-7
+    # y = k (x + u): the state x is the integral of u/T
+    assert np.max(np.abs(res["controller.y"] - k * (res["controller.x"]
+                                                    + res["controller.u"]))) < 1e-9
+
+
+def test_msl_pid_starts_at_its_initial_output():
+    """initType = InitialOutput: y(0) = y_start with the derivative part in steady state
+    (D.x = u) and the integrator free; with a constant error e = 1 the output then
+    rises as k t/Ti (the MSL's table of PID initialization)."""
+
+    class Held(ac.Component):
+        error = bl.Constant(k=1.0)
+        pid = bl.PID(k=2.0, Ti=0.5, Td=0.1, Nd=10.0, initType="InitialOutput", y_start=3.0)
+
+        def equations(self):
+            return [ac.connect(self.error.y, self.pid.u)]
+
+    t = np.linspace(0, 1, 11)
+    res = ac.simulate(Held(), t_end=1, rtol=1e-10, t_eval=t)
+    assert np.max(np.abs(res["pid.y"] - (3.0 + 2.0 * t / 0.5))) < 1e-8
+    assert np.max(np.abs(res["pid.D.y"])) < 1e-9       # in steady state: no derivative
+    assert res["pid.I.y"][0] == pytest.approx(3.0 / 2.0 - 1.0)   # k (u + I.y) = 3
+
+
+def test_integrator_reset_to_its_set_input_and_to_y_start():
+    """der(y) = k u with u = 1; a reset every 0.4 s (a Boolean pulse's rising edges)
+    re-initializes y to the set input (2) or, without use_set, to y_start (-1)."""
+
+    class Resets(ac.Component):
+        one = bl.Constant(k=1.0)
+        two = bl.Constant(k=2.0)
+        pulse = bl.BooleanPulse(period=0.4, width=50.0, startTime=0.1)
+        withSet = bl.Integrator(k=3.0, use_reset=True, use_set=True)
+        toStart = bl.Integrator(k=3.0, use_reset=True, y_start=-1.0)
+
+        def equations(self):
+            return [ac.connect(self.one.y, self.withSet.u, self.toStart.u),
+                    ac.connect(self.two.y, self.withSet.set),
+                    ac.connect(self.pulse.y, self.withSet.reset, self.toStart.reset)]
+
+    t = np.linspace(0, 1.2, 121)
+    res = ac.simulate(Resets(), t_end=1.2, rtol=1e-10, t_eval=t)
+    last = np.where(t >= 0.1, 0.1 + 0.4 * np.floor((t - 0.1) / 0.4 + 1e-9), 0.0)
+    away = np.abs((t - 0.1) / 0.4 - np.round((t - 0.1) / 0.4)) > 1e-6
+    set_value = np.where(t >= 0.1, 2.0, 0.0)
+    assert np.max(np.abs((res["withSet.y"] - (set_value + 3.0 * (t - last)))[away])) < 1e-8
+    assert np.max(np.abs((res["toStart.y"] - (-1.0 + 3.0 * (t - last)))[away])) < 1e-8
+    with pytest.raises(ac.InvalidValue, match="use_set = True needs use_reset"):
+        bl.Integrator(use_set=True)
+
+
+def test_a_signal_port_is_modified_by_its_value():
+    """FirstOrder(y=1.0) starts the output (its state) at 1, as y={"signal": ...}."""
+
+    class Decay(ac.Component):
+        zero = bl.Constant(k=0.0)
+        lag = bl.FirstOrder(T=0.5, y=1.0)
+        same = bl.FirstOrder(T=0.5, y={"signal": {"start": 1.0}})
+
+        def equations(self):
+            return [ac.connect(self.zero.y, self.lag.u, self.same.u)]
+
+    t = np.linspace(0, 1, 11)
+    res = ac.simulate(Decay(), t_end=1, rtol=1e-10, t_eval=t)
+    assert np.max(np.abs(res["lag.y"] - np.exp(-t / 0.5))) < 1e-8
+    assert np.max(np.abs(res["same.y"] - np.exp(-t / 0.5))) < 1e-8
+    with pytest.raises(ac.InvalidValue, match="'lag.y'"):
+        Decay(lag={"y": "high"})

@@ -61,3 +61,28 @@ def test_trapezoid_against_numpy():
     assert np.max(np.abs(res["wave.y.signal"] - expected)) < 1e-9 * 2.5
     with pytest.raises(ac.ModelError, match="rising must be > 0"):
         ac.compile(Trapezoids(wave={"rising": 0.0}))
+
+
+def test_real_network_blocks_against_their_formulas():
+    """RealNetwork1's Math blocks on its signals: sine 3 sin(0.2 pi t), a step of 3 at
+    2 s, pulses of period 1 s (50 %) and 2 s (80 %) choosing 4, 6 or 2."""
+    from acausal.library.blocks.examples.msl.networks import RealNetwork1
+
+    t = np.linspace(0, 10, 1001)
+    res = ac.simulate(RealNetwork1(), t_end=10, rtol=1e-9, t_eval=t)
+    sine, step = 3 * np.sin(0.2 * np.pi * t), np.where(t >= 2, 3.0, 0.0)
+    add, product = sine + step, step * 1.0
+    assert np.max(np.abs(res["add.y"] - add)) < 1e-12
+    assert np.max(np.abs(res["showValue1.showNumber"] - product)) == 0
+    assert np.max(np.abs(res["linearDependency1.y"] - (1 + 2 * add + 3 * product))) < 1e-11
+    assert np.max(np.abs(res["minMax.yMax"] - np.maximum(add, product))) < 1e-12
+    assert np.max(np.abs(res["minMax.yMin"] - np.minimum(add, product))) < 1e-12
+    # away from the pulses' edges: the first true input's value, else y_default
+    p1, p2 = np.mod(t, 1.0) < 0.5, np.mod(t, 2.0) < 1.6
+    edge = (np.abs(t - np.round(t * 2) / 2) < 1e-9) | (np.abs(t - np.round(t / 2) * 2 - 1.6)
+                                                        < 1e-9)
+    chosen = np.where(p1, 4.0, np.where(p2, 6.0, 2.0))
+    assert np.array_equal(res["showValue3.showNumber"][~edge], chosen[~edge])
+    with pytest.raises(ac.InvalidValue, match="expr has 1 values for nu = 2"):
+        from acausal.library.blocks import MultiSwitch
+        MultiSwitch(nu=2, expr=(1.0,))

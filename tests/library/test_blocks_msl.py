@@ -12,8 +12,8 @@ import pytest
 
 import acausal as ac
 from acausal.library.blocks import (Constant, CriticalDamping, Der, Filter, Harmonic,
-                                    Integrator, KinematicPTP, LimPID, Mean, RootMeanSquare,
-                                    Sinc, Sine, SineVariableFrequencyAndAmplitude,
+                                    Integrator, KinematicPTP, LimPID, Mean, Pythagoras,
+                                    Ramp, RootMeanSquare, Sinc, Sine, SineVariableFrequencyAndAmplitude,
                                     SlewRateLimiter, Step, TotalHarmonicDistortion)
 from acausal.library.blocks import filter_design
 
@@ -143,8 +143,8 @@ def test_kinematic_ptp_moves_its_distance_within_its_limits():
     class Move(ac.Component):
         ptp = KinematicPTP(deltaq=[2.0, -1.0], qd_max=[1.0, 1.0], qdd_max=[2.0, 2.0],
                            startTime=0.2)
-        v = Integrator(x={"start": 0.0, "fixed": True})
-        q = Integrator(x={"start": 0.0, "fixed": True})
+        v = Integrator()
+        q = Integrator()
 
         def equations(self):
             return [ac.connect(self.ptp.y[0], self.v.u), ac.connect(self.v.y, self.q.u)]
@@ -212,6 +212,26 @@ def test_mean_rms_and_harmonics_of_a_known_signal_after_each_period():
     assert res["third.y_arg"][-1] == pytest.approx(math.pi / 2 - 0.3, abs=1e-7)
 
 
+def test_pythagoras_leg_is_valid_while_the_hypotenuse_is_the_longer():
+    class Triangle(ac.Component):
+        one = Constant(k=1.0)
+        ramp = Ramp(height=2.0, duration=1.0)
+        leg = Pythagoras(u1IsHypotenuse=True)
+        hypotenuse = Pythagoras()
+
+        def equations(self):
+            return [ac.connect(self.one.y, self.leg.u1, self.hypotenuse.u1),
+                    ac.connect(self.ramp.y, self.leg.u2, self.hypotenuse.u2)]
+
+    t = np.linspace(0, 1, 41)
+    res = ac.simulate(Triangle(), t_end=1.0, rtol=1e-10, t_eval=t)
+    u2 = 2 * t
+    assert np.max(np.abs(res["leg.y"] - np.sqrt(np.maximum(1 - u2**2, 0)))) < 1e-12
+    assert list(res["leg.valid"]) == list(u2 <= 1)
+    assert np.max(np.abs(res["hypotenuse.y"] - np.hypot(1, u2))) < 1e-12
+    assert res["hypotenuse.valid"].all()
+
+
 def test_total_harmonic_distortion_of_a_fundamental_and_its_third_harmonic():
     class Distorted(ac.Component):
         w = ac.Parameter(2 * math.pi * 50.0, unit="rad/s", description="2 pi 50 Hz")
@@ -225,3 +245,67 @@ def test_total_harmonic_distortion_of_a_fundamental_and_its_third_harmonic():
     res = ac.simulate(Distorted(), t_end=0.05, rtol=1e-10, atol=1e-10, n_points=51)
     assert np.all(np.isfinite(res["thd.y"]))
     assert res["thd.y"][-1] == pytest.approx(0.2, rel=1e-7)
+    # valid once the first period (1/50 s) has given a first harmonic
+    assert list(res["thd.valid"]) == list(res.t >= 0.02)
+
+
+def test_rotator_to_polar_and_wrap_angle_on_a_turning_phasor():
+    """u = 2 (cos 3t, sin 3t) seen from axes turned by t is 2 (cos 2t, sin 2t); in polar
+    coordinates (2, 3t wrapped to ]-pi, pi]); 3t wrapped to [0, 2 pi[ too."""
+    from acausal.library.blocks import Rotator, ToPolar, WrapAngle
+
+    class Phasor(ac.Component):
+        rotator = Rotator()
+        toPolar = ToPolar()
+        wrap = WrapAngle()
+        wrapPositive = WrapAngle(positiveRange=True)
+        w = ac.Parameter(3.0, unit="rad/s", description="the phasor's angular speed")
+        w_axes = ac.Parameter(1.0, unit="rad/s", description="the axes' angular speed")
+
+        def equations(self):
+            wt = self.w * ac.time
+            return [ac.Eq(self.rotator.u[0].signal, 2 * ac.cos(wt)),
+                    ac.Eq(self.rotator.u[1].signal, 2 * ac.sin(wt)),
+                    ac.Eq(self.rotator.angle.signal, self.w_axes * ac.time),
+                    ac.Eq(self.toPolar.u[0].signal, 2 * ac.cos(wt)),
+                    ac.Eq(self.toPolar.u[1].signal, 2 * ac.sin(wt)),
+                    ac.Eq(self.wrap.u.signal, wt), ac.Eq(self.wrapPositive.u.signal, wt)]
+
+    t = np.linspace(0, 4, 161)
+    res = ac.simulate(Phasor(), t_end=4.0, rtol=1e-9, t_eval=t)
+    assert np.max(np.abs(res["rotator.y[0]"] - 2 * np.cos(2 * t))) < 1e-12
+    assert np.max(np.abs(res["rotator.y[1]"] - 2 * np.sin(2 * t))) < 1e-12
+    assert np.max(np.abs(res["toPolar.y[0]"] - 2)) < 1e-12
+    wrapped = np.angle(np.exp(3j * t))                 # ]-pi, pi]
+    away = np.abs(np.abs(wrapped) - np.pi) > 1e-6
+    assert np.max(np.abs(res["toPolar.y[1]"] - wrapped)[away]) < 1e-12
+    assert np.max(np.abs(res["wrap.y"] - wrapped)[away]) < 1e-12
+    positive = np.mod(3 * t, 2 * np.pi)
+    away = np.minimum(positive, 2 * np.pi - positive) > 1e-6
+    assert np.max(np.abs(res["wrapPositive.y"] - positive)[away]) < 1e-12
+
+
+def test_sin_cos_encoder_follows_its_tracks():
+    """The SinCosEncoder example (no MAP-LIB reference is available) against the exact
+    phase of its tracks, phi = 2 pi int 100 t dt = 100 pi t^2, and an independent
+    solution of its controller: with e = phi - angle, the rotated phasor's imaginary
+    part is 2 sin(e), so de/dt = 2 pi 100 t - 1e6 2 sin(e) (scipy's Radau at rtol
+    1e-11).  The bound is the MSL harness's, 1e-3 of each signal's amplitude."""
+    from scipy.integrate import solve_ivp
+
+    from acausal.library.blocks.examples.msl.sin_cos_encoder import SinCosEncoder
+
+    t = np.linspace(0, 1, 2001)
+    res = ac.simulate(SinCosEncoder(), t_end=1.0, rtol=1e-6, t_eval=t)
+    assert res.success
+    phi = 100 * np.pi * t**2
+    sol = solve_ivp(lambda s, e: 200 * np.pi * s - 2e6 * np.sin(e), (0, 1), [0.0],
+                    method="Radau", rtol=1e-11, atol=1e-14, t_eval=t,
+                    jac=lambda s, e: [[-2e6 * np.cos(e[0])]])
+    e = sol.y[0]
+    for name in ("cosB.phi", "cosBminus.phi", "sinA.phi", "sinAminus.phi"):
+        assert np.max(np.abs(res[name] - phi)) < 1e-3 * np.ptp(phi), name
+    assert np.max(np.abs(res["integrator.y"] - (phi - e))) < 1e-3 * np.ptp(phi)
+    der = 2e6 * np.sin(e)                          # der(angle) = k u = 1e6 2 sin(e)
+    assert np.max(np.abs(res["der1.y"] - der)) < 1e-3 * np.ptp(der)
+    assert np.max(np.abs(res["toPolar.y[0]"] - 2)) < 1e-9

@@ -37,7 +37,7 @@ class PadeLoop(ac.Component):
 
     def __init__(self, n, a=1.0, T=1.0, **mods):
         super().__init__(**mods)
-        self.integ = bl.Integrator(k=-a, x={"start": 1.0})
+        self.integ = bl.Integrator(k=-a, y_start=1.0)
         self.pade = bl.PadeDelay(n=n, delayTime=T)
 
     def equations(self):
@@ -201,7 +201,7 @@ def test_nested_delays_add_up():
 class FixedDelayLoop(ac.Component):
     """The same loop from blocks: an Integrator (gain -a) fed through a FixedDelay."""
 
-    integ = bl.Integrator(k=-2.0, x={"start": 1.0, "fixed": True})
+    integ = bl.Integrator(k=-2.0, y_start=1.0)
     delay = bl.FixedDelay(delayTime=0.5)
 
     def equations(self):
@@ -211,7 +211,7 @@ class FixedDelayLoop(ac.Component):
 def test_fixed_delay_loop_matches_method_of_steps():
     res = ac.simulate(FixedDelayLoop(), t_end=3.0, rtol=1e-9)
     exact = _exact_pieces(res.t, method_of_steps(2.0, 0.5, 6), 0.5)
-    assert np.max(np.abs(res["integ.x"] - exact)) < 1e-7 * np.max(np.abs(exact))
+    assert np.max(np.abs(res["integ.y"] - exact)) < 1e-7 * np.max(np.abs(exact))
     # the delay's output is the state half a second earlier
     late = res.t >= 0.5
     shifted = _exact_pieces(res.t[late] - 0.5, method_of_steps(2.0, 0.5, 6), 0.5)
@@ -249,7 +249,7 @@ def test_sine_through_fixed_delay_is_the_shifted_sine(backend):
     w, T, A, ph = 2 * np.pi * 1.5, 0.25, 2.0, 0.7
     exact = np.where(t <= T, A * np.sin(ph) * t,
                      A * np.sin(ph) * T + A / w * (np.cos(ph) - np.cos(w * (t - T) + ph)))
-    assert np.max(np.abs(res["integ.x"] - exact)) < 1e-7 * np.max(np.abs(exact))
+    assert np.max(np.abs(res["integ.y"] - exact)) < 1e-7 * np.max(np.abs(exact))
     assert 0.25 in res.event_times        # the history's kink at t0 + T is an event
 
 
@@ -296,7 +296,7 @@ def test_step_through_fixed_delay_jumps_at_t1_plus_T():
     assert np.all(y[t > 0.8] == pytest.approx(3.0, rel=1e-12))
     assert y[k + 1] == pytest.approx(3.0, rel=1e-12) and t[k + 1] == t[k]   # after it
     # the integral of the delayed step is a ramp from 0.8 exactly
-    assert np.max(np.abs(res["integ.x"] - 3.0 * np.maximum(t - 0.8, 0.0))) < 1e-9 * 3.0
+    assert np.max(np.abs(res["integ.y"] - 3.0 * np.maximum(t - 0.8, 0.0))) < 1e-9 * 3.0
 
 
 class LoopAtStart(ac.Component):

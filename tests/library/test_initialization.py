@@ -26,7 +26,8 @@ def _driven(block, u=1.0):
     return ac.simulate(Driven(), t_end=T_END, t_eval=t, rtol=1e-10)
 
 
-@pytest.mark.parametrize("init, y0", [("NoInit", 0.0), ("SteadyState", 2.0),
+# NoInit: the free state starts from its start value, y_start (the MSL's y(start=y_start))
+@pytest.mark.parametrize("init, y0", [("NoInit", 0.5), ("SteadyState", 2.0),
                                       ("InitialState", 0.5), ("InitialOutput", 0.5)])
 def test_first_order_starts_as_its_init_type_says(init, y0):
     res = _driven(FirstOrder(k=2.0, T=0.5, initType=init, y_start=0.5))
@@ -36,7 +37,7 @@ def test_first_order_starts_as_its_init_type_says(init, y0):
 def test_integrator_initial_state_and_steady_state():
     res = _driven(Integrator(k=2.0, initType="InitialState", y_start=3.0))
     assert np.max(np.abs(res["b.y"] - (3.0 + 2.0 * t))) < 1e-8
-    with pytest.raises(ac.InitializationFailed, match=r"der\(b.x\) = 0"):   # k u = 2
+    with pytest.raises(ac.InitializationFailed, match=r"der\(b\.y\.signal\) = 0"):   # k u = 2
         _driven(Integrator(k=2.0, initType="SteadyState"))
 
 
@@ -70,8 +71,8 @@ def test_transfer_function_steady_state_and_initial_output():
 
 
 def test_pi_initial_output():
-    # v = k u + x_i, der(x_i) = k/Ti u: with u = 1, y(0) = 1 gives x_i(0) = 1 - k
-    res = _driven(PI(k=0.5, Ti=2.0, initType="InitialOutput", y_start=1.0))
+    # y = k (x + u), der(x) = u/T: with u = 1, y(0) = 1 gives x(0) = 1/k - 1
+    res = _driven(PI(k=0.5, T=2.0, initType="InitialOutput", y_start=1.0))
     assert np.max(np.abs(res["b.y"] - (1.0 + 0.5 / 2.0 * t))) < 1e-8
 
 

@@ -16,6 +16,7 @@ QUICK = {
     "Modelica.Mechanics.MultiBody.Examples.Elementary.SpringWithMass",
     "Modelica.Blocks.Examples.Filter",
     "Modelica.Blocks.Examples.PID_Controller",
+    "Modelica.Electrical.Machines.Examples.Transformers.Rectifier6pulse",
     "Modelica.Thermal.HeatTransfer.Examples.TwoMasses",
     "Modelica.Thermal.FluidHeatFlow.Examples.SimpleCooling",
     "Modelica.Thermal.FluidHeatFlow.Examples.OneMass",

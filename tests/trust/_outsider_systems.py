@@ -157,7 +157,7 @@ PID = dict(k=100.0, Ti=0.1, Td=0.1, Nd=10.0, Tt=0.1, yMax=12.0, J=1.0, d=0.5, t_
 
 class SpeedControl(ac.Component):
     ref = bl.Step(height=1.0, startTime=PID["t_step"])
-    pid = bl.PID(k=PID["k"], Ti=PID["Ti"], Td=PID["Td"], Nd=PID["Nd"], yMax=PID["yMax"],
+    pid = bl.LimitedPID(k=PID["k"], Ti=PID["Ti"], Td=PID["Td"], Nd=PID["Nd"], yMax=PID["yMax"],
                  yMin=-PID["yMax"], Tt=PID["Tt"])
     fb = bl.Feedback()
     sensor = ro.SpeedSensor()

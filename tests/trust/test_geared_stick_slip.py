@@ -31,7 +31,7 @@ import pytest
 import acausal as ac
 from acausal.library import electrical as el
 from acausal.library import rotational as rot
-from acausal.library.blocks import PID, Feedback, Ramp, Step
+from acausal.library.blocks import Feedback, LimitedPID, Ramp, Step
 from acausal.library.electromechanical import DCMotor
 from acausal.library.friction.rotational import KarnoppFriction
 
@@ -89,8 +89,8 @@ def positioner(order, set_point):
     """PID on the load angle - amplifier - DC motor - gear - load on Karnopp friction."""
     parts = {"set_point": set_point,
              "error": Feedback,
-             "pid": lambda: PID(k=D.k_p, Ti=D.T_i, Td=D.T_d, Nd=D.N_d, yMax=D.u_max,
-                                yMin=-D.u_max),
+             "pid": lambda: LimitedPID(k=D.k_p, Ti=D.T_i, Td=D.T_d, Nd=D.N_d,
+                                       yMax=D.u_max, yMin=-D.u_max),
              "amplifier": el.SignalVoltage,
              "ground": el.Ground,
              "motor": lambda: DCMotor(R=D.R, L=D.L, k=D.k, J=D.J_m),

@@ -2,7 +2,7 @@
 controllers built from signal blocks.
 
 * ``CurrentLoop``: PI current controller on a voltage-driven motor, Example 44 (3.60):
-  u_a = K_i (1 + T_i s)/s (i_0 - i_a) with T_i = T_m, i.e. PI(k = K_i T_m, Ti = T_m).
+  u_a = K_i (1 + T_i s)/s (i_0 - i_a) with T_i = T_m, i.e. PI(k = K_i T_m, T = T_m).
 * ``VelocityLoop``: current-controlled motor (3.59) and P speed controller (3.63),
   i_d = K_w (w_d - w_m):  w_m/w_d = 1/(1 + s/K_a),  K_a = K_T K_w/J_m  (3.64)-(3.65).
 * ``PositionLoop``: the velocity loop inside a P position loop (3.67),
@@ -26,7 +26,7 @@ class CurrentLoop(ac.Component):
     stop_time = 0.02
     reference = Step(height=1.0, startTime=0.0)
     error = Feedback()
-    controller = PI(k=50.0 * _T_M, Ti=_T_M)
+    controller = PI(k=50.0 * _T_M, T=_T_M)
     amplifier = SignalVoltage()
     sensor = CurrentSensor()
     ground = Ground()

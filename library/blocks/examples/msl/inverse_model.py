@@ -3,10 +3,9 @@
 1, from 0.2 s) smoothed by a first-order critically damped filter (100 Hz); fed to a
 second, ordinary, lag, that input reproduces the filtered sine.
 
-Both lags start in steady state (the MSL's initType = SteadyState): the model's
-initial equations der(firstOrder1.x) = 0 and der(firstOrder2.x) = 0.  firstOrder1's
-output is the filter's, through the inverse, so its steady state starts the filter in
-steady state too.
+Both lags start in steady state (initType = SteadyState).  firstOrder1's output is the
+filter's, through the inverse, so its steady state starts the filter in steady state
+too.
 """
 import acausal as ac
 from acausal.library.blocks import (CriticalDamping, Feedback, FirstOrder,
@@ -25,15 +24,12 @@ class InverseModel(ac.Component):
     tolerance = 1e-6
     msl_signals = MSLNames()
 
-    firstOrder1 = FirstOrder(k=1.0, T=0.3)
+    firstOrder1 = FirstOrder(k=1.0, T=0.3, initType="SteadyState")
     sine = Sine(f=2.0, offset=1.0, startTime=0.2)
     inverseBlockConstraints = InverseBlockConstraints()
-    firstOrder2 = FirstOrder(k=1.0, T=0.3)
+    firstOrder2 = FirstOrder(k=1.0, T=0.3, initType="SteadyState")
     feedback = Feedback()
-    criticalDamping = CriticalDamping(n=1, f=100.0)
-
-    def initial_equations(self):
-        return [ac.Eq(ac.der(self.firstOrder1.x), 0), ac.Eq(ac.der(self.firstOrder2.x), 0)]
+    criticalDamping = CriticalDamping(n=1, f=100.0)          # f = 50 sine.f
 
     def equations(self):
         return [ac.connect(self.firstOrder1.y, self.inverseBlockConstraints.u2),

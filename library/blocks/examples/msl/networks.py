@@ -1,5 +1,5 @@
-"""Modelica.Blocks.Examples.BooleanNetwork1 and IntegerNetwork1 (MSL v4.0.0): the blocks
-of MathBoolean and MathInteger in small networks.
+"""Modelica.Blocks.Examples.BooleanNetwork1, IntegerNetwork1 and RealNetwork1 (MSL
+v4.0.0): the blocks of MathBoolean, MathInteger and Math in small networks.
 
 The MSL's vector inputs ``u[1] ... u[nu]`` are ``u[0] ... u[nu-1]`` here (``MSLNames``
 maps the reference's names).
@@ -11,13 +11,15 @@ from acausal.library.blocks.boolean_sources import BooleanPulse, BooleanStep, Bo
     SampleTrigger
 from acausal.library.blocks.conversions import RealToInteger
 from acausal.library.blocks.integer_sources import IntegerConstant, IntegerStep
-from acausal.library.blocks.interaction import BooleanValue, IntegerValue
+from acausal.library.blocks.harmonics import MultiProduct
+from acausal.library.blocks.interaction import BooleanValue, IntegerValue, RealValue
 from acausal.library.blocks.logical import RSFlipFlop
-from acausal.library.blocks.sources import Sine
+from acausal.library.blocks.math import LinearDependency, MinMax, MultiSum, MultiSwitch
+from acausal.library.blocks.sources import Constant, Sine, Step
 
 from . import MSLNames
 
-__all__ = ["BooleanNetwork1", "IntegerNetwork1"]
+__all__ = ["BooleanNetwork1", "IntegerNetwork1", "RealNetwork1"]
 
 
 class BooleanNetwork1(ac.Component):
@@ -129,3 +131,42 @@ class IntegerNetwork1(ac.Component):
                 c(self.booleanPulse1.y, self.multiSwitch1.u[0]),
                 c(self.booleanPulse2.y, self.multiSwitch1.u[1]),
                 c(self.multiSwitch1.y, self.showValue3.numberPort)]
+
+
+class RealNetwork1(ac.Component):
+    """Demonstrates the usage of blocks from Modelica.Blocks.Math: a sine and a step
+    summed, multiplied, combined linearly and compared (MultiSum, MultiProduct,
+    LinearDependency, MinMax), and two Boolean pulses choosing a value (MultiSwitch)."""
+
+    msl_name = "Modelica.Blocks.Examples.RealNetwork1"
+    stop_time = 10.0
+    tolerance = 1e-6
+    msl_signals = MSLNames()
+
+    add = MultiSum(nu=2)
+    sine = Sine(amplitude=3.0, f=0.1)
+    integerStep = Step(height=3.0, startTime=2.0)
+    integerConstant = Constant(k=1.0)
+    showValue = RealValue()
+    product = MultiProduct(nu=2)
+    showValue1 = RealValue(significantDigits=2)
+    booleanPulse1 = BooleanPulse(period=1.0)
+    multiSwitch = MultiSwitch(nu=2, expr=(4.0, 6.0), y_default=2.0)
+    booleanPulse2 = BooleanPulse(period=2.0, width=80.0)
+    showValue3 = RealValue(use_numberPort=False, significantDigits=1)
+    linearDependency1 = LinearDependency(y0=1.0, k1=2.0, k2=3.0)
+    minMax = MinMax(nu=2)
+
+    def equations(self):
+        c = ac.connect
+        return [ac.Eq(self.showValue3.number, self.multiSwitch.y),
+                c(self.booleanPulse1.y, self.multiSwitch.u[0]),
+                c(self.booleanPulse2.y, self.multiSwitch.u[1]),
+                c(self.sine.y, self.add.u[0]), c(self.integerStep.y, self.add.u[1]),
+                c(self.add.y, self.showValue.numberPort),
+                c(self.integerStep.y, self.product.u[0]),
+                c(self.integerConstant.y, self.product.u[1]),
+                c(self.product.y, self.showValue1.numberPort),
+                c(self.add.y, self.linearDependency1.u1),
+                c(self.product.y, self.linearDependency1.u2),
+                c(self.add.y, self.minMax.u[0]), c(self.product.y, self.minMax.u[1])]

@@ -5,10 +5,9 @@ reference) of 90 degrees from 0.5 s, while a stiff spring-damper couples a secon
 inertia loaded by a constant 10 N.m.  The limiter is active in the run, and the
 anti-windup keeps the integrator from winding up.
 
-The MSL initializes the controller in steady state (LimPID initType = SteadyState: the
-integrator's der(y) = 0) and the drive in steady state (der(spring.w_rel) = 0, with
-inertia1's angle and acceleration and the spring's w_rel fixed at 0): here the
-controller's steady state is the model's initial equation der(PI.I.x) = 0.
+The controller starts in steady state (initType = SteadyState: the integrator's
+der(y) = 0) and the drive too (der(spring.w_rel) = 0, with inertia1's angle and
+acceleration and the spring's w_rel fixed at 0).
 """
 import math
 
@@ -31,7 +30,8 @@ class PID_Controller(ac.Component):
 
     driveAngle = ac.Parameter(1.570796326794897, unit="rad",
                               description="reference distance to move")
-    PI = LimPID(controllerType="PI", k=100.0, Ti=0.1, yMax=12.0, Ni=0.1, Td=0.1)
+    PI = LimPID(k=100.0, Ti=0.1, yMax=12.0, Ni=0.1, initType="SteadyState",
+                controllerType="PI", limiter={"u": {"start": 0.0}}, Td=0.1)
     inertia1 = Inertia(J=1.0, phi={"fixed": True, "start": 0.0},
                        a={"fixed": True, "start": 0.0})
     torque = Torque()
@@ -39,12 +39,12 @@ class PID_Controller(ac.Component):
     inertia2 = Inertia(J=2.0)
     kinematicPTP = KinematicPTP(startTime=0.5, deltaq=[math.pi / 2], qd_max=[1.0],
                                 qdd_max=[1.0])
-    integrator = Integrator(x={"start": 0.0, "fixed": True})
+    integrator = Integrator(initType="InitialState")
     speedSensor = SpeedSensor()
     loadTorque = ConstantTorque(tau_constant=10.0)
 
     def initial_equations(self):
-        return [ac.Eq(ac.der(self.spring.w_rel), 0), ac.Eq(ac.der(self.PI.I.x), 0)]
+        return [ac.Eq(ac.der(self.spring.w_rel), 0)]
 
     def equations(self):
         return [ac.connect(self.spring.flange_b, self.inertia2.flange_a),

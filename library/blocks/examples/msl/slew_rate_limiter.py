@@ -11,9 +11,7 @@ __all__ = ["SlewRateLimiterExample"]
 
 
 class SlewRateLimiterExample(ac.Component):
-    """Demonstrate usage of Nonlinear.SlewRateLimiter (the limiters and the integrator
-    start from their y_start, the MSL's initType = InitialOutput: here their states'
-    start values)."""
+    """Demonstrate usage of Nonlinear.SlewRateLimiter."""
 
     msl_name = "Modelica.Blocks.Examples.SlewRateLimiter"
     stop_time = 1.0
@@ -27,10 +25,11 @@ class SlewRateLimiterExample(ac.Component):
     vLimited = ac.Variable(unit="m/s", description="limited velocity")
     aLimited = ac.Variable(unit="m/s2", description="limited acceleration")
     positionStep = Step(startTime=0.1)
-    limit_v = SlewRateLimiter(Rising=ac.ref("vMax"), Td=0.0001, x=0.0)
+    limit_v = SlewRateLimiter(initType="InitialOutput", Rising=ac.ref("vMax"),
+                              y_start=0.0, Td=0.0001)      # y_start = positionStep.offset
     v = Der()
-    limit_a = SlewRateLimiter(Rising=20.0, Td=0.0001, x=0.0)
-    positionSmoothed = Integrator(k=1.0, x=0.0)
+    limit_a = SlewRateLimiter(initType="InitialOutput", y_start=0.0, Rising=20.0, Td=0.0001)
+    positionSmoothed = Integrator(k=1.0, initType="InitialOutput", y_start=0.0)
     a = Der()
 
     def equations(self):
