@@ -15,6 +15,6 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
     ".arraycode": ("use_array_code",),
     ".cbackend": ("c_source", "prepare", "bind", "BACKENDS"),
     ".clibrary": ("attach", "reattach", "CFunction"),
-    ".lazycode": ("GeneratedModule", "ModuleSource"),
-    ".parametric": ("ParameterFunction", "parameter_functions"),
+    ".lazycode": ("GeneratedModule", "ModuleSource", "ParameterFunction"),
+    ".parametric": ("parameter_functions",),
 })

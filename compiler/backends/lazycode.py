@@ -20,7 +20,7 @@ from importlib.util import MAGIC_NUMBER as _MAGIC
 import numpy as np
 
 __all__ = ["GeneratedModule", "GeneratedFunction", "FILENAME", "ArrayFunction",
-           "install_array_code", "ModuleSource"]
+           "install_array_code", "ModuleSource", "ParameterFunction"]
 
 FILENAME = "<acausal generated>"
 ARRAY_FILENAME = "<acausal arrays>"
@@ -168,3 +168,19 @@ def install_array_code(code, source: str) -> None:
             setattr(code, name, ArrayFunction(module, name, scalar))
     code.array_source = source
 
+
+class ParameterFunction:
+    """f(p): a variable's value as a function of the parameters, from generated Python
+    (``source`` defines ``name``); pickles as its source."""
+
+    def __init__(self, source: str, name: str):
+        self.source, self.name = source, name
+        namespace = {"math": math}
+        exec(compile(source, "<acausal constants>", "exec"), namespace)
+        self._f = namespace[name]
+
+    def __call__(self, p):
+        return self._f(p)
+
+    def __reduce__(self):
+        return (ParameterFunction, (self.source, self.name))

@@ -3,32 +3,15 @@
 A variable fixed to an expression of parameters, a derived parameter's bound and a
 delay time that depends on tunable parameters are each a small generated Python function
 of the parameter vector ``p`` (:class:`~acausal.compiler.backends.emit.Emitter`),
-picklable as its source.
+picklable as its source (:class:`~acausal.compiler.backends.lazycode.ParameterFunction`,
+which a model loaded from the compile cache unpickles without sympy).
 """
 from __future__ import annotations
 
-import math
-
 from .emit import Emitter
+from .lazycode import ParameterFunction
 
-__all__ = ["ParameterFunction", "parameter_functions"]
-
-
-class ParameterFunction:
-    """f(p): a variable's value as a function of the parameters, from generated Python
-    (``source`` defines ``name``); pickles as its source."""
-
-    def __init__(self, source: str, name: str):
-        self.source, self.name = source, name
-        namespace = {"math": math}
-        exec(compile(source, "<acausal constants>", "exec"), namespace)
-        self._f = namespace[name]
-
-    def __call__(self, p):
-        return self._f(p)
-
-    def __reduce__(self):
-        return (ParameterFunction, (self.source, self.name))
+__all__ = ["parameter_functions"]
 
 
 def parameter_functions(exprs: dict, psyms) -> list:

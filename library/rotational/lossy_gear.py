@@ -174,7 +174,13 @@ class LossyGear(PartialFriction, PartialElementaryTwoFlangesAndSupport,
                ac.Eq(self.a_a, ac.der(self.w_a)),
                ac.Eq(self.lossPower, self.tauLoss * self.w_a)]
         if self.ideal:                       # no losses, no modes (sa is not used)
-            return eqs + [ac.Eq(self.tauLoss, 0), ac.Eq(self.sa, 0)]
+            w = self.w_a                     # the mode signals as the speed's sign says
+            return eqs + [ac.Eq(self.tauLoss, 0), ac.Eq(self.sa, 0),
+                          ac.Eq(self.free, False), ac.Eq(self.startForward, False),
+                          ac.Eq(self.startBackward, False), ac.Eq(self.locked, False),
+                          ac.Eq(self.mode, ac.if_else(w > 0, self.Forward,
+                                                      ac.if_else(w < 0, self.Backward,
+                                                                 self.Stuck)))]
         return eqs + self.mode_system()
 
     def mode_structure(self) -> list:

@@ -75,7 +75,8 @@ def test_parameter_value_several_levels_down_names_the_full_path():
 
 def test_infinite_parameter_that_makes_an_equation_infinite():
     with _raises(InvalidValue, "'R1' (Resistor): parameter R = inf makes the equation "
-                               "'R1.v = R1.R*R1.i' in R1 (Resistor) infinite"):
+                               "'R1.v = R1.R*R1.i*(R1.alpha*(R1.T - R1.T_ref) + 1)' in R1 "
+                               "(Resistor) infinite"):
         flatten(RC(R1={"R": float("inf")}))
 
 

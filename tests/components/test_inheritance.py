@@ -24,12 +24,14 @@ class _RC(ac.Component):
 
 
 def test_bases_equations_are_included_once_base_first():
-    # OnePort: v = p.v - n.v, 0 = p.i + n.i, i = p.i; then Ohm's law
+    # OnePort: v = p.v - n.v, 0 = p.i + n.i, i = p.i; then Ohm's law at the device
+    # temperature T (T_ref unless given: the MSL's Resistor without its heat port)
     class Top(ac.Component):
         R1 = Resistor(R=3.0)
 
     assert _texts(Top()) == ["R1.v = -R1.n.v + R1.p.v", "0 = R1.n.i + R1.p.i",
-                             "R1.i = R1.p.i", "R1.v = R1.R*R1.i"]
+                             "R1.i = R1.p.i",
+                             "R1.v = R1.R*R1.i*(R1.alpha*(R1.T - R1.T_ref) + 1)"]
 
 
 def test_three_levels_and_a_mixin_follow_the_method_resolution_order():

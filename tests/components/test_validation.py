@@ -29,7 +29,8 @@ def _raises(exc, text):
 def test_unknown_name_suggests_the_declared_one_at_the_line_that_wrote_it():
     with pytest.raises(ac.NotInModel, match=re.escape(
             "Resistor has no parameter, variable or sub-component named 'r' (did you "
-            "mean 'R'?) (it has: R, T_ref, alpha, i, n, p, v)")) as err:
+            "mean 'R'?) (it has: LossPower, R, R_actual, T, T_heatPort, T_ref, alpha, i, n, "
+            "p, v)")) as err:
         Resistor(r=5)
     # the error comes from the construction in this test, not from a later compile
     assert "Resistor(r=5)" in str(err.traceback[0].statement)

@@ -137,7 +137,7 @@ def test_component_html_has_schematic_and_parameters():
     html = display.component_html(SeriesRLC(R1={"R": 5.0}))
     assert "<svg" in html
     rows = _rows(html, "Sub-component parameters")
-    assert ["R1", "Resistor", "R", "5", "Ohm", "resistance"] in rows
+    assert ["R1", "Resistor", "R", "5", "Ohm", "resistance at temperature T_ref"] in rows
     assert ["C1", "Capacitor", "C", "0.0001", "F", "capacitance"] in rows
 
 
@@ -175,7 +175,7 @@ def test_a_notebook_finds_the_renderer_from_outside_the_language():
     before, has_repr, html = json.loads(out.strip().splitlines()[-1])
     assert before is False and has_repr is False
     assert "<svg" in html
-    assert ["R1", "Resistor", "R", "5", "Ohm", "resistance"] in \
+    assert ["R1", "Resistor", "R", "5", "Ohm", "resistance at temperature T_ref"] in \
         _rows(html, "Sub-component parameters")
 
 

@@ -31,7 +31,7 @@ def test_dataframe_has_time_index_values_and_declared_units(res):
     assert units["der(C1.v)"] == "V/s"
     assert res.units["R1.R"] == "Ohm" and res.units["C1.C"] == "F"
     assert df.attrs["descriptions"]["C1.v"] == res.descriptions["C1.v"] != ""
-    assert res.descriptions["R1.R"] == "resistance"
+    assert res.descriptions["R1.R"] == "resistance at temperature T_ref"
 
 
 def test_dataframe_of_chosen_names_in_their_order(res):
@@ -97,7 +97,7 @@ def test_mat_file_rebuilds_every_signal_and_alias_with_its_sign(res, tmp_path):
     assert by_name["C1.n.i"][1] == -by_name["C1.p.i"][1]
     assert m["data_2"].shape[0] < len(res.names)     # fewer columns than names
     desc = dict(zip(names, descriptions))
-    assert desc["R1.R"] == "resistance [Ohm]" and desc["C1.v"].endswith("[V]")
+    assert desc["R1.R"] == "resistance at temperature T_ref [Ohm]" and desc["C1.v"].endswith("[V]")
 
 
 def test_saved_result_loads_without_the_model(res, tmp_path):

@@ -15,7 +15,7 @@ with its heat port always there.
 import acausal as ac
 from acausal.library.blocks import Not, OnOffController, Ramp
 from acausal.library.electrical import ConstantVoltage, Ground, HeatingResistor
-from acausal.library.electrical.ideal import IdealOpeningSwitch
+from acausal.library.electrical.switches import IdealOpeningSwitch
 from acausal.library.thermal import (FixedTemperature, HeatCapacitor, ThermalConductor,
                                      celsius)
 
