@@ -23,7 +23,6 @@ and current choice of dummy derivatives.
 """
 from __future__ import annotations
 
-import math
 import types
 
 import numpy as np
@@ -37,7 +36,8 @@ from .events import WhenClauses, iterate_event
 from .initial import InitialConditions, consistent_output, initialize, reinitialize
 from .inputs import InputDrivers
 from .modes import DiscreteState
-from ..errors import InvalidValue, NotInModel
+from .parameters import no_parameter_message, tuned_parameters
+from ..errors import NotInModel
 
 __all__ = ["CompiledModel"]
 
@@ -547,92 +547,13 @@ class CompiledModel(DAEProblem):
             self.discrete.release(t, z, self.p)
         return self.reselect_states(t, z)
 
-    # -- parameters ---------------------------------------------------------------------------
+    # -- parameters (runtime/parameters.py) --------------------------------------------------
     def set_parameters(self, values: dict) -> None:
         """Change tunable parameters by name, e.g. ``{"R1.R": 5.0}`` (a parameter array
         by element, ``{"M[0,1]": 0.5}``, or whole, ``{"M": matrix}``): all or none (a value
         outside its bounds, or one that puts a parameter bound to it outside its own,
         changes nothing)."""
-        p = self.p.copy()
-        for name, value in _by_element(values, self.param_names).items():
-            if name not in self.param_names:
-                raise NotInModel(self._no_parameter(name))
-            x = _real_value(name, value, self.meta.get("parameter_types", {}).get(name))
-            lo, hi = self.meta.get("parameter_bounds", {}).get(name, (None, None))
-            if (lo is not None and x < lo) or (hi is not None and x > hi):
-                raise InvalidValue(f"parameter '{name}' = {x!r} is outside its range "
-                                   f"[{'-inf' if lo is None else lo}, "
-                                   f"{'inf' if hi is None else hi}]")
-            p[self.param_names.index(name)] = x
-        for name, lo, hi, f in self.meta.get("derived_bounds", ()):
-            x = float(f(p))
-            if (lo is not None and x < lo) or (hi is not None and x > hi):
-                given = ", ".join(f"{n} = {float(v)!r}" for n, v in values.items())
-                raise InvalidValue(f"with {given}, parameter '{name}' (bound to it) would "
-                                   f"be {x!r}, outside its range "
-                                   f"[{'-inf' if lo is None else lo}, "
-                                   f"{'inf' if hi is None else hi}]")
-        self.p[:] = p
+        self.p[:] = tuned_parameters(self, values)
 
     def _no_parameter(self, name) -> str:
-        return _no_parameter_message(self, name)
-
-
-def _no_parameter_message(model, name) -> str:
-    """Why ``name`` cannot be set: a structural zero, a derived parameter, a variable,
-    or a name the model does not have (with "did you mean")."""
-    from ..components.validation import suggestion
-    from ..words import listed
-    zeros = model.meta.get("structural_zeros", ())
-    if name in zeros:
-        why = (" (it was 0 at compile time and was evaluated as a structural zero: "
-               "compile with a non-zero value to tune it)")
-    elif name in model.derived_parameters:
-        why = " (it is bound to other parameters by an expression: change those)"
-    elif name in model.outputs:
-        why = " (it is a variable, not a parameter)"
-    else:
-        why = suggestion(str(name), model.param_names)
-    leaf = str(name).split(".")[-1]
-    close = [n for n in model.param_names if n.split(".")[-1] == leaf and n != name]
-    hint = f"; parameters named {leaf}: {listed(close, 6)}" if close else ""
-    return f"the model has no tunable parameter '{name}'{why}{hint}"
-
-
-def _by_element(values: dict, names: list) -> dict:
-    """``{"M": matrix}`` for a parameter array M as ``{"M[0,0]": ..., ...}``; a value of
-    another shape is an InvalidValue naming both shapes."""
-    from ..components.arrays import array_of_name
-    out = {}
-    for name, value in values.items():
-        array = None if name in names else array_of_name(name, names)
-        if array is None:
-            out[name] = value
-            continue
-        shape, elements = array
-        given = np.shape(value)
-        if given != shape:
-            raise InvalidValue(f"parameter array '{name}' has shape {shape}, the value "
-                               f"given has shape {given}")
-        out.update(zip(elements, np.asarray(value).ravel().tolist()))
-    return out
-
-
-def _real_value(name, value, kind=None) -> float:
-    """A parameter's new value as the float p holds: a Boolean parameter's True/False as
-    1/0, an Integer's whole number, a Real's real number."""
-    if kind in ("Boolean", "Integer"):
-        from ..components.declarations import typed_value
-        try:
-            return float(typed_value(value, bool if kind == "Boolean" else int,
-                                     f"parameter '{name}'"))
-        except ValueError as err:
-            raise InvalidValue(str(err)) from None
-    if isinstance(value, (bool, np.bool_, complex, np.complexfloating)) or \
-            not isinstance(value, (int, float, np.number)):
-        raise InvalidValue(f"parameter '{name}' must be a real number, got {value!r} "
-                         f"({type(value).__name__})")
-    x = float(value)
-    if not math.isfinite(x):
-        raise InvalidValue(f"parameter '{name}' must be finite, got {value!r}")
-    return x
+        return no_parameter_message(self, name)
