@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..components.units import output_tables
-from .graph import UNASSIGNED
+from .graph import LINEAR_CONST, UNASSIGNED
 from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
 from .numeric import is_number
 from .report import EquationNames
@@ -25,12 +25,13 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     import sympy as sp
     from types import SimpleNamespace
     from .causalize import causalize, full_form
-    from .codegen import extract_relations, generate
+    from .codegen import event_form, extract_relations, generate
     from .numeric import CoefficientValues
     from .sampled import when_rows as clause_rows
     syms = system.symbols
     if reduction.dynamic:
-        caus = full_form(reduction, len(syms), len(system.equations))
+        caus = full_form(reduction, len(syms), len(system.equations),
+                         _fixed_definitions(system, reduction))
     else:
         held_items = [SimpleNamespace(symbol=s) for h in helds for s in (h.symbol, h.pre)]
         values = CoefficientValues(system, reduced.parameters, list(discretes) + held_items)
@@ -51,8 +52,12 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
         rows += [syms[s.var_to_diff[v]] for v in caus.z[: caus.n_states]]
         state_z, pairs, dummies = list(range(caus.n_states)), [], []
     else:
-        state_z, pairs, dummies = [], reduction.pairs, reduction.dummies
-    init_rows, init_text, n_mandatory = _initial_rows(system, reduced, reduction, caus)
+        zpos = {v: k for k, v in enumerate(caus.z)}
+        state_z = []
+        pairs = [(zpos[a], zpos[b]) for a, b in reduction.pairs]
+        dummies = [zpos[d] for d in reduction.dummies]
+    init_rows, init_text, n_mandatory, init_sizes = _initial_rows(system, reduced,
+                                                                   reduction, caus)
     when_rows, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
     delay_rows = [d.argument for d in delays]
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
@@ -72,7 +77,8 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     rel_list = list(modes.values())
     code = generate(rows, z_syms, inputs, len(modes),
                     crossings + [d.argument for d in discretes], assigned, outputs=syms,
-                    discretes=dsyms, scales=[sp.Abs(r.lhs) + sp.Abs(r.rhs) for r in rel_list])
+                    discretes=dsyms,
+                    scales=[event_form(sp.Abs(r.lhs) + sp.Abs(r.rhs)) for r in rel_list])
     init_code = generate(init_rows, z_syms, inputs, len(modes), None, assigned,
                          discretes=dsyms)
     delays_code = generate(delay_rows, z_syms, inputs, len(modes), None, assigned,
@@ -92,15 +98,22 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
         held_names=[h.name for h in helds], held_start=[h.start for h in helds],
         time_linear=_time_linear(crossings + [d.argument for d in discretes], assigned,
                                  set(psyms) | set(dsyms)))
-    initial = InitialCode(init_code, init_text, choose_initial_rows(
-        code, init_code, n_res, n_mandatory, reduction.n_states, len(z_syms), init_text))
+    kept, redundant = choose_initial_rows(code, init_code, n_res, n_mandatory,
+                                          reduction.n_states, len(z_syms))
+    initial = InitialCode(init_code, init_text, kept, redundant, n_mandatory, init_sizes)
+    if redundant:
+        report.notes.append(
+            f"{len(redundant)} of {n_mandatory} initial conditions are redundant "
+            "structurally (more conditions than states, or several fixing the same "
+            "unknowns): checked at the initial point, dropped if consistent: "
+            + "; ".join(init_text[k] for k in redundant))
     out = ModelCode(
         code, names, [p.name for p in params], [float(p.value) for p in params], n_res,
         state_z, pairs, dummies, [_nominal(system, v) for v in caus.z],
         [_start(system, v) for v in caus.z],
         _output_map(flat, aliases, {q: k for k, q in enumerate(syms)}, psyms),
         relations, initial, report=report,
-        dynamic=_dynamic(reduction) if reduction.dynamic else None,
+        dynamic=_dynamic(reduction, caus) if reduction.dynamic else None,
         meta={"n_all": len(syms), "causal": caus.causal,
               "assigned_names": [a.name for a, _ in assigned],
               "equation_names": EquationNames(system, caus.residual_eqs),
@@ -190,35 +203,33 @@ def _time_linear(items, assigned, frozen) -> list:
     return out
 
 
-def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z,
-                        descriptions) -> np.ndarray:
-    """The mandatory initial rows, then those optional start-value rows (in state order)
-    that complete a perfect matching of [G; initial rows] onto z (Modelica's rule: start
-    values fix the states that nothing else determines)."""
-    from ..errors import InitializationFailed
+def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z):
+    """``(kept, redundant)``: the mandatory initial rows that complete a structural
+    matching of [G; initial rows] onto z, in the order given, then those optional
+    start-value rows (in state order) that complete it (Modelica's rule: start values
+    fix the states that nothing else determines).  ``redundant`` are the mandatory rows
+    left out: an over-specified initial problem, which the runtime accepts where the
+    dropped conditions hold at the computed initial point (OpenModelica removes
+    redundant initial equations after checking them, and so do we)."""
     from .structure import _match
     keep = model_code.jac_rows < n_res
     adj = _adjacency(model_code.jac_rows[keep], model_code.jac_cols[keep], n_res)
     i_adj = _adjacency(init_code.jac_rows, init_code.jac_cols, init_code.n_rows)
-    adj += i_adj[:n_mandatory]
     l2r, r2l = _match(adj, n_z)
-    if min(l2r, default=0) < 0:
-        bad = [descriptions[k - n_res] for k, v in enumerate(l2r) if v < 0 and k >= n_res]
-        raise InitializationFailed(
-            "the initial conditions contradict the model equations structurally "
-            "(they determine the same variables twice): " + "; ".join(bad or ["(model)"]))
-    chosen = list(range(n_mandatory))
-    for k in range(n_mandatory, init_code.n_rows):
-        if len(chosen) == n_states:
+    chosen, redundant = [], []
+    for k in range(init_code.n_rows):
+        if len(chosen) == n_states and k >= n_mandatory:
             break
         adj.append(i_adj[k])
         l2r.append(-1)
-        if _augment(len(adj) - 1, adj, l2r, r2l):
+        if len(chosen) < n_states and _augment(len(adj) - 1, adj, l2r, r2l):
             chosen.append(k)
         else:
             adj.pop()
             l2r.pop()
-    return np.array(chosen, dtype=np.int64)
+            if k < n_mandatory:
+                redundant.append(k)
+    return np.array(chosen, dtype=np.int64), redundant
 
 
 def _augment(root, adj, l2r, r2l) -> bool:
@@ -258,17 +269,64 @@ def solve_linear(residual, x):
     return solve(residual, x)
 
 
-def _dynamic(reduction) -> DynamicSets:
+def _dynamic(reduction, caus) -> DynamicSets:
+    """The level blocks of the run-time choice of states, over the rows of F and the
+    solver vector z (the full form, without its assigned definitions)."""
     s = reduction.structure
     sel = reduction.selection
+    zpos = {v: k for k, v in enumerate(caus.z)}
+    row = {e: k for k, e in enumerate(caus.residual_eqs)}
     level_rows = {r for rows, _ in sel.levels for r in rows}
-    row_vars = {r: [v for v in s.graph[r] if s.diff_to_var[v] is not UNASSIGNED]
+    # level 1's columns of lower kinematic order are no candidates (compiler/states.py)
+    excluded = set(getattr(sel, "excluded", ()))
+    row_vars = {row[r]: [zpos[v] for v in s.graph[r] if s.diff_to_var[v] is not UNASSIGNED
+                         and v not in excluded]
                 for r in level_rows}
-    priority = list(s.state_priority)
-    return DynamicSets([list(rows) for rows, _ in sel.levels], row_vars,
-                       [(-1 if d is UNASSIGNED else d) for d in s.var_to_diff],
-                       [(-1 if d is UNASSIGNED else d) for d in s.diff_to_var],
-                       priority, [s.order(v) for v in range(s.n_vars)], s.var_names)
+
+    def mapped(d):
+        return -1 if d is UNASSIGNED else zpos[d]
+
+    z = caus.z
+    return DynamicSets([[row[r] for r in rows] for rows, _ in sel.levels], row_vars,
+                       [mapped(s.var_to_diff[v]) for v in z],
+                       [mapped(s.diff_to_var[v]) for v in z],
+                       [s.state_priority[v] for v in z], [s.order(v) for v in z],
+                       [s.var_names[v] for v in z])
+
+
+def _fixed_definitions(system, reduction) -> list:
+    """The intermediate quantities of the outline pass that the choice of states
+    cannot involve -- their equation never differentiated, no derivative of theirs, in
+    no row of a level block -- as ``(variable, equation)`` in an order that computes
+    each after the others it reads: with dynamic state selection they are assigned,
+    not unknowns of the solver (compiler/outline.py makes hundreds for a long law)."""
+    from .outline import definition_of
+    s = reduction.structure
+    level_vars = {v for rows, _ in reduction.selection.levels for r in rows
+                  for v in s.graph[r]}
+    found = {}
+    for e, eq in enumerate(system.equations):
+        sym = definition_of(eq)
+        v = system.index.get(sym) if sym is not None else None
+        if (v is not None and s.eq_to_diff[e] is UNASSIGNED
+                and s.var_to_diff[v] is UNASSIGNED and v not in level_vars
+                and s.coeff[e].get(v) == LINEAR_CONST):
+            found[v] = e
+    order, done = [], set()
+    for v in sorted(found):               # depth first over what each reads, no recursion
+        stack = [(v, False)]
+        while stack:
+            u, ready = stack.pop()
+            if u in done:
+                continue
+            if ready:
+                done.add(u)
+                order.append((u, found[u]))
+                continue
+            stack.append((u, True))
+            stack.extend((w, False) for w in s.graph[found[u]]
+                         if w in found and w != u and w not in done)
+    return order
 
 
 def _nominal(system, k) -> float:
@@ -353,20 +411,17 @@ def _initial_rows(system, reduced, reduction, caus):
     make the initial system structurally nonsingular)."""
     rows = [e.residual for e in reduced.initial_equations]
     text = [f"initial equation {e.text} [{e.where}]" for e in reduced.initial_equations]
-    needed = reduction.n_states
+    # the size of each of the user's conditions where it is known (|start| + nominal of
+    # a fixed start value): the scale a redundant one is checked on (runtime/redundant.py)
+    sizes = [0.0] * len(rows)
     fixed = set()
     for k, sym in enumerate(system.symbols):
         info = system.var_info.get(sym)
         if info is not None and info.attrs.fixed and info.attrs.start is not None:
             rows.append(sym - info.attrs.start)
             text.append(f"{sym.name} = {info.attrs.start} (fixed start value) [{info.where}]")
+            sizes.append(abs(float(info.attrs.start)) + _nominal(system, k))
             fixed.add(k)
-    if len(rows) > needed:
-        from ..errors import InitializationFailed
-        raise InitializationFailed(
-            f"the initial problem is over-specified: {len(rows)} initial conditions for "
-            f"{needed} states ({', '.join(system.symbols[v].name for v in reduction.states)}); "
-            "conditions: " + "; ".join(text))
     n_mandatory = len(rows)
     for v in reduction.states:
         if v not in fixed:
@@ -374,4 +429,4 @@ def _initial_rows(system, reduced, reduction, caus):
             # x - 0 is x (what sympy's subtraction returns, at a fraction of its cost)
             rows.append(system.symbols[v] if start == 0.0 else system.symbols[v] - start)
             text.append(f"{system.symbols[v].name} = {start} (start value of a state)")
-    return rows, text, n_mandatory
+    return rows, text, n_mandatory, sizes

@@ -25,6 +25,8 @@ import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import And, BooleanFalse, BooleanTrue, Not, Or
 
+from ..components.ifexpr import IfExpr
+
 __all__ = ["Emitter", "CHUNK"]
 
 CHUNK = 32
@@ -103,7 +105,7 @@ class Emitter:
         return names.get(root) or done[root]
 
     def _children(self, node):
-        if isinstance(node, sp.Piecewise):
+        if isinstance(node, (sp.Piecewise, IfExpr)):
             return []      # branches are printed inline, lazily (see _piecewise)
         if node.is_Atom:
             return []
@@ -138,7 +140,9 @@ class Emitter:
         if e.is_Pow:
             return self._pow(e, done, names)
         if isinstance(e, sp.Piecewise):
-            return self._piecewise(e)
+            return self._piecewise(e.args)
+        if isinstance(e, IfExpr):            # an if-expression kept whole in a condition
+            return self._piecewise(e.pairs())
         if isinstance(e, Relational):
             op = _REL.get(type(e).__name__)
             if op is None:
@@ -257,8 +261,8 @@ class Emitter:
         """Print a sub-expression completely inline (inside a branch: nothing hoisted)."""
         return self._print(e, set(), {}, _NoLines())
 
-    def _piecewise(self, e) -> str:
-        pieces = list(e.args)
+    def _piecewise(self, pieces) -> str:
+        """Nested conditionals over (value, condition) pairs, the last condition True."""
         out = None
         for value, cond in reversed(pieces):
             v = self._inline(value)
@@ -328,7 +332,7 @@ def _shared(root) -> set:
             shared.add(node)
             continue
         seen.add(node)
-        if isinstance(node, sp.Piecewise):
+        if isinstance(node, (sp.Piecewise, IfExpr)):
             continue
         if node.is_Pow and node.exp.is_Number:
             stack.append(node.base)

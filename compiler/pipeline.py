@@ -1,6 +1,7 @@
 """The compiler pipeline: the passes by name, in order (as OpenModelica lists its modules).
 
-    flatten -> units (dimensions checked) -> discrete (floor/mod frozen) -> sampled
+    flatten -> outline (long expressions split into intermediate quantities) ->
+            units (dimensions checked) -> discrete (floor/mod frozen) -> sampled
             (discrete variables held, when-assignments checked) -> delays (delay() read
             from a history) -> alias -> balance -> conversion (Pryce's success test,
             exact; LC conversion of singular constant blocks) ->
@@ -36,7 +37,7 @@ __all__ = ["PASSES", "compile_model"]
 # costs more than the work it moves (the index as written of 2000 equations: ~20 ms)
 SIDE_JOBS_FROM = 2000
 
-PASSES = ("flatten", "units", "discrete", "sampled", "delays", "alias", "balance",
+PASSES = ("flatten", "outline", "units", "discrete", "sampled", "delays", "alias", "balance",
           "conversion", "index_reduction", "state_selection", "assemble", "codegen")
 
 
@@ -112,6 +113,12 @@ def _compile(model, backend, cache, check_units, stores) -> ModelCode:
     report = IndexReport(model_name=type(model).__name__)
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
+    from .outline import outline_expressions
+    made = clock("outline", outline_expressions, flat)
+    if made:
+        report.notes.append(f"{made} intermediate quantities named in long expressions "
+                            "(compiler/outline.py): the passes after flattening work on "
+                            "small equations")
     from .unitcheck import check_units as unit_check
     from .unitcheck import complain
     report.derived_parameters = dict(flat.derived)

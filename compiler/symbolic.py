@@ -200,7 +200,7 @@ class SymbolicSystem:
                     "imposed on a mass); a delay cannot be differentiated: delay a "
                     "signal that enters the model through an integrator or a force, or "
                     "use PadeDelay")
-        dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
+        dr = partial(r, time) if time in symbols_of(r) else sp.Integer(0)
         for sym in sorted((q for q in symbols_of(r) if q in self.index),
                           key=lambda q: self.index[q]):
             dr += sum_partial(r, sym) * derivative_symbol(sym, self.derivatives)
@@ -288,12 +288,13 @@ def _symbol_nodes(e: sp.Basic) -> set:
     ``has`` finds)."""
     if e.is_Symbol:
         return {e}
-    out, stack = set(), [e]
+    out, stack, seen = set(), [e], set()
     while stack:
         node = stack.pop()
         if node.is_Symbol:
             out.add(node)
-        else:
+        elif node not in seen:        # a shared subexpression is walked once
+            seen.add(node)
             stack.extend(node.args)
     return out
 
@@ -302,25 +303,28 @@ def _symbol_nodes(e: sp.Basic) -> set:
 @lru_cache(maxsize=200_000)
 def symbols_of(expr: sp.Basic) -> frozenset:
     """``expr.free_symbols``, computed once per expression: every pass asks for it, and
-    sympy walks the whole tree each time.  Sums, products and powers are walked here;
-    any other node answers for itself (it may bind symbols, as an integral does)."""
+    sympy walks the whole tree each time.  Walked here over the DAG (a shared part once,
+    without recursion); a node that binds symbols of its own (an integral) answers for
+    itself."""
     if expr.is_Symbol:
         return frozenset((expr,))
-    out, stack = set(), [expr]
+    out, stack, seen = set(), [expr], set()
     while stack:
         e = stack.pop()
         if e.is_Symbol:
             out.add(e)
-        elif e.is_Atom:
+        elif e.is_Atom or e in seen:
             continue
-        elif type(e) in _PLAIN_NODES:
-            stack.extend(e.args)
-        else:
+        elif type(e) in _BINDING:
             out |= e.free_symbols
+        else:                         # over the DAG: a shared subexpression once
+            seen.add(e)
+            stack.extend(e.args)
     return frozenset(out)
 
 
-_PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
+# nodes that bind symbols of their own: they answer for themselves
+_BINDING = (sp.Lambda, sp.Integral, sp.Derivative, sp.Subs, sp.Sum, sp.Product)
 
 
 def forget_expressions() -> None:

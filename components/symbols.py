@@ -21,6 +21,8 @@ from sympy.core.parameters import global_parameters
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
+from .ifexpr import unfolded_condition
+
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
            "sympify_value", "When", "when", "reinit", "pre", "text", "sample", "Sample",
            "assign", "Assign"]
@@ -273,8 +275,11 @@ _PRINTER = _TextPrinter()
 
 
 def text(expr) -> str:
-    """``sympy.sstr(expr)``, the same text, faster on the sums models are made of."""
-    return _PRINTER.doprint(expr)
+    """``sympy.sstr(expr)``, the same text, faster on the sums models are made of (an
+    expression too long to read is shortened: components/longtext.py)."""
+    from .longtext import shortened
+    short = shortened(expr, _PRINTER)
+    return _PRINTER.doprint(expr) if short is None else short
 
 
 def Eq(lhs, rhs=0, label: str | None = None) -> Equation:
@@ -318,13 +323,14 @@ _PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
 def has_atom_in(expr, atoms: frozenset) -> bool:
     """``expr.has(*atoms)`` for atoms: one walk over the arguments, each atom looked up
     in the set (sympy's ``has`` builds a matcher and an iterator per node)."""
-    stack = [expr]
+    stack, seen = [expr], set()
     while stack:
         e = stack.pop()
         if e.is_Atom:
             if e in atoms:
                 return True
-        else:
+        elif e not in seen:          # a shared subexpression is walked once
+            seen.add(e)
             stack.extend(e.args)
     return False
 
@@ -395,6 +401,8 @@ def if_else(condition, then, otherwise):
     the integrator steps and switched only at located events.
     """
     cond = _condition(condition, "if_else()")
+    # if-expressions inside the condition stay whole (components/ifexpr.py)
+    cond = unfolded_condition(cond)
     return sp.Piecewise((sympify_value(then), cond), (sympify_value(otherwise), True))
 
 
@@ -417,9 +425,10 @@ def _is_logical(cond) -> bool:
 
 
 def sign(x):
-    """sign(x) as an event-generating expression."""
-    x = sympify_value(x)
-    return sp.Piecewise((1, x > 0), (-1, x < 0), (0, True))
+    """sign(x) as an event-generating expression: sympy's ``sign``, whose two relations
+    x > 0 and x < 0 the compiler makes events (an if-expression would fold into every
+    condition it appears in: components/ifexpr.py)."""
+    return sp.sign(sympify_value(x))
 
 
 class no_event(sp.Function):

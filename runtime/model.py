@@ -305,6 +305,11 @@ class CompiledModel(DAEProblem):
     def roots(self, t, z, zp):
         return self.discrete.oriented(t, z, self._params())
 
+    def tolerances(self, rtol, atol) -> None:
+        """Solver contract item 18: the run's tolerances (the relations' hysteresis
+        against chattering is bounded by atol, :mod:`.modes`)."""
+        self.discrete.atol = float(np.max(atol)) if np.size(atol) else 0.0
+
     def arm(self, t, z, zp, resolution: float = 0.0) -> None:
         """The driver (re)arms the zero-crossing functions; ``resolution`` is how
         precisely (in time) it locates a crossing."""

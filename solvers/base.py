@@ -93,6 +93,10 @@ What a problem provides (numbered, so integrators can cite it)
    equations.  None: it could not, the interpolated value is kept and counted
    (``SolverStats.interpolated_outputs``).
 
+18. ``tolerances(rtol, atol)`` (optional): called once before a run with its
+   tolerances (a compiled model bounds the hysteresis it gives a relation that chatters
+   on round-off by atol).
+
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
 (convergence) failures, events, the steps taken at each order, the order reductions

@@ -458,6 +458,10 @@ class CompiledBDF(BDF):
                 sign, side = d._orientation()
                 self._set("rsign", sign, P_RSIGN)
                 self._set("rside", side, P_RSIDE)
+                # a chattering relation's hysteresis (runtime/modes.py) rides on the
+                # nominal term the loop adds with the side's sign: side^2 = 1
+                from ..runtime.modes import ZERO_NOMINAL
+                self._set("rnom", d.nominal + side * d.hysteresis / ZERO_NOMINAL, P_RNOM)
                 pv[P_OFFSET] = _ptr(d.offset)
         if self.mode == 0:
             self._keep["par"], self._keep["m"] = p.p, p.discrete.m

@@ -175,6 +175,9 @@ class _Run:
         p = self.problem
         y = np.array(y0, dtype=float)
         yp = np.zeros(p.n) if yp0 is None else np.array(yp0, dtype=float)
+        hook = getattr(p, "tolerances", None)          # contract item 18
+        if hook is not None:
+            hook(self.rtol, self.atol)
         if initialize:
             y, yp = consistent_initial(p, self.t0, y, yp, rtol=self.rtol, atol=self.atol)
         self._snapshot()
