@@ -140,9 +140,9 @@ class Emitter:
         if e.is_Pow:
             return self._pow(e, done, names)
         if isinstance(e, sp.Piecewise):
-            return self._piecewise(e.args)
+            return self._piecewise(e)
         if isinstance(e, IfExpr):            # an if-expression kept whole in a condition
-            return self._piecewise(e.pairs())
+            return self._piecewise(sp.Piecewise(*e.pairs()))
         if isinstance(e, Relational):
             op = _REL.get(type(e).__name__)
             if op is None:
@@ -261,8 +261,8 @@ class Emitter:
         """Print a sub-expression completely inline (inside a branch: nothing hoisted)."""
         return self._print(e, set(), {}, _NoLines())
 
-    def _piecewise(self, pieces) -> str:
-        """Nested conditionals over (value, condition) pairs, the last condition True."""
+    def _piecewise(self, e) -> str:
+        pieces = list(e.args)
         out = None
         for value, cond in reversed(pieces):
             v = self._inline(value)

@@ -188,7 +188,10 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
         import scipy.sparse as sps
         return sps.vstack([model.dG_dy(t0, z), sps.csr_matrix(extra)]).tocsc()
 
-    weights = 1.0 / (_NEWTON_RTOL * np.abs(z_guess) + _NEWTON_RTOL * model.nominal)
+    def weights(z):
+        # on the iterate's own scale, never finer than the guess's
+        return 1.0 / (_NEWTON_RTOL * np.maximum(np.abs(z), np.abs(z_guess))
+                      + _NEWTON_RTOL * model.nominal)
     model.evaluation_errors.clear()
     dropped, coords = _choose_conditions(model, t0, z_guess) if init.redundant else ([], {})
     try:
@@ -234,7 +237,11 @@ def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-
     alg, F, J = algebraic_system(model, t, z)
     if alg.size:
         atol_v = atol * model.nominal[alg]
-        weights = 1.0 / (rtol * np.abs(z[alg]) + atol_v)
+
+        def weights(za):
+            # on the iterate's own scale: an unknown that the event takes from 0 to
+            # 2e9 (a rate after a switch) is not judged on its value before it
+            return 1.0 / (rtol * np.maximum(np.abs(za), np.abs(z[alg])) + atol_v)
         model.evaluation_errors.clear()
         z[alg] = solve_with_fallback(F, J, z[alg].copy(), weights,
                                      "consistent algebraic values after the event",
@@ -378,8 +385,12 @@ def _note_evaluation(model, init, t, exc) -> None:
 
 def _note_singular(model, t, err, alg) -> None:
     report = getattr(model, "report", None)
-    if report is None:
+    if report is None or getattr(model, "_singular_noted", False):
         return
+    # once per model: naming the block analyses the matrix (an SVD), and a model whose
+    # charges' potentials are related only through the charges' balance meets it after
+    # every event
+    model._singular_noted = True
     eqs = [model.equation_names[r] for r in err.rows[:4]] if err.rows else []
     cols = [model.names[alg[c]] for c in err.cols[:4]] if err.cols else []
     note = (f"structural analysis fails at t = {t:.6g}: the Jacobian of the equations with "
