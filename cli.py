@@ -3,7 +3,8 @@
 ::
 
     acausal run SCRIPT[:MODEL] --t-end T [--rtol R] [--atol A] [--n-points N]
-                [--set R1.R=5 ...] [--backend auto|c|numpy] [--csv out.csv]
+                [--set R1.R=5 ...] [--input u=1.5 w=drive.csv ...]
+                [--backend auto|c|numpy] [--csv out.csv]
                 [--plot out.png [VAR ...]] [--print VAR ...]
     acausal report SCRIPT[:MODEL] [--json] [--dot out.dot]
     acausal fmu SCRIPT[:MODEL] [-o model.fmu] [--type me|cs]
@@ -205,6 +206,39 @@ def parse_assignments(items) -> dict:
     return out
 
 
+def parse_inputs(items) -> dict:
+    """``["u=2.5", "w=drive.csv", "v=data.csv:3"]`` -> the drivers of the model's
+    top-level inputs: a number, or a table read from a CSV file (its first column the
+    time, the value from column 2, or the column after ``:``, numbered from 1 as a
+    CombiTimeTable's; the file is read as numbers only, never executed)."""
+    out = {}
+    for item in items or ():
+        name, sep, value = item.partition("=")
+        name, value = name.strip(), value.strip()
+        if not sep or not name or not value:
+            raise UsageError(f"--input {item}: expected NAME=VALUE or NAME=FILE.csv, e.g. "
+                             "--input u=1.5")
+        try:
+            out[name] = float(value)
+            continue
+        except ValueError:
+            pass
+        path, column = value, 2
+        head, colon, tail = value.rpartition(":")
+        if colon and tail.isdigit():
+            path, column = head, int(tail)
+        from .library.blocks.tables import read_table
+        try:
+            data = read_table(path, f"--input {name}")
+        except OSError as err:
+            raise UsageError(f"--input {item}: cannot read {path}: {err.strerror}") from None
+        if not 2 <= column <= data.shape[1]:
+            raise UsageError(f"--input {item}: {path} has columns 1 to {data.shape[1]} (1 "
+                             f"is time), not {column}")
+        out[name] = (data[:, 0], data[:, column - 1])
+    return out
+
+
 # -- the commands ------------------------------------------------------------------------
 def _compile(model, backend: str, check_units: str = "warn"):
     from . import compile as compile_model
@@ -213,6 +247,7 @@ def _compile(model, backend: str, check_units: str = "warn"):
 
 def _cmd_run(args) -> int:
     values = parse_assignments(args.set)
+    inputs = parse_inputs(getattr(args, "input", None))
     for option, path in (("--csv", args.csv), ("--plot", args.plot[0] if args.plot else None)):
         _check_writable(option, path)          # before the run, not after it
     model, module = load_model(args.script)
@@ -231,7 +266,7 @@ def _cmd_run(args) -> int:
         # a failed run is reported below, with its numbers: not twice
         warnings.simplefilter("ignore", RuntimeWarning)
         res = simulate(compiled, t_end=t_end, rtol=args.rtol, atol=args.atol,
-                       n_points=args.n_points)
+                       n_points=args.n_points, inputs=inputs or None)
     print(f"{type(model).__name__} ({module.__name__}), backend {compiled.backend}, "
           f"{len(compiled.states)} states, {len(compiled.param_names)} parameters")
     for n, x in values.items():
@@ -430,6 +465,9 @@ def build_parser() -> argparse.ArgumentParser:
                      help="N evenly spaced output points (default: every step)")
     run.add_argument("--set", nargs="+", action="extend", metavar="NAME=VALUE",
                      help="change tunable parameters, e.g. --set motor.R=2 load.J=0.02")
+    run.add_argument("--input", nargs="+", action="extend", metavar="NAME=VALUE|FILE",
+                     help="drive a top-level input: a number, or a CSV file of rows "
+                          "(time, value), e.g. --input u=1.5 w=drive.csv")
     run.add_argument("--backend", choices=("auto", "c", "numpy"), default="auto",
                      help="generated code: C (compiled), numpy, or C when a compiler works")
     run.add_argument("--csv", metavar="FILE", help="write every variable to a CSV file")

@@ -127,6 +127,8 @@ class Result:
         meta = getattr(compiled, "meta", None) or {}
         self.units = dict(meta.get("units", {}))
         self.descriptions = dict(meta.get("descriptions", {}))
+        # "Boolean" or "Integer" by name; every other variable is Real
+        self.value_types = dict(meta.get("value_types", {}))
 
     @classmethod
     def from_table(cls, t, columns: dict, **fields) -> "Result":
@@ -135,6 +137,7 @@ class Result:
                   fields.pop("events", ()), fields.pop("success", True),
                   fields.pop("message", ""))
         res._table = {n: np.asarray(v, dtype=float) for n, v in columns.items()}
+        res.value_types = dict(fields.pop("value_types", {}))
         for key, value in fields.items():
             setattr(res, key, value)
         return res
@@ -178,17 +181,27 @@ class Result:
         if self._table is not None:
             if name not in self._table:
                 raise KeyError(self._missing(name, self._table))
-            return self._table[name].copy()
+            return self._typed(name, self._table[name].copy())
         try:
             sign, k = self.compiled.outputs[name]
         except KeyError:
             raise KeyError(self._missing(name, self.compiled.outputs)) from None
         if sign is None:
-            return np.full(len(self.t), k(self.parameters) if callable(k) else k)
+            return self._typed(name, np.full(len(self.t), k(self.parameters)
+                                             if callable(k) else k))
         if self._y is None:
             self._y = _expand(self.compiled, self.t, self._z, self.parameters,
                               self._discrete, self._discrete_index, self._delayed)
-        return sign * self._y[:, k]
+        return self._typed(name, sign * self._y[:, k])
+
+    def _typed(self, name, values) -> np.ndarray:
+        """A Boolean variable's values as a bool array, an Integer's as int64."""
+        kind = self.value_types.get(name)
+        if kind == "Boolean":
+            return np.asarray(values, dtype=float) > 0.5
+        if kind == "Integer":
+            return np.rint(np.asarray(values, dtype=float)).astype(np.int64)
+        return values
 
     @staticmethod
     def _missing(name, known) -> str:
@@ -225,8 +238,10 @@ class Result:
         return np.flatnonzero(np.append(self.t[1:] != self.t[:-1], True))
 
     def to_pandas(self, names=None, unique: bool = False):
-        """A ``pandas.DataFrame``: index ``time``, one column per variable (default: all);
-        ``df.attrs["units"]`` and ``df.attrs["descriptions"]`` by column name.  An event
+        """A ``pandas.DataFrame``: index ``time``, one column per variable (default: all;
+        a Boolean a bool column, an Integer an int64 one); ``df.attrs["units"]``,
+        ``df.attrs["descriptions"]`` and ``df.attrs["types"]`` (Real, Boolean, Integer)
+        by column name.  An event
         time appears twice (before and after it) unless ``unique=True`` (after only)."""
         try:
             import pandas as pd
@@ -238,11 +253,14 @@ class Result:
                           index=pd.Index(self.t[rows], name="time"), columns=names)
         df.attrs["units"] = {n: self.units.get(n, "") for n in names}
         df.attrs["descriptions"] = {n: self.descriptions.get(n, "") for n in names}
+        # Booleans and Integers are bool and int64 columns; their Modelica types
+        df.attrs["types"] = {n: self.value_types.get(n, "Real") for n in names}
         return df
 
     def to_xarray(self, names=None, unique: bool = False):
         """An ``xarray.Dataset`` with dimension ``time``, one variable per name (default:
-        all) with attributes ``units`` and ``description``; the run's parameters, success
+        all) with attributes ``units``, ``description`` and ``type`` (Real, Boolean or
+        Integer: bool and int64 data); the run's parameters, success
         and message are dataset attributes.  ``unique=True``: each event time once (the
         point after it), so that ``ds.sel(time=..., method="nearest")`` works."""
         try:
@@ -252,7 +270,8 @@ class Result:
                 from err
         names, rows = self._names(names), self._rows(unique)
         data = {n: ("time", self[n][rows], {"units": self.units.get(n, ""),
-                                      "description": self.descriptions.get(n, "")})
+                                      "description": self.descriptions.get(n, ""),
+                                      "type": self.value_types.get(n, "Real")})
                 for n in names}
         attrs = {"success": int(bool(self.success)), "message": str(self.message)}
         attrs.update({f"parameter {k}": v for k, v in self.parameter_values.items()})
@@ -316,6 +335,11 @@ def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
     compiled.p[:] = p
     known = len(index) == len(t) and discrete
     lines = getattr(compiled, "delays", None)
+    # the recorded values: the delayed ones, then those of inputs that varied
+    n_delayed = lines.n if lines is not None else 0
+    inputs = getattr(compiled, "inputs", None)
+    varied = inputs is not None and delayed is not None and len(delayed) == len(t) \
+        and np.ndim(delayed) == 2 and delayed.shape[1] > n_delayed
     if lines is not None and (delayed is None or len(delayed) != len(t)):
         raise ValueError("the values of this result's delay() expressions were not "
                          "recorded (a result of a model with delays needs the values the "
@@ -324,7 +348,9 @@ def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
         rows = []
         for k, (tk, zk) in enumerate(zip(t, z)):
             if lines is not None:
-                lines.held = delayed[k]
+                lines.held = delayed[k][:n_delayed]
+            if varied:
+                compiled.p[inputs.slots] = delayed[k][n_delayed:]
             if known:
                 compiled.m[:] = discrete[index[k]]
             else:                      # a result without its modes: take them from the point

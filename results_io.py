@@ -19,10 +19,13 @@
   ================  ===================================================================
 
   An alias is no column of its own: its ``dataInfo`` points at the column of the variable
-  it is equal to (or minus it).
+  it is equal to (or minus it).  A Boolean or Integer is a column of 0/1 or whole
+  numbers whose description ends with Dymola's ``[:#(type=Boolean)]`` or
+  ``[:#(type=Integer)]``.
 * :func:`save_result` / :func:`load_result`: HDF5 (h5py, the ``io`` extra): time,
-  values (points x names), names, units, descriptions, states, parameters, events,
-  stats, success and message; a loaded result needs no model.
+  values (points x names), names, units, descriptions, value types (a Boolean or
+  Integer is loaded as a bool or int array), states, parameters, events, stats,
+  success and message; a loaded result needs no model.
 * :func:`plot_result`: one y-axis per unit, labelled with it, events marked.
 """
 from __future__ import annotations
@@ -93,7 +96,7 @@ def _mat_layout(res: Result, names):
     for name in names:
         desc = _description(res, name)
         sign, key = (outputs[name] if outputs is not None else (1.0, name))
-        values = res[name]
+        values = np.asarray(res[name], dtype=float)    # Booleans as 0/1, as Dymola
         if sign is None:                       # a constant of the model: data_1
             constants.append(np.array([values[0], values[-1]]))
             entries.append((name, desc, 1, len(constants)))
@@ -106,8 +109,12 @@ def _mat_layout(res: Result, names):
 
 
 def _description(res, name) -> str:
+    """"description [unit]"; a Boolean's or Integer's with Dymola's type mark
+    ``[:#(type=Boolean)]``, which its readers use to restore the type."""
     text, unit = res.descriptions.get(name, ""), res.units.get(name, "")
-    return f"{text} [{unit}]" if unit else text
+    text = f"{text} [{unit}]" if unit else text
+    kind = res.value_types.get(name)
+    return f"{text} [:#(type={kind})]".lstrip() if kind else text
 
 
 def write_mat(res: Result, path, names=None) -> None:
@@ -158,6 +165,8 @@ def save_result(res: Result, path) -> None:
                                                  dtype=object), dtype=text)
         fh.create_dataset("descriptions", dtype=text, data=np.array(
             [res.descriptions.get(n, "") for n in names], dtype=object))
+        fh.create_dataset("types", dtype=text, data=np.array(       # Real, Boolean, Integer
+            [res.value_types.get(n, "Real") for n in names], dtype=object))
         fh.create_dataset("parameter_names", dtype=text,
                           data=np.array(res.parameter_names, dtype=object))
         # the named parameters only (a model with delays keeps its delayed values after them)
@@ -208,6 +217,7 @@ def load_result(path) -> Result:
         values = fh["values"][()]
         names = _strings(fh["names"])
         units = dict(zip(names, _strings(fh["units"])))
+        types = dict(zip(names, _strings(fh["types"]))) if "types" in fh else {}
         descriptions = dict(zip(names, _strings(fh["descriptions"])))
         pnames = _strings(fh["parameter_names"])
         units.update(json.loads(fh.attrs["parameter_units"]))
@@ -219,6 +229,7 @@ def load_result(path) -> Result:
             success=bool(fh.attrs["success"]), message=str(fh.attrs["message"]),
             parameters=fh["parameter_values"][()], parameter_names=pnames, units=units,
             descriptions=descriptions, _states=json.loads(fh.attrs["states"]),
+            value_types={n: k for n, k in types.items() if k != "Real"},
             state_switches=[_event(d) for d in json.loads(fh.attrs["state_switches"])])
     return res
 

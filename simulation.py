@@ -36,10 +36,10 @@ def compile(model: Component, backend: str = "auto", cache=True,  # noqa: A001
     ``$ACAUSAL_CACHE`` or ``~/.cache/acausal``, found by its flattened equations and
     parameter values; ``"tree"`` also by its instance tree, without flattening or
     importing sympy (for models whose equations read nothing but their classes, modules
-    and parameters); ``False`` always compiles (see :mod:`acausal.compiler.cache`).
+    and parameters); ``False`` always compiles (see :mod:`acausal.compiler.cache.entries`).
     ``check_units``: ``"warn"`` (default) warns (``UnitWarning``) at an equation whose
     terms have different dimensions, ``"error"`` raises ``UnitError``, ``"off"`` skips
-    the check (:mod:`acausal.compiler.unitcheck`); ``compiled.report.units`` says what
+    the check (:mod:`acausal.compiler.frontend.unitcheck`); ``compiled.report.units`` says what
     was checked and lists the variables declared without a unit."""
     # imported here: the compiler brings sympy and the runtime scipy, which importing
     # acausal (or this module, for its names) does not need
@@ -143,7 +143,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              max_step: float = np.inf, parameters: dict | None = None,
              max_order: int = 5, raise_on_failure: bool = False,
              backend: str = "auto", progress: bool | None = None,
-             step_loop: str = "auto", check_units: str = "warn") -> Result:
+             step_loop: str = "auto", check_units: str = "warn",
+             inputs: dict | None = None) -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -162,6 +163,11 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     qualifies and the loop's library is built, on either backend, see
     :mod:`acausal.solvers.cbdf`), "c" or "python".
     ``check_units``: as in :func:`compile`, for a Component compiled here.
+    ``inputs``: how the model's top-level inputs (input ports of the model itself that
+    nothing in it drives, ``compiled.input_names``) are driven, by name: a number, a
+    function of time, a table ``(times, values)`` or a ``CombiTimeTable`` (its times
+    are time events); every input must be given (``ac.MissingInput`` names those that
+    are not), see :mod:`acausal.runtime.inputs`.
     """
     t_start, t_end = _time("t_start", t_start), _time("t_end", t_end)
     if not t_end > t_start:
@@ -182,10 +188,12 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     try:
         if parameters:
             compiled.set_parameters(parameters)
+        compiled.drive_inputs(inputs)
         return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
                     raise_on_failure, progress, step_loop)
     finally:
         compiled.p[:] = saved
+        compiled.release_inputs()
         if compiled.backend in ("c", "numpy"):
             # for the next runs (either backend's model runs in the compiled loop): this
             # one has not shared the processors with the build
@@ -205,7 +213,7 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         events, _ = _event_records(compiled, out, marks)
         return Result(compiled, out.t, np.zeros((len(out.t), 0)), out.stats, events, True,
                       "no states: run from event to event", out.point_states,
-                      list(range(len(out.t))))
+                      list(range(len(out.t))), delay_values=_input_values(compiled, out.t))
     if compiled.n == 0:
         # nothing to integrate: every variable is an explicit function of time, and each
         # point is evaluated with the relations as they hold there
@@ -214,6 +222,9 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         if compiled.delays is not None:
             from .runtime.delays import explicit_values
             delayed = explicit_values(compiled, compiled.delays, t)
+        if compiled.inputs_vary:
+            varied = _input_values(compiled, t)
+            delayed = np.column_stack([delayed, varied]) if len(delayed) else varied
         return Result(compiled, t, np.zeros((len(t), 0)), {"steps": 0}, [], True,
                       "no states: evaluated explicitly", delay_values=delayed)
     from .solvers import integrate
@@ -251,6 +262,13 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
                    "unknowns without an error bound are interpolated, not solved")
         warnings.warn(f"simulate: {message}", RuntimeWarning, stacklevel=3)
     return _result(compiled, out, out.success, message, marks)
+
+
+def _input_values(compiled, t):
+    """The varying inputs' values at the points t (recorded with a result), or ()."""
+    if not compiled.inputs_vary:
+        return ()
+    return np.array([compiled.inputs.values_at(tk) for tk in t]).reshape(len(t), -1)
 
 
 def _singular_start(compiled, t_start) -> str | None:

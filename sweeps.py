@@ -77,7 +77,10 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
         if key in simulate_kwargs:
             raise ValueError(f"ensemble: {key} is set per run, not as a keyword")
     compiled = compile(model, simulate_kwargs.pop("backend", "auto"))
-    unknown = sorted({k for r in runs for k in r} - set(compiled.param_names))
+    # a top-level input is swept as a parameter is: a number per run (or, in an
+    # ensemble, a function of time or a table), given with the run's other inputs
+    unknown = sorted({k for r in runs for k in r} - set(compiled.param_names)
+                     - set(compiled.input_names))
     if unknown:                  # a mistake in the call, not a failed run: say it now
         compiled.set_parameters({unknown[0]: 1.0})
     names = sorted(compiled.outputs) if names is None else list(names)
@@ -97,6 +100,12 @@ def _run_one(compiled, base, values, job):
     ``task(compiled, values, job)`` with the model at its base parameters."""
     from .simulation import simulate
     compiled.p[:] = base
+    given = set(compiled.input_names)
+    if given & set(values):
+        inputs = {**job["kwargs"].get("inputs", {}), **{k: v for k, v in values.items()
+                                                        if k in given}}
+        values = {k: v for k, v in values.items() if k not in given}
+        job = {**job, "kwargs": {**job["kwargs"], "inputs": inputs}}
     if job.get("task") is not None:
         try:
             return job["task"](compiled, values, job)
@@ -293,6 +302,8 @@ def _dataset(compiled, runs, times, names, outcomes):
     base = dict(zip(compiled.param_names, compiled.p))
     coords = {"run": np.arange(len(runs)), "time": ("time", times, {"units": "s"})}
     for k in swept:
+        if not all(isinstance(r.get(k, 0.0), (int, float, np.number)) for r in runs):
+            continue             # an input given as a function or a table: no coordinate
         coords[k] = ("run", np.array([float(r.get(k, base.get(k, np.nan))) for r in runs]),
                      {"units": units.get(k, "")})
     return xr.Dataset(data, coords=coords, attrs={"n_runs": len(runs),

@@ -275,6 +275,8 @@ def _inside(plant, name) -> str:
 def _output_row(plant, name):
     c = plant.compiled
     internal = plant.internal(name)
+    if internal not in c.outputs and f"{internal}.signal" in c.outputs:
+        internal = f"{internal}.signal"      # a signal port by its own name, as in results
     if internal not in c.outputs:
         raise KeyError(f"no variable '{name}' in the model (outputs are variables by their "
                        f"dotted names, or der(x) of a state){_inside(plant, name)}")

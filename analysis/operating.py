@@ -78,9 +78,12 @@ class OperatingPoint:
 
     def __getitem__(self, name: str) -> float:
         c = self.compiled
-        if name in self.plant.input_params:
-            return float(self.p[c.param_names.index(self.plant.input_params[name])])
-        sign, k = c.outputs[self.plant.internal(name)]
+        if name in self.plant.input_params or name in self.plant.input_slots:
+            return float(self.p[self.plant.parameter_index(name)])
+        internal = self.plant.internal(name)
+        if internal not in c.outputs and f"{internal}.signal" in c.outputs:
+            internal = f"{internal}.signal"      # a signal port by its own name
+        sign, k = c.outputs[internal]
         with self.in_modes():
             if sign is None:
                 return constant_value(c, k)
@@ -113,7 +116,7 @@ class OperatingPoint:
 
     @property
     def inputs(self) -> dict:
-        return {name: self[name] for name in self.plant.input_params}
+        return {name: self[name] for name in self.plant.input_names}
 
     def __repr__(self):
         return f"<OperatingPoint t={self.t:g} states={self.states}>"

@@ -38,6 +38,19 @@ class Plant:
         self.input_params = dict(input_params or {})
         # input name -> (rate, accel, t_ref) parameters of its _InputValue
         self.input_rates = dict(input_rates or {})
+        # the top-level inputs of a model compiled with them (runtime/inputs.py): their
+        # values' places in p, set as constants here
+        self.input_slots = {}
+        drivers = getattr(compiled, "inputs", None)
+        if drivers is not None:
+            for n, k in zip(drivers.names, drivers.slots):
+                self.input_slots[n] = self.input_slots[f"{n}.signal"] = int(k)
+
+    @property
+    def input_names(self) -> list:
+        """The top-level inputs, by the user's names."""
+        return [n for n in list(self.input_params) + list(self.input_slots)
+                if not n.endswith(".signal")]
 
     def internal(self, name: str) -> str:
         if name in self.input_params:
@@ -53,6 +66,8 @@ class Plant:
 
     def parameter_index(self, name: str):
         """Index into ``compiled.p`` of a parameter or top-level input, else None."""
+        if name in self.input_slots:
+            return self.input_slots[name]
         internal = self.internal(name)
         names = self.compiled.param_names
         return names.index(internal) if internal in names else None

@@ -22,12 +22,12 @@ from __future__ import annotations
 import numpy as np
 import sympy as sp
 
-from ..compiler.alias import eliminate_aliases
-from ..compiler.causalize import causalize
-from ..compiler.flatten import flatten
+from ..compiler.frontend.alias import eliminate_aliases
+from ..compiler.structure.causalize import causalize
+from ..compiler.frontend.flatten import flatten
 from ..compiler.assemble import solve_linear
-from ..compiler.reduction import reduce_index
-from ..compiler.symbolic import SymbolicSystem
+from ..compiler.index.reduction import reduce_index
+from ..compiler.algebra.symbolic import SymbolicSystem
 from .plant import _Harness, top_level_inputs
 from .statespace import StateSpace
 

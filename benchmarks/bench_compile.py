@@ -25,7 +25,7 @@ class GearChain(ac.Component):
         super().__init__(**mods)
         self.drive = rot.ConstantTorque(tau_constant=1.0)
         self.J = [rot.Inertia(J=1.0) for _ in range(n + 1)]
-        self.gear = [rot.IdealGear(n=1.1) for _ in range(n)]
+        self.gear = [rot.IdealGear(ratio=1.1) for _ in range(n)]
 
     def equations(self):
         eqs = [ac.connect(self.drive.flange, self.J[0].flange_a)]

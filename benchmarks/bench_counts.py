@@ -32,7 +32,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
-from acausal.compiler.pantelides import pantelides  # noqa: E402
+from acausal.compiler.structure.pantelides import pantelides  # noqa: E402
 from acausal.solvers import integrate  # noqa: E402
 from acausal.tests.solvers.problems import (DampedOscillator, Decay,  # noqa: E402
                                             HeatChain, OscillatorChain)

@@ -20,7 +20,7 @@ store, in forked copies) -- user + system; ``RSS MB`` is the Python process's pe
 memory, ``sub MB`` the largest child's (a forked child shares the parent's pages until
 it writes them, so this over-counts what it adds), and a line per size says
 how the C library was built (translation units, compilers at once, flags, seconds
-compiling and linking; :mod:`acausal.compiler.cbuild`) and the load average then.
+compiling and linking; :mod:`acausal.native.build`) and the load average then.
 
 ``--front`` stops after index reduction: code generation is replaced by a stand-in
 that builds nothing (the report is still filled, so the cost of its texts is measured),
@@ -61,7 +61,7 @@ def _front_only() -> None:
                                relations=SimpleNamespace(n_relations=0, n_discrete=0))
     pipeline._assemble = assemble
     try:
-        cbackend = importlib.import_module("acausal.compiler.cbackend")
+        cbackend = importlib.import_module("acausal.compiler.backends.cbackend")
     except ImportError:
         return
     cbackend.bind = lambda *args, **kwargs: None
@@ -94,7 +94,7 @@ def measure_once(family: str, n: int, front: bool) -> dict:
     sidejobs.settle()        # the cache store beside the compile: its time and memory too
     kids = resource.getrusage(resource.RUSAGE_CHILDREN)
     try:
-        from acausal.compiler.cbuild import last_build
+        from acausal.native.build import last_build
     except ImportError:
         last_build = {}
     return {"family": family, "n": n, "flat": report.counts["flatten"]["equations"],

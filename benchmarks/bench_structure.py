@@ -19,13 +19,13 @@ import math
 import sys
 import time
 
-from acausal.compiler.blt import blt
-from acausal.compiler.graph import LINEAR_CONST as C, LINEAR_PARAM as P
-from acausal.compiler.graph import LINEAR_VAR as V, NONLINEAR as N
-from acausal.compiler.pantelides import pantelides
-from acausal.compiler.states import index1_matching, select_states
-from acausal.compiler.structure import make_structure
-from acausal.compiler.tearing import tear
+from acausal.compiler.structure.blt import blt
+from acausal.compiler.structure.graph import LINEAR_CONST as C, LINEAR_PARAM as P
+from acausal.compiler.structure.graph import LINEAR_VAR as V, NONLINEAR as N
+from acausal.compiler.structure.pantelides import pantelides
+from acausal.compiler.structure.states import index1_matching, select_states
+from acausal.compiler.structure.matching import make_structure
+from acausal.compiler.structure.tearing import tear
 
 __all__ = ["pendulum_chain", "gear_chain", "run"]
 

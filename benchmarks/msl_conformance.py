@@ -3,7 +3,8 @@ package (``python benchmarks/msl_conformance.py [NAME ...]``).
 
 Each row: the signals compared, the worst error over the reference's amplitude of its
 Real signals (the bound is 1e-3, see ``tests/msl/harness.py``), the mismatching
-instants of its Boolean and Integer signals, the run's wall time, and the verdict.  A
+instants of its Boolean and Integer signals, the run's wall time, and the verdict (with
+the example's ``msl_known_failure``, where it names why it cannot pass).  A
 NAME selects the examples whose MSL name contains it.  The examples run one after the
 other in this process (``--jobs N``: in N worker processes).
 """
@@ -49,6 +50,7 @@ def main(argv=None) -> int:
     totals = defaultdict(lambda: [0, 0])
     print(f"{'example':58s} {'signals':>7s} {'worst/ampl':>10s} {'discrete':>8s} "
           f"{'time/s':>7s}  verdict   (bound {BOUND:g} x amplitude)")
+    known = {n: getattr(c, "msl_known_failure", None) for n, c in examples().items()}
     for name, out in outcomes.items():
         package = package_of(name)
         totals[package][1] += 1
@@ -60,6 +62,8 @@ def main(argv=None) -> int:
         discrete = sum(int(c.worst) for c in out.checks if c.kind == "discrete")
         ndisc = sum(c.kind == "discrete" for c in out.checks)
         note = "" if out.success else f"  ({out.message.splitlines()[0][:80]})"
+        if not out.passed and known.get(name):
+            note += f"  (known: {known[name][:90]})"
         print(f"{short:58s} {len(out.checks):7d} {out.worst:10.2e} "
               f"{(str(discrete) if ndisc else '-'):>8s} {out.seconds:7.2f}  "
               f"{'pass' if out.passed else 'FAIL'}{note}")

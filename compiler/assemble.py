@@ -1,16 +1,16 @@
 """The ``assemble`` and ``codegen`` passes: the index-reduced system put in the form the
-solver sees (full or causal, :mod:`acausal.compiler.causalize`), its relations, initial
+solver sees (full or causal, :mod:`acausal.compiler.structure.causalize`), its relations, initial
 equations, when-clauses and delays, and the generated code of each
-(:mod:`acausal.compiler.codegen`), gathered in a :class:`ModelCode`.
+(:mod:`acausal.compiler.backends.codegen`), gathered in a :class:`ModelCode`.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from ..components.units import output_tables
-from .graph import LINEAR_CONST, UNASSIGNED
+from .structure.graph import LINEAR_CONST, UNASSIGNED
 from .modelcode import DynamicSets, InitialCode, ModelCode, RelationInfo, WhenCode
-from .numeric import is_number
+from .index.numeric import is_number
 from .report import EquationNames
 
 __all__ = ["assemble", "choose_initial_rows", "solve_linear"]
@@ -19,21 +19,23 @@ __all__ = ["assemble", "choose_initial_rows", "solve_linear"]
 def assemble(system, reduction, reduced, flat, aliases, report, discretes,
              helds=(), delays=(), programs_made=None) -> ModelCode:
     """The ModelCode of the index-reduced ``system``.  ``programs_made``, if given, is
-    called with the generated Programs by prefix (:func:`acausal.compiler.cbackend.programs`)
+    called with the generated Programs by prefix (:func:`acausal.compiler.backends.cbackend.programs`)
     as soon as they are all made, before the rest of the ModelCode: the C backend
     can print and compile them meanwhile (:mod:`acausal.compiler.pipeline`)."""
     import sympy as sp
     from types import SimpleNamespace
-    from .causalize import causalize, full_form
-    from .codegen import event_form, extract_relations, generate
-    from .numeric import CoefficientValues
-    from .sampled import when_rows as clause_rows
+    from ..components.logic import INITIAL
+    from .structure.causalize import causalize, full_form
+    from .backends.codegen import event_form, extract_relations, generate
+    from .index.numeric import CoefficientValues
+    from .frontend.sampled import when_rows as clause_rows
     syms = system.symbols
     if reduction.dynamic:
         caus = full_form(reduction, len(syms), len(system.equations),
                          _fixed_definitions(system, reduction))
     else:
         held_items = [SimpleNamespace(symbol=s) for h in helds for s in (h.symbol, h.pre)]
+        held_items.append(SimpleNamespace(symbol=INITIAL))
         values = CoefficientValues(system, reduced.parameters, list(discretes) + held_items)
         caus = causalize(reduction, values)
         untorn = [b for b in caus.blocks if b.get("not_torn")]
@@ -61,8 +63,14 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     when_rows, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
     delay_rows = [d.argument for d in delays]
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
+    everything = [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows
+    uses_initial = bool(getattr(flat, "uses_initial", False))
+    # m: relation values, floor values, then held(y) and pre(y) of the discrete
+    # variables, then initial() if the model reads it
+    dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + \
+        [h.pre for h in helds] + ([INITIAL] if uses_initial else [])
     exprs, crossings, modes, origin = extract_relations(
-        [e for _, e in assigned] + rows + init_rows + when_rows + delay_rows)
+        everything, _frozen(reduced, dsyms, assigned))
     parts = np.split(np.array(exprs, dtype=object), np.cumsum(sizes)[:-1])
     assigned = [(a, e) for (a, _), e in zip(assigned, parts[0])]
     rows, init_rows, when_rows = list(parts[1]), list(parts[2]), list(parts[3])
@@ -70,10 +78,10 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     zeros = set(reduced.structural_zeros)
     params = [p for p in reduced.parameters if is_number(p.value) and p.name not in zeros]
     psyms = [p.symbol for p in params]
-    # m: relation values, floor values, then held(y) and pre(y) of the discrete variables
-    dsyms = [d.symbol for d in discretes] + [h.symbol for h in helds] + [h.pre for h in helds]
     # the delayed values are read from p after the tunable parameters (runtime/delays.py)
-    inputs = psyms + [d.symbol for d in delays]
+    # then the top-level inputs' values, written by the runtime (runtime/inputs.py)
+    model_inputs = list(getattr(flat, "inputs", ()))
+    inputs = psyms + [d.symbol for d in delays] + [i.symbol for i in model_inputs]
     rel_list = list(modes.values())
     code = generate(rows, z_syms, inputs, len(modes),
                     crossings + [d.argument for d in discretes], assigned, outputs=syms,
@@ -86,16 +94,18 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
     whens_code = generate(when_rows, z_syms, inputs, len(modes), None, assigned,
                          discretes=dsyms) if reduced.whens else None
     if programs_made is not None:
-        from .cbackend import programs
+        from .backends.cbackend import programs
         programs_made(programs(code, init_code, whens_code, delays_code))
     names = [q.name for q in z_syms]
     relations = RelationInfo(
         ops=[type(r).__name__ for r in rel_list],
-        texts=[_relation_text(r, k, origin, system, caus, assigned, init_text, reduced)
+        texts=[_relation_text(r, k, origin, system, caus, assigned, init_text, reduced,
+                              (len(init_rows), when_layout, helds))
                for k, r in enumerate(rel_list)],
         nominal=[_relation_nominal(system, g, assigned) for g in crossings],
         discrete_texts=[d.text for d in discretes],
         held_names=[h.name for h in helds], held_start=[h.start for h in helds],
+        has_initial=uses_initial, held_types=_type_names(flat, helds),
         time_linear=_time_linear(crossings + [d.argument for d in discretes], assigned,
                                  set(psyms) | set(dsyms)))
     kept, redundant = choose_initial_rows(code, init_code, n_res, n_mandatory,
@@ -122,7 +132,10 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
               "parameter_bounds": {p.name: (p.min, p.max) for p in params
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms),
-              "derived_parameters": dict(flat.derived)})
+              "derived_parameters": dict(flat.derived),
+              "value_types": _value_types(flat),
+              "parameter_types": {p.name: _TYPE_NAME[p.type] for p in params
+                                  if getattr(p, "type", float) is not float}})
     # the declared unit and description of every name of a result
     out.meta["units"], out.meta["descriptions"] = output_tables(
         {**{v.name: v.attrs.unit for v in flat.variables},
@@ -131,20 +144,65 @@ def assemble(system, reduction, reduced, flat, aliases, report, discretes,
          **{p.name: p.description for p in flat.parameters}},
         list(out.outputs) + list(out.param_names))
     if delays:
-        from .delays import delay_code, feeds_back
+        from .frontend.delays import delay_code, feeds_back
         out.delays = delay_code(
             delays, delay_rows, delays_code, reduced.parameters, psyms,
             set(z_syms) | {a for a, _ in assigned} | set(inputs) | set(dsyms) | set(modes),
             feeds_back(system, delays))
+    if model_inputs:
+        from .modelcode import InputCode
+        out.inputs = InputCode([i.name for i in model_inputs], [i.type for i in model_inputs],
+                               [i.start for i in model_inputs])
     if reduced.whens:
-        out.whens = WhenCode(whens_code, len(reduced.whens), texts=[
-            f"when {sp.sstr(w.condition)} [{w.origin or '(model)'} ({w.origin_class})]"
+        out.whens = WhenCode(whens_code, len(when_layout["cond_owners"]), texts=[
+            (f"when {sp.sstr(w.condition)}" if w.equation is None else w.equation)
+            + f" [{w.origin or '(model)'} ({w.origin_class})]"
             for w in reduced.whens], **when_layout)
     return out
 
 
-def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -> str:
-    """The relation as written, with the equation it is part of."""
+def _frozen(reduced, dsyms, assigned):
+    """The symbols whose values change only at events: parameters, frozen and held values,
+    Boolean and Integer variables, and the assigned variables computed from them alone.
+    A relation of these that reads a Boolean, an Integer, a held value or initial() is
+    evaluated where it is read, not an event (it cannot cross between events); a relation
+    of parameters alone stays an item of the discrete state, as it always was."""
+    from .backends.codegen import FrozenSymbols
+    from .algebra.symbolic import symbols_of
+    typed = {v.symbol for v in reduced.variables
+             if getattr(v.attrs, "type", float) is not float}
+    discrete = typed | set(dsyms)
+    if not discrete:
+        return None
+    frozen = {p.symbol for p in reduced.parameters} | discrete
+    for a, e in assigned:
+        if symbols_of(e) <= frozen:
+            frozen.add(a)
+            discrete.add(a)
+    return FrozenSymbols(frozen, discrete)
+
+
+_TYPE_NAME = {float: "Real", bool: "Boolean", int: "Integer"}
+
+
+def _value_types(flat) -> dict:
+    """The Boolean and Integer variables of a result, by name (aliases included)."""
+    from ..components.declarations import TYPE_NAMES
+    return {v.name: TYPE_NAMES[v.attrs.type] for v in flat.variables
+            if getattr(v.attrs, "type", float) is not float}
+
+
+def _type_names(flat, helds) -> list:
+    from ..components.declarations import TYPE_NAMES
+    types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables}
+    return [TYPE_NAMES[types.get(h.name, float)] for h in helds]
+
+
+def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced,
+                   clauses=None) -> str:
+    """The relation as written, with the equation it is part of (``clauses``: the number
+    of initial rows, the when-clauses' layout and the held values, which tell a
+    when-clause's condition from a Boolean's or Integer's equation)."""
     import sympy as sp
     i = origin[k]
     n_a, n_r = len(assigned), len(caus.residual_eqs)
@@ -156,6 +214,13 @@ def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced) -
         where = "initial conditions"
     else:
         where = "a when-clause"
+        if clauses is not None:
+            n_init, layout, helds = clauses
+            j = i - n_a - n_r - (caus.n_states if caus.causal else 0) - n_init
+            a = j - len(layout["cond_owners"]) - len(layout["targets"])
+            if 0 <= a < len(layout["assign_slots"]) and \
+                    layout["assign_owners"][a] in set(layout["always"]):
+                where = f"the equation of {helds[layout['assign_slots'][a]].name}"
     return f"{sp.sstr(rel)}  in {where}"
 
 
@@ -183,7 +248,7 @@ def _time_linear(items, assigned, frozen) -> list:
     next zero is known before the integrator gets there (exact time events)."""
     import sympy as sp
     from ..components.symbols import time
-    from .symbolic import symbols_of
+    from .algebra.symbolic import symbols_of
     explicit = {}
     known = set(frozen) | {time}              # grows with explicit: one set, not one a row
     for a, e in assigned:                     # assignments that depend on time alone
@@ -211,7 +276,7 @@ def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z
     left out: an over-specified initial problem, which the runtime accepts where the
     dropped conditions hold at the computed initial point (OpenModelica removes
     redundant initial equations after checking them, and so do we)."""
-    from .structure import _match
+    from .structure.matching import _match
     keep = model_code.jac_rows < n_res
     adj = _adjacency(model_code.jac_rows[keep], model_code.jac_cols[keep], n_res)
     i_adj = _adjacency(init_code.jac_rows, init_code.jac_cols, init_code.n_rows)
@@ -264,8 +329,8 @@ def _adjacency(rows, cols, n_rows) -> list:
 
 
 def solve_linear(residual, x):
-    """x from residual(x) = 0 when x enters linearly (:func:`acausal.compiler.derivative.solve_linear`)."""
-    from .derivative import solve_linear as solve
+    """x from residual(x) = 0 when x enters linearly (:func:`acausal.compiler.algebra.derivative.solve_linear`)."""
+    from .algebra.derivative import solve_linear as solve
     return solve(residual, x)
 
 
@@ -300,7 +365,7 @@ def _fixed_definitions(system, reduction) -> list:
     no row of a level block -- as ``(variable, equation)`` in an order that computes
     each after the others it reads: with dynamic state selection they are assigned,
     not unknowns of the solver (compiler/outline.py makes hundreds for a long law)."""
-    from .outline import definition_of
+    from .frontend.outline import definition_of
     s = reduction.structure
     level_vars = {v for rows, _ in reduction.selection.levels for r in rows
                   for v in s.graph[r]}
@@ -393,9 +458,9 @@ def _derived_bounds(parameters, psyms) -> list:
 
 def _parameter_functions(exprs: dict, psyms):
     """f(p) for each expression of parameters, each from its own generated source (a
-    :class:`~acausal.compiler.cache.ParameterFunction`: picklable)."""
-    from .cache import ParameterFunction
-    from .emit import Emitter
+    :class:`~acausal.compiler.cache.entries.ParameterFunction`: picklable)."""
+    from .cache.entries import ParameterFunction
+    from .backends.emit import Emitter
     pos = {q: k for k, q in enumerate(psyms)}
     em = Emitter("py", lambda q: f"p[{pos[q]}]")
     out = []

@@ -9,7 +9,7 @@ The solver vector ``z`` (see the README's design section): in the causal form th
 (first ``n_states`` entries) and the tearing variables; in the full form every variable.
 ``m`` is the discrete state: ``n_relations`` relation values (1.0 true, 0.0 false) followed
 by ``n_discrete`` frozen floor values, then held(y) and pre(y) of each of the ``n_held``
-discrete variables (:mod:`acausal.compiler.sampled`).
+discrete variables (:mod:`acausal.compiler.frontend.sampled`).
 """
 from __future__ import annotations
 
@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["ModelCode", "RelationInfo", "WhenCode", "DynamicSets", "InitialCode", "DelayCode"]
+__all__ = ["ModelCode", "RelationInfo", "WhenCode", "DynamicSets", "InitialCode", "DelayCode",
+           "InputCode"]
 
 
 @dataclass
@@ -40,6 +41,11 @@ class RelationInfo:
     time_linear: list = field(default_factory=list)
     held_names: list = field(default_factory=list)     # the discrete variables
     held_start: list = field(default_factory=list)     # their values before t0
+    # initial() (true while the initial values are found) is read from m after the
+    # held and pre values when a model uses it
+    has_initial: bool = False
+    # the value type of each discrete variable: "Real", "Boolean" or "Integer"
+    held_types: list = field(default_factory=list)
 
     @property
     def n_relations(self) -> int:
@@ -57,11 +63,14 @@ class RelationInfo:
 @dataclass
 class WhenCode:
     """When-clauses: rows ``0..n_when-1`` of ``code`` are the conditions (1/0; 0 for a
-    clock), then one reinit value per reinit action, applied to ``z[targets[k]]`` when
-    clause ``owners[k]`` fires, then one value per assignment, written to the held value
-    ``assign_slots[k]`` of the discrete variables when ``assign_owners[k]`` fires, in the
-    order of ``assign_levels`` (data flow), then start and period of the clock of each
-    clause in ``clocks``."""
+    clock), condition row k of clause ``cond_owners[k]`` (a clause ``when([c1, c2])``
+    has a row for each, and fires when one becomes true), then one reinit value per
+    reinit action, applied to ``z[targets[k]]`` when clause ``owners[k]`` fires, then
+    one value per assignment, written to the held value ``assign_slots[k]`` of the
+    discrete variables when ``assign_owners[k]`` fires, in the order of
+    ``assign_levels`` (data flow), then start and period of the clock of each clause in
+    ``clocks``.  The clauses in ``always`` are the equations of Boolean and Integer
+    variables: they have no condition row and are evaluated at every event."""
 
     code: object
     n_when: int
@@ -72,6 +81,11 @@ class WhenCode:
     assign_owners: list = field(default_factory=list)
     assign_levels: list = field(default_factory=list)
     clocks: list = field(default_factory=list)
+    cond_owners: list = None          # None: one condition row per clause, in order
+    always: list = field(default_factory=list)
+    n_clauses: int = None             # None: n_when
+    # held values set by a tick, y = sample(start, period), and false once it is over
+    pulse_slots: list = field(default_factory=list)
 
 
 @dataclass
@@ -110,7 +124,7 @@ class InitialCode:
 
 @dataclass
 class DelayCode:
-    """The delays of a model (:mod:`acausal.compiler.delays`): row j of ``code``'s
+    """The delays of a model (:mod:`acausal.compiler.frontend.delays`): row j of ``code``'s
     residual is the delayed expression of delay j, whose value the generated functions
     read from ``p[n_params + j]``; ``times[j]`` is its delay time, a float or a function
     of the tunable parameters ``f(p)``; ``texts``/``wheres`` name it and its component;
@@ -121,6 +135,17 @@ class DelayCode:
     times: list
     wheres: list
     feedback: bool = True
+
+
+@dataclass
+class InputCode:
+    """The top-level inputs of a model (:mod:`acausal.compiler.frontend.inputs`): input j,
+    ``names[j]``, is read from ``p[n_params + n_delays + j]``; ``types[j]`` is Real,
+    Boolean or Integer, ``starts[j]`` its value where none is given."""
+
+    names: list
+    types: list
+    starts: list
 
 
 @dataclass
@@ -143,3 +168,4 @@ class ModelCode:
     report: object = None
     meta: dict = field(default_factory=dict)
     delays: DelayCode | None = None
+    inputs: InputCode | None = None

@@ -45,9 +45,9 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
                   check_units: str = "warn") -> ModelCode:
     """Compile a model instance to generated code and name maps (see the module docstring);
     :class:`acausal.runtime.CompiledModel` runs it.  ``backend``: ``"c"``, ``"numpy"`` or
-    ``"auto"`` (:func:`acausal.compiler.cbackend.bind`).
+    ``"auto"`` (:func:`acausal.compiler.backends.cbackend.bind`).
 
-    ``cache`` (:mod:`acausal.compiler.cache`): ``True`` loads an unchanged model from the
+    ``cache`` (:mod:`acausal.compiler.cache.entries`): ``True`` loads an unchanged model from the
     compile cache by the key of its flat model -- exact: the flattened equations,
     variables and parameter values are what the passes read -- and stores a new one;
     ``"tree"`` first tries the key of the instance tree, which needs neither sympy nor
@@ -57,7 +57,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
     model says so in a note, and its timings are those of the original compile plus
     ``cache_lookup``.
 
-    ``check_units`` (:mod:`acausal.compiler.unitcheck`): ``"error"`` raises UnitError
+    ``check_units`` (:mod:`acausal.compiler.frontend.unitcheck`): ``"error"`` raises UnitError
     at a dimensionally inconsistent equation, ``"warn"`` warns, ``"off"`` skips the
     check; it runs on the flat model, so a model found by its instance tree
     (``cache="tree"``) is not checked again."""
@@ -72,7 +72,7 @@ def compile_model(model: Component, backend: str = "auto", cache=False,
         try:
             out = _compile(model, backend, cache, check_units, stores)
         finally:
-            symbolic = _sys.modules.get(__package__ + ".symbolic")
+            symbolic = _sys.modules.get(__package__ + ".algebra.symbolic")
             if symbolic is not None:     # what it keeps of this model's expressions
                 symbolic.forget_expressions()
             if collecting:
@@ -98,7 +98,7 @@ def _compile(model, backend, cache, check_units, stores) -> ModelCode:
     from ..components.units import MODES
     if check_units not in MODES:
         raise ValueError(f"check_units must be one of {MODES}, got {check_units!r}")
-    from . import cache as store
+    from .cache import entries as store
     use_cache = bool(cache) and store.enabled()
     t0 = _time.perf_counter()
     tree = store.tree_key(model, backend) if use_cache and cache == "tree" else None
@@ -108,19 +108,19 @@ def _compile(model, backend, cache, check_units, stores) -> ModelCode:
             model._bind("")     # the instance named as a compile leaves it (no sympy)
             return _from_cache(found, _time.perf_counter() - t0, "its instance tree")
     t_tree = _time.perf_counter() - t0
-    from .flatten import flatten
-    from .reduction import as_written
+    from .frontend.flatten import flatten
+    from .index.reduction import as_written
     report = IndexReport(model_name=type(model).__name__)
     clock = _Clock(report)
     flat = clock("flatten", flatten, model)
-    from .outline import outline_expressions
+    from .frontend.outline import outline_expressions
     made = clock("outline", outline_expressions, flat)
     if made:
         report.notes.append(f"{made} intermediate quantities named in long expressions "
-                            "(compiler/outline.py): the passes after flattening work on "
-                            "small equations")
-    from .unitcheck import check_units as unit_check
-    from .unitcheck import complain
+                            "(compiler/frontend/outline.py): the passes after flattening "
+                            "work on small equations")
+    from .frontend.unitcheck import check_units as unit_check
+    from .frontend.unitcheck import complain
     report.derived_parameters = dict(flat.derived)
     front = None         # what the passes before alias elimination found, once run
     key = units = aliased = None
@@ -182,7 +182,7 @@ def _compile(model, backend, cache, check_units, stores) -> ModelCode:
 
 
 def _store(report, key, out, tree, large: bool) -> None:
-    from . import cache as store
+    from .cache import entries as store
     t0 = _time.perf_counter()
     if not (large and sidejobs.detach(store.store, key, out, tree)):
         store.store(key, out, tree)
@@ -191,16 +191,16 @@ def _store(report, key, out, tree, large: bool) -> None:
 
 def _key_and_units(flat, backend, check_units, model) -> tuple:
     """The side job of a large compile: the cache key of ``flat``, its unit check (whose
-    findings the parent reports, :func:`acausal.compiler.unitcheck.complain`) and the
+    findings the parent reports, :func:`acausal.compiler.frontend.unitcheck.complain`) and the
     report's table of the components' modes (10-60 ms for 6000 components)."""
-    from . import cache as store
-    from .unitcheck import check_units as unit_check
+    from .cache import entries as store
+    from .frontend.unitcheck import check_units as unit_check
     return (store.flat_key(flat, backend), unit_check(flat, check_units, quiet=True),
             mode_structures(model))
 
 
 def _key_alone(flat, backend) -> tuple:
-    from . import cache as store
+    from .cache import entries as store
     return store.flat_key(flat, backend), None, None
 
 
@@ -209,14 +209,14 @@ def _ahead(clock, report, flat, job, check_units) -> tuple:
     elimination if the key is not ready after them; returns (front, aliased or None).
     An error of these passes is raised after the units' verdict, as in a compile that
     checks the units first."""
-    from .alias import eliminate_aliases
+    from .frontend.alias import eliminate_aliases
     try:
         front = _front(clock, report, flat, None)
         aliased = None if job.ready() else clock("alias", eliminate_aliases, flat)
         return front, aliased
     except Exception:
         _, units, _ = job.result()
-        from .unitcheck import complain
+        from .frontend.unitcheck import complain
         complain(units, check_units)
         raise
 
@@ -224,10 +224,10 @@ def _ahead(clock, report, flat, job, check_units) -> tuple:
 def _front(clock, report, flat, check_units) -> tuple:
     """The passes before alias elimination: units, discrete, sampled, delays (the last
     three change ``flat``); returns what alias elimination needs of them."""
-    from .delays import extract_delays
-    from .discrete import freeze_integer_functions
-    from .sampled import declare_discrete_variables
-    from .unitcheck import check_units as unit_check
+    from .frontend.delays import extract_delays
+    from .frontend.discrete import freeze_integer_functions
+    from .frontend.sampled import declare_discrete_variables
+    from .frontend.unitcheck import check_units as unit_check
     if check_units is not None:         # None: checked in a side job (_ahead)
         report.units = clock("units", unit_check, flat, check_units)
     discretes = clock("discrete", freeze_integer_functions, flat)
@@ -242,9 +242,10 @@ def _front(clock, report, flat, check_units) -> tuple:
     _reinit_targets_are_states(flat)
     report.count("flatten", equations=len(flat.equations), variables=len(flat.variables))
     if helds:
-        report.notes.append("discrete variables, held between events and assigned in "
-                            "when-clauses: " + ", ".join(h.name for h in helds[:20])
-                            + (" ..." if len(helds) > 20 else ""))
+        from ..components.declarations import TYPE_NAMES
+        types = {v.name: TYPE_NAMES[getattr(v.attrs, "type", float)] for v in flat.variables}
+        report.discrete = [{"name": h.name, "type": types.get(h.name, "Real"),
+                            "set_by": h.clause} for h in helds]
     if flat.structural_zeros:
         report.notes.append("parameters equal to 0 were evaluated as structural zeros (set a "
                             "non-zero value to keep them tunable): "
@@ -258,11 +259,11 @@ def _large(flat) -> bool:
 
 
 def _passes(clock, report, flat, discretes, helds, delays, backend, beside, aliased=None):
-    from .alias import eliminate_aliases
-    from .balance import check_balance
-    from .conversion import convert_model
-    from .reduction import reduce_index
-    from .sampled import explain_overdetermined, pre_after_aliases
+    from .frontend.alias import eliminate_aliases
+    from .index.balance import check_balance
+    from .index.conversion import convert_model
+    from .index.reduction import reduce_index
+    from .frontend.sampled import explain_overdetermined, pre_after_aliases
     # aliased: alias elimination taken while the cache key was hashed (_ahead)
     reduced, aliases = aliased or clock("alias", eliminate_aliases, flat)
     _resolve_aliases_in(list(discretes) + list(delays), flat, aliases)
@@ -289,7 +290,7 @@ def _passes(clock, report, flat, discretes, helds, delays, backend, beside, alia
     prepared, printing = [], []
 
     def programs_made(progs):
-        from .cbackend import prepare
+        from .backends.cbackend import prepare
         t0 = _time.perf_counter()
         prepared.append(prepare(progs))
         printing.append(_time.perf_counter() - t0)
@@ -305,7 +306,7 @@ def _passes(clock, report, flat, discretes, helds, delays, backend, beside, alia
         report.notes.append(f"the index as written was found in a second process, beside "
                             f"the passes from alias elimination on ({beside.seconds:.2f} s)")
     clock("report", report.fill, system, reduction, out)
-    from .cbackend import bind
+    from .backends.cbackend import bind
     clock("c_backend", bind, out, backend, report, prepared[0] if prepared else None)
     if printing:
         report.timings["codegen"] -= printing[0]
@@ -316,12 +317,12 @@ def _passes(clock, report, flat, discretes, helds, delays, backend, beside, alia
 def _compiler_found() -> bool:
     """A C compiler is on the path (else the C backend's printing is left to bind,
     which says why it cannot build)."""
-    from .cbackend import compiler_available
+    from .backends.cbackend import compiler_available
     return compiler_available() is not None
 
 
 def _from_cache(found, seconds, how) -> ModelCode:
-    from .cache import load_notes
+    from .cache.entries import load_notes
     mc, _ = found
     report = mc.report
     report.timings["cache_lookup"] = seconds
@@ -354,11 +355,14 @@ def _resolve_aliases_in(discretes, flat, aliases) -> None:
 
 
 def _symbolic_system(reduced, discretes, helds=(), delays=()):
-    from .symbolic import SymbolicSystem
+    from .algebra.symbolic import SymbolicSystem
     system = SymbolicSystem.from_flat(reduced)
     system.parameters |= {d.symbol for d in discretes}   # constant between events
     system.parameters |= {s for h in helds for s in (h.symbol, h.pre)}
+    from ..components.logic import INITIAL
+    system.parameters.add(INITIAL)                   # initial(): constant while it runs
     system.delays = {d.symbol: d for d in delays}        # inputs that vary: never constant
+    system.delays.update({i.symbol: i for i in getattr(reduced, "inputs", ())})
     return system, system.structure()
 
 

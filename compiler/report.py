@@ -63,6 +63,9 @@ class IndexReport:
     modes: list = field(default_factory=list)
     units: object = None            # compiler.unitcheck.UnitCheck
     derived_parameters: dict = field(default_factory=dict)   # name -> (binding, value)
+    # the variables held between events (Boolean, Integer, discrete Real): name, type
+    # and what sets them (an equation evaluated at every event, or a when-clause)
+    discrete: list = field(default_factory=list)
 
     def __getstate__(self):
         self.equations                 # noqa: B018  (prints the texts not printed yet)
@@ -163,6 +166,7 @@ class IndexReport:
             "units": self.units.as_dict() if self.units is not None else None,
             "derived_parameters": {k: {"binding": b, "value": v}
                                    for k, (b, v) in self.derived_parameters.items()},
+            "discrete_variables": list(getattr(self, "discrete", [])),
         }
 
     def blt_order(self) -> tuple[list, list]:
@@ -248,7 +252,7 @@ class IndexReport:
             lines.append(f"  BLT: {len(sizes)} blocks, largest {max(sizes)}, {torn} torn")
         kept = getattr(self, "kept_for_fill", [])
         if kept:
-            from .causalize import FILL_LIMIT
+            from .structure.causalize import FILL_LIMIT
             lines.append(f"  fill: {len(kept)} assigned variable(s) kept as unknowns (gradient "
                          f"over {FILL_LIMIT} entries and its equation's), e.g. "
                          + ", ".join(kept[:3]))
@@ -281,6 +285,13 @@ class IndexReport:
                          "whose relation holds:")
             for m in comp["modes"]:
                 lines.append(f"    {m['mode']:<15}[{m['when']}]  {m['structure']}")
+        held = getattr(self, "discrete", [])
+        if held:
+            lines.append("  variables held between events (changed only at events):")
+            for d in held[:50]:
+                lines += _wrapped(f"    {d['name']} ({d['type']}): ", d["set_by"])
+            if len(held) > 50:
+                lines.append(f"    ... ({len(held) - 50} more)")
         if self.derived_parameters:
             lines.append("  derived parameters (bound to other parameters):")
             for name, (binding, value) in self.derived_parameters.items():
@@ -390,7 +401,7 @@ def names_of(system, variables) -> list:
 
 
 def _times_differentiated(s, e) -> int:
-    from .graph import UNASSIGNED
+    from .structure.graph import UNASSIGNED
     k = 0
     while e < len(s.eq_to_diff) and s.eq_to_diff[e] is not UNASSIGNED:
         e = s.eq_to_diff[e]

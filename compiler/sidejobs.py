@@ -1,11 +1,11 @@
 """Work of a large compile done beside the passes, in a forked copy of the process.
 
 Some parts of a large compile read what the passes have made but feed no later pass:
-the compile cache's key of the flat model (:func:`acausal.compiler.cachekeys.flat_key`)
+the compile cache's key of the flat model (:func:`acausal.compiler.cache.keys.flat_key`)
 with the unit check and the report's table of modes (one child, beside the front passes
 and alias elimination), the structural index of the equations as written
-(:func:`acausal.compiler.reduction.as_written`, for the report) and the compile cache's
-entry (:func:`acausal.compiler.cache.store`, which pickles the model and prints its
+(:func:`acausal.compiler.index.reduction.as_written`, for the report) and the compile cache's
+entry (:func:`acausal.compiler.cache.entries.store`, which pickles the model and prints its
 equations' texts).  On a machine with a second processor they need not
 wait for each other or for the passes (:mod:`acausal.compiler.pipeline` says when):
 

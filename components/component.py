@@ -36,6 +36,7 @@ from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
 from . import inheritance
+from .conditional import Conditional, check_conditionals, make_conditionals
 from .declarations import (COMPILING, Parameter, Variable, check_parameter_value,
                            check_structural_value, declaration_doc, is_symbolic,
                            parameter_signature, ref, shown_value)
@@ -45,7 +46,7 @@ if TYPE_CHECKING:
 
 __all__ = ["Component", "Port", "Connection", "connect", "ModelError", "InvalidValue",
            "InvalidEquation", "InvalidConnection", "InvalidHierarchy", "NotInModel",
-           "InvalidInheritance"]
+           "InvalidInheritance", "AbsentComponent", "MissingInput"]
 
 
 class ModelError(ValueError):
@@ -76,6 +77,16 @@ class InvalidInheritance(ModelError):
     """An ``equations()`` (or ``initial_equations()``) that calls its base's, which the
     framework already includes, or an ``@ac.replaces`` naming a class that is not a base
     with equations of its own."""
+
+
+class AbsentComponent(ModelError, AttributeError):
+    """A conditional port or sub-component (``ac.Conditional``) read or connected while
+    the structural flag that makes it is False."""
+
+
+class MissingInput(ModelError):
+    """A top-level input of the model (an input port of the model itself that nothing in
+    it drives) that ``simulate`` was not told how to drive (``inputs=``)."""
 
 
 class NotInModel(ModelError):
@@ -113,6 +124,8 @@ def _describe_class(cls) -> None:
                 variables[name] = value
             elif isinstance(value, Component):
                 children[name] = value
+            elif isinstance(value, Conditional):
+                children[name] = value
     own_doc = vars(cls).get("__doc__")
     cls.__signature__ = parameter_signature(cls, params)
     if own_doc:
@@ -146,9 +159,12 @@ class Component(metaclass=_ComponentType):
                 value = copy.deepcopy(modifications.pop(name))
                 if hasattr(value, "tolist"):        # a numpy array of coefficients
                     value = value.tolist()
+                if isinstance(decl.value, bool) and not isinstance(value, bool):
+                    raise InvalidValue(f"{type(self).__name__}: {name} must be True or "
+                                       f"False, not {value!r}")
                 try:
                     check_structural_value(value, f"structural parameter {name}",
-                                           decl.min, decl.max)
+                                           decl.min, decl.max, decl.choices)
                 except ValueError as err:
                     raise InvalidValue(f"{type(self).__name__}: {err}") from None
                 structural[name] = value
@@ -163,6 +179,7 @@ class Component(metaclass=_ComponentType):
         object.__setattr__(self, "_var_attrs", {})
         for name, decl in _class_children(type(self)).items():
             setattr(self, name, decl._clone())
+        make_conditionals(self, structural)
         self.build()
 
     def build(self) -> None:
@@ -180,6 +197,7 @@ class Component(metaclass=_ComponentType):
                     decl.check()
                 except ValueError as err:
                     raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
+        check_conditionals(cls)
         inheritance.prepare_class(cls)
         _describe_class(cls)
 
@@ -232,6 +250,10 @@ class Component(metaclass=_ComponentType):
         """Name this tree (pre-order, so a parent's modifications reach its children
         before they are bound); a cycle or an instance held twice is an error."""
         seen = {}                       # id -> path of the instances named so far
+        # the Boolean and Integer symbols of the model, by symbol (filled as they are
+        # made, read by the equations' vocabulary: a Boolean is a condition)
+        object.__setattr__(self, "_value_types", {})
+        object.__setattr__(self, "_uses_initial", False)
         stack = [(self, path, parent)]
         while stack:
             comp, where, above = stack.pop()
@@ -265,7 +287,7 @@ class Component(metaclass=_ComponentType):
                     check_array_value(mod, shape_of(decls[key], self, key),
                                       f"parameter {key}")
                 else:
-                    check_parameter_value(mod, f"parameter {key}")
+                    check_parameter_value(mod, f"parameter {key}", decls[key].type)
             except InvalidValue:
                 raise
             except ValueError as err:
@@ -308,6 +330,9 @@ class Component(metaclass=_ComponentType):
             from .realsymbol import real_symbol
             sym = real_symbol(full)
             self._symbols[name] = sym
+            typ = getattr(_declarations(type(self)).get(name), "type", float)
+            if typ is not float and self._root is not None:
+                self._root._value_types[sym] = typ
         return sym
 
     # -- what the compiler reads -------------------------------------------------------
@@ -338,7 +363,8 @@ class Component(metaclass=_ComponentType):
             if isinstance(value, ref):
                 return self._referenced(name, value)
         try:
-            check_parameter_value(value, f"parameter {name}")
+            check_parameter_value(value, f"parameter {name}",
+                                  _declarations(type(self))[name].type)
         except ValueError as err:
             raise InvalidValue(f"{self._describe()}: {err}") from None
         return value
@@ -471,8 +497,12 @@ def _port_name(p: Port) -> str:
 
 
 def _connection_type(self):
-    """Ports connect when they carry the same across/through variable names."""
-    return (tuple(self.across()), tuple(self.through()))
+    """Ports connect when they carry the same across/through variable names, of the same
+    value types (a Boolean signal does not connect to a Real one)."""
+    decls = self.declarations()
+    across = tuple(self.across())
+    types = tuple(getattr(decls[n], "type", float).__name__ for n in across)
+    return (across, tuple(self.through()), types)
 
 
 Port.connection_type = _connection_type

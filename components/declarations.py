@@ -24,15 +24,16 @@ from decimal import Decimal
 
 import numpy as np
 
+from .valuetypes import TYPE_NAMES, checked_discrete, typed_value, value_type_checked
+
 # The root of the model being flattened, set by components.component.compiling
 COMPILING = contextvars.ContextVar("acausal_compiling", default=None)
 
 __all__ = ["Parameter", "Variable", "Across", "Through", "Signal", "VariableAttributes", "ref",
            "real_number", "check_parameter_value", "check_structural_value",
-           "bound_violation", "is_symbolic"]
+           "bound_violation", "is_symbolic", "typed_value", "TYPE_NAMES"]
 
 _STATE_SELECT = ("never", "avoid", "default", "prefer", "always")
-
 
 def is_symbolic(value) -> bool:
     """True if ``value`` is a sympy object.  Declarations are checked when a class is
@@ -63,10 +64,15 @@ def real_number(value, what: str) -> float:
     return x
 
 
-def check_parameter_value(value, what: str) -> None:
-    """A parameter value is a real number, ``ref``, function of the component or sympy
+def check_parameter_value(value, what: str, typ=float) -> None:
+    """A parameter value is a real number (of a Boolean parameter True or False, of an
+    Integer parameter a whole number), ``ref``, function of the component or sympy
     expression of other parameters (whose symbols flattening checks); else ValueError."""
     if value is None or isinstance(value, ref):
+        return
+    if typ is not float and not is_symbolic(value) and (
+            not callable(value) or isinstance(value, (numbers.Number, np.generic))):
+        typed_value(value, typ, what)
         return
     if isinstance(value, (np.ndarray, list, tuple)):
         raise ValueError(f"{what} = {value!r} is not a real number (it is a "
@@ -85,9 +91,14 @@ def check_parameter_value(value, what: str) -> None:
     real_number(value, what)
 
 
-def check_structural_value(value, what: str, lo=None, hi=None) -> None:
+def check_structural_value(value, what: str, lo=None, hi=None, choices=None) -> None:
     """A structural parameter's value is a number or a bool, or a list or tuple of them
-    (numbers within [lo, hi]); else ValueError."""
+    (numbers within [lo, hi]), or one of its ``choices`` (strings, an enumeration: the
+    MSL's ``initType``); else ValueError."""
+    if choices is not None:
+        if value not in choices:
+            raise ValueError(f"{what} = {value!r} is not one of {', '.join(map(repr, choices))}")
+        return
     items = value if isinstance(value, (list, tuple)) else [value]
     for item in items:
         if isinstance(item, (bool, np.bool_)):
@@ -138,6 +149,8 @@ class VariableAttributes:
     state_select: str = "default"
     description: str = ""
     discrete: bool = False   # changes only in when-clauses (Modelica's ``discrete`` prefix)
+    type: type = float       # float (Real), bool (Boolean) or int (Integer)
+    steady: bool = False     # der(v) = 0 at the start (an initial equation: steady state)
 
     def modified(self, mod) -> "VariableAttributes":
         """A checked copy with a modification applied: a number sets start, a dict any
@@ -158,6 +171,9 @@ class VariableAttributes:
 
         start is finite; fixed is True, False or None; nominal is finite and positive
         (it scales error weights); min <= max; start lies in [min, max]."""
+        typ = value_type_checked(self.type)
+        if typ is not float:
+            return checked_discrete(self, typ)
         start = None if self.start is None else _finite(self.start, "start")
         nominal = None if self.nominal is None else _finite(self.nominal, "nominal")
         if nominal is not None and nominal <= 0:
@@ -181,9 +197,10 @@ class VariableAttributes:
                 raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
         if not isinstance(self.discrete, (bool, np.bool_)):
             raise ValueError(f"discrete = {self.discrete!r} must be True or False")
+        if not isinstance(self.steady, (bool, np.bool_)):
+            raise ValueError(f"steady = {self.steady!r} must be True or False")
         _check_state_select(self.state_select)
         return replace(self, start=start, fixed=fixed, nominal=nominal, min=lo, max=hi)
-
 
 def _check_state_select(value):
     if not isinstance(value, str) or value not in _STATE_SELECT:
@@ -233,6 +250,14 @@ class Parameter(_Declaration):
     An array value (``Parameter(np.eye(2))``) or ``shape=`` declares an array of
     parameters, one tunable parameter per element (:mod:`acausal.components.arrays`).
 
+    ``type=bool`` declares a Boolean parameter (True or False; a bool default declares
+    one: ``Parameter(False)``), ``type=int`` an Integer parameter (a whole number).  In
+    equations they are 1/0 and the whole number; a Boolean parameter is a condition
+    (``ac.if_else(self.use_limit, ...)``).
+
+    ``choices=(...)`` declares a structural parameter that takes one of the given values
+    (strings: an enumeration such as the MSL's ``initType``, ``ac.Init``).
+
     ``structural=True`` declares a parameter that shapes the model rather than entering
     its equations (a number of segments, the coefficients of a transfer function): its
     value is a plain Python value (a number or a bool, or a list or tuple of them)
@@ -243,8 +268,12 @@ class Parameter(_Declaration):
 
     def __init__(self, value=None, unit: str = "", description: str = "",
                  min: float | None = None, max: float | None = None, shape=None,
-                 structural: bool = False):
-        structural = bool(structural)
+                 structural: bool = False, type=None, choices=None):
+        structural = bool(structural) or choices is not None
+        self.choices = tuple(choices) if choices is not None else None
+        if type is None:
+            type = bool if isinstance(value, (bool, np.bool_)) and not structural else float
+        self.type = type
         if shape is None and not structural and isinstance(value, (np.ndarray, list, tuple)):
             shape = np.shape(value)      # a matrix parameter: its shape from its value
         self.shape = _declared_shape(shape)
@@ -265,6 +294,8 @@ class Parameter(_Declaration):
         args = [repr(shown_value(self.value))]
         args += [f"{k}={getattr(self, k)!r}" for k in ("unit", "min", "max", "description")
                  if getattr(self, k) not in (None, "")]
+        if self.type is int:
+            args.append("type=int")
         if self.shape is not None and not isinstance(self.value, (np.ndarray, list, tuple)):
             args.append(f"shape={self.shape!r}")
         return f"Parameter({', '.join(args)})"
@@ -272,8 +303,13 @@ class Parameter(_Declaration):
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
         if self.structural:
-            check_structural_value(self.value, "default value", self.min, self.max)
+            check_structural_value(self.value, "default value", self.min, self.max,
+                                   self.choices)
             return
+        value_type_checked(self.type)
+        if self.type is not float and self.shape is not None:
+            raise ValueError(f"a {TYPE_NAMES[self.type]} parameter is a scalar (arrays of "
+                             "them are not supported)")
         if self.shape is not None:
             from .arrays import check_array_declaration
             check_array_declaration(self)    # value, min and max element by element
@@ -284,7 +320,9 @@ class Parameter(_Declaration):
                 raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
 
     def _check_scalar(self) -> None:
-        check_parameter_value(self.value, "default value")
+        check_parameter_value(self.value, "default value", self.type)
+        if self.type is bool and (self.min is not None or self.max is not None or self.unit):
+            raise ValueError("a Boolean parameter has no unit, min or max")
         lo = None if self.min is None else real_number(self.min, "min")
         hi = None if self.max is None else real_number(self.max, "max")
         if lo is not None and hi is not None and lo > hi:
@@ -308,6 +346,13 @@ class Variable(_Declaration):
     (``VariableAttributes.checked``).  ``shape=(n,)`` declares an array of variables,
     each attribute a scalar for every element or an array
     (:mod:`acausal.components.arrays`).
+
+    ``type=bool`` declares a Boolean variable, ``type=int`` an Integer one (Modelica's
+    ``Boolean`` and ``Integer``): discrete by nature, they keep their value between
+    events and change only at events, either by an equation ``ac.Eq(y, expr)`` that
+    has the variable alone on its left (evaluated at every event, relations in it
+    generating events) or by ``ac.assign`` in a when-clause.  Their start value
+    (``False``, ``0`` by default) is ``pre(y)`` at the start.
     """
 
     kind = "variable"
@@ -315,15 +360,24 @@ class Variable(_Declaration):
     def __init__(self, start: float | None = None, fixed: bool | None = None, unit: str = "",
                  nominal: float | None = None, min: float | None = None,
                  max: float | None = None, state_select: str = "default",
-                 description: str = "", discrete: bool = False, shape=None):
+                 description: str = "", discrete: bool = False, shape=None, type=float):
         self.shape = _declared_shape(shape)
+        if type is not float and self.shape is not None:
+            raise ValueError("Boolean and Integer variables are scalars (arrays of them "
+                             "are not supported)")
         if self.shape is not None:
             from .arrays import ArrayAttributes as attributes   # per-element attributes
         else:
             attributes = VariableAttributes
         self.attributes = attributes(
             start=start, fixed=fixed, unit=unit, nominal=nominal, min=min, max=max,
-            state_select=state_select, description=description, discrete=discrete)
+            state_select=state_select, description=description, discrete=discrete,
+            **({} if type is float else {"type": type}))
+
+    @property
+    def type(self):
+        """float, bool or int: the variable's value type (Real, Boolean, Integer)."""
+        return getattr(self.attributes, "type", float)
 
     def __repr__(self):
         a, default = self.attributes, VariableAttributes()
@@ -457,6 +511,8 @@ def _kind(decl) -> str:
     parameter."""
     if getattr(decl, "structural", False):
         return "structural"
+    if getattr(decl, "type", float) is not float:
+        return decl.type.__name__
     return "float" if decl.shape is None else f"array {_shape(decl.shape)}"
 
 
@@ -492,13 +548,17 @@ def declaration_doc(own_doc: str | None, parameters: dict, variables: dict,
                      f"state_select {a.state_select}" if a.state_select != "default" else ""]
             extra = ", ".join(e for e in extra if e)
             shape = "" if v.shape is None else f" array {_shape(v.shape)}"
-            lines.append(f"{name} : {v.kind}{shape}{_unit(a.unit)}"
+            typ = "" if v.type is float else f" {TYPE_NAMES[v.type]}"
+            lines.append(f"{name} : {v.kind}{typ}{shape}{_unit(a.unit)}"
                          + (f", {extra}" if extra else ""))
             if a.description:
                 lines.append(f"    {a.description}")
         sections.append("\n".join(lines))
     if children:
         lines = [SECTION_HEADINGS[2], "-" * len(SECTION_HEADINGS[2])]
-        lines += [f"{name} : {type(c).__name__}" for name, c in children.items()]
+        lines += [f"{name} : {type(c.component).__name__} (if "
+                  f"{'' if c.when else 'not '}{c.flag})"
+                  if hasattr(c, "flag") else f"{name} : {type(c).__name__}"
+                  for name, c in children.items()]
         sections.append("\n".join(lines))
     return "\n\n".join(s for s in [text, *sections] if s)

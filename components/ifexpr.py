@@ -49,7 +49,7 @@ class IfExpr(sp.Function):
 def unfolded_condition(cond):
     """``cond`` with every if-expression inside it made an :class:`IfExpr` (walked as
     a DAG, without recursion: :mod:`acausal.compiler.dag`)."""
-    from ..compiler.dag import postorder, transform
+    from ..compiler.algebra.dag import postorder, transform
     flags = set()      # if-expressions of numbers (and of such if-expressions): flags
     kept = False
     for n in postorder([cond]):

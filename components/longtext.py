@@ -25,7 +25,7 @@ class _Elided(sp.Dummy):
 
 
 def _tree_sizes(expr) -> dict:
-    from ..compiler.dag import postorder
+    from ..compiler.algebra.dag import postorder
     size = {}
     for node in postorder([expr]):
         size[node] = 1 + sum(size[a] for a in node.args)
@@ -34,7 +34,7 @@ def _tree_sizes(expr) -> dict:
 
 def _written_size(expr, keep) -> int:
     """The tree size of ``expr`` with the nodes outside ``keep`` written as one."""
-    from ..compiler.dag import postorder
+    from ..compiler.algebra.dag import postorder
     size = {}
     for node in postorder([expr], lambda n: n.args if n in keep else ()):
         size[node] = 1 + sum(size[a] for a in node.args) if node in keep else 1
@@ -68,7 +68,7 @@ def shortened(expr, printer) -> str | None:
         if _written_size(expr, trial) > TEXT_NODES:
             break
         keep = trial
-    from ..compiler.dag import postorder
+    from ..compiler.algebra.dag import postorder
     memo = {}
     for node in postorder([expr], lambda n: n.args if n in keep else ()):
         if node not in keep:

@@ -30,7 +30,7 @@ __all__ = ["UnitError", "UnitWarning", "Unit", "UnitCheck", "MODES", "output_tab
            "parse_unit", "dimension_text", "has_unit", "convert_value", "BASE_DIMENSIONS",
            "DIMENSIONLESS"]
 
-# check_units= of acausal.compile (the check itself: compiler/unitcheck.py)
+# check_units= of acausal.compile (the check itself: compiler/frontend/unitcheck.py)
 MODES = ("error", "warn", "off")
 
 

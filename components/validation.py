@@ -103,7 +103,7 @@ def _parameter_value(decl: Parameter, key: str, value, where: str):
         except ValueError as err:
             raise InvalidValue(f"{where}: {err}") from None
     try:
-        check_parameter_value(value, what)
+        check_parameter_value(value, what, decl.type)
     except ValueError as err:
         raise InvalidValue(f"{where}: {err}") from None
     if _plain_number(value):

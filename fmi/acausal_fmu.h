@@ -51,7 +51,19 @@ typedef struct {
     const int *assign_slots, *assign_owners, *assign_levels;
     int n_clock;                             /* sample() clocks: the clause of each */
     const int *clock_owners;
-    int n_vars;                              /* the FMI variables, by value reference */
+    int n_clauses;                           /* when-clauses; n_when counts their conditions */
+    const int *cond_owners;                  /* the clause of each condition row */
+    const int *assign_eq;                    /* 1: the assignment is the equation of a
+                                                Boolean or Integer, evaluated at every event */
+    const int *held_type;                    /* per held value: 0 Real, 1 Boolean, 2 Integer */
+    const char *const *held_names;
+    int n_pulse;                             /* held values y = sample(...): false again */
+    const int *pulse_slots;                  /* once the instant is over */
+    int has_initial;                         /* initial() is read: m's last entry */
+    int n_vars;                              /* the FMI variables: Real ones first (their
+                                                value reference is their index), then the
+                                                Boolean ones, then the Integer ones */
+    int n_real_vars, n_bool_vars;
     const int *var_kind, *var_index, *var_start;   /* var_start: start row or -1 */
     const double *var_sign, *var_value;
     double default_rtol;
@@ -73,7 +85,11 @@ typedef struct {
     double next_time;
     double *m_round, *clk;                   /* m after a round of firing; clocks' start,
                                                 period and next tick */
-    int *fire;
+    double *m_now, *m_settle;                /* m before a round's assignments, before a
+                                                settling of contradicted relations */
+    double *held_before;                     /* the held values before the equations ran */
+    int *fire;                               /* per clause */
+    int initial_event;                       /* the event that ends the initialization */
     char message[512];
     /* co-simulation */
     double rtol, h_int;
@@ -96,6 +112,13 @@ void ac_release(ac_state *s);
 int ac_do_step(ac_state *s, double t_end);
 int ac_reset_discrete(ac_state *s);          /* discrete.c */
 int ac_assign(ac_state *s);
+int ac_m_size(const ac_model *md);
+int ac_has_equations(const ac_model *md);
+int ac_update_equations(ac_state *s);
+int ac_fire(ac_state *s, const double *before, int round_);
+int ac_discrete_iteration(ac_state *s, const double *before, int initial);
+int ac_settle_all(ac_state *s, int with_rates);          /* engine.c */
+int ac_settle_contradicted(ac_state *s);
 double ac_tick(const ac_state *s, int c);
 double ac_tick_tol(double t);
 int ac_lu(double *A, int n, int *piv);

@@ -25,9 +25,9 @@ _STRUCTURED = re.compile(r"^(der\()?[A-Za-z_][A-Za-z0-9_]*(\[\d+(,\d+)*\])?"
 
 @dataclass
 class FmiVariable:
-    """One scalar Real variable; ``kind``/``index``/``sign``/``value`` say where the C
-    code takes its value from (fmi/acausal_fmu.h: AC_PARAM, AC_EXPAND, AC_CONST,
-    AC_DERIV)."""
+    """One scalar variable (Real, Boolean or Integer: ``type``); ``kind``/``index``/
+    ``sign``/``value`` say where the C code takes its value from (fmi/acausal_fmu.h:
+    AC_PARAM, AC_EXPAND, AC_CONST, AC_DERIV); a Boolean's value is 1 or 0."""
 
     name: str
     kind: int
@@ -46,6 +46,7 @@ class FmiVariable:
     start_slot: int = -1                # a settable start value: its initial row
     deps: list = field(default_factory=list)         # ModelStructure (1-based indices)
     init_deps: list = field(default_factory=list)
+    type: str = "Real"                  # "Real", "Boolean" or "Integer"
 
 
 def naming_convention(names) -> str:
@@ -54,7 +55,21 @@ def naming_convention(names) -> str:
 
 
 def _number(x: float) -> str:
-    return repr(float(x))
+    x = float(x)
+    if x != x:
+        return "NaN"
+    if x in (float("inf"), float("-inf")):     # xs:double's spelling
+        return "INF" if x > 0 else "-INF"
+    return repr(x)
+
+
+def _typed(x, kind: str) -> str:
+    """A start, min or max value as the XML of its type writes it."""
+    if kind == "Boolean":
+        return "true" if float(x) > 0.5 else "false"
+    if kind == "Integer":
+        return str(int(round(float(x))))
+    return _number(x)
 
 
 def model_description(*, model_name, identifier, guid, fmi_type, variables, n_indicators,
@@ -86,7 +101,12 @@ def model_description(*, model_name, identifier, guid, fmi_type, variables, n_in
             ET.SubElement(defs, "Unit", {"name": u})
     ET.SubElement(root, "DefaultExperiment", {k: _number(v) for k, v in default.items()})
     mv = ET.SubElement(root, "ModelVariables")
-    for vr, v in enumerate(variables):
+    counts = {"Real": 0, "Boolean": 0, "Integer": 0}
+    for v in variables:
+        # value references count per type (FMI 2.0, sec. 2.2.7): the C engine keeps the
+        # Real variables first, then the Boolean, then the Integer ones
+        vr = counts[v.type]
+        counts[v.type] += 1
         a = {"name": v.name, "valueReference": str(vr)}
         if v.description:
             a["description"] = v.description
@@ -96,17 +116,17 @@ def model_description(*, model_name, identifier, guid, fmi_type, variables, n_in
             a["initial"] = v.initial
         sv = ET.SubElement(mv, "ScalarVariable", a)
         r = {}
-        if v.unit:
+        if v.unit and v.type == "Real":
             r["unit"] = v.unit
-        if v.minimum is not None:
-            r["min"] = _number(v.minimum)
-        if v.maximum is not None:
-            r["max"] = _number(v.maximum)
+        if v.minimum is not None and v.type != "Boolean":
+            r["min"] = _typed(v.minimum, v.type)
+        if v.maximum is not None and v.type != "Boolean":
+            r["max"] = _typed(v.maximum, v.type)
         if v.derivative is not None:
             r["derivative"] = str(v.derivative)
         if v.start is not None:
-            r["start"] = _number(v.start)
-        ET.SubElement(sv, "Real", r)
+            r["start"] = _typed(v.start, v.type)
+        ET.SubElement(sv, v.type, r)
     ms = ET.SubElement(root, "ModelStructure")
     _unknowns(ms, "Outputs", [(k, v.deps) for k, v in enumerate(variables, 1)
                               if v.causality == "output"])

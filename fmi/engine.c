@@ -33,7 +33,7 @@
 static void *zalloc(int n, size_t size) { return calloc(n > 0 ? n : 1, size); }
 
 int ac_alloc(ac_state *s, const ac_model *md) {
-    int n_items = md->n_rel + md->n_disc, n = md->n_z, n_m = n_items + 2 * md->n_held;
+    int n_items = md->n_rel + md->n_disc, n = md->n_z, n_m = ac_m_size(md);
     memset(s, 0, sizeof(*s));
     s->md = md;
     s->z = zalloc(n, sizeof(double));
@@ -42,8 +42,11 @@ int ac_alloc(ac_state *s, const ac_model *md) {
     s->m = zalloc(n_m, sizeof(double));
     s->m_pre = zalloc(n_m, sizeof(double));
     s->m_round = zalloc(n_m, sizeof(double));
+    s->m_now = zalloc(n_m, sizeof(double));
+    s->m_settle = zalloc(n_m, sizeof(double));
+    s->held_before = zalloc(md->n_held, sizeof(double));
     s->clk = zalloc(3 * md->n_clock, sizeof(double));
-    s->fire = zalloc(md->n_when, sizeof(int));
+    s->fire = zalloc(md->n_clauses, sizeof(int));
     s->xdot = zalloc(md->n_x, sizeof(double));
     s->all = zalloc(md->n_all, sizeof(double));
     s->wf = zalloc(md->work_f, sizeof(double));
@@ -81,7 +84,7 @@ int ac_alloc(ac_state *s, const ac_model *md) {
 }
 
 void ac_free(ac_state *s) {
-    double *bufs[] = {s->m_round, s->clk, s->z, s->zsave, s->p, s->m, s->m_pre, s->xdot, s->all, s->wf, s->wi,
+    double *bufs[] = {s->m_round, s->m_now, s->m_settle, s->held_before, s->clk, s->z, s->zsave, s->p, s->m, s->m_pre, s->xdot, s->all, s->wf, s->wi,
                       s->ww, s->rows, s->jac, s->rts, s->scl, s->ijac, s->irows, s->wrows,
                       s->wrows_pre, s->dense, s->rhs, s->cs_buf, s->offset, s->x_start};
     for (size_t k = 0; k < sizeof(bufs) / sizeof(bufs[0]); ++k) free(bufs[k]);
@@ -356,7 +359,7 @@ static int rates(ac_state *s, double *rate) {
    else the side its rate chooses, else (no rate) the relation's value at exactly zero.
    With rates the point is a solution (the algebraic unknowns solved first); without,
    the values are taken where z is (the start values, before the initial system). */
-static int settle_all(ac_state *s, int with_rates) {
+int ac_settle_all(ac_state *s, int with_rates) {
     const ac_model *md = s->md;
     int R = md->n_rel, ni = items(md), changed = 0;
     double *rate = (double *)zalloc(ni, sizeof(double));
@@ -386,7 +389,7 @@ static int settle_all(ac_state *s, int with_rates) {
 }
 
 /* Relations (and floor values) the solution clearly contradicts take its side. */
-static int settle_contradicted(ac_state *s) {
+int ac_settle_contradicted(ac_state *s) {
     const ac_model *md = s->md;
     int R = md->n_rel, changed = 0;
     if (ac_solve_algebraic(s)) return -1;
@@ -452,7 +455,7 @@ int ac_initialize(ac_state *s) {
     for (int i = 0; i < md->n_z; ++i) cols[i] = i;
     s->solved = 0;
     if (ac_reset_discrete(s)) { free(cols); return -1; }
-    settle_all(s, 0);
+    ac_settle_all(s, 0);
     for (int round_ = 0; round_ < 10; ++round_) {
         if (md->n_z && newton(s, &sys)) {
             snprintf(s->message, sizeof s->message,
@@ -462,16 +465,27 @@ int ac_initialize(ac_state *s) {
             return -1;
         }
         s->solved = 0;
-        int changed = settle_all(s, 1);
+        int changed = ac_settle_all(s, 1);
+        if (changed < 0) break;
+        if (changed == 0 && ac_has_equations(md))      /* pre() at the start values */
+            changed = ac_update_equations(s);
         if (changed < 0) break;
         if (!changed) {
             free(cols);
             ac_next_time_event(s);
             if (ac_derivatives(s)) return -1;
             ac_arm(s);
-            for (int c = 0; c < md->n_clock; ++c)      /* a tick at t0 fires now */
-                if (ac_tick(s, c) <= s->t + ac_tick_tol(s->t)) return ac_event(s, &round_);
-            return 0;
+            /* the event that ends the initialization: the equations iterate with pre()
+               taking their values, clauses made true by initial() and ticks at t0 fire */
+            int ends = ac_has_equations(md) || md->has_initial, due = 0;
+            for (int c = 0; c < md->n_clock; ++c)
+                due |= ac_tick(s, c) <= s->t + ac_tick_tol(s->t);
+            if (!ends && !due) return 0;
+            s->initial_event = ends;
+            int status = ac_event(s, &round_);
+            s->initial_event = 0;
+            if (md->has_initial) s->m[ac_m_size(md) - 1] = 0.0;
+            return status;
         }
     }
     snprintf(s->message, sizeof s->message,
@@ -487,7 +501,9 @@ int ac_event(ac_state *s, int *states_changed) {
     double *r = (double *)zalloc(nr + 2 * ni, sizeof(double)), *v0 = r + nr, *sl = v0 + ni;
     *states_changed = 0;
     if (!r) return -1;
-    memcpy(s->m_pre, s->m, (ni + 2 * md->n_held) * sizeof(double));
+    int N = ac_m_size(md), equations = ac_has_equations(md) || s->initial_event;
+    memcpy(s->m_pre, s->m, N * sizeof(double));
+    if (s->initial_event && md->has_initial) s->m_pre[N - 1] = 0.0;   /* false before */
     if (ni) {
         ac_release(s);
         if (ac_oriented(s, r)) goto fail;
@@ -511,36 +527,35 @@ int ac_event(ac_state *s, int *states_changed) {
         }
         s->solved = 0;
     }
-    /* with discrete variables, an assignment can make another clause's condition true
-       at the same instant: it fires in the next round */
-    const double *before = s->m_pre;
-    for (int round_ = 0; md->n_when && round_ < (md->n_held ? MODE_ROUNDS : 1); ++round_) {
-        int any = 0;
-        md->when_rows(s->t, s->z, s->p, before, s->wrows_pre, s->ww);
-        md->when_rows(s->t, s->z, s->p, s->m, s->wrows, s->ww);
-        for (int c = 0; c < md->n_when; ++c)
-            any |= s->fire[c] = s->wrows_pre[c] < 0.5 && s->wrows[c] > 0.5;
-        for (int c = 0; round_ == 0 && c < md->n_clock; ++c)
-            if (ac_tick(s, c) <= s->t + ac_tick_tol(s->t)) {
-                s->fire[md->clock_owners[c]] = any = 1;
-                s->clk[3 * c + 2] += 1.0;
-            }
-        if (!any) break;
-        for (int a = 0; a < md->n_act; ++a)
-            if (s->fire[md->when_owners[a]]) {
-                s->z[md->when_targets[a]] = s->wrows_pre[md->n_when + a];
-                fired = 1;
-            }
-        if (ac_assign(s) < 0) goto fail;
-        memcpy(s->m_round, s->m, (ni + 2 * md->n_held) * sizeof(double));
-        before = s->m_round;
-        s->solved = 0;
-        if (settle_all(s, 1) < 0) goto fail;
+    if (equations) {
+        int f = ac_discrete_iteration(s, s->m_pre, s->initial_event);
+        if (f < 0) goto fail;
+        fired = f == 2;
+    } else {
+        /* with discrete variables, an assignment can make another clause's condition
+           true at the same instant: it fires in the next round */
+        memcpy(s->m_round, s->m_pre, N * sizeof(double));
+        for (int round_ = 0; md->n_when + md->n_clock && round_ < (md->n_held ? MODE_ROUNDS : 1);
+             ++round_) {
+            memcpy(s->m_now, s->m, N * sizeof(double));
+            int f = ac_fire(s, s->m_round, round_);
+            if (f < 0) goto fail;
+            if (!f) break;
+            fired |= f == 2;
+            memcpy(s->m_round, s->m_now, N * sizeof(double));
+            if (ac_settle_all(s, 1) < 0) goto fail;
+        }
     }
     for (int round_ = 0; ; ++round_) {
-        int changed = settle_contradicted(s);
+        memcpy(s->m_settle, s->m, N * sizeof(double));
+        int changed = ac_settle_contradicted(s);
         if (changed < 0) goto fail;
         if (!changed) break;
+        if (equations) {          /* what reads the relations that switched */
+            int f = ac_discrete_iteration(s, s->m_settle, 0);
+            if (f < 0) goto fail;
+            fired |= f == 2;
+        }
         if (round_ == MODE_ROUNDS) {
             snprintf(s->message, sizeof s->message,
                      "event iteration at t = %.10g did not settle", s->t);

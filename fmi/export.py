@@ -3,7 +3,7 @@
 What goes into the FMU (FMI 2.0, sec. 2.3 "FMU distribution"):
 
 * ``modelDescription.xml`` (:mod:`.description`), the GUID a hash of the C sources;
-* ``sources/``: ``model.c`` (the generated C of the model, :mod:`acausal.compiler.cbackend`,
+* ``sources/``: ``model.c`` (the generated C of the model, :mod:`acausal.compiler.backends.cbackend`,
   and its data: sizes, the Jacobian patterns, the relations, the variables), the engine
   of this package (``acausal_fmu.h``, ``engine.c``, ``discrete.c``, ``cosim.c``,
   ``fmu.c``) and the FMI
@@ -74,7 +74,7 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
     kind = _fmi_type(fmi_type)
     if rtol is not None and not (0 < float(rtol) < 1):
         raise ValueError(f"rtol must be in (0, 1), got {rtol!r}")
-    from ..compiler.cbackend import compiler_available
+    from ..compiler.backends.cbackend import compiler_available
     cc = compiler_available()
     if cc is None:
         raise BackendError("exporting an FMU needs a C compiler (set CC, or install "
@@ -172,7 +172,7 @@ def _compiled(model):
     """(Plant, metadata, (inputs, outputs)) for a Component or a CompiledModel."""
     from ..analysis.plant import Plant, compile_plant, top_level_inputs
     from ..components.component import Component, ModelError
-    from ..ports import RealOutput
+    from ..ports import BooleanOutput, IntegerOutput, RealOutput
     from ..runtime import CompiledModel
     if isinstance(model, CompiledModel):
         if not _has_programs(model.model_code):
@@ -185,7 +185,8 @@ def _compiled(model):
         raise ModelError(f"export_fmu takes a Component or a CompiledModel, got {model!r} "
                          f"({type(model).__name__})")
     inputs = top_level_inputs(model)
-    outputs = [n for n, c in model.children().items() if isinstance(c, RealOutput)]
+    outputs = [n for n, c in model.children().items()
+               if isinstance(c, (RealOutput, BooleanOutput, IntegerOutput))]
 
     def build():
         if inputs:
@@ -208,7 +209,7 @@ def _has_programs(mc) -> bool:
 
 
 class _compile_cache_off:
-    """ACAUSAL_COMPILE_CACHE=0 for the duration (:mod:`acausal.compiler.cache`)."""
+    """ACAUSAL_COMPILE_CACHE=0 for the duration (:mod:`acausal.compiler.cache.entries`)."""
 
     def __enter__(self):
         self.before = os.environ.get("ACAUSAL_COMPILE_CACHE")
@@ -223,7 +224,7 @@ class _compile_cache_off:
 
 def _metadata(model):
     """Units and descriptions by flat name, from the declarations of a fresh instance."""
-    from ..compiler.flatten import flatten
+    from ..compiler.frontend.flatten import flatten
     args, kwargs = model._init_call
     flat = flatten(type(model)(*args, **kwargs))
     variables = {v.name: (v.attrs.unit or "", getattr(v.attrs, "description", "") or "")
@@ -298,9 +299,14 @@ def _variables(plant, meta, ports):
     ours = (lambda n: n.startswith(pre) or n.startswith(f"der({pre}")) if pre else (lambda n: True)
     bounds = mc.meta.get("parameter_bounds", {})
     input_params = {plant.input_params[n]: n for n in inputs}
-    variables, by_name = [], {}
+    variables, by_name, typed = [], {}, []
+    types = {**mc.meta.get("value_types", {}), **mc.meta.get("parameter_types", {})}
 
-    def add(v):
+    def add(v, name=None):
+        v.type = types.get(name or v.name, "Real")
+        if v.type != "Real":       # after the Real ones (their value references)
+            typed.append(v)
+            return v
         by_name[v.name] = len(variables)
         variables.append(v)
         return v
@@ -314,21 +320,34 @@ def _variables(plant, meta, ports):
         lo, hi = bounds.get(name, (None, None))
         param_var[k] = add(FmiVariable(ext, AC_PARAM, k, causality="parameter",
                                        variability="tunable", start=float(compiled.p[k]),
-                                       unit=unit, description=desc, minimum=lo, maximum=hi))
+                                       unit=unit, description=desc, minimum=lo, maximum=hi),
+                           name)
+    own = set()
     input_var = {}
     for n in inputs:
         k = compiled.param_names.index(plant.input_params[n])
         input_var[k] = add(FmiVariable(n, AC_PARAM, k, causality="input", start=0.0,
                                        description="input signal"))
-    own = {f"{n}.signal" for n in inputs + outputs}
+    if compiled.inputs is not None:        # compiled with its top-level inputs
+        for n, k, typ, start in zip(compiled.inputs.names, compiled.inputs.slots,
+                                    compiled.inputs.types, compiled.inputs.starts):
+            types.setdefault(n, typ)
+            input_var[int(k)] = add(FmiVariable(n, AC_PARAM, int(k), causality="input",
+                                                start=start, description="input signal"))
+        own = {f"{n}.signal" for n in compiled.inputs.names}
+    own = {f"{n}.signal" for n in inputs + outputs} | (own if compiled.inputs is not None
+                                                         else set())
     for n in outputs:
-        add(_from_output(n, mc.outputs[plant.internal(f"{n}.signal")], compiled,
-                         "output", *var_meta.get(f"{n}.signal", ("", ""))))
+        internal = plant.internal(f"{n}.signal")
+        add(_from_output(n, mc.outputs[internal], compiled, "output",
+                         *var_meta.get(f"{n}.signal", ("", "")), types.get(internal)),
+            internal)
     for name, entry in mc.outputs.items():
         ext = plant.external(name)
         if not ours(name) or ext in own or ext in by_name:
             continue
-        add(_from_output(ext, entry, compiled, "local", *var_meta.get(ext, ("", ""))))
+        add(_from_output(ext, entry, compiled, "local", *var_meta.get(ext, ("", "")),
+                         types.get(name)), name)
     state_index = [int(k) for k in compiled.state_index]
     n_sz = len(mc.state_z)
     for i, z in enumerate(state_index):
@@ -343,6 +362,11 @@ def _variables(plant, meta, ports):
         else:
             d = add(FmiVariable(dname, AC_DERIV, i, initial=None))
         d.derivative = j + 1
+    for kind in ("Boolean", "Integer"):
+        for v in typed:
+            if v.type == kind:
+                by_name[v.name] = len(variables)
+                variables.append(v)
     starts = _start_rows(mc)
     for slot, (_, k, value) in enumerate(starts):
         v = variables[by_name.get(plant.external(compiled.names[k]), -1)] \
@@ -350,6 +374,7 @@ def _variables(plant, meta, ports):
         if v is not None and v.kind == AC_EXPAND and v.sign == 1.0 and v.causality == "local":
             v.initial, v.start, v.start_slot = "exact", value, slot
     layout = {"starts": starts, "state_index": state_index, "n_x": len(state_index),
+              "n_p": len(compiled.p),
               "link_d": [int(k) for k in compiled.link_d],
               "alg_index": [k for k in range(compiled.n) if k not in set(state_index)],
               "n_indicators": int(compiled.n_roots), "n_state_z": n_sz}
@@ -375,10 +400,12 @@ def _start_rows(mc) -> list:
     return out
 
 
-def _from_output(name, entry, compiled, causality, unit, desc) -> FmiVariable:
+def _from_output(name, entry, compiled, causality, unit, desc, kind=None) -> FmiVariable:
     sign, where = entry
     if sign is not None:
+        # a Boolean or Integer changes only at events: variability discrete
         return FmiVariable(name, AC_EXPAND, int(where), float(sign), causality=causality,
+                           variability="discrete" if kind else "continuous",
                            initial="calculated" if causality == "output" else None,
                            unit=unit, description=desc)
     if callable(where):
@@ -444,7 +471,7 @@ def _dependencies(mc, layout, variables, param_var, input_var, by_name, plant) -
     init_prog = mc.initial.code.program
     init_reads = Reads(init_prog)
     i_res = init_prog.functions["residual"]
-    n_p = len(mc.param_values)
+    n_p = layout["n_p"]          # the parameters, then the inputs' values
     i_rows = [init_reads.of(i_res[r]) for r in mc.initial.rows]
     start_var = {}
     for slot, (j, k, _) in enumerate(layout["starts"]):

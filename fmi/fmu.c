@@ -136,47 +136,102 @@ fmi2Status fmi2Reset(fmi2Component comp) {
 }
 
 /* -- variables ------------------------------------------------------------------------- */
-fmi2Status fmi2GetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
-                       fmi2Real value[]) {
-    instance *c = (instance *)comp;
+/* The values of the variables at positions idx[0..n-1] of the table (fmi/export.py). */
+static fmi2Status get_values(instance *c, const int *idx, size_t n, double value[],
+                             const char *what) {
     const ac_model *md = c->s.md;
     int need_all = 0, need_der = 0;
     for (size_t i = 0; i < n; ++i) {
-        if (vr[i] >= (fmi2ValueReference)md->n_vars) return unsupported(comp, "this value reference");
-        need_all |= md->var_kind[vr[i]] == AC_EXPAND;
-        need_der |= md->var_kind[vr[i]] == AC_DERIV;
+        need_all |= md->var_kind[idx[i]] == AC_EXPAND;
+        need_der |= md->var_kind[idx[i]] == AC_DERIV;
     }
     if (c->mode == INSTANTIATED) need_all = need_der = 0;
     if (c->mode == INITIALIZATION && (need_all || need_der) && ensure_initialized(c))
-        return fail(c, "fmi2GetReal");
-    if (need_all && ac_expand(&c->s)) return fail(c, "fmi2GetReal");
-    if (need_der && ac_derivatives(&c->s)) return fail(c, "fmi2GetReal");
+        return fail(c, what);
+    if (need_all && ac_expand(&c->s)) return fail(c, what);
+    if (need_der && ac_derivatives(&c->s)) return fail(c, what);
     for (size_t i = 0; i < n; ++i) {
-        int k = md->var_index[vr[i]];
-        switch (md->var_kind[vr[i]]) {
+        int v = idx[i], k = md->var_index[v];
+        switch (md->var_kind[v]) {
         case AC_PARAM: value[i] = c->s.p[k]; break;
         case AC_EXPAND:
-            if (need_all) value[i] = md->var_sign[vr[i]] * c->s.all[k];
-            else if (md->var_start[vr[i]] >= 0) value[i] = c->s.x_start[md->var_start[vr[i]]];
-            else value[i] = md->var_value[vr[i]];
+            if (need_all) value[i] = md->var_sign[v] * c->s.all[k];
+            else if (md->var_start[v] >= 0) value[i] = c->s.x_start[md->var_start[v]];
+            else value[i] = md->var_value[v];
             break;
         case AC_DERIV: value[i] = need_der ? c->s.xdot[k] : 0.0; break;
-        case AC_PAFFINE: value[i] = md->var_sign[vr[i]] * c->s.p[k] + md->var_value[vr[i]]; break;
-        default: value[i] = md->var_value[vr[i]];
+        case AC_PAFFINE: value[i] = md->var_sign[v] * c->s.p[k] + md->var_value[v]; break;
+        default: value[i] = md->var_value[v];
         }
     }
     return fmi2OK;
 }
 
-fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
-                       const fmi2Real value[]) {
+/* Table positions of value references of one type (first: its first position, count). */
+static int positions(const fmi2ValueReference vr[], size_t n, int first, int count,
+                     int *idx) {
+    for (size_t i = 0; i < n; ++i) {
+        if (vr[i] >= (fmi2ValueReference)count) return -1;
+        idx[i] = first + (int)vr[i];
+    }
+    return 0;
+}
+
+static int n_int_vars(const ac_model *md) {
+    return md->n_vars - md->n_real_vars - md->n_bool_vars;
+}
+
+static fmi2Status get_typed(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
+                            double *value, int first, int count, const char *what) {
+    instance *c = (instance *)comp;
+    int *idx = (int *)calloc(n ? n : 1, sizeof(int));
+    if (!idx) return fail(c, what);
+    fmi2Status st = positions(vr, n, first, count, idx)
+        ? unsupported(comp, "this value reference") : get_values(c, idx, n, value, what);
+    free(idx);
+    return st;
+}
+
+fmi2Status fmi2GetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
+                       fmi2Real value[]) {
+    const ac_model *md = ((instance *)comp)->s.md;
+    return get_typed(comp, vr, n, value, 0, md->n_real_vars, "fmi2GetReal");
+}
+
+fmi2Status fmi2GetInteger(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
+                          fmi2Integer v[]) {
+    const ac_model *md = ((instance *)comp)->s.md;
+    double *x = (double *)calloc(n ? n : 1, sizeof(double));
+    if (!x) return fail((instance *)comp, "fmi2GetInteger");
+    fmi2Status st = get_typed(comp, vr, n, x, md->n_real_vars + md->n_bool_vars,
+                              n_int_vars(md), "fmi2GetInteger");
+    for (size_t i = 0; st == fmi2OK && i < n; ++i) v[i] = (fmi2Integer)nearbyint(x[i]);
+    free(x);
+    return st;
+}
+
+fmi2Status fmi2GetBoolean(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
+                          fmi2Boolean v[]) {
+    const ac_model *md = ((instance *)comp)->s.md;
+    double *x = (double *)calloc(n ? n : 1, sizeof(double));
+    if (!x) return fail((instance *)comp, "fmi2GetBoolean");
+    fmi2Status st = get_typed(comp, vr, n, x, md->n_real_vars, md->n_bool_vars,
+                              "fmi2GetBoolean");
+    for (size_t i = 0; st == fmi2OK && i < n; ++i) v[i] = x[i] > 0.5 ? fmi2True : fmi2False;
+    free(x);
+    return st;
+}
+
+/* Parameters (and inputs) of any type, and before initialization a state's start value. */
+static fmi2Status set_values(fmi2Component comp, const int *idx, size_t n,
+                             const double value[]) {
     instance *c = (instance *)comp;
     const ac_model *md = c->s.md;
     for (size_t i = 0; i < n; ++i) {
-        fmi2ValueReference r = vr[i];
-        if (r < (fmi2ValueReference)md->n_vars && md->var_kind[r] == AC_PARAM)
+        int r = idx[i];
+        if (md->var_kind[r] == AC_PARAM)
             c->s.p[md->var_index[r]] = value[i];
-        else if (r < (fmi2ValueReference)md->n_vars && md->var_start[r] >= 0
+        else if (md->var_start[r] >= 0
                  && (c->mode == INSTANTIATED || c->mode == INITIALIZATION))
             c->s.x_start[md->var_start[r]] = value[i];      /* a state's start value */
         else
@@ -189,20 +244,46 @@ fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t
     return fmi2OK;
 }
 
-fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Integer v[]) {
-    (void)vr; (void)v; return n ? unsupported(c, "an Integer variable") : fmi2OK;
+static fmi2Status set_typed(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
+                            const double *value, int first, int count) {
+    int *idx = (int *)calloc(n ? n : 1, sizeof(int));
+    if (!idx) return fail((instance *)comp, "setting a variable");
+    fmi2Status st = positions(vr, n, first, count, idx)
+        ? unsupported(comp, "this value reference") : set_values(comp, idx, n, value);
+    free(idx);
+    return st;
 }
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Boolean v[]) {
-    (void)vr; (void)v; return n ? unsupported(c, "a Boolean variable") : fmi2OK;
+
+fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
+                       const fmi2Real value[]) {
+    return set_typed(comp, vr, n, value, 0, ((instance *)comp)->s.md->n_real_vars);
 }
+
+fmi2Status fmi2SetInteger(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
+                          const fmi2Integer v[]) {
+    const ac_model *md = ((instance *)comp)->s.md;
+    double *x = (double *)calloc(n ? n : 1, sizeof(double));
+    if (!x) return fail((instance *)comp, "fmi2SetInteger");
+    for (size_t i = 0; i < n; ++i) x[i] = (double)v[i];
+    fmi2Status st = set_typed(comp, vr, n, x, md->n_real_vars + md->n_bool_vars,
+                              n_int_vars(md));
+    free(x);
+    return st;
+}
+
+fmi2Status fmi2SetBoolean(fmi2Component comp, const fmi2ValueReference vr[], size_t n,
+                          const fmi2Boolean v[]) {
+    const ac_model *md = ((instance *)comp)->s.md;
+    double *x = (double *)calloc(n ? n : 1, sizeof(double));
+    if (!x) return fail((instance *)comp, "fmi2SetBoolean");
+    for (size_t i = 0; i < n; ++i) x[i] = v[i] ? 1.0 : 0.0;
+    fmi2Status st = set_typed(comp, vr, n, x, md->n_real_vars, md->n_bool_vars);
+    free(x);
+    return st;
+}
+
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2String v[]) {
     (void)vr; (void)v; return n ? unsupported(c, "a String variable") : fmi2OK;
-}
-fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Integer v[]) {
-    (void)vr; (void)v; return n ? unsupported(c, "an Integer variable") : fmi2OK;
-}
-fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Boolean v[]) {
-    (void)vr; (void)v; return n ? unsupported(c, "a Boolean variable") : fmi2OK;
 }
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2String v[]) {
     (void)vr; (void)v; return n ? unsupported(c, "a String variable") : fmi2OK;

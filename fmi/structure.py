@@ -1,6 +1,6 @@
 """Structural dependencies of an exported model, for ``ModelStructure``.
 
-From the expressions of the generated :class:`~acausal.compiler.codegen.Program` (what
+From the expressions of the generated :class:`~acausal.compiler.backends.codegen.Program` (what
 every output, row and assigned variable reads, through the assignments in BLT order):
 
 * continuous time: the algebraic unknowns z[A] solved from G(t, z) = 0 depend on what

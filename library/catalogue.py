@@ -70,6 +70,7 @@ def port_domain(port_cls) -> str:
              (ports.TranslationalFlange, "translational"), (ports.Frame, "planar"),
              (ports.FluidPort, "hydraulic"), (ports.GasPort, "gas"),
              (ports.NormalizedGasPort, "gas (normalized)"), (ports.HeatPort, "thermal"),
+             (ports.FlowPort, "fluid heat flow"),
              (ports.RealInput, "signal in"), (ports.RealOutput, "signal out"))
     for base, domain in table:
         if issubclass(port_cls, base):

@@ -8,7 +8,8 @@ of two absolute states, the twist keeps only the digits the absolute angles leav
 its own, phi_rel is integrated to its own tolerance:
 ``SpringDamper(stateSelect="prefer")`` makes phi_rel and w_rel preferred states (the
 MSL's default), and phi_rel has a small nominal value (the MSL's
-``phi_nominal = 1e-4``) so that its absolute tolerance is on its own scale.
+``phi_nominal = 1e-4``, translational ``s_nominal``; a constructor argument as
+stateSelect) so that its absolute tolerance is on its own scale.
 
 The default here is ``stateSelect="default"``, which keeps the states a model had with
 the plain ``PartialCompliant``.  The relative speed can only be a state if its
@@ -50,12 +51,21 @@ class RelativeStatesMixin:
 
     _relative_states: tuple = ()
     _acceleration: type = AngularAcceleration
+    _nominal_name: str = "phi_nominal"
 
-    def _select(self, stateSelect) -> None:
+    def _select(self, stateSelect, nominal: float = 1e-4) -> None:
+        """``stateSelect`` as described above; ``nominal`` (the MSL's ``phi_nominal`` /
+        ``s_nominal``, >= 0) the nominal value of the relative position, 1 where it is
+        below machine epsilon (as the MSL)."""
         if stateSelect not in _CHOICES:
             raise ac.ModelError(f"{type(self).__name__}: stateSelect must be one of "
                                 f"{', '.join(_CHOICES)}, not {stateSelect!r}")
+        if isinstance(nominal, bool) or not isinstance(nominal, (int, float)) \
+                or not nominal >= 0 or nominal == float("inf"):
+            raise ac.InvalidValue(f"{type(self).__name__}: {self._nominal_name} must be a "
+                                  f"finite number >= 0, not {nominal!r}")
         object.__setattr__(self, "stateSelect", stateSelect)
+        object.__setattr__(self, self._nominal_name, float(nominal))
         if stateSelect in ("prefer", "always"):
             self.acc = self._acceleration()
 
@@ -69,7 +79,11 @@ class RelativeStatesMixin:
     def variable_attributes(self, name: str):
         attrs = super().variable_attributes(name)
         mod = self._mods.get(name)
-        if name in self._relative_states and not (isinstance(mod, dict)
-                                                  and "state_select" in mod):
+        given = mod if isinstance(mod, dict) else {}
+        if name in self._relative_states and "state_select" not in given:
             attrs = replace(attrs, state_select=self.stateSelect)
+        if name == self._relative_states[0] and "nominal" not in given:
+            nominal = getattr(self, self._nominal_name)
+            attrs = replace(attrs, nominal=nominal if nominal >= 2.220446049250313e-16
+                            else 1.0)
         return attrs

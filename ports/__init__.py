@@ -6,8 +6,11 @@ from .planar import Frame
 from .fluid import FluidPort
 from .gas import GasPort, NormalizedGasPort
 from .thermal import HeatPort
-from .signal import RealInput, RealOutput
+from .fluidheatflow import FlowPort
+from .signal import (BooleanInput, BooleanOutput, IntegerInput, IntegerOutput, RealInput,
+                     RealOutput)
 
 __all__ = ["Port", "SignalPort", "Pin", "PositivePin", "NegativePin", "RotationalFlange",
            "TranslationalFlange", "Frame", "FluidPort", "GasPort",
-           "NormalizedGasPort", "HeatPort", "RealInput", "RealOutput"]
+           "NormalizedGasPort", "HeatPort", "FlowPort", "RealInput", "RealOutput",
+           "BooleanInput", "BooleanOutput", "IntegerInput", "IntegerOutput"]

@@ -32,8 +32,23 @@ class SignalPort(Port):
     def __le__(self, o): return self.signal <= _v(o)
     def __gt__(self, o): return self.signal > _v(o)
     def __ge__(self, o): return self.signal >= _v(o)
+    # Boolean signals: &, |, ^ and ~ are and, or, xor and not (Python's own ``and``,
+    # ``or`` and ``not`` cannot be given a meaning for symbols)
+    def __and__(self, o): return _logical(self) & _logical(o)
+    def __rand__(self, o): return _logical(o) & _logical(self)
+    def __or__(self, o): return _logical(self) | _logical(o)
+    def __ror__(self, o): return _logical(o) | _logical(self)
+    def __xor__(self, o): return _logical(self) ^ _logical(o)
+    def __rxor__(self, o): return _logical(o) ^ _logical(self)
+    def __invert__(self): return ~_logical(self)
     __hash__ = Port.__hash__
 
 
 def _v(o):
     return o._sympy_() if isinstance(o, SignalPort) else o
+
+
+def _logical(o):
+    """A signal or value as a condition (a Boolean's symbol as ``y > 1/2``)."""
+    from ..components.logic import as_condition
+    return as_condition(_v(o))

@@ -6,18 +6,14 @@ A frame is a coordinate system fixed to a point of a body.  It carries, as in th
 * its orientation R = [R11 .. R33], the MSL's ``R.T``: the matrix that maps a vector
   given in world coordinates to the same vector in frame coordinates (v_frame = R v_0),
 * the cut force f = (fx, fy, fz) [N] and cut torque t = (tx, ty, tz) [N.m] acting on the
-  component, both resolved in the frame itself (through variables),
-* the gravity acceleration g_0 = (gx, gy, gz) [m/s2] of the world's field, in world
-  coordinates.  The framework has no inner/outer: the world's gravity travels along the
-  frames, down the same tree as the orientation, so every body reads the one World's
-  field (``acausal.library.multibody3d``, module docstring).
+  component, both resolved in the frame itself (through variables).
 
-The nine entries of R have three degrees of freedom, and the three of g_0 none: both are
-*overdetermined* (MSL: Connections.branch/root).  This framework writes them only in
-the direction of the spanning tree that starts at the World: the World sets them, every
-joint and rigid part sets those of its frame_b from its frame_a, and bodies, force
-elements and sensors only read them.  Each connection set then holds exactly one frame
-that sets R and g_0 (``acausal.library.multibody3d`` gives the reasoning and what it
+The nine entries of R have three degrees of freedom: R is *overdetermined* (MSL:
+Connections.branch/root).  This framework writes it only in the direction of the
+spanning tree that starts at a root (the World, a Fixed frame, a free point mass): the
+root sets it, every joint and rigid part sets that of its frame_b from its frame_a, and
+bodies, force elements and sensors only read it.  Each connection set then holds exactly
+one frame that sets R (``acausal.library.multibody3d`` gives the reasoning and what it
 excludes).
 
 Power into the component: f . (R der(r_0)) + t . w, w the frame's angular velocity
@@ -36,9 +32,8 @@ _R = "orientation R[{i},{j}] (MSL R.T): world vector -> frame coordinates"
 
 
 class Frame(Port):
-    """Spatial frame: position r_0 [m] in the world, orientation R (world -> frame),
-    gravity g_0 [m/s2] of the world's field; cut force f [N] and torque t [N.m] acting
-    on the component, resolved in this frame."""
+    """Spatial frame: position r_0 [m] in the world, orientation R (world -> frame); cut
+    force f [N] and torque t [N.m] acting on the component, resolved in this frame."""
 
     x = Across(unit="m", description="x of the frame origin in the world frame (r_0[1])")
     y = Across(unit="m", description="y of the frame origin in the world frame (r_0[2])")
@@ -52,9 +47,6 @@ class Frame(Port):
     R31 = Across(description=_R.format(i=3, j=1))
     R32 = Across(description=_R.format(i=3, j=2))
     R33 = Across(start=1.0, description=_R.format(i=3, j=3))
-    gx = Across(unit="m/s2", description="world's gravity acceleration, world x")
-    gy = Across(unit="m/s2", description="world's gravity acceleration, world y")
-    gz = Across(unit="m/s2", description="world's gravity acceleration, world z")
     fx = Through(unit="N", description="cut force acting on the component, frame x")
     fy = Through(unit="N", description="cut force acting on the component, frame y")
     fz = Through(unit="N", description="cut force acting on the component, frame z")

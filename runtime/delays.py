@@ -1,7 +1,7 @@
 """The history of delayed expressions: ``delay(expr, T)`` at run time.
 
 The compiler turns every ``delay(expr, T)`` into a value the generated code reads from
-``p[n_params + j]`` (:mod:`acausal.compiler.delays`); here those values are written
+``p[n_params + j]`` (:mod:`acausal.compiler.frontend.delays`); here those values are written
 before every call of the generated code at time t, from a history of expr:
 
 * **Step size.**  The integrator's step is limited to the smallest delay time

@@ -36,7 +36,7 @@ discrete state before and after the event, goes from false to true; a clocked cl
 (``sample(start, period)``) fires at each tick, exact time events at start + k period,
 including a tick at t0 (after the initial values are found; otherwise no clause fires
 at initialization).  ``assign(y, e)`` writes the held value of the discrete variable y
-(:mod:`acausal.compiler.sampled`), the clauses' assignments in data-flow order.
+(:mod:`acausal.compiler.frontend.sampled`), the clauses' assignments in data-flow order.
 """
 from __future__ import annotations
 
@@ -48,9 +48,10 @@ from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton
 from .initial import algebraic_system, consistent_derivatives
 
-__all__ = ["WhenClauses", "iterate_event"]
+__all__ = ["WhenClauses", "iterate_event", "discrete_iteration"]
 
 _ROUNDS = 20          # solve-and-settle rounds at one instant before giving up
+_DISCRETE_ROUNDS = 100   # rounds of the Boolean and Integer equations at one instant
 
 
 class WhenClauses:
@@ -67,6 +68,20 @@ class WhenClauses:
         self.assign_owners = np.asarray(getattr(whens, "assign_owners", []), dtype=np.int64)
         self.levels = np.asarray(getattr(whens, "assign_levels", []), dtype=np.int64)
         self.clocks = np.asarray(getattr(whens, "clocks", []), dtype=np.int64)
+        owners = getattr(whens, "cond_owners", None)
+        self.cond_owners = np.arange(self.n_when) if owners is None else \
+            np.asarray(owners, dtype=np.int64)
+        n = getattr(whens, "n_clauses", None)
+        self.n_clauses = self.n_when if n is None else int(n)
+        # the equations of Boolean and Integer variables: evaluated at every event
+        self.always = np.zeros(self.n_clauses, dtype=bool)
+        self.always[np.asarray(getattr(whens, "always", []), dtype=np.int64)] = True
+        self.equation = self.always[self.assign_owners] if len(self.slots) else \
+            np.zeros(0, dtype=bool)
+        self.has_equations = bool(self.equation.any())
+        self.clause_slots = np.unique(self.slots[~self.equation])
+        self.pulse_slots = np.asarray(getattr(whens, "pulse_slots", []), dtype=np.int64)
+        self.has_equations |= bool(self.pulse_slots.size)
         self._assign_row = self.n_when + len(self.targets)
         self._clock_row = self._assign_row + len(self.slots)
         self.tick = np.zeros(len(self.clocks), dtype=np.int64)   # next tick of each clock
@@ -122,7 +137,9 @@ class WhenClauses:
         model's discrete state) in data-flow order."""
         before = self.values(t, z, p, m_before)
         after = self.values(t, z, p, m_after)
-        fired = (before[: self.n_when] < 0.5) & (after[: self.n_when] > 0.5)
+        rows = (before[: self.n_when] < 0.5) & (after[: self.n_when] > 0.5)
+        fired = np.zeros(self.n_clauses, dtype=bool)
+        fired[self.cond_owners[rows]] = True       # any of its conditions became true
         due = self.due(t) if len(self.clocks) else np.zeros(0, dtype=bool)
         if due.any():
             fired[self.clocks[due]] = True
@@ -143,29 +160,52 @@ class WhenClauses:
         if not act.any():
             return z
         disc, m = model.discrete, model.m
-        held, pre = disc.held, disc.pre
+        held = disc.held.start + self.clause_slots
+        pre = disc.pre.start + self.clause_slots
         m[pre] = m[held]
-        levels = np.unique(self.levels[act])
-        for n, lv in enumerate(levels):
+        z = self._evaluate(model, t, z, p, act)
+        m[pre] = m[held]            # after the instant, the left limit is the new value
+        return z
+
+    def _evaluate(self, model, t, z, p, act):
+        """The assignments in ``act``, level by level of their data flow (a level reads
+        the held values the levels before it wrote; torn algebraic unknowns are solved
+        again in between)."""
+        disc, m = model.discrete, model.m
+        for n, lv in enumerate(np.unique(self.levels[act])):
             if n and model.algebraic.any():
                 z = _solve_algebraic(model, t, z)
             v = self.values(t, z, p, m)
             sel = act & (self.levels == lv)
-            m[held.start + self.slots[sel]] = v[self._assign_row + np.flatnonzero(sel)]
-        m[pre] = m[held]            # after the instant, the left limit is the new value
+            slots = self.slots[sel]
+            m[disc.held.start + slots] = disc.typed(slots, v[self._assign_row
+                                                             + np.flatnonzero(sel)])
         return z
+
+    def update_equations(self, model, t, z, p):
+        """The equations of the Boolean and Integer variables evaluated (with pre as it
+        is): (z, True if a held value changed)."""
+        if not self.has_equations:
+            return z, False
+        held = model.discrete.held
+        before = model.m[held].copy()
+        z = self._evaluate(model, t, z, p, self.equation)
+        return z, not np.array_equal(before, model.m[held])
 
 
 def _tick_tol(t) -> float:
     return 64.0 * np.finfo(float).eps * max(1.0, abs(t))
 
 
-def iterate_event(model, t, z, zp, crossed) -> EventAction:
+def iterate_event(model, t, z, zp, crossed, initial: bool = False) -> EventAction:
     """Settle the discrete state of ``model`` at the event (t, z); see the module
     docstring.  ``crossed``: the oriented zero-crossing functions that went negative
-    (all False at a time event)."""
+    (all False at a time event).  ``initial``: the event that ends the initialization
+    (when-clauses made true by initial() fire, clocks that tick at t0 too)."""
     disc, p = model.discrete, model.p
     m_old = model.m.copy()
+    if initial and disc.has_initial:
+        m_old[-1] = 0.0             # before the initialization, initial() was false
     R = disc.n_rel
     crossed = np.asarray(crossed, dtype=bool)
     items = np.concatenate([crossed[:R], crossed[R::2] | crossed[R + 1::2]])
@@ -178,19 +218,11 @@ def iterate_event(model, t, z, zp, crossed) -> EventAction:
         disc.settle(t, z, p, items, rates, res)
     else:
         disc.settle_time_items(t, z, p)
-    fired = False
-    m_prev = m_old
-    # with discrete variables, an assignment can make another clause's condition true
-    # at the same instant: it fires in the next round (Modelica's event iteration)
-    for _ in range((_ROUNDS if disc.n_held else 1) if model.whens is not None else 0):
-        new = model.whens.fire(model, t, z, p, m_prev, model.m)
-        if new is None:
-            break
-        z, fired = new, True
-        m_prev = model.m.copy()
-        zp_new = np.zeros(model.n)
-        zp_new[model.state_index] = model.state_derivatives(t, z)
-        disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), res)
+    equations = model.whens is not None and model.whens.has_equations
+    if equations or initial:
+        z, fired = discrete_iteration(model, t, z, m_old, initial=initial)
+    else:
+        z, fired = _fire_clauses(model, t, z, m_old)
     decided = _at_zero(model, t, z, zp)      # their side was chosen by the dynamics
     seen = [model.m.copy()]
     for _ in range(_ROUNDS):
@@ -203,9 +235,16 @@ def iterate_event(model, t, z, zp, crossed) -> EventAction:
             if any(np.array_equal(model.m, m) for m in seen):
                 model.discrete.m[:] = before     # no side holds for good: keep the
                 break                            # one the dynamics before chose
+            if equations:
+                z, again = discrete_iteration(model, t, z, before)
+                fired |= again
             seen.append(model.m.copy())
             continue
+        before = model.m.copy()
         disc.settle(t, z, p, bad, lambda zz=z: model.rates(t, zz, np.zeros(model.n)))
+        if equations:
+            z, again = discrete_iteration(model, t, z, before)
+            fired |= again
         if any(np.array_equal(model.m, m) for m in seen):
             z = _solve_live(model, t, z, decided)
             break
@@ -214,6 +253,82 @@ def iterate_event(model, t, z, zp, crossed) -> EventAction:
         raise _unsettled(model, t, seen)
     changed = fired or not np.array_equal(m_old, model.m)
     return EventAction(y=z if changed else None, changed=changed)
+
+
+def _fire_clauses(model, t, z, m_prev):
+    """When-clauses fire (a model without Boolean or Integer equations): with discrete
+    variables, an assignment can make another clause's condition true at the same
+    instant, and it fires in the next round (Modelica's event iteration)."""
+    disc, p, fired = model.discrete, model.p, False
+    for _ in range((_ROUNDS if disc.n_held else 1) if model.whens is not None else 0):
+        m_now = model.m.copy()       # the conditions' values before the assignments
+        new = model.whens.fire(model, t, z, p, m_prev, model.m)
+        if new is None:
+            break
+        z, fired = new, True
+        m_prev = m_now
+        zp_new = np.zeros(model.n)
+        zp_new[model.state_index] = model.state_derivatives(t, z)
+        disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), model.resolution)
+    return z, fired
+
+
+def discrete_iteration(model, t, z, m_prev, initial: bool = False):
+    """Modelica's event iteration over the Boolean and Integer equations and the
+    when-clauses (Language Specification 3.6, sec. 8.6): the equations are evaluated
+    with pre() as it is, the clauses whose condition became true since ``m_prev`` fire;
+    while a held value differs from its pre value (or a clause fired), pre takes the
+    new values and the round is repeated, the relations that the new values contradict
+    switched in between.  Returns (z, whether a clause fired).  ``initial``: the
+    instant ends the initialization (initial() is true in the first round only).  A
+    cycle (``y = not pre(y)``) is an error naming the variables that keep changing."""
+    whens, disc, p = model.whens, model.discrete, model.p
+    held, pre = disc.held, disc.pre
+    fired, history = False, []
+    for k in range(_DISCRETE_ROUNDS):
+        z, _ = whens.update_equations(model, t, z, p)
+        m_now = model.m.copy()       # the conditions' values before the assignments
+        new = whens.fire(model, t, z, p, m_prev, model.m)
+        moved = new is not None and not np.array_equal(new, z)
+        if new is not None:
+            z, fired = new, True
+        settled = new is None and np.array_equal(model.m[held], model.m[pre])
+        if initial and k == 0:
+            disc.set_initial(False)
+            settled = False         # the equations read initial() as false from now on
+        if settled:
+            pulses = held.start + whens.pulse_slots
+            if not model.m[pulses].any():
+                return z, fired
+            model.m[pulses] = 0.0   # the tick is over: y = sample(...) is false again
+        history.append(model.m[held].copy())
+        m_prev = m_now
+        model.m[pre] = model.m[held]
+        if moved:                   # a state was re-initialized: every item again
+            zp_new = np.zeros(model.n)
+            zp_new[model.state_index] = model.state_derivatives(t, z)
+            disc.set_all(t, z, p, lambda: model.rates(t, z, zp_new), model.resolution)
+        else:                       # the items that read what changed
+            bad = disc.contradicted(t, z, p)
+            if bad.any():
+                zeros = np.zeros(disc.n_rel + disc.n_disc)
+                disc.settle(t, z, p, bad, lambda: zeros)
+    raise _cycling(model, t, history)
+
+
+def _cycling(model, t, history) -> InitializationFailed:
+    """The Boolean and Integer variables that kept changing at the instant t."""
+    disc = model.discrete
+    h = np.array(history[-8:])
+    moving = np.flatnonzero(np.any(h != h[:1], axis=0))
+    names = [disc.info.held_names[j] for j in moving[:6]]
+    seq = "; ".join(f"{disc.info.held_names[j]}: "
+                    + " -> ".join(disc.show(j, x) for x in h[:, j]) for j in moving[:6])
+    return InitializationFailed(
+        f"event iteration at t = {t:.10g}: the Boolean/Integer equations do not settle "
+        f"after {_DISCRETE_ROUNDS} rounds, the values cycle ({seq}); an equation that "
+        "reads its own variable through the others must read its value before the "
+        "event, pre(...)", t, variables=names)
 
 
 def _at_zero(model, t, z, zp) -> np.ndarray:

@@ -111,6 +111,10 @@ def initialize(model, t0: float):
         _finite_derivatives(model, t0, zp)
         history.append(model.m.copy())
         changed = model.discrete.set_all(t0, z, model.p, lambda: model.rates(t0, z, zp))
+        if model.whens is not None and model.whens.has_equations:
+            # the Boolean and Integer equations, pre() at the start values
+            z, moved = model.whens.update_equations(model, t0, z, model.p)
+            changed |= moved
         if model.dynamic is not None:
             changed |= model.reselect_states(t0, z, hysteresis=1.0)
         if not changed:

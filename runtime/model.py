@@ -17,7 +17,7 @@ path (:mod:`.initial`) are all reached from here, through the items of the solve
 contract (:mod:`acausal.solvers.base`) and the runtime's own, in ``acausal.runtime``.
 
 A CompiledModel pickles as its ModelCode in portable form
-(:func:`acausal.compiler.cache.portable`: the generated sources, executed again on
+(:func:`acausal.compiler.cache.entries.portable`: the generated sources, executed again on
 load; the C library loaded again or rebuilt) with its parameter values, discrete state
 and current choice of dummy derivatives.
 """
@@ -36,6 +36,7 @@ from .diagnostics import DOMAIN_ERRORS, failing_statement
 from .dynamic import DynamicStateSelection
 from .events import WhenClauses, iterate_event
 from .initial import InitialConditions, consistent_output, initialize, reinitialize
+from .inputs import InputDrivers
 from .modes import DiscreteState
 
 __all__ = ["CompiledModel"]
@@ -78,8 +79,14 @@ class CompiledModel(DAEProblem):
             if whens is not None:
                 whens = replace(whens, code=FilledCode(whens.code, fill))
             self._delay_code = FilledCode(mc.delays.code, fill)
+        n_delays = self.delays.n if self.delays else 0
         self.p = np.concatenate([np.asarray(mc.param_values, dtype=float),
-                                 np.zeros(self.delays.n if self.delays else 0)])
+                                 np.zeros(n_delays)])
+        # top-level inputs: after the delays in p, written by their drivers (inputs.py)
+        self.inputs = None
+        if getattr(mc, "inputs", None) is not None:
+            self.inputs = InputDrivers(mc.inputs, len(self.param_names) + n_delays)
+            self.p = np.concatenate([self.p, self.inputs.starts])
         self.n_res = int(mc.n_res)
         self.state_z = np.asarray(mc.state_z, dtype=np.int64)
         self.pair_s = np.asarray([a for a, _ in mc.pairs], dtype=np.int64)
@@ -97,6 +104,7 @@ class CompiledModel(DAEProblem):
         self.n_roots = self.discrete.n_roots
         self.whens = WhenClauses(whens) if whens is not None else None
         self.initial = InitialConditions(initial)
+        self._unfilled = None             # the code without the inputs' fill (_fill_inputs)
         self.dynamic = None
         if mc.dynamic is not None:
             self.dynamic = DynamicStateSelection(mc.dynamic, self.nominal)
@@ -114,13 +122,13 @@ class CompiledModel(DAEProblem):
 
     # -- pickling -----------------------------------------------------------------------
     def __getstate__(self):
-        from ..compiler.cache import portable
+        from ..compiler.cache.entries import portable
         return {"model_code": portable(self.model_code), "p": self.p.copy(),
                 "m": self.discrete.m.copy(), "dummies": sorted(self.dummies),
                 "switches": list(self.dynamic.switches) if self.dynamic is not None else []}
 
     def __setstate__(self, state):
-        from ..compiler.cache import load_notes
+        from ..compiler.cache.entries import load_notes
         mc = state["model_code"]
         notes = load_notes(mc)
         if notes and mc.report is not None:
@@ -132,6 +140,57 @@ class CompiledModel(DAEProblem):
             self.dummies = set(state["dummies"])
             self.dynamic.switches[:] = state["switches"]
             self._update_links()
+
+    # -- top-level inputs (runtime/inputs.py) --------------------------------------------
+    @property
+    def input_names(self) -> list:
+        """The model's top-level inputs (input ports of the model that nothing drives)."""
+        return list(self.inputs.names) if self.inputs is not None else []
+
+    @property
+    def inputs_vary(self) -> bool:
+        """An input is a function of time or a table (the step loop is the Python one)."""
+        return self.inputs is not None and self.inputs.varying
+
+    def drive_inputs(self, specs: dict | None) -> None:
+        """Drive every top-level input for the next run: {name: number, function of
+        time, (times, values) table or CombiTimeTable}; a missing or unknown name is a
+        typed error naming it.  ``None`` with no inputs is fine."""
+        if self.inputs is None:
+            if specs:
+                from ..components.component import NotInModel
+                raise NotInModel(f"simulate(inputs=...): the model has no top-level inputs "
+                                 f"(given: {', '.join(map(str, specs))})")
+            return
+        self.inputs.set(specs, self.p)
+        self._fill_inputs(self.inputs.varying)
+
+    def release_inputs(self) -> None:
+        """After a run: the inputs back at their start values, the code unfilled."""
+        if self.inputs is not None:
+            self.inputs.reset(self.p)
+            self._fill_inputs(False)
+
+    def _fill_inputs(self, on: bool) -> None:
+        """Every generated function writes the varying inputs' values at t into p before
+        it runs (on), or the functions as compiled (off)."""
+        if (self._unfilled is not None) == on:
+            return
+        if not on:
+            code, initial_code, whens_code = self._unfilled
+            self._unfilled = None
+        else:
+            self._unfilled = (self.code, self.initial.code,
+                              self.whens.code if self.whens is not None else None)
+            fill = self.inputs.write
+            code = FilledCode(self.code, fill)
+            initial_code = FilledCode(self.initial.code, fill)
+            whens_code = FilledCode(self.whens.code, fill) if self.whens is not None else None
+        self.code = code
+        self.initial.code = initial_code
+        if self.whens is not None:
+            self.whens.code = whens_code
+        self.discrete._roots, self.discrete._scales = code.roots, code.scales
 
     # -- the discrete state -----------------------------------------------------------
     @property
@@ -353,6 +412,10 @@ class CompiledModel(DAEProblem):
             tb = self.delays.next_break(t_min)
             if tb is not None and (te is None or tb < te):
                 te = tb
+        if self.inputs is not None:
+            tb = self.inputs.next_break(t_min)      # a table's time: a kink or a jump
+            if tb is not None and (te is None or tb < te):
+                te = tb
         return te
 
     # -- delays (solver contract items 14-16) ---------------------------------------------
@@ -374,8 +437,14 @@ class CompiledModel(DAEProblem):
             self.delays.commit(self, t_lo, t_hi, interpolate, rtol)
 
     def point_values(self, t) -> np.ndarray | None:
-        """The delayed values at an output point (recorded with it), or None."""
-        return None if self.delays is None else self.delays.values_at(t)
+        """The delayed values and the inputs' values at an output point (recorded with
+        it; results are evaluated with them), or None."""
+        parts = []
+        if self.delays is not None:
+            parts.append(self.delays.values_at(t))
+        if self.inputs_vary:
+            parts.append(self.inputs.values_at(t))
+        return np.concatenate(parts) if parts else None
 
     # -- initialization (runtime contract) ------------------------------------------------
     def initialize(self, t0: float):
@@ -384,16 +453,24 @@ class CompiledModel(DAEProblem):
         once the initial values are found (:mod:`.events`); with delays, the history
         before t0 agrees with the solution at t0."""
         self.discrete.reset_held()
+        self.discrete.set_initial(True)
         if self.whens is not None:
             self.whens.reset_clocks(t0, self.start, self.p, self.m)
         if self.delays is not None:
             z, zp = self.delays.initialize(self, t0, initialize)
         else:
             z, zp = initialize(self, t0)
-        if self.whens is not None and self.whens.due(t0).any():
-            action = iterate_event(self, t0, z, zp, np.zeros(self.n_roots, dtype=bool))
+        # the event that ends the initialization: clocks that tick at t0 and clauses
+        # made true by initial() fire, and the Boolean and Integer equations iterate
+        # with pre() taking their initial values (Modelica's event iteration at t0)
+        ends = self.whens is not None and (self.whens.has_equations or
+                                           self.discrete.has_initial)
+        if ends or (self.whens is not None and self.whens.due(t0).any()):
+            action = iterate_event(self, t0, z, zp, np.zeros(self.n_roots, dtype=bool),
+                                   initial=ends)
             if action.changed:
                 z, zp = reinitialize(self, t0, z if action.y is None else action.y, zp)
+        self.discrete.set_initial(False)
         return z, zp
 
     def reinitialize(self, t, z, zp, rtol=1e-6, atol=1e-6):
@@ -452,7 +529,7 @@ class CompiledModel(DAEProblem):
                 close = [n for n in self.param_names if n.split(".")[-1] == name.split(".")[-1]]
                 hint = f"; parameters with that name: {', '.join(close[:6])}" if close else ""
                 raise NotInModel(f"the model has no tunable parameter '{name}'{why}{hint}")
-            x = _real_value(name, value)
+            x = _real_value(name, value, self.meta.get("parameter_types", {}).get(name))
             lo, hi = self.meta.get("parameter_bounds", {}).get(name, (None, None))
             if (lo is not None and x < lo) or (hi is not None and x > hi):
                 raise InvalidValue(f"parameter '{name}' = {x!r} is outside its range "
@@ -489,7 +566,16 @@ def _by_element(values: dict, names: list) -> dict:
     return out
 
 
-def _real_value(name, value) -> float:
+def _real_value(name, value, kind=None) -> float:
+    """A parameter's new value as the float p holds: a Boolean parameter's True/False as
+    1/0, an Integer's whole number, a Real's real number."""
+    if kind in ("Boolean", "Integer"):
+        from ..components.declarations import typed_value
+        try:
+            return float(typed_value(value, bool if kind == "Boolean" else int,
+                                     f"parameter '{name}'"))
+        except ValueError as err:
+            raise InvalidValue(str(err)) from None
     if isinstance(value, (bool, np.bool_, complex, np.complexfloating)) or \
             not isinstance(value, (int, float, np.number)):
         raise InvalidValue(f"parameter '{name}' must be a real number, got {value!r} "

@@ -3,7 +3,7 @@
 Modelica semantics (Modelica Language Specification 3.6, sec. 8.5): a relation in an
 if-expression keeps the value it had at the last event while the integrator steps; it
 changes only at an event, located where its zero-crossing function ``g = lhs - rhs``
-crosses zero.  The same holds for ``floor(u)`` (:mod:`acausal.compiler.discrete`), held at
+crosses zero.  The same holds for ``floor(u)`` (:mod:`acausal.compiler.frontend.discrete`), held at
 an integer ``n`` until ``u`` leaves ``[n, n+1)``.
 
 Each relation is judged on its *own* scale, never on another one's: its value is "at zero"
@@ -80,11 +80,17 @@ class DiscreteState:
         # held(y) then pre(y) of the discrete variables follow the items in m
         self.n_held = getattr(info, "n_held", 0)
         self.held_start = np.asarray(getattr(info, "held_start", []), dtype=float)
+        # initial() follows them where the model reads it: 1.0 while initializing
+        self.has_initial = bool(getattr(info, "has_initial", False))
+        types = list(getattr(info, "held_types", [])) or ["Real"] * self.n_held
+        self.held_types = types
+        self._boolean = np.array([t == "Boolean" for t in types], dtype=bool)
+        self._integer = np.array([t == "Integer" for t in types], dtype=bool)
         self.upward = np.array([_UPWARD[op] for op in info.ops], dtype=bool)
         self.strict = np.array([_STRICT[op] for op in info.ops], dtype=bool)
         self.nominal = np.asarray(info.nominal, dtype=float)
         self._roots, self._scales = roots, scales
-        self.m = np.zeros(self.n_rel + self.n_disc + 2 * self.n_held)
+        self.m = np.zeros(self.n_rel + self.n_disc + 2 * self.n_held + self.has_initial)
         self.reset_held()
         self.offset = np.zeros(self.n_rel + 2 * self.n_disc)
         # chattering on round-off (module docstring): per relation its hysteresis and
@@ -389,7 +395,7 @@ class DiscreteState:
             return self.info.held_names[j]
         return f"pre({self.info.held_names[j - self.n_held]})"
 
-    # -- discrete variables (acausal.compiler.sampled) -----------------------------------
+    # -- discrete variables (acausal.compiler.frontend.sampled) -----------------------------------
     @property
     def held(self) -> slice:
         """Where held(y) of the discrete variables lives in m."""
@@ -407,3 +413,27 @@ class DiscreteState:
         if self.n_held:
             self.m[self.held] = self.held_start
             self.m[self.pre] = self.held_start
+
+    def typed(self, slots, values) -> np.ndarray:
+        """Values assigned to the held values ``slots``: a Boolean's 1.0 or 0.0, an
+        Integer's whole number (a sum of gains times whole numbers rounds to one)."""
+        out = np.asarray(values, dtype=float).copy()
+        b, i = self._boolean[slots], self._integer[slots]
+        if b.any():
+            out[b] = np.where(out[b] > 0.5, 1.0, 0.0)
+        if i.any():
+            out[i] = np.rint(out[i])
+        return out
+
+    def show(self, j, x) -> str:
+        """Held value j as its type prints it (True, 3, 0.25)."""
+        if self._boolean[j]:
+            return str(bool(x > 0.5))
+        if self._integer[j]:
+            return str(int(round(x)))
+        return f"{x:g}"
+
+    def set_initial(self, value: bool) -> None:
+        """initial() is true while the initial values are found, false afterwards."""
+        if self.has_initial:
+            self.m[-1] = 1.0 if value else 0.0

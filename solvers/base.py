@@ -19,7 +19,7 @@ What a problem provides (numbered, so integrators can cite it)
 6. ``nominal``: positive array; error weights use ``rtol*|y_i| + atol*nominal_i``.
    Optional ``self_scaled``: bool mask of algebraic components without a nominal of
    their own (derivatives solved as unknowns, variables kept for fill by
-   ``compiler/causalize.py``); the error and Newton tests leave them
+   ``compiler/structure/causalize.py``); the error and Newton tests leave them
    out (weight 0), judging them through the unknowns they determine.
 7. ``names``: the user's name of each y_i (for messages).
 8. Events (optional, ``n_roots > 0``): ``roots(t, y, yp) -> ndarray(n_roots)`` are the

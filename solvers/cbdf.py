@@ -1,6 +1,6 @@
 """The BDF step loop compiled: :class:`CompiledBDF`, the C twin of :class:`~.bdf.BDF`.
 
-Why: with the generated model code in C (:mod:`acausal.compiler.cbackend`), a step of the
+Why: with the generated model code in C (:mod:`acausal.compiler.backends.cbackend`), a step of the
 Python loop spends about 95 % of its time in the interpreter (coefficients, predictor,
 Newton iterations, error test, one ctypes call per residual).  ``cbdf.c`` runs the same
 method -- the same coefficients, corrector, error test and order/step control, statement
@@ -100,7 +100,7 @@ def library(cached_only: bool = False):
     A build that failed is tried again once another compiler is named (``CC``)."""
     global _lib
     if _lib is False and _failed_with != ():
-        from ..compiler.cbackend import compiler_available
+        from ..compiler.backends.cbackend import compiler_available
         if compiler_available() != _failed_with:
             _lib = None
     if _lib is None:
@@ -128,7 +128,7 @@ def _source() -> str:
 
 def _load(cached_only: bool) -> None:
     global _lib, _failed_with
-    from ..compiler.cbackend import build, compiler_available
+    from ..compiler.backends.cbackend import build, compiler_available
     try:
         source = _source()
         path = build(source, cached_only=True)
@@ -152,7 +152,7 @@ def _load(cached_only: bool) -> None:
 def _compiled_model(problem) -> bool:
     """A compiled model whose residual, Jacobian and zero-crossing functions are C, or
     its generated numpy code (called back: :mod:`.cbdf_callbacks`)."""
-    from ..compiler.cbackend import _CFunction
+    from ..compiler.backends.cbackend import _CFunction
     code = getattr(problem, "code", None)
     backend = getattr(problem, "backend", None)
     if code is None or backend not in ("c", "numpy") or \
@@ -185,6 +185,8 @@ def choose_step_loop(problem, step_loop: str, stald: bool) -> int | None:
         why = "stability limit detection runs in the Python loop"
     elif getattr(problem, "delays", None) is not None:
         why = "delay() keeps the history of every accepted step in Python"
+    elif getattr(problem, "inputs_vary", False):
+        why = "its inputs are functions of time, evaluated in Python before every call"
     elif not model and getattr(problem, "after_step", None) is not None:
         why = "its after_step hook runs in Python after every step"
     if step_loop == "auto":

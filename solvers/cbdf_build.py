@@ -30,7 +30,7 @@ def build_in_background() -> None:
     small model's whole first run.  A thread would overlap the model's compile, but the
     interpreter waits for its threads at exit, so the first script would still end only
     when the build does.  The process outlives this one if need be; its library appears
-    in the cache atomically (:func:`acausal.compiler.cbackend.build` compiles in a
+    in the cache atomically (:func:`acausal.compiler.backends.cbackend.build` compiles in a
     temporary directory and renames the result), so a build that is interrupted leaves
     no library rather than a broken one, and the next process starts it again.  While
     it runs, the cache holds a marker file, so concurrent processes start one build.
@@ -44,7 +44,7 @@ def build_in_background() -> None:
     with _spawning:
         if _builder is not None or library(cached_only=True) is not None:
             return
-        from ..compiler.cbackend import cache_dir, compiler_available
+        from ..compiler.backends.cbackend import cache_dir, compiler_available
         if compiler_available() is None or _building(os.path.join(cache_dir(), _MARKER)):
             return
         _builder = _spawn_builder()
@@ -127,7 +127,7 @@ def _build_detached() -> None:
             os.nice(10)
         except OSError:
             pass
-    from ..compiler.cbackend import cache_dir
+    from ..compiler.backends.cbackend import cache_dir
     marker = os.path.join(cache_dir(), _MARKER)
     for _ in range(2):
         try:

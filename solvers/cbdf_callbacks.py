@@ -6,14 +6,14 @@ functions through pointers with the generated C's contract,
     int f(double t, const double *y, const double *p, const double *m, double *out,
           double *w)
 
-(:mod:`acausal.compiler.cbackend`).  A model on the numpy backend gives the loop ctypes
+(:mod:`acausal.compiler.backends.cbackend`).  A model on the numpy backend gives the loop ctypes
 callbacks of that contract around its generated functions, so it runs in the same
 compiled loop as the C backend -- predictor, corrector with the stored LU, error test,
 step and order control, the sparse LU of a large system -- and Python is entered only
 for the functions themselves.  It is the arrangement of IDA with a Python residual.
 
 Why: on a large model the numpy functions are a few array operations each
-(:mod:`acausal.compiler.arraycode`), and the Python loop's own work per step (a few
+(:mod:`acausal.compiler.backends.arraycode`), and the Python loop's own work per step (a few
 dozen numpy calls on vectors of the model's size) costs more than they do; on a small
 model the loop's interpreter overhead is most of a step.  Measured in
 ``benchmarks/peers.py`` (README, design section).

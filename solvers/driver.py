@@ -501,7 +501,10 @@ class _Run:
         g_before = self._signed_roots(t, y, yp) if self.n_roots else None
         any_change = False
         for _ in range(self.max_event_iterations):
-            action = p.handle_event(t, y, yp, crossed) or EventAction()
+            try:
+                action = p.handle_event(t, y, yp, crossed) or EventAction()
+            except InitializationFailed as exc:     # no consistent discrete state
+                raise self._error(str(exc), t, exc.variables) from None
             changed = action.changed or action.y is not None
             any_change |= changed
             if action.y is not None:

@@ -21,7 +21,7 @@ import time
 
 import pytest
 
-from acausal.compiler.cbackend import compiler_available
+from acausal.compiler.backends.cbackend import compiler_available
 from acausal.solvers import cbdf_build
 from acausal.tests.rc_script import RC_CLASS
 

@@ -1,8 +1,12 @@
 """Linear dynamic blocks and controllers (Modelica.Blocks.Continuous).
 
 Every block with dynamics keeps its state in a variable ``x`` (a list of cells for
-``TransferFunction``); its start value, 0 by default, is the initial state unless the
-model fixes the state otherwise: ``FirstOrder(x=1.0)``.
+``TransferFunction``).  ``initType`` chooses how it starts, as in the MSL
+(``ac.Init``): ``"NoInit"`` (the default here: the state's start value, 0 unless given,
+``FirstOrder(x=1.0)``, where the model does not fix it otherwise), ``"SteadyState"``
+(der(x) = 0), ``"InitialState"`` (x = x_start, or y_start where the state is the
+output) or ``"InitialOutput"`` (y = y_start).  The MSL's Integrator defaults to
+InitialState with y_start = 0, which NoInit gives wherever nothing else fixes its state.
 """
 
 import acausal as ac
@@ -10,7 +14,7 @@ import acausal as ac
 from .interfaces import SISO
 from .nonlinear import clip
 
-__all__ = ["Integrator", "Derivative", "FirstOrder", "SecondOrder", "TransferFunction",
+__all__ = ["Integrator", "Der", "Derivative", "FirstOrder", "SecondOrder", "TransferFunction",
            "PI", "PID"]
 
 
@@ -19,9 +23,26 @@ class Integrator(SISO):
 
     k = ac.Parameter(1.0, description="integrator gain")
     x = ac.Variable(start=0.0, description="state (the integral)")
+    initType = ac.Init.parameter()
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
+                                            "InitialOutput)")
+
+    def initial_equations(self):
+        return ac.Init.equations(self.initType, [self.x], [self.y_start], self.y,
+                                 self.y_start)
 
     def equations(self):
         return [ac.Eq(ac.der(self.x), self.k * self.u), ac.Eq(self.y, self.x)]
+
+
+class Der(SISO):
+    """The derivative of the input (MSL Blocks.Continuous.Der):  y = der(u).
+
+    Index reduction differentiates whatever computes u: u must be differentiable (a
+    filtered signal, not a step)."""
+
+    def equations(self):
+        return [ac.Eq(self.y, ac.der(self.u.signal))]
 
 
 class Derivative(SISO):
@@ -33,6 +54,13 @@ class Derivative(SISO):
     k = ac.Parameter(1.0, description="gain")
     T = ac.Parameter(0.01, unit="s", min=0, description="filter time constant")
     x = ac.Variable(start=0.0, description="filter state")
+    initType = ac.Init.parameter()
+    x_start = ac.Parameter(0.0, description="initial value of the state (InitialState)")
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
+
+    def initial_equations(self):
+        return ac.Init.equations(self.initType, [self.x], [self.x_start], self.y,
+                                 self.y_start, free_at_output=[])
 
     def equations(self):
         return [ac.Eq(self.T * ac.der(self.x), self.u - self.x),
@@ -43,8 +71,15 @@ class FirstOrder(SISO):
     """First-order lag  y = k / (T s + 1) u:   T der(x) = k u - x,  y = x."""
 
     k = ac.Parameter(1.0, description="gain")
-    T = ac.Parameter(1.0, unit="s", min=0, description="time constant")
+    T = ac.Parameter(1.0, unit="s", description="time constant")
     x = ac.Variable(start=0.0, description="state (the output)")
+    initType = ac.Init.parameter()
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
+                                            "InitialOutput)")
+
+    def initial_equations(self):
+        return ac.Init.equations(self.initType, [self.x], [self.y_start], self.y,
+                                 self.y_start)
 
     def equations(self):
         return [ac.Eq(self.T * ac.der(self.x), self.k * self.u - self.x), ac.Eq(self.y, self.x)]
@@ -57,10 +92,20 @@ class SecondOrder(SISO):
     """
 
     k = ac.Parameter(1.0, description="gain")
-    w = ac.Parameter(1.0, unit="rad/s", min=0, description="natural frequency")
-    D = ac.Parameter(1.0, min=0, description="damping ratio")
+    w = ac.Parameter(1.0, unit="rad/s", description="natural frequency")
+    D = ac.Parameter(1.0, description="damping ratio")
     x = ac.Variable(start=0.0, description="state (the output)")
     xd = ac.Variable(start=0.0, description="state (der of the output)")
+    initType = ac.Init.parameter()
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialState, "
+                                            "InitialOutput)")
+    yd_start = ac.Parameter(0.0, description="initial value of der(y) (InitialState)")
+
+    def initial_equations(self):
+        # InitialOutput: y = y_start and der(y) = 0, the MSL's
+        return ac.Init.equations(self.initType, [self.x, self.xd],
+                                 [self.y_start, self.yd_start], self.y, self.y_start,
+                                 free_at_output=[self.x])
 
     def equations(self):
         return [ac.Eq(ac.der(self.x), self.xd),
@@ -76,37 +121,53 @@ class _State(ac.Component):
 
 
 class TransferFunction(SISO):
-    """y = num(s)/den(s) u, coefficients highest power first, in controllable canonical
-    form.  With den = a0 s^n + ... + an (divided through by a0 to alpha_k = a_k/a0) and
-    num padded to n + 1 coefficients beta_j (also divided by a0):
+    """y = b(s)/a(s) u, coefficients highest power first (MSL
+    Blocks.Continuous.TransferFunction), in controllable canonical form.  With a = a0 s^n
+    + ... + an (divided through by a0 to alpha_k = a_k/a0) and b padded to n + 1
+    coefficients beta_j (also divided by a0):
 
         der(x[i]) = x[i+1]  (i < n),   der(x[n]) = u - sum_k alpha_k x[n-k+1],
         y = beta_0 der(x[n]) + sum_{j>=1} beta_j x[n-j+1]
 
-    ``num`` and ``den`` are structural parameters (they set the number of states): plain
+    ``b`` and ``a`` are structural parameters (they set the number of states): plain
     numbers fixed when the block is made; ``build`` creates the states.
 
     Examples
     --------
-    >>> tf = TransferFunction(num=[1.0], den=[0.5, 1.0])   # 1 / (0.5 s + 1)
+    >>> tf = TransferFunction(b=[1.0], a=[0.5, 1.0])   # 1 / (0.5 s + 1)
     >>> len(tf.state)
     1
     """
 
-    num = ac.Parameter((1.0,), structural=True,
-                       description="numerator coefficients, highest power of s first")
-    den = ac.Parameter((1.0, 1.0), structural=True,
-                       description="denominator coefficients, highest power of s first")
+    b = ac.Parameter((1.0,), structural=True,
+                     description="numerator coefficients, highest power of s first")
+    a = ac.Parameter((1.0, 1.0), structural=True,
+                     description="denominator coefficients, highest power of s first")
+    initType = ac.Init.parameter()
+    x_start = ac.Parameter((), structural=True,
+                           description="initial states x[0] .. x[n-1] (InitialState; "
+                                       "default zeros)")
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
+
+    def initial_equations(self):
+        """InitialOutput: y = y_start with der(x[1:]) = 0 (the MSL's der(x[1:nx-1]) = 0
+        in its reversed order of the states)."""
+        x = [cell.x for cell in self.state]
+        x_start = [float(v) for v in self.x_start] or [0.0] * len(x)
+        if len(x_start) != len(x):
+            raise ac.InvalidValue(f"TransferFunction: x_start has {len(x_start)} values for "
+                                  f"{len(x)} states")
+        return ac.Init.equations(self.initType, x, x_start, self.y, self.y_start)
 
     def build(self):
-        num, den = [float(c) for c in self.num], [float(c) for c in self.den]
+        num, den = [float(c) for c in self.b], [float(c) for c in self.a]
         if not den or den[0] == 0:
-            raise ac.ModelError("TransferFunction: the leading coefficient of den must not be 0")
+            raise ac.ModelError("TransferFunction: the leading coefficient of a must not be 0")
         if len(num) > len(den):
-            raise ac.ModelError("TransferFunction: num has a higher degree than den (improper)")
+            raise ac.ModelError("TransferFunction: b has a higher degree than a (improper)")
         n = len(den) - 1
-        self.alpha = [a / den[0] for a in den[1:]]
-        self.beta = [0.0] * (n + 1 - len(num)) + [b / den[0] for b in num]
+        self.alpha = [c / den[0] for c in den[1:]]
+        self.beta = [0.0] * (n + 1 - len(num)) + [c / den[0] for c in num]
         self.state = [_State() for _ in range(n)]
 
     def equations(self):
@@ -137,6 +198,17 @@ class _LimitedController(SISO):
                       description="anti-windup tracking time constant (default Ti)")
     v = ac.Variable(description="unlimited controller output")
     x_i = ac.Variable(start=0.0, description="integral state, in output units")
+    initType = ac.Init.parameter()
+    xi_start = ac.Parameter(0.0, description="initial integral state, in output units "
+                                             "(InitialState)")
+    y_start = ac.Parameter(0.0, description="initial value of the output (InitialOutput)")
+
+    def states(self) -> list:
+        return [self.x_i]
+
+    def initial_equations(self):
+        starts = [self.xi_start] + [getattr(self, "xd_start", 0)] * (len(self.states()) - 1)
+        return ac.Init.equations(self.initType, self.states(), starts, self.y, self.y_start)
 
     def equations(self):
         return [ac.Eq(self.y, clip(self.v, self.yMax, self.yMin)),
@@ -166,6 +238,11 @@ class PID(_LimitedController):
     Td = ac.Parameter(0.1, unit="s", min=0, description="derivative time")
     Nd = ac.Parameter(10.0, min=0, description="derivative filter: high-frequency gain")
     x_d = ac.Variable(start=0.0, description="derivative filter state")
+    xd_start = ac.Parameter(0.0, description="initial derivative filter state "
+                                             "(InitialState)")
+
+    def states(self) -> list:
+        return [self.x_i, self.x_d]
 
     def equations(self):
         d = self.k * self.Nd * (self.u - self.x_d)

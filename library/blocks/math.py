@@ -1,12 +1,12 @@
 """Static signal operations (Modelica.Blocks.Math)."""
 import acausal as ac
 
-from acausal.ports import RealInput
+from acausal.ports import RealInput, RealOutput
 
 from .interfaces import SI2SO, SISO, SO
 
 __all__ = ["Gain", "Add", "Add3", "Feedback", "Product", "Division", "Abs", "Sqrt", "Min",
-           "Max"]
+           "Max", "InverseBlockConstraints"]
 
 
 class Gain(SISO):
@@ -89,3 +89,20 @@ class Max(SI2SO):
 
     def equations(self):
         return [ac.Eq(self.y, ac.max(self.u1.signal, self.u2.signal))]
+
+
+class InverseBlockConstraints(ac.Component):
+    """Makes an inverse model of the block placed between y2 and u2 (MSL
+    Blocks.Math.InverseBlockConstraints): its output is forced to the signal at u1, and
+    the input it needs comes out at y1:
+
+        u1 = u2,   y1 = y2
+    """
+
+    u1 = RealInput()
+    u2 = RealInput()
+    y1 = RealOutput()
+    y2 = RealOutput()
+
+    def equations(self):
+        return [ac.Eq(self.u1.signal, self.u2.signal), ac.Eq(self.y1.signal, self.y2.signal)]

@@ -3,7 +3,7 @@ import acausal as ac
 
 from .interfaces import SISO
 
-__all__ = ["Limiter", "Saturation", "DeadZone", "clip"]
+__all__ = ["Limiter", "Saturation", "DeadZone", "SlewRateLimiter", "clip"]
 
 
 def clip(u, upper, lower):
@@ -40,3 +40,28 @@ class DeadZone(SISO):
         u = self.u.signal
         y = ac.if_else(u > self.uMax, u - self.uMax, ac.if_else(u < self.uMin, u - self.uMin, 0))
         return [ac.Eq(self.y, y)]
+
+
+class SlewRateLimiter(SISO):
+    """Limits the slew rate of a signal (MSL Blocks.Nonlinear.SlewRateLimiter, strict =
+    false): the output follows the input with the time constant Td, at a rate between
+    Falling and Rising,
+
+        der(x) = clip((u - x)/Td, Falling, Rising),   y = x
+
+    Its state is x, as in the library's other blocks (the MSL's y): it starts from its
+    start value, ``SlewRateLimiter(x=y_start)`` (the MSL's initType = InitialOutput; its
+    default, SteadyState, y = u, is not offered).
+    """
+
+    Rising = ac.Parameter(1.0, min=0, description="maximum rising slew rate (> 0), the "
+                                                  "input's unit per second")
+    Falling = ac.Parameter(lambda c: -c.Rising, max=0,
+                           description="maximum falling slew rate (< 0), default -Rising")
+    Td = ac.Parameter(0.001, unit="s", min=0, description="derivative time constant (> 0)")
+    x = ac.Variable(start=0.0, description="state (the output)")
+
+    def equations(self):
+        val = (self.u.signal - self.x) / self.Td
+        return [ac.Eq(ac.der(self.x), clip(val, self.Rising, self.Falling)),
+                ac.Eq(self.y, self.x)]

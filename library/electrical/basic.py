@@ -1,14 +1,14 @@
 """Basic electrical components (Modelica.Electrical.Analog.Basic)."""
+from acausal._sympy import sympy as sp
+
 import acausal as ac
 from acausal.ports import HeatPort, Pin, RealInput
 
-from .interfaces import OnePort, TwoPort
+from .interfaces import ConditionalHeatPort, OnePort, TwoPort
 
 __all__ = ["Ground", "Resistor", "Conductor", "Capacitor", "Inductor", "HeatingResistor",
            "VariableResistor", "VariableConductor", "VariableCapacitor", "VariableInductor",
-           "Potentiometer",
-           "Transformer", "Gyrator", "IdealTransformer", "IdealOpAmp", "IdealClosingSwitch",
-           "IdealOpeningSwitch"]
+           "Potentiometer", "Transformer", "Gyrator", "SaturatingInductor"]
 
 
 class Ground(ac.Component):
@@ -23,9 +23,21 @@ class Ground(ac.Component):
 
 
 class Resistor(OnePort):
-    """Ideal linear resistor, Ohm's law:  v = R i."""
+    """Ideal linear resistor (Modelica.Electrical.Analog.Basic.Resistor, MSL v4.0.0),
+    Ohm's law with a linear temperature coefficient:
 
-    R = ac.Parameter(1.0, unit="Ohm", min=0, description="resistance")
+        R_actual = R (1 + alpha (T_heatPort - T_ref)),   v = R_actual i
+
+    Without the MSL's heat port (useHeatPort, not here yet) the device is at its
+    reference temperature (the MSL's T = T_ref), so R_actual = R; T_ref and alpha act
+    once the port is there.  The loss is declared by ``loss_power``.
+    """
+
+    R = ac.Parameter(1.0, unit="Ohm", description="resistance")
+    T_ref = ac.Parameter(300.15, unit="K", min=0, description="reference temperature")
+    alpha = ac.Parameter(0.0, unit="1/K",
+                         description="temperature coefficient of resistance (R_actual = "
+                                     "R (1 + alpha (T_heatPort - T_ref)))")
 
     def loss_power(self):
         """P_loss = R i^2 (to the environment; the audit checks it against v i)."""
@@ -36,9 +48,20 @@ class Resistor(OnePort):
 
 
 class Conductor(OnePort):
-    """Ideal linear conductor (MSL Analog.Basic.Conductor):  i = G v."""
+    """Ideal linear conductor (Modelica.Electrical.Analog.Basic.Conductor, MSL v4.0.0)
+    with a linear temperature coefficient:
 
-    G = ac.Parameter(1.0, unit="S", min=0, description="conductance")
+        G_actual = G / (1 + alpha (T_heatPort - T_ref)),   i = G_actual v
+
+    (at its reference temperature without the MSL's heat port, as :class:`Resistor`:
+    G_actual = G).
+    """
+
+    G = ac.Parameter(1.0, unit="S", description="conductance at temperature T_ref")
+    T_ref = ac.Parameter(300.15, unit="K", min=0, description="reference temperature")
+    alpha = ac.Parameter(0.0, unit="1/K",
+                         description="temperature coefficient of resistance (G_actual = "
+                                     "G/(1 + alpha (T_heatPort - T_ref)))")
 
     def loss_power(self):
         """P_loss = G v^2 (the audit checks it against v i)."""
@@ -49,7 +72,7 @@ class Conductor(OnePort):
 
 
 class Capacitor(OnePort):
-    """Ideal capacitor:  C dv/dt = i."""
+    """Ideal linear capacitor (Modelica.Electrical.Analog.Basic.Capacitor):  i = C dv/dt."""
 
     C = ac.Parameter(1.0, unit="F", min=0, description="capacitance")
     v = ac.Variable(start=0.0, unit="V", description="voltage drop p.v - n.v")
@@ -63,9 +86,9 @@ class Capacitor(OnePort):
 
 
 class Inductor(OnePort):
-    """Ideal inductor:  L di/dt = v."""
+    """Ideal linear inductor (Modelica.Electrical.Analog.Basic.Inductor):  L di/dt = v."""
 
-    L = ac.Parameter(1.0, unit="H", min=0, description="inductance")
+    L = ac.Parameter(1.0, unit="H", description="inductance")
     i = ac.Variable(start=0.0, unit="A", description="current from p to n")
 
     def stored_energy(self):
@@ -85,8 +108,8 @@ class HeatingResistor(OnePort):
     out into whatever the port is connected to; Modelica.Electrical.Analog.Basic.)
     """
 
-    R_ref = ac.Parameter(1.0, unit="Ohm", min=0, description="resistance at T_ref")
-    T_ref = ac.Parameter(300.15, unit="K", description="reference temperature")
+    R_ref = ac.Parameter(1.0, unit="Ohm", description="resistance at T_ref")
+    T_ref = ac.Parameter(300.15, unit="K", min=0, description="reference temperature")
     alpha = ac.Parameter(0.0, unit="1/K", description="temperature coefficient of R")
     heatPort = HeatPort()
     R = ac.Variable(unit="Ohm", description="resistance at the port temperature")
@@ -99,36 +122,55 @@ class HeatingResistor(OnePort):
                 ac.Eq(self.heatPort.Q_flow, -self.v * self.i)]
 
 
-class VariableResistor(OnePort):
-    """Resistor whose resistance is a signal (MSL Analog.Basic.VariableResistor):
+class VariableResistor(OnePort, ConditionalHeatPort):
+    """Resistor whose resistance is a signal (Modelica.Electrical.Analog.Basic.
+    VariableResistor, MSL v4.0.0), with a linear temperature coefficient:
 
-        v = R i          (R >= 0 for a passive resistor)
+        R_actual = R (1 + alpha (T_heatPort - T_ref)),   v = R_actual i,   LossPower = v i
+
+    (R >= 0 for a passive resistor; T_heatPort is the fixed device temperature T, T_ref
+    by default.)
     """
 
+    T_ref = ac.Parameter(300.15, unit="K", min=0, description="reference temperature")
+    alpha = ac.Parameter(0.0, unit="1/K",
+                         description="temperature coefficient of resistance (R_actual = "
+                                     "R (1 + alpha (T_heatPort - T_ref)))")
+    T = ac.Parameter(lambda c: c.T_ref, unit="K", min=0,
+                     description="fixed device temperature (no heat port)")
     R = RealInput()
-
-    def loss_power(self):
-        """P_loss = R i^2 (negative if the signal R is)."""
-        return self.R * self.i**2
+    R_actual = ac.Variable(unit="Ohm",
+                           description="actual resistance = R (1 + alpha (T_heatPort - T_ref))")
 
     def equations(self):
-        return [ac.Eq(self.v, self.R * self.i)]
+        return [ac.Eq(self.R_actual, self.R * (1 + self.alpha * (self.T_heatPort - self.T_ref))),
+                ac.Eq(self.v, self.R_actual * self.i),
+                ac.Eq(self.LossPower, self.v * self.i)]
 
 
-class VariableConductor(OnePort):
-    """Conductor whose conductance is a signal (MSL Analog.Basic.VariableConductor):
+class VariableConductor(OnePort, ConditionalHeatPort):
+    """Conductor whose conductance is a signal (Modelica.Electrical.Analog.Basic.
+    VariableConductor, MSL v4.0.0), with a linear temperature coefficient:
 
-        i = G v          (G >= 0 for a passive conductor)
+        G_actual = G / (1 + alpha (T_heatPort - T_ref)),   i = G_actual v,   LossPower = v i
+
+    (G >= 0 for a passive conductor; T_heatPort is the fixed device temperature T.)
     """
 
+    T_ref = ac.Parameter(300.15, unit="K", min=0, description="reference temperature")
+    alpha = ac.Parameter(0.0, unit="1/K",
+                         description="temperature coefficient of resistance (G_actual = "
+                                     "G/(1 + alpha (T_heatPort - T_ref)))")
+    T = ac.Parameter(lambda c: c.T_ref, unit="K", min=0,
+                     description="fixed device temperature (no heat port)")
     G = RealInput()
-
-    def loss_power(self):
-        """P_loss = G v^2."""
-        return self.G * self.v**2
+    G_actual = ac.Variable(unit="S",
+                           description="actual conductance = G/(1 + alpha (T_heatPort - T_ref))")
 
     def equations(self):
-        return [ac.Eq(self.i, self.G * self.v)]
+        return [ac.Eq(self.G_actual, self.G / (1 + self.alpha * (self.T_heatPort - self.T_ref))),
+                ac.Eq(self.i, self.G_actual * self.v),
+                ac.Eq(self.LossPower, self.v * self.i)]
 
 
 class VariableCapacitor(OnePort):
@@ -167,7 +209,7 @@ class VariableInductor(OnePort):
     """
 
     L = RealInput()
-    Lmin = ac.Parameter(1e-15, unit="H", min=0, description="lower bound of L")
+    Lmin = ac.Parameter(1e-15, unit="H", description="lower bound of L")
     Psi = ac.Variable(start=0.0, unit="Wb", description="flux linkage")
 
     def stored_energy(self):
@@ -192,10 +234,14 @@ class Potentiometer(ac.Component):
         pin_p.i + pin_n.i + contact.i = 0
 
     r is the parameter rConstant, or with ``Potentiometer(useRinput=True)`` the signal
-    input ``r`` (a structural choice, as the MSL's useRinput).
+    input ``r`` (a structural choice, as the MSL's useRinput).  Without the MSL's heat
+    port the device is at T_ref, and R is not changed by alpha (as :class:`Resistor`).
     """
 
-    R = ac.Parameter(1.0, unit="Ohm", min=0, description="total resistance")
+    R = ac.Parameter(1.0, unit="Ohm", description="resistance at temperature T_ref")
+    T_ref = ac.Parameter(293.15, unit="K", min=0, description="reference temperature")
+    alpha = ac.Parameter(0.0, unit="1/K",
+                         description="temperature coefficient of resistance")
     rConstant = ac.Parameter(0.5, min=0, max=1,
                              description="contact position without the input r")
     pin_p = Pin()
@@ -204,14 +250,9 @@ class Potentiometer(ac.Component):
     Rp = ac.Variable(unit="Ohm", description="resistance between pin_p and contact")
     Rn = ac.Variable(unit="Ohm", description="resistance between contact and pin_n")
 
-    def __init__(self, *, useRinput=False, **modifications):
-        super().__init__(**modifications)
-        if not isinstance(useRinput, bool):
-            raise ac.ModelError(f"Potentiometer: useRinput must be True or False, not "
-                                f"{useRinput!r}")
-        object.__setattr__(self, "useRinput", useRinput)
-        if useRinput:
-            self.r = RealInput()
+    useRinput = ac.Parameter(False, structural=True,
+                             description="the contact position is the input r")
+    r = ac.Conditional(RealInput(), "useRinput")
 
     def loss_power(self):
         """Rp pin_p.i^2 + Rn pin_n.i^2."""
@@ -236,8 +277,8 @@ class Transformer(TwoPort):
     makes the two currents dependent.)
     """
 
-    L1 = ac.Parameter(1.0, unit="H", min=0, description="primary inductance")
-    L2 = ac.Parameter(1.0, unit="H", min=0, description="secondary inductance")
+    L1 = ac.Parameter(1.0, unit="H", description="primary inductance")
+    L2 = ac.Parameter(1.0, unit="H", description="secondary inductance")
     M = ac.Parameter(1.0, unit="H", description="coupling inductance")
 
     def stored_energy(self):
@@ -266,75 +307,61 @@ class Gyrator(TwoPort):
                 ac.Eq(self.i2, -self.G1 * self.v1)]
 
 
-class IdealTransformer(TwoPort):
-    """Ideal transformer with turns ratio n = N1/N2:
+class SaturatingInductor(OnePort):
+    """Inductor with saturation (Modelica.Electrical.Analog.Basic.SaturatingInductor,
+    MSL v4.0.0): the flux follows an arc tangent between the inductance Lzer near
+    i = 0 and Linf at large currents,
 
-        v1 = n v2,   i2 = -n i1   (so v1 i1 + v2 i2 = 0: lossless)
+        Psi = Linf i + (Lzer - Linf) Ipar atan(i/Ipar),   v = der(Psi)
+        Lact = Linf + (Lzer - Linf) atan(i/Ipar)/(i/Ipar)   (Lzer at i = 0)
+
+    where Ipar makes the inductance Psi/i equal Lnom at the nominal current Inom:
+
+        (Lnom - Linf)/(Lzer - Linf) = Ipar/Inom (pi/2 - atan(Ipar/Inom))
+
+    (the MSL's parameter with fixed = false: here a variable that this equation
+    determines, constant in time; Lzer > Lnom > Linf.)
     """
 
-    n = ac.Parameter(1.0, description="turns ratio N1/N2")
+    Inom = ac.Parameter(1.0, unit="A", description="nominal current")
+    Lnom = ac.Parameter(1.0, unit="H", description="nominal inductance at nominal current")
+    Lzer = ac.Parameter(lambda c: 2 * c.Lnom, unit="H",
+                        description="inductance near current = 0")
+    Linf = ac.Parameter(lambda c: c.Lnom / 2, unit="H",
+                        description="inductance at large currents")
+    i = ac.Variable(start=0.0, unit="A", description="current from p to n")
+    Lact = ac.Variable(unit="H", description="present inductance")
+    Psi = ac.Variable(unit="Wb", description="present flux")
+    Ipar = ac.Variable(start=0.1, unit="A", state_select="never",
+                       description="current scale of the arc tangent")
 
-    energy_role = "lossless"  # v1 i1 + v2 i2 = 0
-
-    def equations(self):
-        return [ac.Eq(self.v1, self.n * self.v2),
-                ac.Eq(self.i2, -self.n * self.i1)]
-
-
-class IdealOpAmp(ac.Component):
-    """Ideal operational amplifier as a nullor (Modelica IdealOpAmp3Pin):
-
-        in_p.v = in_n.v,   in_p.i = 0,   in_n.i = 0
-
-    The output current out.i is whatever the circuit demands (a norator); the output
-    voltage is set by the feedback network, which must exist for the model to be regular.
-    """
-
-    in_p = Pin()
-    in_n = Pin()
-    out = Pin()
-
-    energy_role = "source"  # the output stage is fed by a supply outside the model
+    def stored_energy(self):
+        """W = integral of i dPsi = Linf i^2/2 + (Lzer - Linf) Ipar (i atan(i/Ipar)
+        - Ipar ln(1 + (i/Ipar)^2)/2)."""
+        x = self.i / self.Ipar
+        return (self.Linf * self.i**2 / 2 + (self.Lzer - self.Linf) * self.Ipar**2
+                * (x * ac.atan(x) - ac.log(1 + x**2) / 2))
 
     def equations(self):
-        return [ac.Eq(self.in_p.v, self.in_n.v), ac.Eq(self.in_p.i, 0), ac.Eq(self.in_n.i, 0)]
+        self._check_order()
+        x = self.i / self.Ipar
+        # atan(x)/x -> 1 at x = 0 (the MSL's noEvent(abs(i)/Ipar < small))
+        ratio = ac.no_event(ac.if_else(x**2 < 1e-120, 1, ac.atan(x) / x))
+        return [ac.Eq((self.Lnom - self.Linf) / (self.Lzer - self.Linf),
+                      self.Ipar / self.Inom * (sp.pi / 2 - ac.atan(self.Ipar / self.Inom))),
+                ac.Eq(self.Lact, self.Linf + (self.Lzer - self.Linf) * ratio),
+                ac.Eq(self.Psi, self.Linf * self.i + (self.Lzer - self.Linf) * self.Ipar
+                      * ac.atan(x)),
+                ac.Eq(self.v, ac.der(self.Psi))]
 
-
-class _IdealSwitch(OnePort):
-    """A switch as a piecewise-linear one-port in the curve parameter s (MSL Ideal):
-
-        v = s (Ron if closed else 1),   i = s (1 if closed else Goff)
-
-    ``control`` is a signal; the switch changes state when it crosses 0.5 (an event).
-    """
-
-    Ron = ac.Parameter(1e-5, unit="Ohm", min=0, description="resistance when closed")
-    Goff = ac.Parameter(1e-5, unit="S", min=0, description="conductance when open")
-    control = RealInput()
-    s = ac.Variable(start=0.0, description="curve parameter (i when closed, v when open)")
-
-    def loss_power(self):
-        """P_loss = v i = s^2 Ron (closed), s^2 Goff (open)."""
-        return self.v * self.i
-
-    def closed(self):
-        raise NotImplementedError
-
-    def equations(self):
-        closed = self.closed()
-        return [ac.Eq(self.v, self.s * ac.if_else(closed, self.Ron, 1)),
-                ac.Eq(self.i, self.s * ac.if_else(closed, 1, self.Goff))]
-
-
-class IdealClosingSwitch(_IdealSwitch):
-    """Ideal switch, closed while control > 0.5."""
-
-    def closed(self):
-        return self.control.signal > 0.5
-
-
-class IdealOpeningSwitch(_IdealSwitch):
-    """Ideal switch, open while control > 0.5."""
-
-    def closed(self):
-        return self.control.signal <= 0.5
+    def _check_order(self):
+        """The MSL's asserts Lzer > Lnom (1 + eps) and Linf < Lnom (1 - eps), where the
+        values are numbers when the model is made."""
+        try:
+            Lzer, Lnom, Linf = (float(self.parameter_value(n)) for n in ("Lzer", "Lnom", "Linf"))
+        except TypeError:
+            return                       # bound to other parameters: not known here
+        eps = 2.220446049250313e-16
+        if not Lzer > Lnom * (1 + eps) or not Linf < Lnom * (1 - eps):
+            raise ac.InvalidValue(f"{self._describe()}: SaturatingInductor needs Lzer > Lnom > "
+                                  f"Linf, not Lzer = {Lzer:g}, Lnom = {Lnom:g}, Linf = {Linf:g}")

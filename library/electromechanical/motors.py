@@ -4,12 +4,11 @@ from acausal.ports import NegativePin, PositivePin, RealInput, RotationalFlange
 
 from ..electrical import Ground, Inductor, OnePort, Resistor, SignalCurrent
 from ..rotational import Inertia
-from ..support import SupportMixin
 
 __all__ = ["EMF", "DCMotor", "CurrentControlledDCMotor"]
 
 
-class EMF(SupportMixin, OnePort):
+class EMF(OnePort):
     """Ideal electromechanical converter (Egeland & Gravdahl 3.3.2, (3.27)-(3.28)):
 
         v = k w,   tau = k i,   so  v i = tau w  (power in = power out),
@@ -28,23 +27,22 @@ class EMF(SupportMixin, OnePort):
 
     energy_role = "lossless"  # v i = tau w
 
-    _supports = {"support": "useSupport"}
-
-    def __init__(self, *, useSupport=False, **modifications):
-        super().__init__(**modifications)
-        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+    useSupport = ac.Parameter(False, structural=True,
+                              description="use the support flange (the stator), else it is fixed")
+    support = ac.Conditional(RotationalFlange(), "useSupport")
 
     def equations(self):
-        eqs = [ac.Eq(self.w, ac.der(self.flange.phi - self.support_position("support", "phi"))),
+        phi_support = self.support.phi if self.useSupport else 0
+        eqs = [ac.Eq(self.w, ac.der(self.flange.phi - phi_support)),
                ac.Eq(self.v, self.k * self.w),
                ac.Eq(self.tau, self.k * self.i),
                ac.Eq(self.flange.tau, -self.tau)]
-        if self.supported("support"):
+        if self.useSupport:
             eqs.append(ac.Eq(self.support.tau, -self.flange.tau))
         return eqs
 
 
-class DCMotor(SupportMixin, ac.Component):
+class DCMotor(ac.Component):
     """DC motor with constant field (Egeland & Gravdahl (3.29)-(3.31)):
 
         L_a di_a/dt = u_a - R_a i_a - k w,    J dw/dt = k i_a - T_L
@@ -66,12 +64,12 @@ class DCMotor(SupportMixin, ac.Component):
     emf = EMF(k=ac.ref("k"))
     rotor = Inertia(J=ac.ref("J"))
 
-    _supports = {"support": "useSupport"}
+    useSupport = ac.Parameter(False, structural=True,
+                              description="use the support flange (the stator), else it is fixed")
+    support = ac.Conditional(RotationalFlange(), "useSupport")
 
-    def __init__(self, *, useSupport=False, **modifications):
-        super().__init__(**modifications)
-        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
-        if useSupport:          # the stator reaction goes through the EMF's support
+    def build(self):
+        if self.useSupport:     # the stator reaction goes through the EMF's support
             self.emf = EMF(k=ac.ref("k"), useSupport=True)
 
     def equations(self):
@@ -81,7 +79,7 @@ class DCMotor(SupportMixin, ac.Component):
                ac.connect(self.emf.n, self.n),
                ac.connect(self.emf.flange, self.rotor.flange_a),
                ac.connect(self.rotor.flange_b, self.flange)]
-        if self.supported("support"):
+        if self.useSupport:
             eqs.append(ac.connect(self.emf.support, self.support))
         return eqs
 
@@ -113,7 +111,7 @@ class CurrentControlledDCMotor(ac.Component):
 
     def equations(self):
         # the source's current flows from p to n inside it, i.e. into motor.n: reverse it
-        return [ac.connect(self.i_d, self.drive.i_ref),
+        return [ac.connect(self.i_d, self.drive.i),
                 ac.connect(self.drive.n, self.motor.p),
                 ac.connect(self.drive.p, self.motor.n, self.ground.p),
                 ac.connect(self.motor.flange, self.flange),

@@ -14,26 +14,36 @@ orientation (``RevolutePlanarLoopConstraint``, the MSL's joint for planar loops)
 frame_a of a joint must face the World; and a free body needs an explicit FreeMotion
 joint (the MSL's body states, made a component).
 
-There is no inner/outer either: the World's gravity field travels with R along the
-same tree (the frame's g_0 variables), so every body reads the one World's field.
+Bodies find the World as Modelica finds ``inner World world``: the nearest enclosing
+component that has a World among its sub-components (``interfaces.world_of``), and read
+its gravity field (uniform, point or user-defined) at their centre of mass.
 """
 from ... import _lazy_exports
 
-__all__ = ["World", "Body", "BodyShape", "BodyBox", "BodyCylinder", "FixedTranslation",
-           "FixedRotation", "Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
-           "RevolutePlanarLoopConstraint", "Spring", "Damper",
-           "SpringDamper", "WorldForce", "WorldTorque", "AbsolutePosition",
+__all__ = ["World", "Fixed", "Body", "BodyShape", "BodyBox", "BodyCylinder", "PointMass",
+           "FixedTranslation", "FixedRotation", "Revolute", "Prismatic", "Spherical",
+           "FreeMotion", "Universal", "RevolutePlanarLoopConstraint", "FreeMotionScalarInit",
+           "JointUPS", "Spring", "Damper",
+           "SpringDamperParallel", "LineForceWithMass", "LineForceWithTwoMasses",
+           "WorldForce", "WorldTorque", "ForceAndTorque", "AbsolutePosition",
            "AbsoluteVelocity", "AbsoluteAngularVelocity", "RelativePosition",
-           "CutForceAndTorque", "WhippleBicycle", "Wheelset", "WheelsetDAE"]
+           "CutForceAndTorque", "RollingWheel", "RollingWheelSet", "RollingWheelJoint",
+           "RollingWheelSetJoint", "Mounting1D", "WhippleBicycle", "Wheelset", "WheelsetDAE"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".parts": ("World", "Body", "BodyShape", "BodyBox", "BodyCylinder", "FixedTranslation",
+    ".world": ("World",),
+    ".parts": ("Fixed", "Body", "BodyShape", "PointMass", "FixedTranslation",
                "FixedRotation"),
+    ".shapes": ("BodyBox", "BodyCylinder"),
     ".joints": ("Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
-                "RevolutePlanarLoopConstraint"),
-    ".forces": ("Spring", "Damper", "SpringDamper", "WorldForce", "WorldTorque"),
+                "RevolutePlanarLoopConstraint", "FreeMotionScalarInit"),
+    ".assemblies": ("JointUPS",),
+    ".forces": ("Spring", "Damper", "SpringDamperParallel", "LineForceWithMass",
+                "LineForceWithTwoMasses", "WorldForce", "WorldTorque", "ForceAndTorque"),
     ".sensors": ("AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
                  "RelativePosition", "CutForceAndTorque"),
+    ".wheels": ("RollingWheel", "RollingWheelSet", "RollingWheelJoint",
+                "RollingWheelSetJoint", "Mounting1D"),
     ".bicycle": ("WhippleBicycle",),
     ".wheelset": ("Wheelset",),
     ".wheelset_dae": ("WheelsetDAE",),

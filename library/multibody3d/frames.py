@@ -30,11 +30,13 @@ non-orthogonal by as much, and the stabilization then fought the bodies' dynamic
 """
 from __future__ import annotations
 
+import numpy as np
 from acausal._sympy import sympy as sp
 
-__all__ = ["orientation", "position", "gravity", "force", "torque", "vector", "skew",
-           "planar_rotation", "from_Q", "quaternion_rates", "angular_velocity2",
-           "resolve1", "resolve2", "unit"]
+__all__ = ["orientation", "position", "force", "torque", "vector", "skew",
+           "planar_rotation", "axis_rotation", "axes_rotations", "from_nxy", "to_Q",
+           "from_Q", "quaternion_rates", "angular_velocity2", "angular_velocity1",
+           "resolve1", "resolve2", "resolve_dyade1", "unit"]
 
 
 def vector(*entries) -> sp.Matrix:
@@ -51,11 +53,6 @@ def orientation(frame) -> sp.Matrix:
 def position(frame) -> sp.Matrix:
     """r_0, the frame origin in world coordinates."""
     return vector(frame.x, frame.y, frame.z)
-
-
-def gravity(frame) -> sp.Matrix:
-    """g_0, the world's gravity acceleration carried by the frame (world coordinates)."""
-    return vector(frame.gx, frame.gy, frame.gz)
 
 
 def force(frame) -> sp.Matrix:
@@ -86,6 +83,65 @@ def planar_rotation(e, phi) -> sp.Matrix:
     e = sp.Matrix(e)
     eet = e * e.T
     return eet + (sp.eye(3) - eet) * sp.cos(phi) - skew(e) * sp.sin(phi)
+
+
+def axis_rotation(axis: int, angle) -> sp.Matrix:
+    """R_rel of a rotation by angle about the frame's axis 1, 2 or 3 (MSL
+    Frames.TransformationMatrices.axisRotation)."""
+    c, s = sp.cos(angle), sp.sin(angle)
+    if axis == 1:
+        return sp.Matrix([[1, 0, 0], [0, c, s], [0, -s, c]])
+    if axis == 2:
+        return sp.Matrix([[c, 0, -s], [0, 1, 0], [s, 0, c]])
+    return sp.Matrix([[c, s, 0], [-s, c, 0], [0, 0, 1]])
+
+
+def axes_rotations(sequence, angles) -> sp.Matrix:
+    """R_rel of three rotations in turn, about the axes ``sequence`` (e.g. (1, 2, 3)) of
+    the frame turned so far by ``angles`` (MSL Frames.axesRotations):
+    R = R_seq3(angles_3) R_seq2(angles_2) R_seq1(angles_1)."""
+    R = sp.eye(3)
+    for axis, angle in zip(sequence, angles):
+        R = axis_rotation(axis, angle) * R
+    return R
+
+
+def from_nxy(n_x, n_y) -> np.ndarray:
+    """The orientation (numbers) of a frame whose x axis is along n_x and whose x-y plane
+    holds n_y (MSL Frames.TransformationMatrices.from_nxy, with its fallbacks for a
+    zero or a parallel n_y)."""
+    n_x, n_y = np.asarray(n_x, dtype=float), np.asarray(n_y, dtype=float)
+    e_x = n_x / np.linalg.norm(n_x) if np.linalg.norm(n_x) >= 1e-10 else np.eye(3)[0]
+    e_y = n_y / np.linalg.norm(n_y) if np.linalg.norm(n_y) >= 1e-10 else np.eye(3)[1]
+    n_z = np.cross(e_x, e_y)
+    if n_z @ n_z <= 1e-6:
+        e_y = np.eye(3)[1] if abs(e_x[0]) > 1e-6 else np.eye(3)[0]
+    e_z = np.cross(e_x, e_y)
+    e_z /= np.linalg.norm(e_z)
+    return np.array([e_x, np.cross(e_z, e_x), e_z])
+
+
+def to_Q(T) -> np.ndarray:
+    """Euler parameters (numbers) of the orientation matrix T (MSL
+    Frames.TransformationMatrices.to_Q, the largest of the four candidates first, so
+    that no division is by a small number; the scalar part is made >= 0)."""
+    T = np.asarray(T, dtype=float)
+    trace = np.trace(T)
+    paux = max(trace, T[0, 0], T[1, 1], T[2, 2])
+    if paux == trace:
+        q4 = np.sqrt(1.0 + trace) / 2
+        Q = np.array([(T[1, 2] - T[2, 1]) / (4 * q4), (T[2, 0] - T[0, 2]) / (4 * q4),
+                      (T[0, 1] - T[1, 0]) / (4 * q4), q4])
+    else:
+        k = int(np.argmax(np.diag(T)))
+        i, j = (k + 1) % 3, (k + 2) % 3
+        qk = np.sqrt(1.0 + 2 * T[k, k] - trace) / 2
+        Q = np.empty(4)
+        Q[k] = qk
+        Q[i] = (T[k, i] + T[i, k]) / (4 * qk)
+        Q[j] = (T[k, j] + T[j, k]) / (4 * qk)
+        Q[3] = (T[i, j] - T[j, i]) / (4 * qk)
+    return Q if Q[3] >= 0 else -Q
 
 
 def from_Q(Q, Q_2=None) -> sp.Matrix:
@@ -119,6 +175,11 @@ def angular_velocity2(R, Rdot) -> sp.Matrix:
     return vector(W[2, 1], W[0, 2], W[1, 0])
 
 
+def angular_velocity1(R, Rdot) -> sp.Matrix:
+    """w resolved in the parent (world): R^T angular_velocity2."""
+    return R.T * angular_velocity2(R, Rdot)
+
+
 def resolve1(R, v) -> sp.Matrix:
     """R^T v: a vector in frame coordinates, in the parent (world) coordinates."""
     return R.T * sp.Matrix(v)
@@ -127,3 +188,9 @@ def resolve1(R, v) -> sp.Matrix:
 def resolve2(R, v) -> sp.Matrix:
     """R v: a vector in parent (world) coordinates, in frame coordinates."""
     return R * sp.Matrix(v)
+
+
+def resolve_dyade1(R, D) -> sp.Matrix:
+    """R^T D R: a tensor given in the frame, in the parent's coordinates (MSL
+    Frames.TransformationMatrices.resolveDyade1)."""
+    return R.T * sp.Matrix(D) * R

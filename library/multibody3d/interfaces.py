@@ -1,9 +1,13 @@
 """Partial models of spatial multibody mechanics (Modelica.Mechanics.MultiBody.Interfaces).
 
-Which component writes a frame's orientation R and gravity g_0 (the overdetermined
-part of the connector, ``acausal.ports.spatial``): the World, and every joint and rigid
-part for its frame_b from its frame_a (``propagate``).  Bodies, force elements and
-sensors only read them.
+Which component writes a frame's orientation R (the overdetermined part of the
+connector, ``acausal.ports.spatial``): the World, and every joint and rigid part for its
+frame_b from its frame_a (``propagate``).  Bodies, force elements and sensors only read
+it.
+
+The World is found as Modelica finds an ``inner`` declaration (``world_of``): the
+nearest enclosing component that has a World among its sub-components.  Bodies read the
+gravity field there (``World.gravityAcceleration``), at their own centre of mass.
 """
 from __future__ import annotations
 
@@ -12,10 +16,10 @@ from acausal._sympy import sympy as sp
 import acausal as ac
 from acausal.ports.spatial import Frame
 
-from .frames import gravity, orientation, unit
+from .frames import orientation, unit
 
 __all__ = ["PartialOneFrame_a", "PartialTwoFrames", "PartialRigidTwoFrames", "propagate",
-           "equal", "direction"]
+           "equal", "direction", "world_of", "vector_of"]
 
 
 def equal(lhs, rhs) -> list:
@@ -48,12 +52,34 @@ def direction(component, prefix: str = "n") -> sp.Matrix:
     return unit([getattr(component, n) for n in names])
 
 
+def vector_of(component, prefix: str) -> sp.Matrix:
+    """The 3-vector of the component's scalar parameters ``<prefix>_1..3`` (the MSL's
+    ``r_CM[1..3]``), as symbols."""
+    return sp.Matrix([getattr(component, f"{prefix}_{k}") for k in (1, 2, 3)])
+
+
 def propagate(frame_a, frame_b, R_rel=None) -> list:
     """The branch of the spanning tree from frame_a to frame_b (MSL Connections.branch
-    written in one direction): R_b = R_rel R_a and g_0 passed on unchanged."""
+    written in one direction): R_b = R_rel R_a."""
     R_a = orientation(frame_a)
     R_b = R_a if R_rel is None else R_rel * R_a
-    return [*equal(orientation(frame_b), R_b), *equal(gravity(frame_b), gravity(frame_a))]
+    return equal(orientation(frame_b), R_b)
+
+
+def world_of(component):
+    """The World that ``component`` sees (MSL ``outer World world``): the first World
+    among the sub-components of its enclosing components, the nearest first.
+    ``NotInModel`` if there is none."""
+    from .world import World
+    node = component._parent
+    while node is not None:
+        for child in node.children().values():
+            if isinstance(child, World):
+                return child
+        node = node._parent
+    raise ac.NotInModel(f"{component._describe()} needs the gravity field of a World, and "
+                        "no enclosing component has a World among its sub-components (the "
+                        "MSL's 'inner World world'): add one, world = World()")
 
 
 class PartialOneFrame_a(ac.Component):

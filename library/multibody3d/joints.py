@@ -25,14 +25,14 @@ import numpy as np
 from acausal._sympy import sympy as sp
 
 import acausal as ac
-from acausal.ports import RotationalFlange, TranslationalFlange
+from acausal.ports import RealOutput, RotationalFlange, TranslationalFlange
 
-from .frames import (force, from_Q, orientation, planar_rotation, position, quaternion_rates,
-                     resolve1, torque, vector)
+from .frames import (axes_rotations, force, from_Q, orientation, planar_rotation, position,
+                     quaternion_rates, resolve1, to_Q, torque)
 from .interfaces import PartialRigidTwoFrames, PartialTwoFrames, direction, equal, propagate
 
 __all__ = ["Revolute", "Prismatic", "Spherical", "FreeMotion", "Universal",
-           "RevolutePlanarLoopConstraint"]
+           "RevolutePlanarLoopConstraint", "FreeMotionScalarInit"]
 
 
 def _axis(c):
@@ -41,27 +41,32 @@ def _axis(c):
 
 class Revolute(PartialRigidTwoFrames):
     """Revolute joint: frame_b turned by phi about the axis n fixed in frame_a, both
-    origins coincide (MSL MultiBody.Joints.Revolute, useAxisFlange, without support):
+    origins coincide (MSL MultiBody.Joints.Revolute):
 
         r_0,b = r_0,a,   R_b = R_rel R_a,   R_rel = planarRotation(e, phi),   e = n/|n|
         w = der(phi),   a = der(w),
-        f_a = -R_rel^T f_b,   t_a = -R_rel^T t_b,   flange.tau = -e . t_b,   flange.phi = phi
+        f_a = -R_rel^T f_b,   t_a = -R_rel^T t_b,   tau = -e . t_b,
+        axis.phi = phi,   axis.tau = tau,   support.phi = 0
 
-    A torque driving the flange turns frame_b in +phi; its reaction acts on frame_a
-    (there is no separate support flange).  An unconnected flange leaves the joint free.
+    ``axis`` drives the joint (a torque on it turns frame_b in +phi) and ``support`` is
+    its housing, fixed in the world as in the MSL (a Damper between axis and support
+    damps the joint).  Left unconnected, axis and support carry no torque (the MSL's
+    useAxisFlange = false) and the joint is free.
     """
 
     n_1 = ac.Parameter(0.0, description="axis of rotation in frame_a, x")
     n_2 = ac.Parameter(0.0, description="axis of rotation in frame_a, y")
     n_3 = ac.Parameter(1.0, description="axis of rotation in frame_a, z")
-    flange = RotationalFlange()
+    axis = RotationalFlange()
+    support = RotationalFlange()
     phi = ac.Variable(start=0.0, unit="rad", state_select="prefer",
                       description="rotation angle of frame_b relative to frame_a")
     w = ac.Variable(start=0.0, unit="rad/s", state_select="prefer",
                     description="relative angular velocity")
     a = ac.Variable(unit="rad/s2", description="relative angular acceleration")
+    tau = ac.Variable(unit="N.m", description="driving torque in the direction of the axis")
 
-    energy_role = "lossless"  # an ideal joint: the flange takes what the frames give
+    energy_role = "lossless"  # an ideal joint: the axis takes what the frames give
 
     def equations(self):
         a, b = self.frame_a, self.frame_b
@@ -73,81 +78,113 @@ class Revolute(PartialRigidTwoFrames):
                 ac.Eq(self.a, ac.der(self.w)),
                 *equal(force(a), -resolve1(R_rel, force(b))),
                 *equal(torque(a), -resolve1(R_rel, torque(b))),
-                ac.Eq(self.flange.tau, -e.dot(torque(b))),
-                ac.Eq(self.flange.phi, self.phi)]
+                ac.Eq(self.tau, -e.dot(torque(b))),
+                ac.Eq(self.axis.tau, self.tau),
+                ac.Eq(self.axis.phi, self.phi),
+                ac.Eq(self.support.phi, 0)]
 
 
 class Prismatic(PartialRigidTwoFrames):
     """Prismatic joint: frame_b shifted by s along the axis n fixed in frame_a, same
-    orientation (MSL MultiBody.Joints.Prismatic, useAxisFlange, without support):
+    orientation (MSL MultiBody.Joints.Prismatic):
 
         r_0,b = r_0,a + R_a^T (e s),   R_b = R_a,   v = der(s),   a = der(v),
-        f_a = -f_b,   t_a = -t_b - (e s) x f_b,   flange.f = -e . f_b,   flange.s = s
+        f_a = -f_b,   t_a = -t_b - (e s) x f_b,   f = -e . f_b,
+        axis.s = s,   axis.f = f,   support.s = 0
+
+    ``axis`` drives the joint (a force on it pushes frame_b along +e), ``support`` is
+    its housing, fixed in the world as in the MSL.
     """
 
     n_1 = ac.Parameter(1.0, description="axis of translation in frame_a, x")
     n_2 = ac.Parameter(0.0, description="axis of translation in frame_a, y")
     n_3 = ac.Parameter(0.0, description="axis of translation in frame_a, z")
-    flange = TranslationalFlange()
+    axis = TranslationalFlange()
+    support = TranslationalFlange()
     s = ac.Variable(start=0.0, unit="m", state_select="prefer",
                     description="translation of frame_b relative to frame_a along n")
     v = ac.Variable(start=0.0, unit="m/s", state_select="prefer",
                     description="relative velocity along n")
     a = ac.Variable(unit="m/s2", description="relative acceleration along n")
+    f = ac.Variable(unit="N", description="driving force in the direction of the axis")
 
-    energy_role = "lossless"  # an ideal joint: the flange takes what the frames give
+    energy_role = "lossless"  # an ideal joint: the axis takes what the frames give
 
     def equations(self):
         a, b = self.frame_a, self.frame_b
-        r = _axis(self) * self.s
+        e = _axis(self)
+        r = e * self.s
         return [*equal(position(b), position(a) + resolve1(orientation(a), r)),
                 *propagate(a, b),
                 ac.Eq(self.v, ac.der(self.s)),
                 ac.Eq(self.a, ac.der(self.v)),
                 *equal(force(a), -force(b)),
                 *equal(torque(a), -torque(b) - r.cross(force(b))),
-                ac.Eq(self.flange.f, -_axis(self).dot(force(b))),
-                ac.Eq(self.flange.s, self.s)]
+                ac.Eq(self.f, -e.dot(force(b))),
+                ac.Eq(self.axis.f, self.f),
+                ac.Eq(self.axis.s, self.s),
+                ac.Eq(self.support.s, 0)]
+
+
+def _starts(angles_start, sequence_start, angles_fixed, modifications, where):
+    """The modifications with Q's start values from the Cardan angles (and fixed where
+    angles_fixed) merged under the user's own modification of Q."""
+    angles = np.asarray(angles_start, dtype=float)
+    if angles.shape != (3,) or not np.all(np.isfinite(angles)):
+        raise ac.InvalidValue(f"{where}: angles_start = {angles_start!r} is not three "
+                              "finite angles")
+    if sorted(set(sequence_start)) != sorted(sequence_start) or \
+            not set(sequence_start) <= {1, 2, 3} or len(sequence_start) != 3:
+        raise ac.InvalidValue(f"{where}: sequence_start = {sequence_start!r} is not a "
+                              "sequence of three different axes among 1, 2, 3")
+    T = np.array(axes_rotations(sequence_start, angles).evalf(), dtype=float)
+    Q = {"start": to_Q(T).tolist()}
+    if angles_fixed:
+        Q["fixed"] = [True, True, True, False]
+    own = modifications.get("Q", {})
+    if not isinstance(own, dict):
+        own = {"start": own}
+    return {**modifications, "Q": {**Q, **own}}
 
 
 class _QuaternionJoint(PartialRigidTwoFrames):
-    """The relative orientation R_rel = R(Q) with Euler-parameter states and the relative
-    angular velocity w_rel (resolved in frame_b) as states (module docstring)."""
+    """The relative orientation R_rel = R(Q) with the Euler parameters Q and the
+    relative angular velocity (resolved in frame_b) as states (module docstring).
+
+    ``angles_start`` (three angles in rad about the axes ``sequence_start`` of frame_a,
+    the MSL's Cardan angles, default (1, 2, 3)) gives Q's start values; with
+    ``angles_fixed=True`` they are the initial orientation: Q[0..2] fixed and Q[3] from
+    the normalization Q^T Q = 1 at the start (``Q_2``, fixed at 1).  Both are given
+    when the joint is made.
+    """
 
     lam = ac.Parameter(100.0, unit="1/s", min=0,
                        description="gain lambda of the quaternion normalization (E&G 6.336)")
-    Q1 = ac.Variable(start=0.0, state_select="prefer", description="Euler parameter n_1 sin(phi/2)")
-    Q2 = ac.Variable(start=0.0, state_select="prefer", description="Euler parameter n_2 sin(phi/2)")
-    Q3 = ac.Variable(start=0.0, state_select="prefer", description="Euler parameter n_3 sin(phi/2)")
-    Q4 = ac.Variable(start=1.0, state_select="prefer", description="Euler parameter cos(phi/2)")
-    Q_2 = ac.Variable(start=1.0, state_select="avoid",
-                      description="Q^T Q (1 up to the drift the normalization removes)")
-    w_x = ac.Variable(start=0.0, unit="rad/s", state_select="prefer",
-                      description="relative angular velocity, frame_b x")
-    w_y = ac.Variable(start=0.0, unit="rad/s", state_select="prefer",
-                      description="relative angular velocity, frame_b y")
-    w_z = ac.Variable(start=0.0, unit="rad/s", state_select="prefer",
-                      description="relative angular velocity, frame_b z")
-    z_x = ac.Variable(unit="rad/s2", description="relative angular acceleration, frame_b x")
-    z_y = ac.Variable(unit="rad/s2", description="relative angular acceleration, frame_b y")
-    z_z = ac.Variable(unit="rad/s2", description="relative angular acceleration, frame_b z")
+    Q = ac.Variable(shape=4, start=[0.0, 0.0, 0.0, 1.0], state_select="prefer",
+                    description="Euler parameters (n sin(phi/2), cos(phi/2)) of R_rel")
+    Q_2 = ac.Variable(start=1.0, fixed=True, state_select="avoid",
+                      description="Q^T Q (1 at the start; the normalization keeps it so)")
 
-    energy_role = "lossless"  # transmits no torque, or nothing at all
-
-    def quaternion(self):
-        return [self.Q1, self.Q2, self.Q3, self.Q4]
+    def __init__(self, *, angles_start=(0.0, 0.0, 0.0), sequence_start=(1, 2, 3),
+                 angles_fixed: bool = False, **modifications):
+        if not isinstance(angles_fixed, bool):
+            raise ac.InvalidValue(f"{type(self).__name__}: angles_fixed = {angles_fixed!r} "
+                                  "must be True or False")
+        modifications = _starts(angles_start, tuple(sequence_start), angles_fixed,
+                                modifications, type(self).__name__)
+        super().__init__(**modifications)
 
     def relative_orientation(self) -> sp.Matrix:
         """R_rel = R(Q), its division by Q^T Q through the variable Q_2."""
-        return from_Q(self.quaternion(), self.Q_2)
+        return from_Q(list(self.Q), self.Q_2)
 
-    def rotation_equations(self) -> list:
-        Q = self.quaternion()
-        w = vector(self.w_x, self.w_y, self.w_z)
-        return [ac.Eq(self.Q_2, sum(q**2 for q in Q)),
+    def rotation_equations(self, w, z) -> list:
+        Q = sp.Matrix(list(self.Q))
+        w, z = sp.Matrix(w), sp.Matrix(z)
+        return [ac.Eq(self.Q_2, Q.dot(Q)),
                 *propagate(self.frame_a, self.frame_b, self.relative_orientation()),
-                *equal(sp.Matrix(Q).applyfunc(ac.der), quaternion_rates(Q, w, self.lam)),
-                *equal(vector(self.z_x, self.z_y, self.z_z), w.applyfunc(ac.der))]
+                *equal(Q.applyfunc(ac.der), quaternion_rates(Q, w, self.lam)),
+                *equal(z, w.applyfunc(ac.der))]
 
 
 class Spherical(_QuaternionJoint):
@@ -156,55 +193,59 @@ class Spherical(_QuaternionJoint):
     relative quaternion and angular velocity the states):
 
         r_0,b = r_0,a,   R_b = R(Q) R_a,   der(Q) = 1/2 G(Q)^T w_rel + lam/2 (1 - Q^T Q) Q,
-        t_b = 0,   t_a = 0,   f_a = -R(Q)^T f_b
+        z_rel = der(w_rel),   t_b = 0,   t_a = 0,   f_a = -R(Q)^T f_b
     """
+
+    w_rel = ac.Variable(shape=3, start=0.0, unit="rad/s", state_select="prefer",
+                        description="angular velocity of frame_b relative to frame_a, "
+                                    "resolved in frame_b")
+    z_rel = ac.Variable(shape=3, unit="rad/s2", description="der(w_rel)")
+
+    energy_role = "lossless"  # transmits no torque
 
     def equations(self):
         a, b = self.frame_a, self.frame_b
+        zero = sp.zeros(3, 1)
         return [*equal(position(b), position(a)),
-                *self.rotation_equations(),
-                *equal(torque(b), sp.zeros(3, 1)),
-                *equal(torque(a), sp.zeros(3, 1)),
+                *self.rotation_equations(self.w_rel, self.z_rel),
+                *equal(torque(b), zero),
+                *equal(torque(a), zero),
                 *equal(force(a), -resolve1(self.relative_orientation(), force(b)))]
 
 
 class FreeMotion(_QuaternionJoint):
     """Free motion of frame_b relative to frame_a: six degrees of freedom, nothing
-    transmitted (MSL MultiBody.Joints.FreeMotion with Euler-parameter states).  Put it
-    between the World and a body to let the body fly:
+    transmitted (MSL MultiBody.Joints.FreeMotion with quaternion states).  Put it
+    between the World and a body to let the body fly (the MSL's free body, whose states
+    the MSL's Body holds itself):
 
-        r_0,b = r_0,a + R_a^T r_rel,   v_rel = der(r_rel),   a_rel = der(v_rel),
-        R_b = R(Q) R_a,   der(Q) = 1/2 G(Q)^T w_rel + lam/2 (1 - Q^T Q) Q,
-        f_a = f_b = 0,   t_a = t_b = 0
+        r_0,b = r_0,a + R_a^T r_rel_a,   v_rel_a = der(r_rel_a),   a_rel_a = der(v_rel_a),
+        R_b = R(Q) R_a,   der(Q) = 1/2 G(Q)^T w_rel_b + lam/2 (1 - Q^T Q) Q,
+        z_rel_b = der(w_rel_b),   f_a = f_b = 0,   t_a = t_b = 0
 
-    r_rel, v_rel, a_rel are resolved in frame_a.
+    r_rel_a, v_rel_a, a_rel_a are resolved in frame_a, w_rel_b and z_rel_b in frame_b.
     """
 
-    r_x = ac.Variable(start=0.0, unit="m", state_select="prefer",
-                      description="position of frame_b from frame_a, frame_a x")
-    r_y = ac.Variable(start=0.0, unit="m", state_select="prefer",
-                      description="position of frame_b from frame_a, frame_a y")
-    r_z = ac.Variable(start=0.0, unit="m", state_select="prefer",
-                      description="position of frame_b from frame_a, frame_a z")
-    v_x = ac.Variable(start=0.0, unit="m/s", state_select="prefer",
-                      description="relative velocity, frame_a x")
-    v_y = ac.Variable(start=0.0, unit="m/s", state_select="prefer",
-                      description="relative velocity, frame_a y")
-    v_z = ac.Variable(start=0.0, unit="m/s", state_select="prefer",
-                      description="relative velocity, frame_a z")
-    a_x = ac.Variable(unit="m/s2", description="relative acceleration, frame_a x")
-    a_y = ac.Variable(unit="m/s2", description="relative acceleration, frame_a y")
-    a_z = ac.Variable(unit="m/s2", description="relative acceleration, frame_a z")
+    r_rel_a = ac.Variable(shape=3, start=0.0, unit="m", state_select="prefer",
+                          description="frame_b's origin from frame_a's, resolved in frame_a")
+    v_rel_a = ac.Variable(shape=3, start=0.0, unit="m/s", state_select="prefer",
+                          description="der(r_rel_a)")
+    a_rel_a = ac.Variable(shape=3, unit="m/s2", description="der(v_rel_a)")
+    w_rel_b = ac.Variable(shape=3, start=0.0, unit="rad/s", state_select="prefer",
+                          description="angular velocity of frame_b relative to frame_a, "
+                                      "resolved in frame_b")
+    z_rel_b = ac.Variable(shape=3, unit="rad/s2", description="der(w_rel_b)")
+
+    energy_role = "lossless"  # transmits nothing
 
     def equations(self):
         a, b = self.frame_a, self.frame_b
-        r = vector(self.r_x, self.r_y, self.r_z)
-        v = vector(self.v_x, self.v_y, self.v_z)
+        r, v = sp.Matrix(self.r_rel_a), sp.Matrix(self.v_rel_a)
         zero = sp.zeros(3, 1)
         return [*equal(position(b), position(a) + resolve1(orientation(a), r)),
                 *equal(v, r.applyfunc(ac.der)),
-                *equal(vector(self.a_x, self.a_y, self.a_z), v.applyfunc(ac.der)),
-                *self.rotation_equations(),
+                *equal(sp.Matrix(self.a_rel_a), v.applyfunc(ac.der)),
+                *self.rotation_equations(self.w_rel_b, self.z_rel_b),
                 *equal(force(b), zero), *equal(torque(b), zero),
                 *equal(force(a), zero), *equal(torque(a), zero)]
 
@@ -278,3 +319,56 @@ class RevolutePlanarLoopConstraint(PartialTwoFrames):
                 *equal(force(a), f_a),
                 *equal(force(b), -R_b * (R_a.T * f_a)),
                 *equal(torque(a), zero), *equal(torque(b), zero)]
+
+
+class FreeMotionScalarInit(PartialTwoFrames):
+    """Free motion of frame_b relative to frame_a with scalar outputs that serve to
+    initialize it (MSL MultiBody.Joints.FreeMotionScalarInit, its position, velocity and
+    acceleration outputs): it sets nothing and transmits nothing,
+
+        r_rel_a = R_a (r_0,b - r_0,a),   v_rel_a = der(r_rel_a),   a_rel_a = der(v_rel_a),
+        f_a = f_b = 0,   t_a = t_b = 0
+
+    the elements given as outputs ``r_rel_a_1`` .. ``_3`` with ``use_r=True``, ``v_rel_a_1``
+    .. with ``use_v=True`` as well, ``a_rel_a_1`` .. with ``use_a=True`` as well (given
+    when it is made).  Fix their start values to put a mechanism's point where it
+    belongs at the start: ``FreeMotionScalarInit(use_r=True, r_rel_a_1={"signal":
+    {"start": 0.7, "fixed": True}})``.  The MSL's angle and angular-velocity outputs
+    (use_angle, use_w) are not there.
+    """
+
+    energy_role = "lossless"  # transmits nothing
+
+    def __init__(self, *, use_r: bool = False, use_v: bool = False, use_a: bool = False,
+                 **modifications):
+        for name, value in (("use_r", use_r), ("use_v", use_v), ("use_a", use_a)):
+            if not isinstance(value, bool):
+                raise ac.InvalidValue(f"FreeMotionScalarInit: {name} = {value!r} must be "
+                                      "True or False")
+        self.use_r, self.use_v, self.use_a = use_r, use_r and use_v, use_r and use_v and use_a
+        super().__init__(**modifications)
+
+    def build(self):
+        for use, name in ((self.use_r, "r_rel_a"), (self.use_v, "v_rel_a"),
+                          (self.use_a, "a_rel_a")):
+            if use:
+                for k in (1, 2, 3):
+                    setattr(self, f"{name}_{k}", RealOutput())
+
+    def _outputs(self, name):
+        return sp.Matrix([getattr(self, f"{name}_{k}").signal for k in (1, 2, 3)])
+
+    def equations(self):
+        a, b = self.frame_a, self.frame_b
+        zero = sp.zeros(3, 1)
+        eqs = [*equal(force(a), zero), *equal(torque(a), zero),
+               *equal(force(b), zero), *equal(torque(b), zero)]
+        if self.use_r:
+            r = self._outputs("r_rel_a")
+            eqs += equal(r, orientation(a) * (position(b) - position(a)))
+        if self.use_v:
+            v = self._outputs("v_rel_a")
+            eqs += equal(v, r.applyfunc(ac.der))
+        if self.use_a:
+            eqs += equal(self._outputs("a_rel_a"), v.applyfunc(ac.der))
+        return eqs

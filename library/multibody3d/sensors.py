@@ -8,8 +8,7 @@ import acausal as ac
 from acausal.ports import RealOutput
 from acausal.ports.spatial import Frame
 
-from .frames import (angular_velocity2, force, orientation, position, resolve2, torque,
-                     vector)
+from .frames import angular_velocity2, force, orientation, position, resolve2, torque
 from .interfaces import PartialRigidTwoFrames, PartialTwoFrames, equal, propagate
 
 __all__ = ["AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
@@ -25,15 +24,20 @@ class _AbsoluteSensor(ac.Component):
         return [*equal(force(self.frame_a), zero), *equal(torque(self.frame_a), zero)]
 
 
-def _outputs(c, prefix):
-    return vector(*(getattr(c, f"{prefix}_{k}").signal for k in "xyz"))
+def _outputs(c, name):
+    return sp.Matrix([p.signal for p in getattr(c, name)])
+
+
+def _three():
+    return [RealOutput() for _ in range(3)]
 
 
 class AbsolutePosition(_AbsoluteSensor):
     """r = r_0 of frame_a, in world coordinates (MSL Sensors.AbsolutePosition,
-    resolveInFrame = world)."""
+    resolveInFrame = world); outputs r[0..2]."""
 
-    r_x, r_y, r_z = RealOutput(), RealOutput(), RealOutput()
+    def build(self):
+        self.r = _three()
 
     def equations(self):
         return [*self._free(), *equal(_outputs(self, "r"), position(self.frame_a))]
@@ -41,9 +45,10 @@ class AbsolutePosition(_AbsoluteSensor):
 
 class AbsoluteVelocity(_AbsoluteSensor):
     """v = der(r_0) of frame_a, in world coordinates (MSL Sensors.AbsoluteVelocity,
-    resolveInFrame = world)."""
+    resolveInFrame = world); outputs v[0..2]."""
 
-    v_x, v_y, v_z = RealOutput(), RealOutput(), RealOutput()
+    def build(self):
+        self.v = _three()
 
     def equations(self):
         return [*self._free(),
@@ -52,9 +57,10 @@ class AbsoluteVelocity(_AbsoluteSensor):
 
 class AbsoluteAngularVelocity(_AbsoluteSensor):
     """w of frame_a, resolved in frame_a (MSL Sensors.AbsoluteAngularVelocity,
-    resolveInFrame = frame_a): skew(w) = -der(R) R^T."""
+    resolveInFrame = frame_a): skew(w) = -der(R) R^T; outputs w[0..2]."""
 
-    w_x, w_y, w_z = RealOutput(), RealOutput(), RealOutput()
+    def build(self):
+        self.w = _three()
 
     def equations(self):
         R = orientation(self.frame_a)
@@ -64,17 +70,20 @@ class AbsoluteAngularVelocity(_AbsoluteSensor):
 
 class RelativePosition(PartialTwoFrames):
     """r_rel = R_a (r_0,b - r_0,a): frame_b's origin from frame_a's, resolved in
-    frame_a (MSL Sensors.RelativePosition, resolveInFrame = frame_a).  Takes no force."""
+    frame_a (MSL Sensors.RelativePosition, resolveInFrame = frame_a); outputs
+    r_rel[0..2].  Takes no force."""
 
-    r_x, r_y, r_z = RealOutput(), RealOutput(), RealOutput()
     energy_role = "lossless"
+
+    def build(self):
+        self.r_rel = _three()
 
     def equations(self):
         a, b = self.frame_a, self.frame_b
         zero = sp.zeros(3, 1)
         return [*equal(force(a), zero), *equal(torque(a), zero),
                 *equal(force(b), zero), *equal(torque(b), zero),
-                *equal(_outputs(self, "r"),
+                *equal(_outputs(self, "r_rel"),
                        resolve2(orientation(a), position(b) - position(a)))]
 
 
@@ -85,11 +94,14 @@ class CutForceAndTorque(PartialRigidTwoFrames):
 
         r_0,b = r_0,a,   R_b = R_a,   f_a + f_b = 0,   t_a + t_b = 0,
         force = f_a,   torque = t_a
+
+    Outputs force[0..2] and torque[0..2].
     """
 
-    force_x, force_y, force_z = RealOutput(), RealOutput(), RealOutput()
-    torque_x, torque_y, torque_z = RealOutput(), RealOutput(), RealOutput()
     energy_role = "lossless"
+
+    def build(self):
+        self.force, self.torque = _three(), _three()
 
     def equations(self):
         a, b = self.frame_a, self.frame_b

@@ -10,34 +10,41 @@ fn = fn_max f_normalized (f_normalized in [0, 1], an input signal) and rubs with
 ``cgeo`` [m] turns the normal force into a torque (N (r_o + r_i)/2 for N friction
 interfaces between radii r_i and r_o, uniform wear).  The modes, their events and the
 way the stuck torque is found are those of
-:class:`acausal.library.rotational.friction_modes.PartialFriction`.
+:class:`acausal.library.friction.modes.FrictionModes` (through
+:class:`acausal.library.rotational.friction_modes.PartialFriction`).
 """
 from acausal._sympy import sympy as sp
 
 import acausal as ac
-from acausal.ports import RealInput
+from acausal.ports import BooleanInput, RealInput
 
-from .friction_modes import PartialFriction, _table_at_zero, _table_value, friction_table
-from .interfaces import PartialTwoFlanges
+from .friction_modes import PartialFriction, friction_table, table_at_zero, table_value
+from .interfaces import PartialElementaryTwoFlangesAndSupport, PartialTwoFlanges
 
 __all__ = ["Clutch", "Brake", "OneWayClutch", "BearingFriction"]
 
 
 class _PressedFriction(PartialFriction, PartialTwoFlanges):
     """The parameters of a friction element pressed by a normal force, the force
-    fn = fn_max f_normalized and the sliding law cgeo fn mu(w)."""
+    fn = fn_max f_normalized and the sliding law cgeo fn mu(w).  With
+    ``booleanControl=True`` a ``BooleanInput`` ``engaged`` replaces the Real input
+    ``f_normalized``: fn = fn_max while it is true, 0 while it is false."""
 
     peak = ac.Parameter(1.0, min=1, description="stiction: most held torque / tau0")
     cgeo = ac.Parameter(1.0, unit="m", min=0,
                         description="geometry constant, torque per normal force")
     fn_max = ac.Parameter(1.0, unit="N", min=0, description="maximum normal force (> 0)")
     fn = ac.Variable(unit="N", description="normal force fn_max f_normalized")
-    f_normalized = RealInput()
+    booleanControl = ac.Parameter(False, structural=True,
+                                  description="engaged by a BooleanInput (else by the Real "
+                                              "f_normalized)")
+    f_normalized = ac.Conditional(RealInput(), "booleanControl", when=False)
+    engaged = ac.Conditional(BooleanInput(), "booleanControl")
 
     def __init__(self, mu_pos=((0.0, 0.5),), **mods):
         super().__init__(**mods)
         self.mu_pos = friction_table(mu_pos, type(self).__name__)
-        self.mu0 = _table_at_zero(self.mu_pos)
+        self.mu0 = table_at_zero(self.mu_pos)
 
     def free(self):
         return self.fn <= 0
@@ -49,10 +56,12 @@ class _PressedFriction(PartialFriction, PartialTwoFlanges):
         return self.peak * self.tau0()
 
     def sliding_torque(self, w):
-        return self.cgeo * self.fn * _table_value(self.mu_pos, w)
+        return self.cgeo * self.fn * table_value(self.mu_pos, w / self.unit_w)
 
     def equations(self):
         _check_positive(self, "fn_max")
+        if self.booleanControl:
+            return [ac.Eq(self.fn, ac.if_else(self.engaged, self.fn_max, 0))]
         return [ac.Eq(self.fn, self.fn_max * self.f_normalized)]
 
 
@@ -124,16 +133,18 @@ class OneWayClutch(Clutch):
         return ac.max(self.peak * self.tau0(), floor)
 
 
-class _ShaftOnHousing(PartialTwoFlanges):
-    """A shaft through the element (flange_a = flange_b) rubbing on the housing:
+class _ShaftOnHousing(PartialElementaryTwoFlangesAndSupport):
+    """A shaft through the element (flange_a = flange_b) rubbing on the housing, which
+    is the ``support`` flange with ``useSupport=True`` (else fixed):
 
-        phi = flange_a.phi = flange_b.phi,  w = der(phi),  a = der(w)
-        0 = flange_a.tau + flange_b.tau - tau
+        phi = flange_a.phi - phi_support = flange_b.phi - phi_support,
+        w = der(phi),  a = der(w),  0 = flange_a.tau + flange_b.tau - tau
+        (support.tau = -flange_a.tau - flange_b.tau = -tau)
     """
 
-    phi = ac.Variable(start=0.0, unit="rad", description="angle of the shaft")
-    w = ac.Variable(start=0.0, unit="rad/s", description="speed of the shaft")
-    a = ac.Variable(unit="rad/s2", description="acceleration of the shaft")
+    phi = ac.Variable(start=0.0, unit="rad", description="angle of the shaft to the housing")
+    w = ac.Variable(start=0.0, unit="rad/s", description="speed of the shaft to the housing")
+    a = ac.Variable(unit="rad/s2", description="acceleration of the shaft to the housing")
     tau = ac.Variable(unit="N.m", description="friction torque (against w > 0)")
 
     @property
@@ -145,7 +156,7 @@ class _ShaftOnHousing(PartialTwoFlanges):
         return self.a
 
     def equations(self):
-        return [ac.Eq(self.phi, self.flange_a.phi),
+        return [ac.Eq(self.phi, self.flange_a.phi - self.phi_support()),
                 ac.Eq(self.flange_b.phi, self.flange_a.phi),
                 ac.Eq(self.w, ac.der(self.phi)),
                 ac.Eq(self.a, ac.der(self.w)),
@@ -154,9 +165,11 @@ class _ShaftOnHousing(PartialTwoFlanges):
 
 class Brake(_ShaftOnHousing, _PressedFriction):
     """Brake (Modelica.Mechanics.Rotational.Components.Brake): friction between the
-    shaft (flange_a = flange_b) and the housing:
+    shaft (flange_a = flange_b) and the housing (the ``support`` with
+    ``useSupport=True``):
 
-        phi = flange_a.phi = flange_b.phi,  w = der(phi),  a = der(w)
+        phi = flange_a.phi - phi_support = flange_b.phi - phi_support,
+        w = der(phi),  a = der(w)
         0 = flange_a.tau + flange_b.tau - tau
         tau = cgeo fn mu(w) sgn(w) sliding,  |tau| <= peak cgeo mu0 fn stuck (a = 0)
     """
@@ -164,9 +177,11 @@ class Brake(_ShaftOnHousing, _PressedFriction):
 
 class BearingFriction(_ShaftOnHousing, PartialFriction):
     """Bearing friction (Modelica.Mechanics.Rotational.Components.BearingFriction):
-    Coulomb friction of a shaft in its housing given as a torque table, always engaged:
+    Coulomb friction of a shaft in its housing (the ``support`` with
+    ``useSupport=True``) given as a torque table, always engaged:
 
-        phi = flange_a.phi = flange_b.phi,  w = der(phi),  a = der(w)
+        phi = flange_a.phi - phi_support = flange_b.phi - phi_support,
+        w = der(phi),  a = der(w)
         0 = flange_a.tau + flange_b.tau - tau
         tau = tau_pos(|w|) sgn(w) sliding,  |tau| <= peak tau_pos(0) stuck (a = 0)
 
@@ -179,16 +194,16 @@ class BearingFriction(_ShaftOnHousing, PartialFriction):
     def __init__(self, tau_pos=((0.0, 1.0),), **mods):
         super().__init__(**mods)
         self.tau_pos = friction_table(tau_pos, type(self).__name__, "tau_pos", "tau")
-        self.tau_at_rest = _table_at_zero(self.tau_pos)
+        self.tau_at_rest = table_at_zero(self.tau_pos)
 
     def free(self):
         return None
 
     def tau0(self):
-        return sp.Float(self.tau_at_rest)
+        return self.tau_at_rest * self.unit_tau
 
     def tau0_max(self):
         return self.peak * self.tau0()
 
     def sliding_torque(self, w):
-        return _table_value(self.tau_pos, w)
+        return table_value(self.tau_pos, w / self.unit_w) * self.unit_tau

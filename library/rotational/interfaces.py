@@ -7,7 +7,6 @@ import acausal as ac
 from acausal.ports import RotationalFlange, TranslationalFlange
 
 from ..relative_states import RelativeStatesMixin
-from ..support import SupportMixin
 
 __all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
            "PartialElementaryOneFlange",
@@ -49,6 +48,8 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
     ``stateSelect`` is the state priority of phi_rel and w_rel: "prefer" for a stiff
     shaft (the MSL's default); by default ("default") the model keeps the states it
     would have with ``PartialCompliant`` (see ``acausal.library.relative_states``).
+    ``phi_nominal`` (1e-4 rad) is the nominal value of phi_rel, which scales its error
+    tolerance.
     """
 
     phi_rel = ac.Variable(start=0.0, unit="rad", nominal=1e-4,
@@ -59,9 +60,9 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
 
     _relative_states = ("phi_rel", "w_rel")
 
-    def __init__(self, *, stateSelect="default", **modifications):
+    def __init__(self, *, stateSelect="default", phi_nominal=1e-4, **modifications):
         super().__init__(**modifications)
-        self._select(stateSelect)
+        self._select(stateSelect, phi_nominal)
 
     def equations(self):
         return [ac.Eq(self.phi_rel, self.flange_b.phi - self.flange_a.phi),
@@ -98,32 +99,30 @@ class PartialRelativeSensor(PartialTwoFlanges):
         return [ac.Eq(0, self.flange_a.tau + self.flange_b.tau)]
 
 
-class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFlange):
+class PartialElementaryOneFlangeAndSupport(PartialElementaryOneFlange):
     """One flange acting against a support (MSL PartialElementaryOneFlangeAndSupport2):
 
         support.tau = -flange.tau          (the reaction goes into the housing)
 
     ``useSupport=True`` creates the flange ``support`` (it must then be connected);
-    without it the housing is fixed, phi_support = 0.  ``phi_support()`` is the
-    support's angle for the component's equations.
+    without it the housing is fixed, phi_support = 0 (an ``ac.Conditional`` port).
+    ``phi_support()`` is the support's angle for the component's equations.
     """
 
-    _supports = {"support": "useSupport"}
-
-    def __init__(self, *, useSupport=False, **modifications):
-        super().__init__(**modifications)
-        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+    useSupport = ac.Parameter(False, structural=True,
+                              description="use the support flange, else it is fixed")
+    support = ac.Conditional(RotationalFlange(), "useSupport")
 
     def phi_support(self):
-        return self.support_position("support", "phi")
+        return self.support.phi if self.useSupport else 0
 
     def equations(self):
-        if not self.supported("support"):
+        if not self.useSupport:
             return []
         return [ac.Eq(self.support.tau, -self.flange.tau)]
 
 
-class PartialElementaryTwoFlangesAndSupport(SupportMixin, PartialTwoFlanges):
+class PartialElementaryTwoFlangesAndSupport(PartialTwoFlanges):
     """Two flanges acting against a support (MSL PartialElementaryTwoFlangesAndSupport2),
     torque-free as a whole:
 
@@ -132,22 +131,20 @@ class PartialElementaryTwoFlangesAndSupport(SupportMixin, PartialTwoFlanges):
     ``useSupport=True`` creates the flange ``support``; without it phi_support = 0.
     """
 
-    _supports = {"support": "useSupport"}
-
-    def __init__(self, *, useSupport=False, **modifications):
-        super().__init__(**modifications)
-        self._mount({"support": RotationalFlange}, {"useSupport": useSupport})
+    useSupport = ac.Parameter(False, structural=True,
+                              description="use the support flange, else it is fixed")
+    support = ac.Conditional(RotationalFlange(), "useSupport")
 
     def phi_support(self):
-        return self.support_position("support", "phi")
+        return self.support.phi if self.useSupport else 0
 
     def equations(self):
-        if not self.supported("support"):
+        if not self.useSupport:
             return []
         return [ac.Eq(self.support.tau, -self.flange_a.tau - self.flange_b.tau)]
 
 
-class PartialElementaryRotationalToTranslational(SupportMixin, ac.Component):
+class PartialElementaryRotationalToTranslational(ac.Component):
     """A rotational flange flangeR and a translational flange flangeT (an ideal,
     massless converter between the two domains), each acting against its own support
     (MSL PartialElementaryRotationalToTranslational):
@@ -161,24 +158,23 @@ class PartialElementaryRotationalToTranslational(SupportMixin, ac.Component):
 
     flangeR = RotationalFlange()
     flangeT = TranslationalFlange()
-
-    _supports = {"supportR": "useSupportR", "supportT": "useSupportT"}
-
-    def __init__(self, *, useSupportR=False, useSupportT=False, **modifications):
-        super().__init__(**modifications)
-        self._mount({"supportR": RotationalFlange, "supportT": TranslationalFlange},
-                    {"useSupportR": useSupportR, "useSupportT": useSupportT})
+    useSupportR = ac.Parameter(False, structural=True,
+                               description="use the rotational support, else it is fixed")
+    useSupportT = ac.Parameter(False, structural=True,
+                               description="use the translational support, else it is fixed")
+    supportR = ac.Conditional(RotationalFlange(), "useSupportR")
+    supportT = ac.Conditional(TranslationalFlange(), "useSupportT")
 
     def phi_supportR(self):
-        return self.support_position("supportR", "phi")
+        return self.supportR.phi if self.useSupportR else 0
 
     def s_supportT(self):
-        return self.support_position("supportT", "s")
+        return self.supportT.s if self.useSupportT else 0
 
     def equations(self):
         eqs = []
-        if self.supported("supportR"):
+        if self.useSupportR:
             eqs.append(ac.Eq(self.supportR.tau, -self.flangeR.tau))
-        if self.supported("supportT"):
+        if self.useSupportT:
             eqs.append(ac.Eq(self.supportT.f, -self.flangeT.f))
         return eqs

@@ -11,11 +11,12 @@ import acausal as ac
 from acausal.ports import RealInput
 
 from ..blocks import signals
+from ..friction.regularization import check_regularization, regularized_sign
 from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
-__all__ = ["ConstantTorque", "StepTorque", "Torque", "Torque2", "LinearSpeedDependentTorque",
-           "QuadraticSpeedDependentTorque", "ConstantSpeed", "Speed", "Accelerate",
-           "Position"]
+__all__ = ["ConstantTorque", "TorqueStep", "Torque", "Torque2", "LinearSpeedDependentTorque",
+           "QuadraticSpeedDependentTorque", "SignTorque", "EddyCurrentTorque",
+           "ConstantSpeed", "Speed", "Accelerate", "Position"]
 
 
 class ConstantTorque(PartialElementaryOneFlangeAndSupport):
@@ -33,7 +34,7 @@ class ConstantTorque(PartialElementaryOneFlangeAndSupport):
         return [ac.Eq(self.flange.tau, -self.tau_constant)]
 
 
-class StepTorque(PartialElementaryOneFlangeAndSupport):
+class TorqueStep(PartialElementaryOneFlangeAndSupport):
     """Torque step:  flange.tau = -(offsetTorque + (stepTorque if time >= startTime))."""
 
     stepTorque = ac.Parameter(1.0, unit="N.m", description="height of the step")
@@ -123,6 +124,81 @@ class QuadraticSpeedDependentTorque(_SpeedDependentTorque):
 
     def law(self, x):
         return x**2 if self.TorqueDirection else x * ac.abs(x)
+
+
+class _PartialTorque(PartialElementaryOneFlangeAndSupport):
+    """A torque acting at the flange against the support (MSL Interfaces.PartialTorque):
+
+        phi = flange.phi - phi_support,   w = der(phi)
+    """
+
+    phi = ac.Variable(start=0.0, unit="rad", description="angle of the flange to the support")
+    w = ac.Variable(start=0.0, unit="rad/s", description="speed of the flange to the support")
+
+    def equations(self):
+        return [ac.Eq(self.phi, self.flange.phi - self.phi_support()),
+                ac.Eq(self.w, ac.der(self.phi))]
+
+
+class SignTorque(_PartialTorque):
+    """Constant torque changing sign with speed (MSL Sources.SignTorque), regularized
+    below w0 (``reg``: "Exp" (the MSL's default), "Sine", "Linear" or "CoSine", see
+    ``friction.regularization``):
+
+        tau = -flange.tau = tau_nominal sgn_reg(w / w0)
+
+    A negative tau_nominal is a load (Coulomb-like friction).
+    """
+
+    tau_nominal = ac.Parameter(1.0, unit="N.m",
+                               description="nominal torque (negative: acting as a load)")
+    w0 = ac.Parameter(0.1, unit="rad/s", min=0, description="regularization below w0 (> 0)")
+    tau = ac.Variable(unit="N.m", description="accelerating torque at the flange")
+
+    energy_role = "source"  # drives (or brakes) the flange from outside the model
+
+    def __init__(self, *, reg="Exp", **modifications):
+        super().__init__(**modifications)
+        object.__setattr__(self, "reg", check_regularization(reg, type(self).__name__))
+
+    def equations(self):
+        return [ac.Eq(self.tau, -self.flange.tau),
+                ac.Eq(self.tau, self.tau_nominal * regularized_sign(self.w, self.w0, self.reg))]
+
+
+class EddyCurrentTorque(_PartialTorque):
+    """Eddy current brake (MSL Sources.EddyCurrentTorque), always braking, its speed for
+    the maximum torque rising with the temperature of its material:
+
+        tau = flange.tau = 2 tau_nominal w_n / (1 + w_n^2),
+        w_n = w / (w_nominal (1 + alpha (T - TRef))),
+        alpha = alpha20 / (1 + alpha20 (TRef - 293.15 K))
+        lossPower = tau w
+
+    The temperature is the parameter ``T`` (the MSL's with useHeatPort = false; the
+    heat port waits for conditional connectors in the language).
+    """
+
+    tau_nominal = ac.Parameter(1.0, unit="N.m", description="maximum torque (always braking)")
+    w_nominal = ac.Parameter(1.0, unit="rad/s", min=0,
+                             description="nominal speed (of the maximum torque) at TRef")
+    TRef = ac.Parameter(293.15, unit="K", description="reference temperature")
+    alpha20 = ac.Parameter(0.0, unit="1/K", description="temperature coefficient at 20 degC")
+    T = ac.Parameter(293.15, unit="K", description="temperature of the brake")
+    tau = ac.Variable(unit="N.m", description="braking torque, flange.tau")
+    w_normalized = ac.Variable(description="relative speed w / w_nominal(T)")
+    lossPower = ac.Variable(unit="W", description="power dissipated, tau w")
+
+    def loss_power(self):
+        return self.lossPower
+
+    def equations(self):
+        alpha = self.alpha20 / (1 + self.alpha20 * (self.TRef - 293.15))
+        w_n = self.w_normalized
+        return [ac.Eq(self.tau, self.flange.tau),
+                ac.Eq(w_n, self.w / (self.w_nominal * (1 + alpha * (self.T - self.TRef)))),
+                ac.Eq(self.tau, 2 * self.tau_nominal * w_n / (1 + w_n * w_n)),
+                ac.Eq(self.lossPower, self.tau * self.w)]
 
 
 class _SpeedSource(PartialElementaryOneFlangeAndSupport):

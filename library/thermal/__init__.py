@@ -1,14 +1,25 @@
-"""Lumped heat transfer: capacities, conductors, convection, boundary conditions."""
+"""Lumped heat transfer (Modelica.Thermal.HeatTransfer): capacities, conductors,
+convection, boundary conditions, sensors, the Celsius helpers (``thermal.celsius``) and
+the signal adaptors of a heat port."""
 from ... import _lazy_exports
 
 __all__ = ["Element1D", "PartialElementaryOnePort", "HeatCapacitor", "ThermalConductor",
-           "ThermalResistor", "Convection", "FixedTemperature", "PrescribedTemperature",
-           "FixedHeatFlow", "PrescribedHeatFlow", "TemperatureSensor", "HeatFlowSensor"]
+           "ThermalResistor", "Convection", "ConvectiveResistor", "ThermalCollector",
+           "FixedTemperature", "PrescribedTemperature", "FixedHeatFlow", "PrescribedHeatFlow",
+           "TemperatureSensor", "RelTemperatureSensor", "HeatFlowSensor",
+           "GeneralHeatFlowToTemperatureAdaptor", "GeneralTemperatureToHeatFlowAdaptor",
+           "PartialElementaryConditionalHeatPort",
+           "PartialElementaryConditionalHeatPortWithoutT", "PartialConditionalHeatPort"]
 
 __getattr__, __dir__ = _lazy_exports(globals(), {
-    ".components": ("Convection", "HeatCapacitor", "ThermalConductor", "ThermalResistor"),
+    ".adaptors": ("GeneralHeatFlowToTemperatureAdaptor", "GeneralTemperatureToHeatFlowAdaptor"),
+    ".components": ("Convection", "ConvectiveResistor", "HeatCapacitor", "ThermalCollector",
+                    "ThermalConductor", "ThermalResistor"),
     ".interfaces": ("Element1D", "PartialElementaryOnePort"),
-    ".sensors": ("HeatFlowSensor", "TemperatureSensor"),
+    ".conditional": ("PartialElementaryConditionalHeatPort",
+                     "PartialElementaryConditionalHeatPortWithoutT",
+                     "PartialConditionalHeatPort"),
+    ".sensors": ("HeatFlowSensor", "RelTemperatureSensor", "TemperatureSensor"),
     ".sources": ("FixedHeatFlow", "FixedTemperature", "PrescribedHeatFlow",
                  "PrescribedTemperature"),
-})
+}, submodules=("celsius",))

@@ -1,7 +1,8 @@
 """Partial models of lumped heat transfer (Modelica.Thermal.HeatTransfer.Interfaces).
 
 A HeatPort carries the temperature T [K] and the heat flow rate Q_flow [W], positive
-into the component.
+into the component.  The MSL's HeatPort_a and HeatPort_b differ only in their icons; both
+are ``HeatPort`` here.
 """
 import acausal as ac
 from acausal.ports import HeatPort
@@ -10,9 +11,10 @@ __all__ = ["Element1D", "PartialElementaryOnePort"]
 
 
 class Element1D(ac.Component):
-    """Heat flowing through an element from port_a to port_b:
+    """Heat flowing through an element that stores none, from port_a to port_b
+    (Modelica.Thermal.HeatTransfer.Interfaces.Element1D, MSL v4.0.0):
 
-        dT = port_a.T - port_b.T,   Q_flow = port_a.Q_flow,   0 = port_a.Q_flow + port_b.Q_flow
+        dT = port_a.T - port_b.T,   port_a.Q_flow = Q_flow,   port_b.Q_flow = -Q_flow
     """
 
     port_a = HeatPort()
@@ -22,11 +24,12 @@ class Element1D(ac.Component):
 
     def equations(self):
         return [ac.Eq(self.dT, self.port_a.T - self.port_b.T),
-                ac.Eq(self.Q_flow, self.port_a.Q_flow),
-                ac.Eq(0, self.port_a.Q_flow + self.port_b.Q_flow)]
+                ac.Eq(self.port_a.Q_flow, self.Q_flow),
+                ac.Eq(self.port_b.Q_flow, -self.Q_flow)]
 
 
 class PartialElementaryOnePort(ac.Component):
     """One heat port, named port."""
 
     port = HeatPort()
+

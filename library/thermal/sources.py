@@ -1,4 +1,4 @@
-"""Boundary conditions (Modelica.Thermal.HeatTransfer.Sources).
+"""Boundary conditions (Modelica.Thermal.HeatTransfer.Sources, MSL v4.0.0).
 
 A heat-flow source delivers Q_flow into the component it is connected to, so its own
 port has port.Q_flow = -Q_flow.
@@ -12,9 +12,13 @@ __all__ = ["FixedTemperature", "PrescribedTemperature", "FixedHeatFlow", "Prescr
 
 
 class FixedTemperature(PartialElementaryOnePort):
-    """Ideal heat sink/source at a fixed temperature:  port.T = T."""
+    """Ideal heat sink/source at a fixed temperature
+    (Modelica.Thermal.HeatTransfer.Sources.FixedTemperature):
 
-    T = ac.Parameter(293.15, unit="K", description="fixed temperature")
+        port.T = T
+    """
+
+    T = ac.Parameter(293.15, unit="K", min=0, description="fixed temperature at port")
 
     energy_role = "source"  # an environment outside the model
 
@@ -23,7 +27,11 @@ class FixedTemperature(PartialElementaryOnePort):
 
 
 class PrescribedTemperature(PartialElementaryOnePort):
-    """Temperature set by a signal:  port.T = T."""
+    """Temperature set by a signal [K]
+    (Modelica.Thermal.HeatTransfer.Sources.PrescribedTemperature):
+
+        port.T = T
+    """
 
     T = RealInput()
 
@@ -33,23 +41,36 @@ class PrescribedTemperature(PartialElementaryOnePort):
         return [ac.Eq(self.port.T, self.T)]
 
 
-class FixedHeatFlow(PartialElementaryOnePort):
-    """Fixed heat flow into the connected component:  port.Q_flow = -Q_flow."""
+class _HeatFlowSource(PartialElementaryOnePort):
+    """A heat flow delivered into the connected component, scaled linearly with the
+    port's temperature:  port.Q_flow = -Q_flow (1 + alpha (port.T - T_ref))."""
 
-    Q_flow = ac.Parameter(0.0, unit="W", description="heat flow rate delivered")
+    T_ref = ac.Parameter(293.15, unit="K", min=0, description="reference temperature")
+    alpha = ac.Parameter(0.0, unit="1/K",
+                         description="temperature coefficient of heat flow rate")
 
     energy_role = "source"  # an environment outside the model
 
     def equations(self):
-        return [ac.Eq(self.port.Q_flow, -self.Q_flow)]
+        return [ac.Eq(self.port.Q_flow,
+                      -self.Q_flow * (1 + self.alpha * (self.port.T - self.T_ref)))]
 
 
-class PrescribedHeatFlow(PartialElementaryOnePort):
-    """Heat flow set by a signal, into the connected component:  port.Q_flow = -Q_flow."""
+class FixedHeatFlow(_HeatFlowSource):
+    """Fixed heat flow into the connected component
+    (Modelica.Thermal.HeatTransfer.Sources.FixedHeatFlow):
+
+        port.Q_flow = -Q_flow (1 + alpha (port.T - T_ref))
+    """
+
+    Q_flow = ac.Parameter(0.0, unit="W", description="fixed heat flow rate at port")
+
+
+class PrescribedHeatFlow(_HeatFlowSource):
+    """Heat flow set by a signal [W], into the connected component
+    (Modelica.Thermal.HeatTransfer.Sources.PrescribedHeatFlow):
+
+        port.Q_flow = -Q_flow (1 + alpha (port.T - T_ref))
+    """
 
     Q_flow = RealInput()
-
-    energy_role = "source"  # an environment outside the model
-
-    def equations(self):
-        return [ac.Eq(self.port.Q_flow, -self.Q_flow)]

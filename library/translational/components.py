@@ -5,9 +5,10 @@ from acausal._sympy import sympy as sp
 import acausal as ac
 
 from .interfaces import (PartialCompliant, PartialCompliantWithRelativeStates,
-                         PartialElementaryOneFlange, PartialTwoFlanges)
+                         PartialElementaryOneFlange, PartialRigid, PartialTwoFlanges)
 
-__all__ = ["Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "MassWithStop"]
+__all__ = ["Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "ElastoGap",
+           "MassWithStop"]
 
 
 class Fixed(PartialElementaryOneFlange):
@@ -21,14 +22,14 @@ class Fixed(PartialElementaryOneFlange):
         return [ac.Eq(self.flange.s, self.s0)]
 
 
-class Mass(PartialTwoFlanges):
-    """Sliding mass (Newton's second law):
+class Mass(PartialRigid):
+    """Sliding mass with inertia (MSL Translational.Components.Mass), its centre at s and
+    its flanges L/2 either side (``PartialRigid``):
 
-        s = flange_a.s = flange_b.s,   v = der(s),   m der(v) = flange_a.f + flange_b.f
+        v = der(s),   a = der(v),   m a = flange_a.f + flange_b.f
     """
 
-    m = ac.Parameter(1.0, unit="kg", min=0, description="mass")
-    s = ac.Variable(start=0.0, unit="m", description="absolute position")
+    m = ac.Parameter(1.0, unit="kg", min=0, description="mass of the sliding mass")
     v = ac.Variable(start=0.0, unit="m/s", description="absolute velocity")
     a = ac.Variable(unit="m/s2", description="absolute acceleration")
 
@@ -37,28 +38,22 @@ class Mass(PartialTwoFlanges):
         return self.m * self.v**2 / 2
 
     def equations(self):
-        return [ac.Eq(self.s, self.flange_a.s),
-                ac.Eq(self.s, self.flange_b.s),
-                ac.Eq(self.v, ac.der(self.s)),
+        return [ac.Eq(self.v, ac.der(self.s)),
                 ac.Eq(self.a, ac.der(self.v)),
                 ac.Eq(self.m * self.a, self.flange_a.f + self.flange_b.f)]
 
 
-class Rod(PartialTwoFlanges):
-    """Massless rigid rod of length L (MSL Translational.Components.Rod), its centre at s:
+class Rod(PartialRigid):
+    """Rod without inertia (MSL Translational.Components.Rod), its centre at s and its
+    flanges L/2 either side (``PartialRigid``):
 
-        flange_a.s = s - L/2,   flange_b.s = s + L/2,   0 = flange_a.f + flange_b.f
+        0 = flange_a.f + flange_b.f
     """
-
-    L = ac.Parameter(0.0, unit="m", min=0, description="length of the rod")
-    s = ac.Variable(start=0.0, unit="m", description="position of the centre")
 
     energy_role = "lossless"  # rigid and massless
 
     def equations(self):
-        return [ac.Eq(self.flange_a.s, self.s - self.L / 2),
-                ac.Eq(self.flange_b.s, self.s + self.L / 2),
-                ac.Eq(0, self.flange_a.f + self.flange_b.f)]
+        return [ac.Eq(0, self.flange_a.f + self.flange_b.f)]
 
 
 class Spring(PartialCompliant):
@@ -118,6 +113,58 @@ class SpringDamper(PartialCompliantWithRelativeStates):
     def equations(self):
         return [ac.Eq(self.f, self.c * (self.s_rel - self.s_rel0) + self.d * self.v_rel),
                 ac.Eq(self.lossPower, self.d * self.v_rel**2)]
+
+
+class ElastoGap(PartialCompliantWithRelativeStates):
+    """Spring and damper in parallel that act only when the gap is closed (MSL
+    Translational.Components.ElastoGap), contact = s_rel < s_rel0:
+
+        f_c = -c |s_rel - s_rel0|^n in contact, else 0          (spring, only pushes)
+        f_d2 = d v_rel in contact, else 0                      (linear damping)
+        f_d = f_d2 limited to [f_c, -f_c] in contact, else 0   (|f_d| <= |f_c|)
+        f = f_c + f_d,   lossPower = f_d v_rel
+
+    The damping force is limited by the spring force, so the contact force starts from
+    zero, is continuous, and never pulls.  Entering and leaving contact are events; the
+    limiting inside the contact is evaluated without events (the MSL's noEvent).
+    """
+
+    c = ac.Parameter(1.0, unit="N/m", min=0, description="spring constant")
+    d = ac.Parameter(1.0, unit="N.s/m", min=0, description="damping constant")
+    s_rel0 = ac.Parameter(0.0, unit="m", description="unstretched spring length")
+    n = ac.Parameter(1.0, min=1, description="exponent of the spring force, "
+                                             "f_c = -c |s_rel - s_rel0|^n")
+    unit_s = ac.Parameter(1.0, unit="m", min=0,
+                          description="1 m: the unit of the gap in the power law")
+    f_c = ac.Variable(unit="N", description="spring force")
+    f_d2 = ac.Variable(unit="N", description="linear damping force")
+    f_d = ac.Variable(unit="N", description="damping force limited by the spring force")
+    lossPower = ac.Variable(unit="W", description="power dissipated, f_d v_rel >= 0")
+
+    def contact(self):
+        """Relation: the gap is closed."""
+        return self.s_rel < self.s_rel0
+
+    def stored_energy(self):
+        """c |s_rel - s_rel0|^(n + 1) / (n + 1) in contact (in metres), 0 else."""
+        # the gap in metres, > 0 in contact (1 elsewhere, where it is not used)
+        gap = ac.if_else(self.contact(), (self.s_rel0 - self.s_rel) / self.unit_s, 1)
+        return ac.if_else(self.contact(),
+                          self.c * self.unit_s**2 * gap**(self.n + 1) / (self.n + 1), 0)
+
+    def loss_power(self):
+        return self.lossPower
+
+    def equations(self):
+        contact, f_c, f_d2 = self.contact(), self.f_c, self.f_d2
+        # |s_rel - s_rel0| in metres, so that c |s_rel - s_rel0|^n is a force for any n
+        gap = ac.no_event(ac.abs(self.s_rel - self.s_rel0)) / self.unit_s
+        limited = ac.no_event(ac.min(ac.max(f_d2, f_c), -f_c))
+        return [ac.Eq(f_c, ac.if_else(contact, -self.c * self.unit_s * gap**self.n, 0)),
+                ac.Eq(f_d2, ac.if_else(contact, self.d * self.v_rel, 0)),
+                ac.Eq(self.f_d, ac.if_else(contact, limited, 0)),
+                ac.Eq(self.f, f_c + self.f_d),
+                ac.Eq(self.lossPower, self.f_d * self.v_rel)]
 
 
 class MassWithStop(PartialTwoFlanges):

@@ -3,12 +3,11 @@ import acausal as ac
 from acausal.ports import TranslationalFlange
 
 from ..relative_states import LinearAcceleration, RelativeStatesMixin
-from ..support import SupportMixin
 
-__all__ = ["PartialTwoFlanges", "PartialCompliant", "PartialCompliantWithRelativeStates",
-           "PartialElementaryOneFlange",
+__all__ = ["PartialTwoFlanges", "PartialRigid", "PartialCompliant",
+           "PartialCompliantWithRelativeStates", "PartialElementaryOneFlange",
            "PartialAbsoluteSensor", "PartialRelativeSensor",
-           "PartialElementaryOneFlangeAndSupport"]
+           "PartialElementaryOneFlangeAndSupport", "PartialElementaryTwoFlangesAndSupport"]
 
 
 class PartialTwoFlanges(ac.Component):
@@ -16,6 +15,22 @@ class PartialTwoFlanges(ac.Component):
 
     flange_a = TranslationalFlange()
     flange_b = TranslationalFlange()
+
+
+class PartialRigid(PartialTwoFlanges):
+    """A rigid body of length L between its flanges, its centre at s (MSL Translational
+    PartialRigid):
+
+        flange_a.s = s - L/2,   flange_b.s = s + L/2
+    """
+
+    L = ac.Parameter(0.0, unit="m",
+                     description="length of the component, flange_b.s - flange_a.s")
+    s = ac.Variable(start=0.0, unit="m", description="absolute position of the centre")
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.s, self.s - self.L / 2),
+                ac.Eq(self.flange_b.s, self.s + self.L / 2)]
 
 
 class PartialCompliant(PartialTwoFlanges):
@@ -43,7 +58,8 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
 
     ``stateSelect`` is the state priority of s_rel and v_rel: "prefer" for a stiff
     coupling; by default ("default") the states of ``PartialCompliant`` (see
-    ``acausal.library.relative_states``).
+    ``acausal.library.relative_states``).  ``s_nominal`` (1e-4 m) is the nominal value
+    of s_rel, which scales its error tolerance.
     """
 
     s_rel = ac.Variable(start=0.0, unit="m", nominal=1e-4,
@@ -53,10 +69,11 @@ class PartialCompliantWithRelativeStates(RelativeStatesMixin, PartialTwoFlanges)
 
     _relative_states = ("s_rel", "v_rel")
     _acceleration = LinearAcceleration
+    _nominal_name = "s_nominal"
 
-    def __init__(self, *, stateSelect="default", **modifications):
+    def __init__(self, *, stateSelect="default", s_nominal=1e-4, **modifications):
         super().__init__(**modifications)
-        self._select(stateSelect)
+        self._select(stateSelect, s_nominal)
 
     def equations(self):
         return [ac.Eq(self.s_rel, self.flange_b.s - self.flange_a.s),
@@ -90,26 +107,46 @@ class PartialRelativeSensor(PartialTwoFlanges):
         return [ac.Eq(0, self.flange_a.f + self.flange_b.f)]
 
 
-class PartialElementaryOneFlangeAndSupport(SupportMixin, PartialElementaryOneFlange):
+class PartialElementaryOneFlangeAndSupport(PartialElementaryOneFlange):
     """One flange acting against a support (MSL Translational
     PartialElementaryOneFlangeAndSupport2):
 
         support.f = -flange.f              (the reaction goes into the housing)
 
     ``useSupport=True`` creates the flange ``support`` (it must then be connected);
-    without it the housing is fixed, s_support = 0.
+    without it the housing is fixed, s_support = 0 (an ``ac.Conditional`` port).
     """
 
-    _supports = {"support": "useSupport"}
-
-    def __init__(self, *, useSupport=False, **modifications):
-        super().__init__(**modifications)
-        self._mount({"support": TranslationalFlange}, {"useSupport": useSupport})
+    useSupport = ac.Parameter(False, structural=True,
+                              description="use the support flange, else it is fixed")
+    support = ac.Conditional(TranslationalFlange(), "useSupport")
 
     def s_support(self):
-        return self.support_position("support", "s")
+        return self.support.s if self.useSupport else 0
 
     def equations(self):
-        if not self.supported("support"):
+        if not self.useSupport:
             return []
         return [ac.Eq(self.support.f, -self.flange.f)]
+
+
+class PartialElementaryTwoFlangesAndSupport(PartialTwoFlanges):
+    """Two flanges acting against a support (MSL Translational
+    PartialElementaryTwoFlangesAndSupport2), force-free as a whole:
+
+        support.f = -flange_a.f - flange_b.f
+
+    ``useSupport=True`` creates the flange ``support``; without it s_support = 0.
+    """
+
+    useSupport = ac.Parameter(False, structural=True,
+                              description="use the support flange, else it is fixed")
+    support = ac.Conditional(TranslationalFlange(), "useSupport")
+
+    def s_support(self):
+        return self.support.s if self.useSupport else 0
+
+    def equations(self):
+        if not self.useSupport:
+            return []
+        return [ac.Eq(self.support.f, -self.flange_a.f - self.flange_b.f)]

@@ -5,7 +5,7 @@ from acausal.ports import RealOutput
 from .interfaces import PartialAbsoluteSensor, PartialRelativeSensor
 
 __all__ = ["PositionSensor", "SpeedSensor", "AccSensor", "RelPositionSensor",
-           "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor"]
+           "RelSpeedSensor", "RelAccSensor", "ForceSensor", "PowerSensor", "MultiSensor"]
 
 
 class PositionSensor(PartialAbsoluteSensor):
@@ -94,3 +94,21 @@ class PowerSensor(PartialRelativeSensor):
     def equations(self):
         return [ac.Eq(self.flange_a.s, self.flange_b.s),
                 ac.Eq(self.power, self.flange_a.f * ac.der(self.flange_a.s))]
+
+
+class MultiSensor(PartialRelativeSensor):
+    """Force, velocity and power at one place of a rigid line (MSL Translational
+    Sensors.MultiSensor), put in series:
+
+        flange_a.s = flange_b.s,   f = flange_a.f,   v = der(flange_a.s),   power = f v
+    """
+
+    power = RealOutput()
+    f = RealOutput()
+    v = RealOutput()
+
+    def equations(self):
+        return [ac.Eq(self.flange_a.s, self.flange_b.s),
+                ac.Eq(self.f, self.flange_a.f),
+                ac.Eq(self.v, ac.der(self.flange_a.s)),
+                ac.Eq(self.power, self.f * self.v)]

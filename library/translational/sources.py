@@ -10,10 +10,12 @@ import acausal as ac
 from acausal.ports import RealInput
 
 from ..blocks import signals
+from ..friction.regularization import check_regularization, regularized_sign
 from .interfaces import PartialElementaryOneFlangeAndSupport, PartialTwoFlanges
 
-__all__ = ["ConstantForce", "StepForce", "Force", "Force2", "LinearSpeedDependentForce",
-           "QuadraticSpeedDependentForce", "ConstantSpeed", "Speed", "Accelerate", "Position"]
+__all__ = ["ConstantForce", "ForceStep", "Force", "Force2", "LinearSpeedDependentForce",
+           "QuadraticSpeedDependentForce", "SignForce", "EddyCurrentForce", "ConstantSpeed",
+           "Speed", "Accelerate", "Position"]
 
 
 class ConstantForce(PartialElementaryOneFlangeAndSupport):
@@ -27,7 +29,7 @@ class ConstantForce(PartialElementaryOneFlangeAndSupport):
         return [ac.Eq(self.flange.f, -self.f_constant)]
 
 
-class StepForce(PartialElementaryOneFlangeAndSupport):
+class ForceStep(PartialElementaryOneFlangeAndSupport):
     """Force step:  flange.f = -(offsetForce + (stepForce if time >= startTime else 0))."""
 
     stepForce = ac.Parameter(1.0, unit="N", description="height of the step")
@@ -116,6 +118,81 @@ class QuadraticSpeedDependentForce(_SpeedDependentForce):
 
     def law(self, x):
         return x**2 if self.ForceDirection else x * ac.abs(x)
+
+
+class _PartialForce(PartialElementaryOneFlangeAndSupport):
+    """A force acting at the flange against the support (MSL Interfaces.PartialForce,
+    whose f = flange.f):
+
+        s = flange.s - s_support,   v = der(s),   f = flange.f
+    """
+
+    s = ac.Variable(start=0.0, unit="m", description="position of the flange to the support")
+    v = ac.Variable(start=0.0, unit="m/s", description="velocity of the flange to the support")
+    f = ac.Variable(unit="N", description="force at the flange, flange.f")
+
+    def equations(self):
+        return [ac.Eq(self.s, self.flange.s - self.s_support()),
+                ac.Eq(self.v, ac.der(self.s)),
+                ac.Eq(self.f, self.flange.f)]
+
+
+class SignForce(_PartialForce):
+    """Constant force changing sign with speed (MSL Sources.SignForce), regularized below
+    v0 (``reg``: "Exp" (the MSL's default), "Sine", "Linear" or "CoSine", see
+    ``friction.regularization``); with f = flange.f:
+
+        f = -f_nominal sgn_reg(v / v0)      (pushing the flange with f_nominal sgn(v))
+
+    A negative f_nominal is a load (Coulomb-like friction).
+    """
+
+    f_nominal = ac.Parameter(1.0, unit="N",
+                             description="nominal force (negative: acting as a load)")
+    v0 = ac.Parameter(0.1, unit="m/s", min=0, description="regularization below v0 (> 0)")
+
+    energy_role = "source"  # drives (or brakes) the flange from outside the model
+
+    def __init__(self, *, reg="Exp", **modifications):
+        super().__init__(**modifications)
+        object.__setattr__(self, "reg", check_regularization(reg, type(self).__name__))
+
+    def equations(self):
+        return [ac.Eq(self.f, -self.f_nominal * regularized_sign(self.v, self.v0, self.reg))]
+
+
+class EddyCurrentForce(_PartialForce):
+    """Translational eddy current brake (MSL Sources.EddyCurrentForce), always braking,
+    its speed for the maximum force rising with the temperature of its material; with
+    f = flange.f:
+
+        f = 2 f_nominal v_n / (1 + v_n^2),
+        v_n = v / (v_nominal (1 + alpha (T - TRef))),
+        alpha = alpha20 / (1 + alpha20 (TRef - 293.15 K))
+        lossPower = f v
+
+    The temperature is the parameter ``T`` (the MSL's with useHeatPort = false; the
+    heat port waits for conditional connectors in the language).
+    """
+
+    f_nominal = ac.Parameter(1.0, unit="N", description="maximum force (always braking)")
+    v_nominal = ac.Parameter(1.0, unit="m/s", min=0,
+                             description="nominal speed (of the maximum force) at TRef")
+    TRef = ac.Parameter(293.15, unit="K", description="reference temperature")
+    alpha20 = ac.Parameter(0.0, unit="1/K", description="temperature coefficient at 20 degC")
+    T = ac.Parameter(293.15, unit="K", description="temperature of the brake")
+    v_normalized = ac.Variable(description="relative speed v / v_nominal(T)")
+    lossPower = ac.Variable(unit="W", description="power dissipated, f v")
+
+    def loss_power(self):
+        return self.lossPower
+
+    def equations(self):
+        alpha = self.alpha20 / (1 + self.alpha20 * (self.TRef - 293.15))
+        v_n = self.v_normalized
+        return [ac.Eq(v_n, self.v / (self.v_nominal * (1 + alpha * (self.T - self.TRef)))),
+                ac.Eq(self.f, 2 * self.f_nominal * v_n / (1 + v_n * v_n)),
+                ac.Eq(self.lossPower, self.f * self.v)]
 
 
 class _SpeedSource(PartialElementaryOneFlangeAndSupport):

@@ -25,7 +25,7 @@ class VoltageDrivenMotor(ac.Component):
     motor = DCMotor(R=R, L=L, k=K, J=J)
 
     def equations(self):
-        return [ac.connect(self.u_a, self.amplifier.v_ref),
+        return [ac.connect(self.u_a, self.amplifier.v),
                 ac.connect(self.amplifier.p, self.motor.p),
                 ac.connect(self.amplifier.n, self.motor.n, self.ground.p)]
 
@@ -132,13 +132,13 @@ class GearedMotor(ac.Component):
     amplifier = SignalVoltage()
     ground = Ground()
     motor = DCMotor(R=R, L=L, k=K, J=J)
-    gear = IdealGear(n=5.0)
+    gear = IdealGear(ratio=5.0)
     load = Inertia(J=4e-3)
     friction = CubicDamper(d=2e-5)
     housing = Fixed()
 
     def equations(self):
-        return [ac.connect(self.u_a, self.amplifier.v_ref),
+        return [ac.connect(self.u_a, self.amplifier.v),
                 ac.connect(self.amplifier.p, self.motor.p),
                 ac.connect(self.amplifier.n, self.motor.n, self.ground.p),
                 ac.connect(self.motor.flange, self.gear.flange_a),

@@ -24,7 +24,7 @@ class ShipAutopilot(ac.Component):
     psi_ref = RealInput()
     error = Feedback()
     pd = PID(k=KP, Ti=float("inf"), Td=TD, Nd=ND)
-    ship = TransferFunction(num=[K * T3, K], den=[T1 * T2, T1 + T2, 1.0, 0.0])
+    ship = TransferFunction(b=[K * T3, K], a=[T1 * T2, T1 + T2, 1.0, 0.0])
 
     def equations(self):
         return [ac.connect(self.psi_ref, self.error.u1),

@@ -331,9 +331,11 @@ def test_list_domain_json_ports_and_parameters(capsys):
     assert [(p["name"], p["type"], p["domain"]) for p in r["ports"]] == \
         [("p", type(Resistor.p).__name__, "electrical"),
          ("n", type(Resistor.n).__name__, "electrical")]
-    assert r["parameters"] == [{"name": "R", "default": Resistor.R.value,
-                                "unit": Resistor.R.unit,
-                                "description": Resistor.R.description}]
+    assert r["parameters"][0] == {"name": "R", "default": Resistor.R.value,
+                                  "unit": Resistor.R.unit,
+                                  "description": Resistor.R.description}
+    assert [p["name"] for p in r["parameters"]] == \
+        [n for n, v in vars(Resistor).items() if isinstance(v, ac.Parameter)]
     assert ("heatPort", "thermal") in {(p["name"], p["domain"])
                                        for p in comps["HeatingResistor"]["ports"]}
     assert [p["name"] for p in comps["HeatingResistor"]["parameters"]] == \

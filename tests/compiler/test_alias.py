@@ -2,8 +2,8 @@
 import numpy as np
 
 import acausal as ac
-from acausal.compiler.alias import eliminate_aliases
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.alias import eliminate_aliases
+from acausal.compiler.frontend.flatten import flatten
 from acausal.library.rotational import Fixed, Inertia, Spring
 
 from ..models.test_electrical_circuits import RCCharging as RC

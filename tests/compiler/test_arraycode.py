@@ -1,5 +1,5 @@
-"""The numpy backend's array code (acausal.compiler.arraycode) and the C backend's
-looped code (acausal.compiler.cloops) compute what the scalar code computes.
+"""The numpy backend's array code (acausal.compiler.backends.arraycode) and the C backend's
+looped code (acausal.compiler.backends.cloops) compute what the scalar code computes.
 
 Reference: the scalar functions of the same program (one Python statement per value,
 the functions the C backend is tested against).  Every function of the array module is
@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.arraycode import MIN_STATEMENTS, array_source
-from acausal.compiler.cbackend import compiler_available
-from acausal.compiler.lazycode import ArrayFunction, GeneratedModule
+from acausal.compiler.backends.arraycode import MIN_STATEMENTS, array_source
+from acausal.compiler.backends.cbackend import compiler_available
+from acausal.compiler.backends.lazycode import ArrayFunction, GeneratedModule
 from acausal.library.electromechanical.examples.sampled_speed_control import SampledSpeedLoop
 from acausal.library.friction.examples.stick_slip import StickSlip
 from acausal.library.gas.examples.moore_greitzer import Surge
@@ -168,8 +168,8 @@ def test_every_function_of_the_printer_has_its_numpy_form():
 
     import sympy as sp
 
-    from acausal.compiler.arraycode import _ArrayEmitter
-    from acausal.compiler.emit import _FUNCS
+    from acausal.compiler.backends.arraycode import _ArrayEmitter
+    from acausal.compiler.backends.emit import _FUNCS
     x, y = sp.symbols("x y")
     em = _ArrayEmitter(lambda q: {x: "x0", y: "x1"}[q])
     xs, ys = np.array([0.3, 0.6]), np.array([1.2, 1.5])
@@ -204,7 +204,7 @@ def test_a_negated_long_sum_is_one_dot_product(monkeypatch):
     negated sum of the others, -(i_1 + ... + i_41) (a node balance solved for it):
     the array code and the looped C read its terms as one dot product, not one
     operation (and one C line) each, and compute what the scalar code computes."""
-    from acausal.compiler.arraycode import LONG_SUM, _expr_statement, _linear_part
+    from acausal.compiler.backends.arraycode import LONG_SUM, _expr_statement, _linear_part
     n = 40
     compiled = ac.compile(Ladder(n), backend="numpy", cache=False)
     prog = compiled.code.program
@@ -244,7 +244,7 @@ def test_looped_c_reads_its_index_arrays_at_run_time(tmp_path, monkeypatch):
     import os
     import pickle
 
-    from acausal.compiler import cbuild
+    from acausal.native import build as cbuild
     monkeypatch.setenv("ACAUSAL_ARRAY_CODE", "always")
     monkeypatch.setenv("ACAUSAL_CACHE", str(tmp_path))
     first = ac.compile(Ladder(60), backend="c", cache=False)

@@ -1,7 +1,7 @@
 """Tarjan BLT ordering."""
-from acausal.compiler.blt import blt, strongly_connected_components
-from acausal.compiler.graph import LINEAR_CONST as C, UNASSIGNED
-from acausal.compiler.structure import make_structure, maximum_matching
+from acausal.compiler.structure.blt import blt, strongly_connected_components
+from acausal.compiler.structure.graph import LINEAR_CONST as C, UNASSIGNED
+from acausal.compiler.structure.matching import make_structure, maximum_matching
 
 
 def test_scc_order_and_content():

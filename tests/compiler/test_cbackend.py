@@ -1,6 +1,6 @@
 """The C backend against the numpy backend: the same functions, the same runs.
 
-Both print the same operations in the same order (compiler/emit.py), so they agree to
+Both print the same operations in the same order (compiler/backends/emit.py), so they agree to
 rounding: every generated function at random points, and whole simulations with
 events, modes, when-clauses, sampled controllers and dynamic state selection, to 1e-12
 of each signal's own scale.  Without a C compiler the module is skipped, except the test that ``"auto"``
@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 
 import acausal as ac
-from acausal.compiler import cbackend
+from acausal.compiler.backends import cbackend
 from acausal.library.electromechanical.examples.sampled_speed_control import SampledSpeedLoop
 from acausal.library.examples.motor_drive import MotorDrive
 from acausal.library.examples.pendulum import DoublePendulum, Pendulum
@@ -129,7 +129,7 @@ def test_a_sum_of_thousands_of_terms_compiles_in_both_backends():
     n = 5000
     x = sp.symbols(f"x0:{n}")
     s = sp.Symbol("s")
-    from acausal.compiler.codegen import plan, python_code
+    from acausal.compiler.backends.codegen import plan, python_code
     prog = plan([s - sp.Add(*[(k + 1) * x[k] for k in range(n)])], [s, *x], [])
     code = python_code(prog)
     source, sizes = cbackend.c_source({"f_": prog})

@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler import cbackend, cbuild
+from acausal.compiler.backends import cbackend
+from acausal.native import build as cbuild
 from acausal.library.hydraulics.examples.valve_motor import ValveControlledMotor
 from acausal.tests.heater import LimitedHeater
 

@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 
 import acausal as ac
-from acausal.compiler.codegen import extract_relations, generate
+from acausal.compiler.backends.codegen import extract_relations, generate
 from acausal.library.examples.pendulum import DoublePendulum
 
 

@@ -1,4 +1,4 @@
-"""The exact check of Pryce's system Jacobian and the LC conversion (compiler/conversion.py).
+"""The exact check of Pryce's system Jacobian and the LC conversion (compiler/index/conversion.py).
 
 Each system is drawn in a comment with its signature matrix Sigma (rows: equations,
 columns: variables, entries: highest derivative order), the canonical offsets c, d and
@@ -13,14 +13,14 @@ from sympy.polys.matrices import DomainMatrix
 
 from acausal.components.declarations import VariableAttributes
 from acausal.components.symbols import time
-from acausal.compiler.conversion import (block_jacobian, coefficient_oracle, convert,
+from acausal.compiler.index.conversion import (block_jacobian, coefficient_oracle, convert,
                                          exact_rank, exact_value, left_null_vectors)
-from acausal.compiler.flatten import FlatEquation, FlatModel, FlatParameter, FlatVariable
-from acausal.compiler.graph import LINEAR_CONST as K, UNASSIGNED
-from acausal.compiler.pantelides import pantelides
-from acausal.compiler.states import select_states
-from acausal.compiler.structure import StructurallySingular, make_structure
-from acausal.compiler.symbolic import SymbolicSystem
+from acausal.compiler.frontend.flatten import FlatEquation, FlatModel, FlatParameter, FlatVariable
+from acausal.compiler.structure.graph import LINEAR_CONST as K, UNASSIGNED
+from acausal.compiler.structure.pantelides import pantelides
+from acausal.compiler.structure.states import select_states
+from acausal.compiler.structure.matching import StructurallySingular, make_structure
+from acausal.compiler.algebra.symbolic import SymbolicSystem
 
 
 def sym(name):
@@ -246,7 +246,7 @@ def test_thousand_row_path_laplacian():
     assert len(u) == n and len(set(u.values())) == 1
 
 
-# -- numeric dummy choice (compiler/states.py) ---------------------------------------
+# -- numeric dummy choice (compiler/structure/states.py) ---------------------------------------
 def _ms_structure():
     # ey: der(y) = -y + l1            g1: y + x1 + x2 = s1(t)
     # e1: der(x1) = -x1 + l1 + l2     g2: x1 + x2 + x3 = s2(t)
@@ -311,7 +311,7 @@ def test_rank_mod_p_certifies_exact_full_rank():
     have no left null vector); rows with a dependent row are never certified."""
     import random
 
-    from acausal.compiler.modp import full_row_rank_mod_p as _full_row_rank_mod_p
+    from acausal.compiler.index.modp import full_row_rank_mod_p as _full_row_rank_mod_p
     rng = random.Random(7)
     for trial in range(1500):
         n = rng.randint(1, 7)
@@ -328,13 +328,13 @@ def test_rank_mod_p_certifies_exact_full_rank():
 
 def test_rank_mod_p_in_the_array_phase_agrees_with_exact_elimination(monkeypatch):
     """Once the active rows are few and filled in, the elimination mod p goes on in a
-    numpy array (compiler/modp.py); made to switch at once, and after a few sparse
+    numpy array (compiler/index/modp.py); made to switch at once, and after a few sparse
     pivots, it certifies exactly the rows that have no left null vector, square and
     wide, with dependent rows (a multiple of another, or the sum of two) and with
     large entries (residues of any size below the prime, whose products exceed 2**53)."""
     import random
 
-    from acausal.compiler import modp
+    from acausal.compiler.index import modp
     monkeypatch.setattr(modp, "DENSE_ROWS", 10**6)
     monkeypatch.setattr(modp, "DENSE_FILL", 0.0)
     rng = random.Random(11)

@@ -5,7 +5,7 @@ import random
 
 import sympy as sp
 
-from acausal.compiler.fastarith import symbol_arithmetic
+from acausal.compiler.frontend.fastarith import symbol_arithmetic
 from acausal.components.symbols import der
 
 NAMES = ["a", "b", "a.b", "a_b", "A", "R1.p.v", "R10.n.i", "x[1]", "x[10]", "Z", "_x"]

@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from acausal.compiler.codegen import generate
-from acausal.compiler.derivative import _solve_general, solve_linear
-from acausal.compiler.graph import LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR
-from acausal.compiler.symbolic import coefficient_kind, sum_partial
+from acausal.compiler.backends.codegen import generate
+from acausal.compiler.algebra.derivative import _solve_general, solve_linear
+from acausal.compiler.structure.graph import LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR
+from acausal.compiler.algebra.symbolic import coefficient_kind, sum_partial
 
 x, y, z, p, q = sp.symbols("x y z p q", real=True)
 
@@ -81,7 +81,7 @@ def test_generated_functions_compile_on_first_call_and_keep_line_numbers():
 def test_partial_of_a_product_is_sympys(e):
     """d/dx of a product in which x is a factor: the other factors (derivative.partial
     builds them directly unless a number would be distributed over a sum)."""
-    from acausal.compiler.derivative import partial
+    from acausal.compiler.algebra.derivative import partial
     d = partial(e, x)
     assert sp.srepr(d) == sp.srepr(sp.diff(e, x))
 
@@ -105,7 +105,7 @@ def test_a_variable_symbol_is_the_symbol_sympy_makes():
 def test_simple_partials_are_the_general_partials():
     """The partials read off a symbol, a product of two factors and a negated sum of
     +-symbols are partial()'s, the same objects; any other form is left to it."""
-    from acausal.compiler.derivative import partial, simple_partials
+    from acausal.compiler.algebra.derivative import partial, simple_partials
     L, R = sp.symbols("L R", positive=True)
     def minus(s):        # -(s), kept a product, as solve_linear builds it
         return sp.Mul(sp.S.NegativeOne, s, evaluate=False)

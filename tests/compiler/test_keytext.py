@@ -5,9 +5,9 @@ import re
 
 import sympy as sp
 
-from acausal.compiler.cachekeys import _key_text, _plain
-from acausal.compiler.flatten import flatten
-from acausal.compiler.symbolic import ExactText
+from acausal.compiler.cache.keys import _key_text, _plain
+from acausal.compiler.frontend.flatten import flatten
+from acausal.compiler.algebra.symbolic import ExactText
 from acausal.library.examples.motor_drive import MotorDrive
 from acausal.library.examples.pendulum import Pendulum
 
@@ -50,7 +50,7 @@ def test_a_declared_attribute_written_once_still_changes_the_key():
     model flattened twice has one."""
     from dataclasses import replace
 
-    from acausal.compiler.cachekeys import flat_key
+    from acausal.compiler.cache.keys import flat_key
     first, again = flatten(MotorDrive()), flatten(MotorDrive())
     assert flat_key(first, "numpy") == flat_key(again, "numpy")
     for change in ({"start": 0.125}, {"description": "another text"}):
@@ -62,7 +62,7 @@ def test_a_declared_attribute_written_once_still_changes_the_key():
 
 
 def _key_text_length(model, monkeypatch) -> int:
-    from acausal.compiler import cachekeys
+    from acausal.compiler.cache import keys as cachekeys
     seen = []
     digest = cachekeys._Hasher.hexdigest
 
@@ -90,7 +90,7 @@ def test_the_key_says_which_variable_an_equation_reads():
     """Symbols in the equations are written as their numbers in the variable records:
     two models that differ only in which variable one equation reads have different
     keys, and swapping the order of two variables' records changes the key."""
-    from acausal.compiler.cachekeys import flat_key
+    from acausal.compiler.cache.keys import flat_key
     first = flatten(MotorDrive())
     base = flat_key(first, "numpy")
     changed = flatten(MotorDrive())

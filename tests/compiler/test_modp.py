@@ -1,4 +1,4 @@
-"""The rank certificate mod p (compiler/modp.py) on the matrices of networks.
+"""The rank certificate mod p (compiler/index/modp.py) on the matrices of networks.
 
 The node-admittance matrix of a connected resistor network (a weighted graph
 Laplacian) is singular -- its rows sum to zero -- and becomes regular once one node is
@@ -12,7 +12,7 @@ from fractions import Fraction
 
 import pytest
 
-from acausal.compiler import modp
+from acausal.compiler.index import modp
 
 
 def _laplacian(n: int, extra_edges: int, seed: int) -> dict:

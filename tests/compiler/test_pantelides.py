@@ -3,10 +3,10 @@ import copy
 
 import pytest
 
-from acausal.compiler.graph import (
+from acausal.compiler.structure.graph import (
     LINEAR_CONST as C, LINEAR_PARAM as P, LINEAR_VAR as V, NONLINEAR as N, UNASSIGNED)
-from acausal.compiler.pantelides import pantelides, predict_derivative
-from acausal.compiler.structure import (
+from acausal.compiler.structure.pantelides import pantelides, predict_derivative
+from acausal.compiler.structure.matching import (
     IndexReductionFailed, OverdeterminedModel, StructurallySingular, make_structure)
 
 DERS = {"x": "der(x)", "y": "der(y)", "vx": "der(vx)", "vy": "der(vy)"}

@@ -7,8 +7,8 @@ import numpy as np
 import sympy as sp
 
 import acausal as ac
-from acausal.compiler.discrete import freeze_integer_functions
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.discrete import freeze_integer_functions
+from acausal.compiler.frontend.flatten import flatten
 
 
 class _FloorThroughParameter(ac.Component):

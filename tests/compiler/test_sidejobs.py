@@ -11,9 +11,9 @@ import time
 import pytest
 
 import acausal as ac
-from acausal.compiler import cache as store
+from acausal.compiler.cache import entries as store
 from acausal.compiler import pipeline, sidejobs
-from acausal.compiler.reduction import as_written
+from acausal.compiler.index.reduction import as_written
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="no fork on this system")
 
@@ -184,7 +184,7 @@ def fresh_cache(tmp_path, monkeypatch):
 def test_a_compile_with_side_jobs_equals_one_without(fresh_cache, monkeypatch):
     """The Cartesian pendulum (index 3 as written): forced to fork at any size, its key,
     index as written, report and cache entry equal those of a compile that does not."""
-    from acausal.compiler.flatten import flatten
+    from acausal.compiler.frontend.flatten import flatten
     from acausal.library.examples.pendulum import Pendulum
     plain = pipeline.compile_model(Pendulum(), "numpy", cache=False)
     monkeypatch.setattr(pipeline, "SIDE_JOBS_FROM", 0)

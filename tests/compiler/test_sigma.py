@@ -4,13 +4,13 @@ import random
 
 import pytest
 
-from acausal.compiler import sigma as sigma_mod
-from acausal.compiler.graph import LINEAR_CONST as C, LINEAR_PARAM as P
-from acausal.compiler.graph import LINEAR_VAR as V, NONLINEAR as N
-from acausal.compiler.pantelides import pantelides
-from acausal.compiler.sigma import signature_matrix, sigma_method
-from acausal.compiler.states import index1_matching, select_states
-from acausal.compiler.structure import StructurallySingular, diagnose, make_structure
+from acausal.compiler.structure import sigma as sigma_mod
+from acausal.compiler.structure.graph import LINEAR_CONST as C, LINEAR_PARAM as P
+from acausal.compiler.structure.graph import LINEAR_VAR as V, NONLINEAR as N
+from acausal.compiler.structure.pantelides import pantelides
+from acausal.compiler.structure.sigma import signature_matrix, sigma_method
+from acausal.compiler.structure.states import index1_matching, select_states
+from acausal.compiler.structure.matching import StructurallySingular, diagnose, make_structure
 
 NEG = -math.inf
 
@@ -105,7 +105,7 @@ def test_own_assignment_matches_scipy_on_random_signatures():
     """The Hungarian method used for small systems (no scipy.optimize import) finds a
     transversal of the same total value as scipy's assignment solver."""
     from scipy.optimize import linear_sum_assignment
-    from acausal.compiler.sigma import _hungarian
+    from acausal.compiler.structure.sigma import _hungarian
     import numpy as np
     rng = np.random.default_rng(11)
     for _ in range(300):
@@ -123,7 +123,7 @@ def test_sparse_assignment_matches_scipy_on_random_signatures():
     finds a transversal of the same total value as scipy's dense assignment solver, and
     calls a matrix singular exactly when scipy's best assignment needs an absent entry."""
     from scipy.optimize import linear_sum_assignment
-    from acausal.compiler.sigma import _sparse_transversal
+    from acausal.compiler.structure.sigma import _sparse_transversal
     import numpy as np
     rng = np.random.default_rng(5)
     solved = singular = 0
@@ -156,7 +156,7 @@ def test_large_model_needs_no_scipy():
     import subprocess
     import sys
     code = ("import sys\n"
-            "from acausal.compiler.sigma import sigma_method\n"
+            "from acausal.compiler.structure.sigma import sigma_method\n"
             "n = 500\n"
             "sig = {}\n"
             "for k in range(n):\n"
@@ -176,8 +176,8 @@ def test_a_transversal_given_is_used_only_when_its_offsets_prove_it():
     passes it: on random well-posed DAEs it is proved of highest value, and the offsets
     are those the Sigma-method finds alone.  A start whose offsets prove nothing (one
     offset lowered, or a transversal not of highest value) is ignored, same result."""
-    from acausal.compiler import sigma as sig_mod
-    from acausal.compiler.reduction import _pantelides_transversal
+    from acausal.compiler.structure import sigma as sig_mod
+    from acausal.compiler.index.reduction import _pantelides_transversal
     rng = random.Random(3)
     proved = refused = 0
     for _ in range(600):

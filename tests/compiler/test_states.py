@@ -1,13 +1,13 @@
 """Dummy-derivative state selection after Pantelides."""
 import pytest
 
-from acausal.compiler.blt import blt
-from acausal.compiler.graph import (
+from acausal.compiler.structure.blt import blt
+from acausal.compiler.structure.graph import (
     ALWAYS, LINEAR_CONST as C, LINEAR_PARAM as P, LINEAR_VAR as V, NEVER,
     NONLINEAR as N, PREFER, UNASSIGNED)
-from acausal.compiler.pantelides import pantelides
-from acausal.compiler.states import index1_matching, select_states
-from acausal.compiler.structure import StructurallySingular, make_structure
+from acausal.compiler.structure.pantelides import pantelides
+from acausal.compiler.structure.states import index1_matching, select_states
+from acausal.compiler.structure.matching import StructurallySingular, make_structure
 
 
 def pendulum(priority=None):

@@ -3,8 +3,8 @@ import random
 
 import pytest
 
-from acausal.compiler.graph import LINEAR_CONST as C, LINEAR_PARAM as P, UNASSIGNED
-from acausal.compiler.structure import (
+from acausal.compiler.structure.graph import LINEAR_CONST as C, LINEAR_PARAM as P, UNASSIGNED
+from acausal.compiler.structure.matching import (
     OverdeterminedModel, StructurallySingular, UnderdeterminedModel,
     bipartite_matching, check_structure, diagnose, dulmage_mendelsohn,
     make_structure, maximum_matching)

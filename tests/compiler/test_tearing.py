@@ -1,8 +1,8 @@
 """Tearing of algebraic loops."""
-from acausal.compiler.graph import (
+from acausal.compiler.structure.graph import (
     LINEAR_CONST as C, LINEAR_PARAM as P, LINEAR_VAR as V, NONLINEAR as N)
-from acausal.compiler.structure import make_structure
-from acausal.compiler.tearing import tear
+from acausal.compiler.structure.matching import make_structure
+from acausal.compiler.structure.tearing import tear
 
 
 def check(s, eqs, vars, t):
@@ -62,9 +62,9 @@ def test_custom_solvable():
 def test_pendulum_loop_tears_on_the_multiplier():
     # after index reduction the accelerations and lam form one linear loop; guessing
     # lam makes every other unknown explicit, d/dt(d/dt(c)) is the residual
-    from acausal.compiler.blt import blt
-    from acausal.compiler.pantelides import pantelides
-    from acausal.compiler.states import index1_matching, select_states
+    from acausal.compiler.structure.blt import blt
+    from acausal.compiler.structure.pantelides import pantelides
+    from acausal.compiler.structure.states import index1_matching, select_states
     s = make_structure(
         [{"der(x)": C, "vx": C}, {"der(y)": C, "vy": C},
          {"der(vx)": P, "lam": V, "x": V}, {"der(vy)": P, "lam": V, "y": V},

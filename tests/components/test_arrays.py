@@ -301,7 +301,7 @@ class Attributed(ac.Component):
 
 
 def test_attributes_per_element_reach_the_flat_variables():
-    from acausal.compiler.flatten import flatten
+    from acausal.compiler.frontend.flatten import flatten
     flat = flatten(Attributed())
     x0, x1 = flat.variable("x[0]").attrs, flat.variable("x[1]").attrs
     assert (x0.start, x0.fixed, x0.nominal, x0.max, x0.state_select) == \

@@ -16,7 +16,7 @@ import pytest
 import sympy as sp
 
 import acausal as ac
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.flatten import flatten
 from acausal.components import (InvalidConnection, InvalidEquation, InvalidHierarchy,
                                 InvalidValue, NotInModel)
 from acausal.library.blocks import PI
@@ -93,8 +93,8 @@ def test_structural_zero_that_divides_names_the_parameter_and_the_equation():
 
 
 def test_parameter_below_its_minimum():
-    with _raises(InvalidValue, "'R1' (Resistor): parameter R = -1 is below its minimum 0"):
-        flatten(RC(R1={"R": -1}))
+    with _raises(InvalidValue, "'C1' (Capacitor): parameter C = -1 is below its minimum 0"):
+        flatten(RC(C1={"C": -1}))
 
 
 def test_parameter_above_its_maximum():
@@ -117,10 +117,10 @@ def test_parameter_above_its_maximum():
 
 def test_bound_parameter_outside_its_bounds_is_evaluated_and_named():
     class Holder(ac.Component):
-        Rp = ac.Parameter(-2.0)
-        R1 = Resistor(R=ac.ref("Rp"))
+        Cp = ac.Parameter(-2.0)
+        C1 = Capacitor(C=ac.ref("Cp"))
 
-    with _raises(InvalidValue, "'R1' (Resistor): parameter R = Rp (= -2.0) is below its "
+    with _raises(InvalidValue, "'C1' (Capacitor): parameter C = Cp (= -2.0) is below its "
                                "minimum 0"):
         flatten(Holder())
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.flatten import flatten
 from acausal.library.electrical import Capacitor, Ground, OnePort, Resistor, StepVoltage
 
 

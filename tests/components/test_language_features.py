@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.flatten import flatten
 from acausal.library import blocks as bl
 from acausal.library import rotational as rot
 
@@ -112,7 +112,7 @@ def test_signals_are_read_by_the_port_name_and_the_old_name():
     class Loop(ac.Component):
         src = bl.Step(height=2.0, startTime=0.0)
         lag = bl.FirstOrder(k=1.0, T=0.5) if hasattr(bl, "FirstOrder") else \
-            bl.TransferFunction(num=[1.0], den=[0.5, 1.0])
+            bl.TransferFunction(b=[1.0], a=[0.5, 1.0])
 
         def equations(self):
             return [ac.connect(self.src.y, self.lag.u)]
@@ -126,24 +126,24 @@ def test_signals_are_read_by_the_port_name_and_the_old_name():
 
 def test_structural_parameters_need_no_init():
     assert "__init__" not in vars(bl.TransferFunction)
-    tf = bl.TransferFunction(num=[2.0], den=np.array([1.0, 3.0, 2.0]))   # 2/((s+1)(s+2))
-    assert tf.den == [1.0, 3.0, 2.0] and len(tf.state) == 2
+    tf = bl.TransferFunction(b=[2.0], a=np.array([1.0, 3.0, 2.0]))   # 2/((s+1)(s+2))
+    assert tf.a == [1.0, 3.0, 2.0] and len(tf.state) == 2
     sig = inspect.signature(bl.TransferFunction)
-    assert repr(sig.parameters["den"].annotation) == "structural"
-    assert "den : structural" in bl.TransferFunction.__doc__
-    with pytest.raises(ac.InvalidValue, match="TransferFunction: structural parameter den "
+    assert repr(sig.parameters["a"].annotation) == "structural"
+    assert "a : structural" in bl.TransferFunction.__doc__
+    with pytest.raises(ac.InvalidValue, match="TransferFunction: structural parameter a "
                                               "= 'x' is not a real number"):
-        bl.TransferFunction(den=["x", 1.0])
-    with pytest.raises(ac.InvalidValue, match="TransferFunction.den is a structural "
+        bl.TransferFunction(a=["x", 1.0])
+    with pytest.raises(ac.InvalidValue, match="TransferFunction.a is a structural "
                                               "parameter"):
-        tf.den = [1.0]
+        tf.a = [1.0]
 
     class Holder(ac.Component):
-        tf = bl.TransferFunction(num=[1.0], den=[1.0, 1.0])
+        tf = bl.TransferFunction(b=[1.0], a=[1.0, 1.0])
 
-    with pytest.raises(ac.InvalidValue, match="'den' is a structural parameter, fixed "
+    with pytest.raises(ac.InvalidValue, match="'a' is a structural parameter, fixed "
                                               "when the component is made"):
-        Holder(tf={"den": [1.0, 2.0]})
+        Holder(tf={"a": [1.0, 2.0]})
 
 
 def test_a_structural_parameter_with_build_in_a_user_component():

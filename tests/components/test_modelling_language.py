@@ -2,7 +2,7 @@
 import pytest
 
 import acausal as ac
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.flatten import flatten
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, OnePort, Resistor
 from acausal.library.electromechanical import DCMotor
 from acausal.library.rotational import Fixed

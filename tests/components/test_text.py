@@ -46,7 +46,7 @@ def test_random_expressions_print_as_sympy_prints_them():
 
 
 def test_the_equations_of_library_examples_print_as_sympy_prints_them():
-    from acausal.compiler.flatten import flatten
+    from acausal.compiler.frontend.flatten import flatten
     from acausal.library.examples.motor_drive import MotorDrive
     from acausal.library.examples.pendulum import Pendulum
     from acausal.library.rotational.examples.coupled_clutches import CoupledClutches

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.flatten import flatten
-from acausal.compiler.unitcheck import check_units
+from acausal.compiler.frontend.flatten import flatten
+from acausal.compiler.frontend.unitcheck import check_units
 from acausal.components.units import UnitError, UnitWarning, convert_value, parse_unit
 from acausal.library import rotational as rot
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor

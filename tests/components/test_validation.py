@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.flatten import flatten
+from acausal.compiler.frontend.flatten import flatten
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
 
 
@@ -29,7 +29,7 @@ def _raises(exc, text):
 def test_unknown_name_suggests_the_declared_one_at_the_line_that_wrote_it():
     with pytest.raises(ac.NotInModel, match=re.escape(
             "Resistor has no parameter, variable or sub-component named 'r' (did you "
-            "mean 'R'?) (it has: R, i, n, p, v)")) as err:
+            "mean 'R'?) (it has: R, T_ref, alpha, i, n, p, v)")) as err:
         Resistor(r=5)
     # the error comes from the construction in this test, not from a later compile
     assert "Resistor(r=5)" in str(err.traceback[0].statement)
@@ -47,7 +47,8 @@ def test_unknown_name_several_levels_down_names_the_path():
 @pytest.mark.parametrize("mods, exc, text", [
     (dict(R=[1, 2]), ac.InvalidValue, "Resistor: parameter R = [1, 2] is not a real number"),
     (dict(R=float("nan")), ac.InvalidValue, "Resistor: parameter R = nan is not a number (NaN)"),
-    (dict(R=-1.0), ac.InvalidValue, "Resistor: parameter R = -1.0 is below its minimum 0"),
+    (dict(T_ref=-1.0), ac.InvalidValue,
+     "Resistor: parameter T_ref = -1.0 is below its minimum 0"),
     (dict(R=True), ac.InvalidValue, "Resistor: parameter R = True is a bool"),
     (dict(v="high"), ac.InvalidValue, "Resistor: variable 'v': a modification of a "
                                       "variable is a number (its start value) or a dict"),

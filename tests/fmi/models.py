@@ -57,7 +57,7 @@ class PulsedRC(ac.Component):
     """A 500 Hz pulse train (30 % high) into 10 Ohm and 10 uF: time events, of a relation
     and of a frozen floor value of time."""
 
-    src = el.PulseVoltage(V=1.0, width=0.3, period=0.002)
+    src = el.PulseVoltage(V=1.0, width=30.0, period=0.002)
     R = el.Resistor(R=10.0)
     C = el.Capacitor(C=1e-5, v={"start": 0.0, "fixed": True})
     gnd = el.Ground()

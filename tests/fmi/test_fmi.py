@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler.cbackend import compiler_available
+from acausal.compiler.backends.cbackend import compiler_available
 
 fmpy = pytest.importorskip("fmpy", reason="fmpy (the 'fmi' extra) is not installed")
 if compiler_available() is None:

@@ -7,7 +7,7 @@ values before and after are both right; tests/fmi/models.py, fmu_errors)."""
 import pytest
 
 import acausal as ac
-from acausal.compiler.cbackend import compiler_available
+from acausal.compiler.backends.cbackend import compiler_available
 
 fmpy = pytest.importorskip("fmpy", reason="fmpy (the 'fmi' extra) is not installed")
 if compiler_available() is None:

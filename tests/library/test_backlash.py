@@ -10,7 +10,7 @@ from scipy.integrate import solve_ivp
 
 import acausal as ac
 from acausal.library.blocks import Sine
-from acausal.library.rotational import GearWithBacklash, Inertia, StepTorque, Torque
+from acausal.library.rotational import GearWithBacklash, Inertia, TorqueStep, Torque
 from acausal.library.rotational.examples.rigid_backlash import RigidBacklashDrive
 
 J_A, J_B, N, DELTA = 0.01, 0.5, 5.0, 0.01
@@ -74,7 +74,7 @@ class ReversingDrive(ac.Component):
     motor = Inertia(J=J_A, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
     gear = GearWithBacklash(n=N, delta=DELTA, J_a=J_A, J_b=J_B)
     load = Inertia(J=J_B, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
-    drive = StepTorque(offsetTorque=0.5, stepTorque=-1.0, startTime=0.2)
+    drive = TorqueStep(offsetTorque=0.5, stepTorque=-1.0, startTime=0.2)
 
     def equations(self):
         return [ac.connect(self.drive.flange, self.motor.flange_a),

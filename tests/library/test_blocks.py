@@ -45,7 +45,7 @@ def test_sources_step_ramp_sine():
 
 
 class Pulses(ac.Component):
-    pulse = bl.Pulse(amplitude=2.0, width=0.3, period=0.25, offset=0.5, startTime=0.1)
+    pulse = bl.Pulse(amplitude=2.0, width=30.0, period=0.25, offset=0.5, startTime=0.1)
     integral = bl.Integrator()
 
     def equations(self):
@@ -122,7 +122,7 @@ def test_integrator_derivative_first_order():
                                       ([2.0, 1.0], [1.0, 0.8, 4.0]),
                                       ([0.5, 0.0, 1.0, 3.0], [1.0, 2.0, 3.0, 1.5])])
 def test_transfer_function_step_matches_scipy(num, den):
-    model = _chain(bl.Step(height=1.0), bl.TransferFunction(num=num, den=den))
+    model = _chain(bl.Step(height=1.0), bl.TransferFunction(b=num, a=den))
     t = np.linspace(0, 5, 101)
     res = ac.simulate(model, t_end=5, rtol=1e-10, t_eval=t)
     _, expected = sig.step(sig.lti(num, den), T=t)
@@ -143,7 +143,7 @@ class LoopWithPID(ac.Component):
     reference = bl.Step(height=1.0)
     error = bl.Feedback()
     controller = bl.PID(k=2.0, Ti=1.5, Td=0.2, Nd=8.0)
-    plant = bl.TransferFunction(num=[1.0], den=[0.5, 1.0, 0.0])
+    plant = bl.TransferFunction(b=[1.0], a=[0.5, 1.0, 0.0])
 
     def equations(self):
         return [ac.connect(self.reference.y, self.error.u1),

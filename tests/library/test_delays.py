@@ -236,7 +236,7 @@ def _shifted_sine(t, T=0.25, A=2.0, f=1.5, phase=0.7):
 @pytest.mark.parametrize("backend", ["numpy", "c"])
 def test_sine_through_fixed_delay_is_the_shifted_sine(backend):
     if backend == "c":
-        from acausal.compiler.cbackend import compiler_available
+        from acausal.compiler.backends.cbackend import compiler_available
         if compiler_available() is None:
             pytest.skip("no C compiler")
     t = np.linspace(0.0, 2.0, 401)
@@ -419,7 +419,7 @@ def test_linearization_steady_state_sensitivities_energy_and_fmu_refuse_delays(t
     with pytest.raises(ac.ModelError, match=r"energy audit does not evaluate delay\(\)"):
         ac.energy_balance(ac.simulate(model, t_end=1.0), model)
     pytest.importorskip("fmpy")
-    from acausal.compiler.cbackend import compiler_available
+    from acausal.compiler.backends.cbackend import compiler_available
     if compiler_available() is None:
         pytest.skip("no C compiler")
     with pytest.raises(ac.ModelError, match=r"delay\(delay.u.signal, delay.delayTime\) in "

@@ -51,10 +51,10 @@ class OpAmpCircuits(ac.Component):
     ground = el.Ground()
     R1 = el.Resistor(R=1e3)
     R2 = el.Resistor(R=3e3)
-    amplifier = el.IdealOpAmp()
+    amplifier = el.IdealOpAmp3Pin()
     Ri = el.Resistor(R=1e4)
     Ci = el.Capacitor(C=1e-6, v={"start": 0.0, "fixed": True})
-    integrator = el.IdealOpAmp()
+    integrator = el.IdealOpAmp3Pin()
 
     def equations(self):
         return [ac.connect(self.source.p, self.R1.p, self.Ri.p),
@@ -132,11 +132,11 @@ class SourcesOnResistors(ac.Component):
     also charges a capacitor (a state, so that the solver steps)."""
 
     ramp_v = el.RampVoltage(V=3.0, duration=0.5, offset=1.0, startTime=0.2)
-    pulse_v = el.PulseVoltage(V=2.0, width=0.25, period=0.4, offset=-1.0, startTime=0.1)
+    pulse_v = el.PulseVoltage(V=2.0, width=25.0, period=0.4, offset=-1.0, startTime=0.1)
     step_i = el.StepCurrent(I=1.5, offset=0.5, startTime=0.3)
     ramp_i = el.RampCurrent(I=-2.0, duration=0.3, startTime=0.4)
     sine_i = el.SineCurrent(I=0.7, f=3.0, phase=0.2, startTime=0.05)
-    pulse_i = el.PulseCurrent(I=1.0, width=0.5, period=0.2)
+    pulse_i = el.PulseCurrent(I=1.0, width=50.0, period=0.2)
     C = el.Capacitor(C=1.0)
     ground = el.Ground()
 
@@ -182,7 +182,7 @@ class MeasuredRC(ac.Component):
     ground = el.Ground()
 
     def equations(self):
-        return [ac.connect(self.reference.y, self.source.v_ref),
+        return [ac.connect(self.reference.y, self.source.v),
                 ac.connect(self.source.p, self.meter.pc, self.meter.pv),
                 ac.connect(self.meter.nc, self.ammeter.p),
                 ac.connect(self.ammeter.n, self.R.p),
@@ -199,9 +199,9 @@ def test_signal_voltage_rc_and_sensors():
     vc = 10.0 * (np.sin(w * t) - w * tau * np.cos(w * t) + w * tau * np.exp(-t / tau)) \
         / (1 + (w * tau)**2)
     assert np.max(np.abs(res["C.v"] - vc)) < 1e-7 * 10.0
-    assert np.allclose(res["voltmeter.v_out.signal"], res["C.v"], atol=1e-12)
+    assert np.allclose(res["voltmeter.v.signal"], res["C.v"], atol=1e-12)
     assert np.allclose(res["probe.phi.signal"], res["C.v"], atol=1e-12)
-    i = res["ammeter.i_out.signal"]
+    i = res["ammeter.i.signal"]
     assert np.allclose(i, res["R.i"], atol=1e-12)
     stored = 1e-3 * res["C.v"] * res["der(C.v)"]
     power = res["meter.power.signal"]
@@ -215,7 +215,7 @@ class ChargedBySignalCurrent(ac.Component):
     ground = el.Ground()
 
     def equations(self):
-        return [ac.connect(self.reference.y, self.source.i_ref),
+        return [ac.connect(self.reference.y, self.source.i),
                 ac.connect(self.source.n, self.C.p),
                 ac.connect(self.source.p, self.C.n, self.ground.p)]
 

@@ -115,7 +115,7 @@ def test_position_source_differentiates_its_reference():
 
 
 class TorqueSteps(ac.Component):
-    step = rot.StepTorque(stepTorque=3.0, offsetTorque=1.0, startTime=0.5)
+    step = rot.TorqueStep(stepTorque=3.0, offsetTorque=1.0, startTime=0.5)
     inertia = rot.Inertia(J=2.0)
     drag = rot.ConstantSpeed(w_fixed=0.7)
     slip = rot.Damper(d=0.4)

@@ -60,7 +60,7 @@ class GearOnRotatingHousing(ac.Component):
 
     drive = rot.ConstantTorque(tau_constant=T)
     input = rot.Inertia(J=JA)
-    gear = rot.IdealGear(n=N, useSupport=True)
+    gear = rot.IdealGear(ratio=N, useSupport=True)
     output = rot.Inertia(J=JB)
     housing_speed = Sine(amplitude=WS, f=FS)
     housing = rot.Speed()
@@ -201,6 +201,17 @@ def test_missing_support_is_named():
     class Drive(ac.Component):
         motor = rot.Torque()
 
-    named = r"'motor' \(Torque\): 'useSupport' is an argument of the constructor"
-    with pytest.raises(ac.ModelError, match=named + r".*Torque\(useSupport=True\)"):
+    named = r"'motor' \(Torque\): 'useSupport' is a structural parameter"
+    with pytest.raises(ac.ModelError, match=named + r".*Torque\(useSupport=...\)"):
         ac.compile(Drive(motor={"useSupport": True}))
+    # an absent support cannot be connected: the error names the flag
+    class Grounded(ac.Component):
+        motor = rot.Torque()
+        housing = rot.Fixed()
+
+        def equations(self):
+            return [ac.connect(self.motor.support, self.housing.flange)]
+
+    with pytest.raises(ac.AbsentComponent, match=r"'motor' \(Torque\)\.support exists "
+                                                 r"only with useSupport=True"):
+        ac.compile(Grounded())

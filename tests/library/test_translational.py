@@ -116,7 +116,7 @@ class TowedMass(ac.Component):
     tow = tr.ConstantSpeed(v_fixed=0.5)
     rope = tr.SpringDamper(c=20.0, d=1.0)
     mass = tr.Mass(m=2.0)
-    push = tr.StepForce(stepForce=-3.0, startTime=1.0)
+    push = tr.ForceStep(stepForce=-3.0, startTime=1.0)
     stretch = tr.RelPositionSensor()
 
     def equations(self):

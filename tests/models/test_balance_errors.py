@@ -2,7 +2,7 @@
 import pytest
 
 import acausal as ac
-from acausal.compiler.structure import OverdeterminedModel, UnderdeterminedModel
+from acausal.compiler.structure.matching import OverdeterminedModel, UnderdeterminedModel
 from acausal.library.electrical import Capacitor, ConstantVoltage, Ground, Resistor
 
 

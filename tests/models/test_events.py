@@ -69,7 +69,7 @@ class GearedReinit(ac.Component):
 
     torque = rot.ConstantTorque(tau_constant=2.0)
     motor = rot.Inertia(J=0.01)
-    gear = rot.IdealGear(n=4.0)
+    gear = rot.IdealGear(ratio=4.0)
     load = rot.Inertia(J=0.5)
 
     def equations(self):

@@ -5,7 +5,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.compiler.structure import StructuralError
+from acausal.compiler.structure.matching import StructuralError
 from acausal.library import rotational as rot
 from acausal.library.electrical import (Capacitor, ConstantVoltage, Ground, Inductor,
                                         OnePort, Resistor, SineVoltage)
@@ -89,7 +89,7 @@ class GearedInertias(ac.Component):
 
     drive = rot.ConstantTorque(tau_constant=2.0)
     J1 = rot.Inertia(J=0.5)
-    gear = rot.IdealGear(n=4.0)
+    gear = rot.IdealGear(ratio=4.0)
     J2 = rot.Inertia(J=3.0)
 
     def equations(self):

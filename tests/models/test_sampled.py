@@ -12,7 +12,7 @@ import pytest
 from scipy.signal import cont2discrete
 
 import acausal as ac
-from acausal.compiler.sampled import DiscreteVariableError
+from acausal.compiler.frontend.sampled import DiscreteVariableError
 from acausal.library.blocks import Constant
 from acausal.library.blocks.discrete import Sampler
 from acausal.library.electromechanical.examples.sampled_speed_control import (

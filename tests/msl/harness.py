@@ -17,7 +17,9 @@ The bound (:data:`BOUND`): a Real signal passes when
 over the reference's time grid, the points within :func:`event_window` of an event (of
 the reference's or of acausal's run) excluded: there the value depends on which side of
 the event a point falls, not on the accuracy of either run.  A reference that is
-constant is judged on the scale of its value (or 1 where it is 0).  A Boolean or
+constant is judged on the scale of its value (or 1 where it is 0); one whose values all
+lie within :data:`ZERO` of 0 is the constant 0, its variation the round-off of the tool
+that computed it (a coordinate that stays 0 by symmetry).  A Boolean or
 Integer signal (the result's array has a bool or integer dtype) passes when it equals the
 reference at every point outside those windows.  acausal's values are its own output at
 the reference's times (``t_eval``), not an interpolation between its steps.
@@ -41,6 +43,7 @@ __all__ = ["BOUND", "REFERENCES", "Reference", "SignalCheck", "Outcome", "load_r
            "event_window", "compare", "run_example", "examples", "package_of"]
 
 BOUND = 1e-3
+ZERO = 1e-12
 REFERENCES = Path(__file__).resolve().parent / "references"
 
 
@@ -157,6 +160,8 @@ def _compared_points(ref: Reference, extra_events) -> np.ndarray:
 
 
 def _scale(values: np.ndarray) -> float:
+    if float(np.max(np.abs(values))) <= ZERO:
+        return 1.0
     amplitude = float(np.max(values) - np.min(values))
     if amplitude > 0.0:
         return amplitude

@@ -1,7 +1,10 @@
 """Every MSL example of the library against the MSL's reference result (see harness.py).
 
 The examples of :data:`~acausal.tests.msl.subset.QUICK` run by default; the others are
-marked ``slow`` and run with ``make test-msl`` (``pytest -m "" tests/msl``, all of them)."""
+marked ``slow`` and run with ``make test-msl`` (``pytest -m "" tests/msl``, all of them).
+An example that cannot pass says why in ``msl_known_failure`` (the reference's own error
+measured against an independent solution, or a defect named with its cause): its test
+then expects the failure, strictly, so that it is noticed when it passes."""
 import numpy as np
 import pytest
 
@@ -14,6 +17,9 @@ EXAMPLES = examples()
 
 def _param(name):
     marks = () if name in QUICK else (pytest.mark.slow,)
+    why = getattr(EXAMPLES[name], "msl_known_failure", None)
+    if why:     # measured: the reference's own error, or a defect named with its cause
+        marks += (pytest.mark.xfail(strict=True, reason=why),)
     return pytest.param(name, id=name.replace("Modelica.", ""), marks=marks)
 
 
@@ -55,6 +61,15 @@ def test_the_bound_is_relative_to_the_amplitude_and_events_are_left_out():
     ours[-1] += 0.2 * BOUND * 2.0                                 # past it
     (check,) = compare(times, lambda n: ours, ref)
     assert not check.passed and check.at == 0.8
+
+
+def test_a_reference_at_round_off_around_zero_is_judged_as_zero():
+    t = np.linspace(0.0, 1.0, 11)
+    ref = _reference(t, z=1e-16 * np.sin(7 * t), x=1e-9 * np.sin(7 * t))
+    ours = np.full(11, 1e-5)                  # an integration error of a quantity that is 0
+    z, x = compare(t, lambda n: ours, ref)
+    assert z.passed and z.scale == 1.0
+    assert not x.passed                        # 1e-9 is a signal, judged on its amplitude
 
 
 def test_a_discrete_signal_must_agree_outside_the_events():

@@ -23,8 +23,9 @@ def test_signature_lists_parameters_with_defaults_and_units():
     sig.bind(R=2.0, v={"start": 1.0})          # variables and sub-components by keyword
     with pytest.raises(TypeError):
         sig.bind(2.0)                          # parameters are keyword-only, as __init__ is
-    assert str(inspect.signature(DCMotor)).startswith(
-        "(*, useSupport=False, R: float [Ohm] = 1.0, L: ")
+    text = str(inspect.signature(DCMotor))
+    assert text.startswith("(*, R: float [Ohm] = 1.0, L: ")
+    assert "useSupport: structural = False" in text    # the conditional support's flag
 
 
 def test_signature_keeps_a_structural_init_argument():
@@ -37,10 +38,11 @@ def test_signature_keeps_a_structural_init_argument():
 def test_help_shows_description_unit_bounds_and_the_class_docstring():
     text = pydoc.render_doc(Resistor, renderer=pydoc.plaintext)
     assert "Ohm's law" in text                         # the class's own docstring
-    assert "R : float [Ohm], default 1.0 (min 0)" in text
+    assert "R : float [Ohm], default 1.0" in text
+    assert "T_ref : float [K], default 300.15 (min 0)" in text
     assert "resistance" in text
     assert "<acausal.components.declarations.Parameter object>" not in text
-    assert "Parameter(1.0, unit='Ohm', min=0, description='resistance')" in text
+    assert "Parameter(1.0, unit='Ohm', description='resistance')" in text
     assert "p : PositivePin" in text                   # ports listed too
 
 
@@ -65,8 +67,10 @@ def test_signature_and_doc_follow_the_declarations_of_any_subclass():
 
 def test_summary_paragraph_is_kept():
     # tools that show a model's summary read the docstring's first paragraph
-    assert Resistor.__doc__.split("\n\n")[0] == "Ideal linear resistor, Ohm's law:  v = R i."
-    assert own_docstring(Resistor) == "Ideal linear resistor, Ohm's law:  v = R i."
+    summary = ("Ideal linear resistor (Modelica.Electrical.Analog.Basic.Resistor, MSL "
+               "v4.0.0),\nOhm's law with a linear temperature coefficient:")
+    assert Resistor.__doc__.split("\n\n")[0] == summary
+    assert own_docstring(Resistor).startswith(summary + "\n\n    R_actual")
     assert own_docstring(DCMotor).startswith("DC motor") and "----" not in own_docstring(DCMotor)
 
     class Undocumented(ac.Component):
@@ -77,8 +81,8 @@ def test_summary_paragraph_is_kept():
 
 
 def test_repr_shows_values_with_units():
-    assert repr(Resistor()) == "<Resistor (unbound): R=1.0 Ohm>"
-    assert repr(Resistor(R=5.0)) == "<Resistor (unbound): R=5.0 Ohm>"
+    assert repr(Resistor()) == "<Resistor (unbound): R=1.0 Ohm, T_ref=300.15 K, alpha=0.0 1/K>"
+    assert repr(Resistor(R=5.0)).startswith("<Resistor (unbound): R=5.0 Ohm, T_ref=")
     motor = DCMotor(L=2e-3)
     assert "L=0.002 H" in repr(motor) and "k=0.05 N.m/A" in repr(motor)
     assert repr(Resistor().p) == "<PositivePin (unbound)>"    # ports stay short

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler import cache as store
+from acausal.compiler.cache import entries as store
 from acausal.compiler.pipeline import compile_model
 from acausal.runtime import CompiledModel
 
@@ -49,7 +49,7 @@ def _tau(compiled) -> float:
 @pytest.mark.parametrize("backend", ["numpy", "c"])
 def test_a_hit_gives_the_same_model_and_says_so(backend):
     if backend == "c":
-        from acausal.compiler import cbackend
+        from acausal.compiler.backends import cbackend
         if cbackend.compiler_available() is None:
             pytest.skip("no C compiler")
     first = _compile(RC(), backend)
@@ -246,7 +246,7 @@ def test_models_with_events_and_dynamic_states_come_back_equal():
 
 def test_exact_texts_tell_apart_what_the_compiler_would():
     import sympy as sp
-    from acausal.compiler.symbolic import ExactText
+    from acausal.compiler.algebra.symbolic import ExactText
     x, y = sp.symbols("x y", real=True)
     ex = ExactText()
     texts = [ex(e) for e in (2 * x, 2.0 * x, sp.Float("2.0000000000000001", 30) * x,

@@ -9,7 +9,7 @@ import pickle
 import pytest
 
 import acausal as ac
-from acausal.compiler import cbackend
+from acausal.compiler.backends import cbackend
 from acausal.compiler.pipeline import compile_model
 from acausal.runtime import CompiledModel
 
@@ -86,7 +86,7 @@ def test_pruning_removes_an_entry_with_its_side_file(cache_dir, monkeypatch):
     models = cache_dir / "models"
     assert len(list(models.glob("*.programs.pkl"))) == 1
     monkeypatch.setenv("ACAUSAL_CACHE_SIZE", "1")
-    from acausal.compiler import cache
+    from acausal.compiler.cache import entries as cache
     cache._prune(str(cache_dir))
     assert not list(models.glob("*.pkl"))
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler import cbackend
+from acausal.compiler.backends import cbackend
 from acausal.library.examples.pendulum import Pendulum
 from acausal.tests.heater import LimitedHeater
 from acausal.tests.models.test_events import BouncingBall

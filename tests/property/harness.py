@@ -220,7 +220,7 @@ def make_case(ch: Chooser, strategy: str) -> Case:
 
 def _typed_errors():
     import acausal as ac
-    from acausal.compiler.structure import StructuralError
+    from acausal.compiler.structure.matching import StructuralError
     return (ac.ModelError, StructuralError, ac.InitializationFailed)
 
 

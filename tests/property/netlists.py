@@ -166,7 +166,7 @@ _CLASSES = {
     "translational": {"mass": ("tr.Mass", "m"), "spring": ("tr.Spring", "c"),
                       "damper": ("tr.Damper", "d")},
     "rotational": {"mass": ("rot.Inertia", "J"), "spring": ("rot.Spring", "c"),
-                   "damper": ("rot.Damper", "d"), "gear": ("rot.IdealGear", "n")},
+                   "damper": ("rot.Damper", "d"), "gear": ("rot.IdealGear", "ratio")},
 }
 _PINS = {"electrical": ("p", "n"), "translational": ("flange_a", "flange_b"),
          "rotational": ("flange_a", "flange_b")}
@@ -183,8 +183,8 @@ def _source_lines(net: Netlist, el: Element, decl: List[str], links: List[str]):
     if mech:
         cls, port = ("rot.Torque", "tau") if net.domain == "rotational" else ("tr.Force", "f")
     else:
-        cls, port = (("el.SignalVoltage", "v_ref") if el.kind == "V"
-                     else ("el.SignalCurrent", "i_ref"))
+        cls, port = (("el.SignalVoltage", "v") if el.kind == "V"
+                     else ("el.SignalCurrent", "i"))
     decl.append(f"{el.name} = {cls}()")
     if el.realize == "open":                # the input left unconnected
         return

@@ -178,7 +178,7 @@ class OpAmpIntegrator(ac.Component):
     src = el.SineVoltage(V=1.0, f=10.0)
     R = el.Resistor(R=1e3)
     C = el.Capacitor(C=1e-5, v={"start": 0.0, "fixed": True})
-    op = el.IdealOpAmp()
+    op = el.IdealOpAmp3Pin()
     gnd = el.Ground()
 
     def equations(self):

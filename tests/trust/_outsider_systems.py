@@ -51,7 +51,7 @@ class First(ac.Component):
     sine = bl.Sine(amplitude=10.0, f=5.0)
     torque = ro.Torque()
     inertia1 = ro.Inertia(J=0.1)
-    gear = ro.IdealGear(n=10.0)
+    gear = ro.IdealGear(ratio=10.0)
     inertia2 = ro.Inertia(J=2.0, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
     spring = ro.Spring(c=1e4)
     inertia3 = ro.Inertia(J=2.0, phi={"start": 0.0, "fixed": True}, w={"start": 0.0, "fixed": True})
@@ -131,15 +131,17 @@ class MotorThermal(ac.Component):
     winding = th.HeatCapacitor(C=MOTOR["Cw"], T={"start": MOTOR["T_amb"], "fixed": True})
     core = th.HeatCapacitor(C=MOTOR["Cc"], T={"start": MOTOR["T_amb"], "fixed": True})
     Gwc = th.ThermalConductor(G=MOTOR["Gwc"])
-    conv = th.Convection(Gc=MOTOR["Gc"])
+    conv = th.Convection()
+    Gc = bl.Constant(k=MOTOR["Gc"])
     amb = th.FixedTemperature(T=MOTOR["T_amb"])
 
     def equations(self):
         return [ac.connect(self.losses.y[0], self.Pw.Q_flow),
                 ac.connect(self.losses.y[1], self.Pc.Q_flow),
                 ac.connect(self.Pw.port, self.winding.port, self.Gwc.port_a),
-                ac.connect(self.Pc.port, self.core.port, self.Gwc.port_b, self.conv.port_a),
-                ac.connect(self.conv.port_b, self.amb.port)]
+                ac.connect(self.Pc.port, self.core.port, self.Gwc.port_b, self.conv.solid),
+                ac.connect(self.conv.fluid, self.amb.port),
+                ac.connect(self.Gc.y, self.conv.Gc)]
 
 
 class MotorThermalSteady(MotorThermal):
@@ -177,7 +179,7 @@ FILTER_DEN = (0.001, 0.03, 0.3, 1.0)
 
 class CriticalFilter(ac.Component):
     step = bl.Step(height=1.0, startTime=0.0)
-    tf = bl.TransferFunction(num=[1.0], den=list(FILTER_DEN))
+    tf = bl.TransferFunction(b=[1.0], a=list(FILTER_DEN))
 
     def equations(self):
         return [ac.connect(self.step.y, self.tf.u)]
@@ -195,7 +197,7 @@ class SaturatedLoop(ac.Component):
 
 class LeadLag(ac.Component):
     step = bl.Step(height=1.0, startTime=0.1)
-    tf = bl.TransferFunction(num=[1.0, 1.0], den=[0.1, 1.0])
+    tf = bl.TransferFunction(b=[1.0, 1.0], a=[0.1, 1.0])
 
     def equations(self):
         return [ac.connect(self.step.y, self.tf.u)]

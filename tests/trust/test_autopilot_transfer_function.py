@@ -66,8 +66,8 @@ class BlockAutopilot(ac.Component):
 
     reference = Step(height=0.1)
     error = Feedback()
-    pd = TransferFunction(num=[14.0 * T_1, 14.0], den=[0.1 * T_1, 1.0])
-    ship = TransferFunction(num=[K * T_A, K], den=np.polymul([T_1, 1.0, 0.0], [T_2, -1.0]))
+    pd = TransferFunction(b=[14.0 * T_1, 14.0], a=[0.1 * T_1, 1.0])
+    ship = TransferFunction(b=[K * T_A, K], a=np.polymul([T_1, 1.0, 0.0], [T_2, -1.0]))
 
     def equations(self):
         return [ac.connect(self.reference.y, self.error.u1),

@@ -30,7 +30,7 @@ class GearedSpringDrive(ac.Component):
     sine = Sine(amplitude=AMP, f=F_HZ)
     torque = rot.Torque()
     motor = rot.Inertia(J=J_M)
-    gear = rot.IdealGear(n=N)
+    gear = rot.IdealGear(ratio=N)
     inertia_2 = rot.Inertia(J=J_2, phi={"start": 0.0, "fixed": True},
                             w={"start": 0.0, "fixed": True})
     spring = rot.Spring(c=C)

@@ -58,7 +58,7 @@ def _model(name, parts, connections, order):
 def coasting_gear_train(order):
     """Motor rotor (unpowered) - ideal gear - load on Karnopp friction."""
     parts = {"motor": lambda: rot.Inertia(J=D.J_m),
-             "gear": lambda: rot.IdealGear(n=D.n),
+             "gear": lambda: rot.IdealGear(ratio=D.n),
              "load": lambda: rot.Inertia(J=D.J_L, phi={"start": 0.0, "fixed": True},
                                          w={"start": -1.0, "fixed": True}),
              "friction": lambda: KarnoppFriction(F_c=D.F_c, F_s=D.F_c, dv=1e-9),
@@ -94,7 +94,7 @@ def positioner(order, set_point):
              "amplifier": el.SignalVoltage,
              "ground": el.Ground,
              "motor": lambda: DCMotor(R=D.R, L=D.L, k=D.k, J=D.J_m),
-             "gear": lambda: rot.IdealGear(n=D.n),
+             "gear": lambda: rot.IdealGear(ratio=D.n),
              "load": lambda: rot.Inertia(J=D.J_L, phi={"start": 0.0, "fixed": True},
                                          w={"start": 0.0, "fixed": True}),
              "friction": lambda: KarnoppFriction(F_c=D.F_c, F_s=D.F_c, dv=1e-9),
@@ -105,7 +105,7 @@ def positioner(order, set_point):
         return [ac.connect(m.set_point.y, m.error.u1),
                 ac.connect(m.angle.phi, m.error.u2),
                 ac.connect(m.error.y, m.pid.u),
-                ac.connect(m.pid.y, m.amplifier.v_ref),
+                ac.connect(m.pid.y, m.amplifier.v),
                 ac.connect(m.amplifier.p, m.motor.p),
                 ac.connect(m.amplifier.n, m.motor.n, m.ground.p),
                 ac.connect(m.motor.flange, m.gear.flange_a),

@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 import acausal as ac
-from acausal.compiler import causalize
+from acausal.compiler.structure import causalize
 
 from ._descriptor import Descriptor
 from ._networks import NetworkModel, nodal_matrices, random_netlist

@@ -6,7 +6,7 @@ sources are what is undetermined, rather than pointing at a missing ground."""
 import pytest
 
 import acausal as ac
-from acausal.compiler.structure import StructuralError
+from acausal.compiler.structure.matching import StructuralError
 from acausal.library import blocks as bl
 from acausal.library import electrical as el
 from acausal.library import translational as tr

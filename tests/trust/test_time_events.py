@@ -6,7 +6,7 @@ the source level, so the exact solution is a chain of exponentials through the e
 
     high:  v(t) = 1 - (1 - v_k) exp(-(t - t_k)/tau),   low:  v(t) = v_k exp(-(t - t_k)/tau)
 
-* Narrow pulses: width 5e-4 of a 1 s period (0.5 ms high from every whole second),
+* Narrow pulses: width 5e-4 of a 1 s period (0.05 %) (0.5 ms high from every whole second),
   C = 1 uF (tau = 1 ms), 20 s.  Edges in (0, 20): rising at 1, ..., 19 s (the one at
   t = 0 is the start, not an event) and falling at k + 5e-4 s, k = 0, ..., 19: 39 in
   all (the rising edge at t = 20 s itself, the 40th of (0, 20], ends the run and is not
@@ -79,7 +79,7 @@ def narrow():
     # output at the ends of some pulses, inside them and on the decays after them
     t = sorted({0.0, p["t_end"]} | {k + x for k in (0, 1, 7, 13, 19)
                                     for x in (0.5 * w, w, w + tau, w + 3 * tau, 0.5)})
-    model = PulsedRC(src={"width": w, "period": p["period"]}, C1={"C": tau / R_OHM})
+    model = PulsedRC(src={"width": 100 * w, "period": p["period"]}, C1={"C": tau / R_OHM})
     return ac.simulate(model, t_end=p["t_end"], rtol=1e-8, t_eval=np.array(t))
 
 
@@ -107,7 +107,7 @@ PWM = dict(width=0.5, period=5e-5, tau=1e-4, t_end=5e-3)
 def pwm():
     p = PWM
     t = np.linspace(0.0, p["t_end"], 1001)     # ten points a period, the edges included
-    model = PulsedRC(src={"width": p["width"], "period": p["period"]},
+    model = PulsedRC(src={"width": 100 * p["width"], "period": p["period"]},
                      C1={"C": p["tau"] / R_OHM})
     return ac.simulate(model, t_end=p["t_end"], rtol=1e-7, t_eval=t)
 

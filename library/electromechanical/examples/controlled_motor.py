@@ -34,9 +34,9 @@ class CurrentLoop(ac.Component):
 
     def equations(self):
         return [ac.connect(self.reference.y, self.error.u1),
-                ac.connect(self.sensor.i_out, self.error.u2),
+                ac.connect(self.sensor.i, self.error.u2),
                 ac.connect(self.error.y, self.controller.u),
-                ac.connect(self.controller.y, self.amplifier.v_ref),
+                ac.connect(self.controller.y, self.amplifier.v),
                 ac.connect(self.amplifier.p, self.sensor.p),
                 ac.connect(self.sensor.n, self.motor.p),
                 ac.connect(self.amplifier.n, self.motor.n, self.ground.p)]

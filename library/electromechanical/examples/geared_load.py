@@ -4,7 +4,7 @@ With the book's ratio n_b = w_L/w_m (a reduction gear has n_b < 1) the motor see
 
     (J_m + n_b^2 J_L) dw_m/dt = T - n_b T_e                          (3.12)
 
-and the gear is lossless: T_in w_in = T_out w_out (3.6).  ``IdealGear.n`` is the
+and the gear is lossless: T_in w_in = T_out w_out (3.6).  ``IdealGear.ratio`` is the
 ratio phi_m/phi_L = 1/n_b.  The gear couples the angles of two inertias (index 3):
 index reduction differentiates the gear constraint twice and keeps one state pair.
 """
@@ -24,7 +24,7 @@ class MotorGearLoad(ac.Component):
     ground = Ground()
     motor = DCMotor(R=1.0, L=1e-3, k=0.05, J=1e-4)
     power_in = PowerSensor()
-    gear = IdealGear(n=10.0)
+    gear = IdealGear(ratio=10.0)
     power_out = PowerSensor()
     load = Inertia(J=5e-3)
     disturbance = ConstantTorque(tau_constant=-0.2)

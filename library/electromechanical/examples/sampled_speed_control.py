@@ -42,7 +42,7 @@ class SampledSpeedLoop(ac.Component):
     def equations(self):
         return [ac.connect(self.ref.y, self.err.u1), ac.connect(self.speed.w, self.err.u2),
                 ac.connect(self.err.y, self.pi.u), ac.connect(self.pi.y, self.zoh.u),
-                ac.connect(self.zoh.y, self.src.v_ref),
+                ac.connect(self.zoh.y, self.src.v),
                 ac.connect(self.src.p, self.motor.p),
                 ac.connect(self.src.n, self.motor.n, self.gnd.p),
                 ac.connect(self.motor.flange, self.speed.flange)]

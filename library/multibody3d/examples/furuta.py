@@ -51,7 +51,7 @@ class FurutaPendulum(ac.Component):
 
     def equations(self):
         return [ac.connect(self.torque_signal.y, self.motor.tau),
-                ac.connect(self.motor.flange, self.arm_joint.flange),
+                ac.connect(self.motor.flange, self.arm_joint.axis),
                 ac.connect(self.world.frame_b, self.arm_joint.frame_a),
                 ac.connect(self.arm_joint.frame_b, self.arm.frame_a, self.arm_rod.frame_a),
                 ac.connect(self.arm_rod.frame_b, self.pendulum_joint.frame_a),

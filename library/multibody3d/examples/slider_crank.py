@@ -50,7 +50,7 @@ class SliderCrank(ac.Component):
     slider = Body(m=ac.ref("m_s"))
 
     def equations(self):
-        return [ac.connect(self.drive.flange, self.crank_joint.flange),
+        return [ac.connect(self.drive.flange, self.crank_joint.axis),
                 ac.connect(self.world.frame_b, self.crank_joint.frame_a, self.guide.frame_a),
                 ac.connect(self.crank_joint.frame_b, self.crank.frame_a),
                 ac.connect(self.crank.frame_b, self.pin.frame_a),

@@ -41,12 +41,8 @@ def _top_start():
     # vertical in body coordinates is (sin theta, cos theta, 0), so
     # w = Omega (sin theta, cos theta, 0) + (omega_3 - Omega cos theta) (0, 1, 0)
     th = p["theta"]
-    return dict(Q1={"start": 0.0, "fixed": True}, Q2={"start": 0.0, "fixed": True},
-                Q3={"start": np.sin(th / 2), "fixed": True},
-                Q4={"start": np.cos(th / 2), "fixed": True},
-                w_x={"start": Omega * np.sin(th), "fixed": True},
-                w_y={"start": p["omega_3"], "fixed": True},
-                w_z={"start": 0.0, "fixed": True})
+    return dict(angles_start=(0.0, 0.0, th), angles_fixed=True,
+                w_rel={"start": [Omega * np.sin(th), p["omega_3"], 0.0], "fixed": True})
 
 
 class HeavyTop(ac.Component):
@@ -77,10 +73,8 @@ class TennisRacket(ac.Component):
 
     stop_time = 100.0
     world = World(g=0.0)
-    joint = FreeMotion(Q1=_fixed(0.0), Q2=_fixed(0.0), Q3=_fixed(0.0), Q4=_fixed(1.0),
-                       w_x=_fixed(RACKET["w"][0]), w_y=_fixed(RACKET["w"][1]),
-                       w_z=_fixed(RACKET["w"][2]), r_x=_fixed(0.0), r_y=_fixed(0.0),
-                       r_z=_fixed(0.0), v_x=_fixed(0.0), v_y=_fixed(0.0), v_z=_fixed(0.0))
+    joint = FreeMotion(angles_fixed=True, w_rel_b=_fixed(list(RACKET["w"])),
+                       r_rel_a=_fixed(0.0), v_rel_a=_fixed(0.0))
     body = Body(m=1.0, I_11=RACKET["I_1"], I_22=RACKET["I_2"], I_33=RACKET["I_3"])
 
     def equations(self):

@@ -29,7 +29,7 @@ class RigidBacklashDrive(ac.Component):
     load = Inertia(J=ac.ref("J_L"), phi={"start": 0.0, "fixed": True},
                    w={"start": 0.0, "fixed": True})
     drive = Torque()
-    square = Pulse(amplitude=1.0, width=0.5, period=0.4, offset=-0.5)
+    square = Pulse(amplitude=1.0, width=50.0, period=0.4, offset=-0.5)
 
     def equations(self):
         return [ac.connect(self.square.y, self.drive.tau),

@@ -10,6 +10,7 @@ Gc T_amb)/(Gc - alpha R_ref I^2) with rate (Gc - alpha R_ref I^2)/C while heated
 towards T_amb with rate Gc/C after t_off.
 """
 import acausal as ac
+from acausal.library.blocks import Constant
 from acausal.library.electrical import Ground, HeatingResistor, StepCurrent
 from acausal.library.thermal import Convection, FixedTemperature, HeatCapacitor
 
@@ -24,14 +25,16 @@ class HeatedResistor(ac.Component):
     ground = Ground()
     resistor = HeatingResistor(R_ref=10.0, T_ref=293.15, alpha=4e-3)
     body = HeatCapacitor(C=50.0, T={"start": 293.15, "fixed": True})
-    convection = Convection(Gc=1.0)
+    convection = Convection()
+    Gc = Constant(k=1.0)
     ambient = FixedTemperature(T=293.15)
 
     def equations(self):
         return [ac.connect(self.source.n, self.resistor.p),
                 ac.connect(self.resistor.n, self.source.p, self.ground.p),
-                ac.connect(self.resistor.heatPort, self.body.port, self.convection.port_a),
-                ac.connect(self.convection.port_b, self.ambient.port)]
+                ac.connect(self.resistor.heatPort, self.body.port, self.convection.solid),
+                ac.connect(self.convection.fluid, self.ambient.port),
+                ac.connect(self.Gc.y, self.convection.Gc)]
 
 
 if __name__ == "__main__":

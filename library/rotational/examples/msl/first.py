@@ -23,7 +23,7 @@ class First(ac.Component):
     fixed = Fixed()
     torque = Torque(useSupport=True)
     inertia1 = Inertia(J=0.1)
-    idealGear = IdealGear(n=10.0, useSupport=True)
+    idealGear = IdealGear(ratio=10.0, useSupport=True)
     inertia2 = Inertia(J=2.0, phi={"start": 0.0, "fixed": True},
                        w={"start": 0.0, "fixed": True})
     spring = Spring(c=1.0e4, phi_rel={"fixed": True})

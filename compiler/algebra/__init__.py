@@ -1,0 +1,2 @@
+"""The sympy side of the compiler: the symbolic system, partial derivatives,
+substitutions, exact arithmetic."""

@@ -1,0 +1,1 @@
+"""The compile cache: picklable compiled models, their entries and their keys."""

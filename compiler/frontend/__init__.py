@@ -1,0 +1,2 @@
+"""The language to the flat model: flattening, units, discrete and sampled values,
+delays, alias elimination."""

@@ -1,0 +1,583 @@
+"""Flattening: instance tree -> FlatModel (dotted names, connections resolved).
+
+Connection semantics follow the Modelica specification (section 9.2): every port of a
+component takes part in connections either from *inside* (the port belongs to a
+sub-component of the component that writes ``connect``) or from *outside* (it is the
+writing component's own port).  The ports joined by connect() form a node: across
+variables are equal, and the through variables sum to zero, inside ports counted with
++1 and outside ports with -1.  A port that is never connected from outside its own
+component (for the root: its own ports) gets through = 0.
+
+Flattening, where the names of equations and connections become known, checks what
+the components cannot (raising ``ModelError`` subclasses): every symbol of an equation
+belongs to the model, a connected port lies inside the component that connects it,
+``der()`` applies to something that varies, parameter bindings depend on parameters only
+and are not circular, values respect [min, max], and an infinite parameter leaves its
+equations finite (``1/Tt`` with Tt = inf is 0; ``R*i`` with R = inf is not).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from ...components import inheritance
+from ...components.component import (Component, Connection, InvalidConnection,
+                                     InvalidEquation, InvalidValue, ModelError, NotInModel,
+                                     Port, compiling, in_context)
+from ...components.declarations import Parameter, VariableAttributes, bound_violation
+from ...components.logic import INITIAL
+from ...components.symbols import Equation, When, der, text, time
+from .fastarith import symbol_arithmetic
+from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
+from .flatder import check_der_arguments, expand_derivatives, has_der
+from ..gcpause import gc_paused
+from ..algebra.symbolic import signed_sum, signed_terms, symbols_of
+from .usercode import failed_reading
+
+__all__ = ["FlatVariable", "FlatParameter", "FlatEquation", "FlatModel", "flatten"]
+
+
+class _Located:
+    @property
+    def where(self) -> str:
+        """The component, and an equation's label: ``spring (Spring), "Hooke's law"``."""
+        base = f"{self.component or '(model)'} ({self.component_class})"
+        label = getattr(self, "label", None)
+        return f'{base}, "{label}"' if label else base
+
+
+@dataclass
+class FlatVariable(_Located):
+    name: str
+    symbol: sp.Symbol
+    attrs: VariableAttributes
+    component: str
+    component_class: str
+    kind: str = "variable"
+    hint: str = ""            # the port's likely-mistake hint, for port variables
+
+
+@dataclass
+class FlatParameter(_Located):
+    name: str
+    symbol: sp.Symbol
+    value: object
+    unit: str = ""
+    description: str = ""
+    component: str = ""
+    component_class: str = ""
+    min: float | None = None
+    max: float | None = None
+    type: object = float      # float, bool or int (Real, Boolean, Integer)
+
+    def describe(self) -> str:
+        """``'R1' (Resistor): parameter R``, as the component's own errors say it."""
+        owner = f"'{self.component}'" if self.component else "the model"
+        local = self.name[len(self.component) + 1:] if self.component else self.name
+        return f"{owner} ({self.component_class}): parameter {local}"
+
+
+@dataclass
+class FlatEquation(_Located):
+    residual: sp.Expr
+    source: object            # the text; or the Equation, or the sum (printed "sum = 0"),
+                              # it is printed from on demand
+    component: str
+    component_class: str
+    kind: str = "equation"       # equation | connect | unconnected | initial
+    label: str | None = None
+    # the residual as flattened when it is a sum of +-symbols and +-der(symbol): while
+    # it is still the residual (``plain is residual``) it holds no function of another
+    # kind, and the passes that look for floor() or delay() need not walk it
+    plain: object = field(default=None, repr=False, compare=False)
+    # the variable alone on the left of ``ac.Eq`` as written (a Boolean or Integer
+    # variable's equation gives its value: compiler/sampled.py), else None
+    defines: object = field(default=None, repr=False, compare=False)
+
+    @property
+    def text(self) -> str:
+        """The equation as written (printed lazily: printing is slow on large models)."""
+        if not isinstance(self.source, str):
+            src = self.source
+            self.source = src.text if isinstance(src, Equation) else f"{text(src)} = 0"
+        return self.source
+
+    def describe(self) -> str:
+        return f"{self.text}   [{self.kind} in {self.where}]"
+
+
+@dataclass
+class FlatModel:
+    name: str
+    variables: list
+    parameters: list
+    equations: list
+    initial_equations: list = field(default_factory=list)
+    derivatives: dict = field(default_factory=dict)   # variable symbol -> der symbol
+    whens: list = field(default_factory=list)         # When clauses (condition, reinits)
+    structural_zeros: list = field(default_factory=list)  # parameters evaluated as 0
+    ports: list = field(default_factory=list)         # (path, Port class, effort, flow)
+    components: dict = field(default_factory=dict)    # path -> class name
+    derived: dict = field(default_factory=dict)       # bound parameter -> (binding, value)
+    uses_initial: bool = False                        # an equation reads initial()
+    inputs: list = field(default_factory=list)        # top-level inputs (frontend/inputs)
+
+    def variable(self, name: str) -> FlatVariable:
+        for v in self.variables:
+            if v.name == name:
+                return v
+        raise KeyError(name)
+
+
+@gc_paused
+def flatten(model: Component) -> FlatModel:
+    """Bind the instance tree, collect its declarations and equations, resolve connections."""
+    if not isinstance(model, Component):
+        raise ModelError(f"acausal compiles Components, got {model!r}")
+    model._bind("")
+    nodes = list(_walk(model))
+    flat = FlatModel(name=type(model).__name__, variables=[], parameters=[], equations=[])
+    connections = []
+    with_der = set()     # ids of the flat equations whose residuals contain der()
+    known = {}           # the classes' own equation methods (inheritance.collect)
+    with compiling(model), symbol_arithmetic():
+        for comp in nodes:
+            flat.components[comp.path] = type(comp).__name__
+            _collect_declarations(comp, flat)
+            if isinstance(comp, Port):
+                flat.ports.append((comp.path, type(comp).__name__, comp.effort, comp.flow))
+                continue
+            for item in _read(comp, "equations", known):
+                if isinstance(item, Connection):
+                    item.owner = comp
+                    connections.append(item)
+                elif isinstance(item, When):
+                    item.origin, item.origin_class = comp.path, type(comp).__name__
+                    flat.whens.append(item)
+                else:
+                    flat.equations.append(_flat_equation(item, comp, "equation", with_der))
+            for item in _read(comp, "initial_equations", known):
+                if not isinstance(item, Equation):
+                    raise InvalidEquation(f"{comp._describe()}.initial_equations() returned "
+                                          f"{item!r}; expected ac.Eq(lhs, rhs)")
+                flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
+            for item in _steady_state_equations(comp):
+                flat.initial_equations.append(_flat_equation(item, comp, "initial", with_der))
+    flat.uses_initial = bool(getattr(model, "_uses_initial", False))
+    _check_connections(connections, model)
+    flat.equations.extend(_connection_equations(connections, nodes))
+    from .inputs import find_inputs
+    flat.inputs = find_inputs(flat, model, connections)
+    _check_symbols(flat, with_der)
+    # substitution first: a structural zero removes the derivative it multiplies
+    # (L*der(i) with L = 0), and no der(i) may be created for it (substituting
+    # parameters makes no der(): with_der still holds every residual that has one)
+    _substitute_parameter_expressions(flat)
+    expand_derivatives(flat, with_der)
+    _check_infinite_parameters(flat)
+    return flat
+
+
+def _steady_state_equations(comp) -> list:
+    """``der(v) = 0`` at the start for each variable of ``comp`` declared or modified
+    ``steady=True`` (a steady state: ``Inertia(w={"steady": True})``)."""
+    out = []
+    for name, decl in comp.declarations().items():
+        if isinstance(decl, Parameter) or decl.shape is not None:
+            continue
+        if getattr(comp.variable_attributes(name), "steady", False):
+            out.append(Equation(der(getattr(comp, name)), 0,
+                                label=f"steady state of {name} at the start"))
+    return out
+
+
+def _walk(root: Component):
+    stack = [root]
+    while stack:
+        comp = stack.pop()
+        yield comp
+        stack.extend(reversed(list(comp.children().values())))
+
+
+def _read(comp: Component, method: str, known: dict) -> list:
+    """The items of ``comp``'s ``method`` over its class hierarchy (``inheritance``):
+    each class's own method once, base classes first, each item checked (``known``:
+    the classes' own methods, found once per flattening)."""
+    try:
+        parts = inheritance.collect(comp, method, known)
+    except ModelError as err:
+        raise in_context(err, f"{comp._describe()}.{method}()") from err
+    except Exception as err:  # the user's equations() raised: say where
+        raise ModelError(failed_reading(method, comp._describe(), err)) from err
+    items = []
+    for klass, part in parts:
+        if part is None:
+            where = f"{comp._describe()}.{method}()"
+            whose = where if klass is type(comp) else f"{where} (of {klass.__name__})"
+            raise InvalidEquation(f"{whose} returned None; it must return a list of "
+                                  "equations (is a 'return' missing?)")
+        items.extend(part)
+    for item in items:
+        if not isinstance(item, (Equation, Connection, When)):
+            hint = (" (a sympy relation or a truth value: acausal's equation is "
+                    "ac.Eq(lhs, rhs))") if isinstance(item, (sp.Basic, bool)) else ""
+            raise InvalidEquation(f"{comp._describe()}.{method}() returned {item!r}{hint}; "
+                                  "expected ac.Eq(lhs, rhs), ac.connect(a, b) or "
+                                  "ac.when(...)")
+    return items
+
+
+def _collect_declarations(comp: Component, flat: FlatModel) -> None:
+    for name, decl in comp.declarations().items():
+        if decl.shape is not None:
+            from .flatarrays import collect_array   # it imports this module
+            collect_array(comp, name, decl, flat)
+            continue
+        sym = getattr(comp, name)
+        if isinstance(decl, Parameter):
+            value = comp.parameter_value(name)
+            if value is None:
+                raise ModelError(f"parameter '{sym.name}' of {comp._describe()} has no value")
+            flat.parameters.append(FlatParameter(sym.name, sym, value, decl.unit,
+                                                 decl.description, comp.path,
+                                                 type(comp).__name__, decl.min, decl.max,
+                                                 decl.type))
+        else:
+            hint = comp.hint if isinstance(comp, Port) else ""
+            flat.variables.append(FlatVariable(sym.name, sym, comp.variable_attributes(name),
+                                               comp.path, type(comp).__name__, decl.kind,
+                                               hint))
+
+
+def _flat_equation(eq: Equation, comp: Component, kind: str, with_der: set) -> FlatEquation:
+    """The FlatEquation of ``eq``; its id is added to ``with_der`` if it has a der()."""
+    eq.origin, eq.origin_class = comp.path, type(comp).__name__
+    coeffs = {}
+    plain = signed_terms(eq.lhs, 1, coeffs) and signed_terms(eq.rhs, -1, coeffs) and coeffs
+    if plain:
+        residual = signed_sum(coeffs)
+        ders = any(type(q) is der for q in coeffs)
+    else:
+        residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
+        ders = has_der(residual)
+    out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+    if type(eq.lhs) is sp.Symbol:
+        out.defines = eq.lhs
+    if plain:
+        out.plain = residual
+    if ders:
+        with_der.add(id(out))
+    return out
+
+
+# -- connections -----------------------------------------------------------------------
+class _UnionFind:
+    """Connection sets; the root of a set is its first port in declaration order."""
+
+    def __init__(self):
+        self.parent = {}
+
+    def find(self, a):
+        root = self.parent.setdefault(a, a)
+        while self.parent[root] != root:
+            root = self.parent[root]
+        while self.parent[a] != root:  # path compression
+            self.parent[a], a = root, self.parent[a]
+        return root
+
+    def union(self, a, b):
+        ra, rb = sorted((self.find(a), self.find(b)), key=_order_key)
+        self.parent[rb] = ra
+
+
+def _order_key(node):
+    return node[2], node[1]
+
+
+def _check_connections(connections: list, root: Component) -> None:
+    """Every port of a connect() is in the model, and is the writing component's own or
+    lies inside one of its sub-components (Modelica 9.1)."""
+    for conn in connections:
+        for p in conn.ports:
+            if p._root is not root:
+                whose = (f"'{p.path}' of another model instance" if p._path is not None
+                         else "a port of a component that was never made part of it")
+                raise NotInModel(f"{conn!r} in {conn.owner._describe()}: the model "
+                                 f"({type(root).__name__}) does not contain this "
+                                 f"{type(p).__name__}: it is {whose}")
+            node = p._parent
+            while node is not None and node is not conn.owner:
+                node = node._parent
+            if node is None:
+                raise InvalidConnection(
+                    f"{conn!r} in {conn.owner._describe()}: port '{p.path}' is neither a "
+                    f"port of {conn.owner._describe()} nor inside one of its "
+                    "sub-components; connect it where both ends are visible")
+
+
+def _connection_equations(connections: list, nodes: list) -> list:
+    """Across equal and through summing to zero per node; unconnected through = 0."""
+    uf = _UnionFind()
+    order = {id(c): k for k, c in enumerate(nodes)}
+    ports = {}
+    for conn in connections:
+        keys = []
+        for p in conn.ports:
+            role = "outside" if getattr(p, "_parent", None) is conn.owner else "inside"
+            key = (id(p), role, order[id(p)])
+            ports[key] = p
+            keys.append(key)
+        for k in keys[1:]:
+            uf.union(keys[0], k)
+    groups = {}
+    for key in sorted(ports, key=_order_key):
+        groups.setdefault(uf.find(key), []).append(key)
+    out = []
+    for members in groups.values():
+        out.extend(_node_equations([(ports[k], k[1]) for k in members], connections))
+    connected_inside = {k[0] for k in ports if k[1] == "inside"}
+    for comp in nodes:
+        if isinstance(comp, Port) and id(comp) not in connected_inside:
+            for name in comp.through():
+                sym = getattr(comp, name)
+                out.append(FlatEquation(sym, f"{sym.name} = 0", comp.path,
+                                        type(comp).__name__, "unconnected"))
+    return out
+
+
+def _node_equations(members: list, connections: list) -> list:
+    first, _ = members[0]
+    where = ", ".join(p.path for p, _ in members)
+    eqs = []
+    for name in first.across():
+        a = getattr(first, name)
+        for p, _ in members[1:]:
+            b = getattr(p, name)
+            diff = signed_sum({a: 1, b: -1}) if a != b else a - b
+            plain = a != b and type(a) is sp.Symbol and type(b) is sp.Symbol
+            eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect",
+                                    plain=diff if plain else None))
+    for name in first.through():
+        signed = [(getattr(p, name), 1 if role == "inside" else -1) for p, role in members]
+        coeffs = dict(signed)
+        plain = len(coeffs) == len(signed) and all(type(q) is sp.Symbol for q in coeffs)
+        total = signed_sum(coeffs) if plain else sp.Add(*[c * q for q, c in signed])
+        eqs.append(FlatEquation(total, total, where, "connect", "connect",
+                                plain=total if plain else None))
+    return eqs
+
+
+# -- what equations and parameter bindings may refer to -----------------------------------
+def _check_symbols(flat: FlatModel, with_der: set) -> None:
+    """Parameter bindings use only parameters; equations use only the model's variables,
+    parameters and time, and at least one variable (``with_der``: the ids of the
+    equations with der(), whose arguments are checked)."""
+    var_syms = {v.symbol for v in flat.variables}
+    par_syms = {p.symbol for p in flat.parameters}
+    allowed = var_syms | par_syms | {time, INITIAL}
+    for p in flat.parameters:
+        if isinstance(p.value, sp.Basic) and not p.value.is_number:
+            _check_binding(p, p.value.free_symbols, var_syms, allowed)
+    for eq in flat.equations + flat.initial_equations:
+        if eq.kind not in ("equation", "initial"):
+            continue   # connection equations are built from the model's own ports
+        free = symbols_of(eq.residual)
+        if not free <= allowed:
+            _check_known(free - allowed, f"equation '{eq.text}' in {eq.where}")
+        if id(eq) in with_der:
+            check_der_arguments(eq, var_syms)
+        if free.isdisjoint(var_syms):
+            raise InvalidEquation(f"equation '{eq.text}' in {eq.where} involves no "
+                                  "variable of the model (only parameters, time and "
+                                  "numbers): it cannot determine anything")
+    for w in flat.whens:
+        free = set(w.condition.free_symbols)
+        for act in w.actions:
+            free |= act.variable.free_symbols | act.value.free_symbols
+        if not free <= allowed:
+            _check_known(free - allowed,
+                         f"when {w.condition} in {w.origin or '(model)'} ({w.origin_class})")
+
+
+def _check_binding(p: FlatParameter, free: set, var_syms: set, allowed: set) -> None:
+    if free <= allowed and time not in free and not p.value.has(der) \
+            and free.isdisjoint(var_syms):
+        return
+    where = f"{p.describe()} = {sp.sstr(p.value)}"
+    on_vars = sorted(s.name for s in free & var_syms)
+    if on_vars:
+        raise InvalidValue(f"{where} depends on the variable(s) {', '.join(on_vars)}; a "
+                           "parameter's value may depend only on other parameters")
+    if time in free:
+        raise InvalidValue(f"{where} depends on time; a parameter is constant (declare a "
+                           "Variable with an equation instead)")
+    if p.value.has(der):
+        raise InvalidValue(f"{where} contains der(); a parameter is constant")
+    _check_known(free - allowed, where)
+
+
+def _check_known(unknown: set, where: str) -> None:
+    if unknown:
+        names = ", ".join(f"'{s.name}'" for s in sorted(unknown, key=lambda s: s.name))
+        raise NotInModel(f"{where} uses {names}, which the model being compiled does not "
+                         "declare: a sympy Symbol made outside the model, or a variable "
+                         "of another model instance (use the variables and parameters "
+                         "of the model's own components)")
+
+
+# -- parameters bound to expressions, and der() ----------------------------------------
+def _substitute_parameter_expressions(flat: FlatModel) -> None:
+    """Substitute parameters bound to expressions of other parameters, and zeros.
+
+    A parameter whose value is exactly 0 is a *structural* zero (Modelica tools evaluate
+    such parameters, as with Evaluate=true): L*der(i) = v with L = 0 is the algebraic
+    equation 0 = v, and index reduction must see it so.  Give a parameter a non-zero
+    value to keep it tunable after compilation.  Every value, bound or not, is checked
+    against its declared [min, max].
+    """
+    resolved = _resolve_bindings(flat)
+    # (a Boolean or Integer parameter stays tunable at 0: false, or a count of none)
+    zeros = {p.symbol: sp.Integer(0) for p in flat.parameters
+             if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")
+             and p.type is float}
+    bound = {k: v.xreplace(zeros) for k, v in resolved.items()}
+    bound.update(zeros)
+    _check_bounds(flat, resolved)
+    flat.structural_zeros = sorted(p.name for p in flat.parameters if bound.get(p.symbol) == 0)
+    if not bound:
+        return
+    for eq in flat.equations + flat.initial_equations:
+        used = symbols_of(eq.residual) & bound.keys()
+        if used:
+            eq.residual = fast_xreplace(eq.residual, bound)
+            if has_undefined(eq.residual):
+                _divided_by_zero(flat, used, zeros, eq)
+    for w in flat.whens:
+        w.condition = w.condition.xreplace(bound)
+        for act in w.actions:
+            act.value = act.value.xreplace(bound)
+
+
+def _divided_by_zero(flat: FlatModel, used: set, zeros: dict, eq) -> None:
+    """A structural zero (directly or through a parameter bound to it) that leaves an
+    equation with 1/0: name the zero parameters and the equation."""
+    names = {p.symbol: p for p in flat.parameters}
+    culprits = {s for s in used if s in zeros}
+    culprits |= {z for s in used - culprits
+                 for z in sp.sympify(names[s].value).free_symbols if z in zeros}
+    which = " and ".join(f"{names[s].describe()} = 0"
+                         for s in sorted(culprits or used, key=lambda s: s.name))
+    raise InvalidValue(f"{which} makes the equation '{eq.text}' in {eq.where} divide by "
+                       "zero (a parameter of exactly 0 is a structural zero, substituted "
+                       "before compiling); give it a non-zero value")
+
+
+def _is_expression(value) -> bool:
+    return isinstance(value, sp.Basic) and not value.is_number
+
+
+def _resolve_bindings(flat: FlatModel) -> dict:
+    """symbol -> its binding in unbound parameters only, in dependency order (Kahn);
+    a cycle of bindings is an error naming it."""
+    exprs = {p.symbol: sp.sympify(p.value) for p in flat.parameters if _is_expression(p.value)}
+    waits = {s: e.free_symbols & exprs.keys() for s, e in exprs.items()}
+    users = {s: [] for s in exprs}
+    for s, deps in waits.items():
+        for d in deps:
+            users[d].append(s)
+    ready = [s for s in exprs if not waits[s]]
+    resolved = {}
+    while ready:
+        s = ready.pop()
+        deps = exprs[s].free_symbols & exprs.keys()
+        resolved[s] = exprs[s].xreplace({d: resolved[d] for d in deps})
+        for u in users[s]:
+            waits[u].discard(s)
+            if not waits[u]:
+                ready.append(u)
+    if len(resolved) < len(exprs):
+        raise _cycle_error(flat, exprs, {s: w for s, w in waits.items() if w})
+    return resolved
+
+
+def _cycle_error(flat: FlatModel, exprs: dict, waits: dict) -> InvalidValue:
+    by_symbol = {p.symbol: p for p in flat.parameters}
+    start = next(p.symbol for p in flat.parameters if p.symbol in waits)
+    chain = [start]
+    while True:   # follow unresolved dependencies until one repeats: that is a cycle
+        nxt = min(waits[chain[-1]], key=lambda s: s.name)
+        if nxt in chain:
+            cycle = chain[chain.index(nxt):] + [nxt]
+            break
+        chain.append(nxt)
+    steps = ", ".join(f"{s.name} = {sp.sstr(exprs[s])}" for s in cycle[:-1])
+    return InvalidValue(f"parameters {' -> '.join(s.name for s in cycle)} are defined in "
+                        f"terms of each other ({steps}); a parameter binding may not "
+                        f"depend on itself [{by_symbol[start].where}]")
+
+
+def _check_bounds(flat: FlatModel, resolved: dict) -> None:
+    """Each parameter's value (a binding evaluated with the values it uses) is a real
+    number within its declared [min, max]."""
+    leaf = None        # the values bindings are evaluated with, made for the first one
+    for p in flat.parameters:
+        if p.symbol in resolved:
+            if leaf is None:
+                leaf = {q.symbol: _as_sympy_number(q.value) for q in flat.parameters
+                        if q.symbol not in resolved}
+            expr = resolved[p.symbol].xreplace(leaf)
+            try:
+                value = float(expr)
+            except (TypeError, ValueError):
+                raise InvalidValue(f"{p.describe()} = {sp.sstr(p.value)} (= {sp.sstr(expr)}) "
+                                   "is not a real number") from None
+            text = f"{sp.sstr(p.value)} (= {value!r})"
+            if value != value:
+                raise InvalidValue(f"{p.describe()} = {text} is not a number (NaN)")
+            flat.derived[p.name] = (sp.sstr(p.value), value)
+        else:
+            value, text = float(p.value), f"{p.value!r}"
+        why = bound_violation(value, p.min, p.max)
+        if why:
+            raise InvalidValue(f"{p.describe()} = {text} {why}")
+
+
+def _as_sympy_number(value) -> sp.Expr:
+    x = float(value)
+    if abs(x) == float("inf"):
+        return sp.oo if x > 0 else -sp.oo
+    return sp.sympify(value) if isinstance(value, (int, sp.Basic)) else sp.Float(x)
+
+
+def _is_zero(value) -> bool:
+    try:
+        return float(value) == 0.0
+    except (TypeError, ValueError):   # an expression of parameters
+        return False
+
+
+_NON_FINITE = (sp.oo, -sp.oo, sp.zoo, sp.nan)
+
+
+def _check_infinite_parameters(flat: FlatModel) -> None:
+    """An infinite parameter value must leave the equations finite (1/Tt -> 0, a limit
+    of a clip never reached); where it does not (R*i), name the equation."""
+    infinite = {p.symbol: _as_sympy_number(p.value) for p in flat.parameters
+                if not _is_expression(p.value) and abs(float(p.value)) == float("inf")}
+    if not infinite:
+        return
+    names = {p.symbol: p for p in flat.parameters}
+    checks = [(eq.residual, f"equation '{eq.text}' in {eq.where}")
+              for eq in flat.equations + flat.initial_equations]
+    checks += [(act.value, f"reinit({act.variable}, {act.value}) in "
+                f"{w.origin or '(model)'} ({w.origin_class})")
+               for w in flat.whens for act in w.actions]
+    for expr, where in checks:
+        used = symbols_of(expr) & infinite.keys()
+        if used and expr.xreplace(infinite).has(*_NON_FINITE):
+            which = " and ".join(f"{names[s].describe()} = {names[s].value!r}"
+                                 for s in sorted(used, key=lambda s: s.name))
+            raise InvalidValue(f"{which} makes the {where} infinite or undefined; an "
+                               "infinite value is allowed only where the equations have a "
+                               "finite limit (as 1/Tt for Tt = inf)")

@@ -1,0 +1,80 @@
+"""Numeric values of incidence coefficients, for the checks of structural decisions.
+
+The structural passes decide on integers; some decisions are only as good as the numbers
+behind them (how a torn block amplifies errors, for one).  ``CoefficientValues`` gives the
+value of the coefficient of variable v in equation e, ``d residual_e / d v``, at the
+parameter values and start values the model was compiled with -- exact where the
+coefficient is a number or an expression of parameters, a sample where it depends on the
+variables.  Values are computed on demand and cached.
+"""
+from __future__ import annotations
+
+import math
+
+import sympy as sp
+
+from ...components.symbols import time
+from ..algebra.derivative import partial
+from ..algebra.symbolic import symbols_of
+
+__all__ = ["CoefficientValues"]
+
+
+class CoefficientValues:
+    """``value(e, v)``: d residual_e / d symbol_v at the compile-time point (float, or
+    None where it is not a finite number there)."""
+
+    def __init__(self, system, parameters, discretes=()):
+        # Why the point is not built here: a large model has tens of thousands of
+        # symbols and the checks ask for a few coefficients; each coefficient takes the
+        # values of its own symbols (discrete values and time 0, variables their start
+        # value, parameters their value, in that order of precedence)
+        self.system = system
+        self._parameters = {p.symbol: float(p.value) for p in parameters
+                            if is_number(p.value)}
+        self._discretes = {d.symbol for d in discretes}
+        self._subs = {}
+        self._cache = {}
+
+    def value(self, e: int, v: int):
+        key = (e, v)
+        if key not in self._cache:
+            self._cache[key] = self._evaluate(e, v)
+        return self._cache[key]
+
+    def _evaluate(self, e, v):
+        c = partial(self.system.equations[e].residual, self.system.symbols[v])
+        if not c.is_number:
+            c = c.xreplace({q: x for q in symbols_of(c)
+                            if (x := self._point(q)) is not None})
+        try:
+            x = float(c)
+        except (TypeError, ValueError):
+            return None
+        return x if math.isfinite(x) else None
+
+    def _point(self, q):
+        """The value of symbol q at the compile-time point (a Float), or None."""
+        if q in self._subs:
+            return self._subs[q]
+        if q in self._discretes or q == time:
+            x = 0.0
+        elif q in self.system.index:
+            info = self.system.var_info.get(q)
+            start = info.attrs.start if info is not None else None
+            x = float(start) if start is not None else 0.0
+        elif q in self._parameters:
+            x = self._parameters[q]
+        else:
+            x = None
+        out = self._subs[q] = sp.Float(x) if x is not None else None
+        return out
+
+
+def is_number(value) -> bool:
+    """Whether float(value) works (a parameter's value is a number, not an expression)."""
+    try:
+        float(value)
+        return True
+    except (TypeError, ValueError):
+        return False

@@ -1,0 +1,1 @@
+"""Examples of the signal blocks; ``msl`` holds those of Modelica.Blocks.Examples."""

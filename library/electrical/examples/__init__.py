@@ -1,0 +1,2 @@
+"""Electrical examples: each module is runnable (``python -m``) and each model has a
+``stop_time``."""

@@ -1,0 +1,2 @@
+"""Examples of Modelica.Electrical.Machines.Examples.DCMachines (MSL v4.0.0), each
+checked against the MSL's reference result (``tests/msl``)."""

@@ -1,0 +1,1 @@
+"""Native code: building generated C into shared libraries."""
