@@ -180,6 +180,9 @@ class SolverStats:
     linear_solver: str = ""      # "dense" or "sparse" LU, as chosen for the problem
     step_loop: str = "python"    # where the steps ran: "python" or "c" (solvers.cbdf)
     interpolated_outputs: int = 0   # output times whose item-17 solve failed
+    relaxed_components: int = 0     # algebraic components the driver took out of the
+                                    # error test to recover a step (solvers/recovery.py)
+    forced_steps: int = 0           # steps accepted without the error test (the same)
 
     def as_dict(self) -> dict:
         return dict(self.__dict__)

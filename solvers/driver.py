@@ -25,6 +25,11 @@
   accumulation point;
 * output: every accepted step (plus the event points before and after), or the
   ``t_eval`` points by dense output;
+* stiff restarts: a step that fails right after a restart, at round-off in an
+  algebraic variable or in a transient faster than the time resolution, is recovered
+  (:mod:`.recovery`: the algebraic components leave the error test; forced backward-Euler
+  steps cross the transient), counted in ``stats.relaxed_components`` and
+  ``stats.forced_steps``;
 * failures: a :class:`SimulationError` naming the time, the variables that dominated
   the weighted error (or the singular block) and carrying the partial output;
 * records: every reported event as a dict (``time``, ``kind`` "state" or "time", the
@@ -42,6 +47,7 @@ from .base import (DAEProblem, EventAction, InitializationFailed, SimulationErro
 from .bdf import BDF, StepFailure
 from .failures import failure_message
 from .initialization import consistent_initial, reinitialize
+from .recovery import passage, relax
 
 __all__ = ["integrate"]
 
@@ -228,6 +234,9 @@ class _Run:
         try:
             s.step()
         except StepFailure as exc:
+            then = self._recover(s, exc)
+            if then is not False:
+                return then
             raise self._step_failure(exc) from None
         return self._accepted(s)
 
@@ -257,7 +266,11 @@ class _Run:
         if self.keeps_discrete:
             self.snapshot_of.extend([len(self.snapshots) - 1] * len(ts))
         if code == R_FAIL:
-            raise self._step_failure(s.failure())
+            exc = s.failure()
+            then = self._recover(s, exc)
+            if then is not False:
+                return then
+            raise self._step_failure(exc)
         if code == R_FULL and s.pending:
             self._emit_step(s.t_prev, s.t, s.y, s.yp)
         if code == R_SPECIAL:
@@ -265,6 +278,16 @@ class _Run:
         if s.reselect:        # the loop found the choice of states degraded
             self._after_step(s)
         return None
+
+    def _recover(self, s, exc):
+        """A failed step right after a stiff restart (:mod:`.recovery`): False if the
+        run must fail, else what the driver does after an accepted step (None when the
+        BDF only restarted)."""
+        if relax(self, s, exc):
+            return None
+        if passage(self, s, exc):
+            return self._accepted(s)
+        return False
 
     def _accepted(self, s):
         """After an accepted step: events, output, the problem's after-step hook."""
