@@ -31,6 +31,7 @@ can all name them without importing each other.
     ModeConflict (ValueError)          no mode of the relations that a point satisfies
     UnitWarning (UserWarning)          a dimensional inconsistency, check_units="warn"
     ModeWarning (UserWarning)          a linearization at a switching point
+    InitialConditionWarning (UserWarning)  redundant initial conditions dropped
     TransferFunctionWarning (RuntimeWarning)   a transfer function recomputed
     CacheWarning (UserWarning)         the compile cache skipped or repaired
 """
@@ -45,7 +46,7 @@ __all__ = ["ModelError", "InvalidValue", "InvalidEquation", "DiscreteVariableErr
            "SimulationError", "InitializationFailed", "BackendError", "CacheError",
            "CacheWarning", "InvalidArgument",
            "OperatingPointError", "SteadyStateError", "ModeConflict", "UnitWarning",
-           "ModeWarning", "TransferFunctionWarning"]
+           "ModeWarning", "TransferFunctionWarning", "InitialConditionWarning"]
 
 
 # -- the model as written ------------------------------------------------------------------
@@ -234,6 +235,11 @@ class UnitWarning(UserWarning):
 class ModeWarning(UserWarning):
     """The operating point sits where a relation switches (a kink of the model): the
     linearization is that of the mode named in the message (``StateSpace.modes``)."""
+
+
+class InitialConditionWarning(UserWarning):
+    """Redundant initial conditions (more than the states, or several fixing the same
+    unknowns) held at the initial point with the others and were dropped."""
 
 
 class TransferFunctionWarning(RuntimeWarning):

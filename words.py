@@ -8,7 +8,9 @@ its first few and "and N more".  The whole texts stay in the data (``Event.relat
 """
 from __future__ import annotations
 
-__all__ = ["shortened", "listed", "TEXT", "ITEMS"]
+import re
+
+__all__ = ["shortened", "listed", "zero_causes", "TEXT", "ITEMS"]
 
 TEXT = 160          # characters of one equation or relation in a message
 ITEMS = 8           # names of a list in a message
@@ -25,3 +27,37 @@ def listed(items, n: int = ITEMS, limit: int = TEXT) -> str:
     items = [shortened(x, limit) for x in items]
     head = ", ".join(items[:n])
     return head + (f" and {len(items) - n} more" if len(items) > n else "")
+
+
+def zero_causes(zeros, components, flat=None) -> str:
+    """A sentence naming the parameters given exactly 0 (structural zeros: the terms
+    they multiply were removed, derivatives with them) of the ``components`` an error
+    is about, or of the model when none of those has one; "" when there are none.
+    With the flat model, only those that multiplied a derivative (a state lost: what
+    changes the structure), not a temperature coefficient left at its default 0."""
+    if flat is not None:
+        zeros = [z for z in zeros if _multiplies_derivative(flat, z)]
+    if not zeros:
+        return ""
+    places = {c for c in components if c}
+    near = [z for z in zeros if z.rsplit(".", 1)[0] in places
+            or any(z.startswith(c + ".") for c in places)]
+    named = near or list(zeros)
+    where = "of these components " if near else ""
+    return (f"the parameters {where}given 0 are structural zeros, which removed the terms "
+            f"they multiply (a derivative with them): {listed(named)}; give them a "
+            "non-zero value if that is not meant")
+
+
+def _multiplies_derivative(flat, zero: str) -> bool:
+    """Whether the parameter ``zero`` stands in an equation of its component that has a
+    derivative (as written: ``V/beta*der(p) = port.q``)."""
+    component, _, local = zero.rpartition(".")
+    # named in full (vol.V, as flattening prints it) or by its own name (V)
+    word = re.compile(rf"(?<![\w.])({re.escape(zero)}|{re.escape(local)})(?![\w(])")
+    for e in flat.equations:
+        if e.component == component:
+            text = str(e.source)
+            if "der(" in text and word.search(text):
+                return True
+    return False

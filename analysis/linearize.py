@@ -296,7 +296,7 @@ def _input_column(plant, name, t, z):
         raise KeyError(f"no parameter, input or variable named '{name}'{_inside(plant, name)}")
     sign, idx = c.outputs[internal]
     if sign is None and not callable(idx):
-        from ..compiler.index.balance import zero_causes
+        from ..words import zero_causes
         zeros = zero_causes(c.meta.get("structural_zeros", ()), [internal.rsplit(".", 1)[0]])
         raise ValueError(f"'{name}' is a constant of the model, it cannot be an input"
                          + (f" ({zeros}; or take the parameter that is 0 as the input, "

@@ -18,20 +18,19 @@ from ..components.userfunctions import has_calls, inline_functions
 from .algebra.derivative import solve_linear
 from .algebra.symbolic import symbols_of
 from .backends.cbackend import programs
-from .backends.codegen import FrozenSymbols, extract_relations, generate
+from .backends.codegen import FrozenSymbols, event_form, extract_relations, generate
 from .backends.domains import output_checks
 from .backends.parametric import parameter_functions
+from .frontend.outline import definition_of
 from .frontend.sampled import when_rows as clause_rows
 from .index.numeric import CoefficientValues, is_number
 from .modelcode import (DelayCode, DynamicSets, InitialCode, InputCode, ModelCode, RelationInfo,
                         WhenCode)
 from .report import EquationNames
 from .structure.causalize import causalize, full_form
-from .structure.graph import UNASSIGNED
+from .structure.graph import LINEAR_CONST, UNASSIGNED
 from .structure.matching import _match
-from ..errors import InitializationFailed, ModelError
-from ..words import listed
-from .index.balance import zero_causes
+from ..errors import ModelError
 
 __all__ = ["assemble", "model_code", "choose_initial_rows", "delay_code", "feeds_back"]
 
@@ -44,7 +43,8 @@ def assemble(system, reduction, reduced, report, discretes, helds=()):
     syms = system.symbols
     _inline_after_index_reduction(system, reduction)
     if reduction.dynamic:
-        caus = full_form(reduction, len(syms), len(system.equations))
+        caus = full_form(reduction, len(syms), len(system.equations),
+                         _fixed_definitions(system, reduction))
     else:
         held_items = [SimpleNamespace(symbol=s) for h in helds for s in (h.symbol, h.pre)]
         held_items.append(SimpleNamespace(symbol=INITIAL))
@@ -77,8 +77,12 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
         rows += [syms[s.var_to_diff[v]] for v in caus.z[: caus.n_states]]
         state_z, pairs, dummies = list(range(caus.n_states)), [], []
     else:
-        state_z, pairs, dummies = [], reduction.pairs, reduction.dummies
-    init_rows, init_text, n_mandatory = _initial_rows(system, reduced, reduction, caus, flat)
+        zpos = {v: k for k, v in enumerate(caus.z)}
+        state_z = []
+        pairs = [(zpos[a], zpos[b]) for a, b in reduction.pairs]
+        dummies = [zpos[d] for d in reduction.dummies]
+    init_rows, init_text, n_mandatory, init_sizes = _initial_rows(system, reduced,
+                                                                   reduction, caus)
     when_rows, when_layout = clause_rows(reduced.whens, z_syms, caus, pairs, helds, assigned)
     delay_rows = [d.argument for d in delays]
     sizes = [len(assigned), len(rows), len(init_rows), len(when_rows), len(delay_rows)]
@@ -106,7 +110,8 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
     rel_list = list(modes.values())
     code = generate(rows, z_syms, inputs, len(modes),
                     crossings + [d.argument for d in discretes], assigned, outputs=syms,
-                    discretes=dsyms, scales=[sp.Abs(r.lhs) + sp.Abs(r.rhs) for r in rel_list])
+                    discretes=dsyms,
+                    scales=[event_form(sp.Abs(r.lhs) + sp.Abs(r.rhs)) for r in rel_list])
     init_code = generate(init_rows, z_syms, inputs, len(modes), None, assigned,
                          discretes=dsyms)
     delays_code = generate(delay_rows, z_syms, inputs, len(modes), None, assigned,
@@ -127,15 +132,22 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
         has_initial=uses_initial, held_types=_type_names(flat, helds),
         time_linear=_time_linear(crossings + [d.argument for d in discretes], assigned,
                                  set(psyms) | set(dsyms)))
-    initial = InitialCode(init_code, init_text, choose_initial_rows(
-        code, init_code, n_res, n_mandatory, reduction.n_states, len(z_syms), init_text))
+    kept, redundant = choose_initial_rows(code, init_code, n_res, n_mandatory,
+                                          reduction.n_states, len(z_syms))
+    initial = InitialCode(init_code, init_text, kept, redundant, n_mandatory, init_sizes)
+    if redundant:
+        report.notes.append(
+            f"{len(redundant)} of {n_mandatory} initial conditions are redundant "
+            "structurally (more conditions than states, or several fixing the same "
+            "unknowns): checked at the initial point, dropped if consistent: "
+            + "; ".join(init_text[k] for k in redundant))
     out = ModelCode(
         code, names, [p.name for p in params], [float(p.value) for p in params], n_res,
         state_z, pairs, dummies, [_nominal(system, v) for v in caus.z],
         [_start(system, v) for v in caus.z],
         _output_map(flat, aliases, {q: k for k, q in enumerate(syms)}, psyms),
         relations, initial, report=report,
-        dynamic=_dynamic(reduction) if reduction.dynamic else None,
+        dynamic=_dynamic(reduction, caus) if reduction.dynamic else None,
         meta={"n_all": len(syms), "causal": caus.causal,
               "assigned_names": [a.name for a, _ in assigned],
               "equation_names": EquationNames(system, caus.residual_eqs),
@@ -274,33 +286,32 @@ def _time_linear(items, assigned, frozen) -> list:
     return out
 
 
-def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z,
-                        descriptions) -> np.ndarray:
-    """The mandatory initial rows, then those optional start-value rows (in state order)
-    that complete a perfect matching of [G; initial rows] onto z (Modelica's rule: start
-    values fix the states that nothing else determines)."""
+def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z):
+    """``(kept, redundant)``: the mandatory initial rows that complete a structural
+    matching of [G; initial rows] onto z, in the order given, then those optional
+    start-value rows (in state order) that complete it (Modelica's rule: start values
+    fix the states that nothing else determines).  ``redundant`` are the mandatory rows
+    left out: an over-specified initial problem, which the runtime accepts where the
+    dropped conditions hold at the computed initial point (OpenModelica removes
+    redundant initial equations after checking them, and so do we)."""
     keep = model_code.jac_rows < n_res
     adj = _adjacency(model_code.jac_rows[keep], model_code.jac_cols[keep], n_res)
     i_adj = _adjacency(init_code.jac_rows, init_code.jac_cols, init_code.n_rows)
-    adj += i_adj[:n_mandatory]
     l2r, r2l = _match(adj, n_z)
-    if min(l2r, default=0) < 0:
-        bad = [descriptions[k - n_res] for k, v in enumerate(l2r) if v < 0 and k >= n_res]
-        raise InitializationFailed(
-            "the initial conditions contradict the model equations structurally "
-            "(they determine the same variables twice): " + "; ".join(bad or ["(model)"]))
-    chosen = list(range(n_mandatory))
-    for k in range(n_mandatory, init_code.n_rows):
-        if len(chosen) == n_states:
+    chosen, redundant = [], []
+    for k in range(init_code.n_rows):
+        if len(chosen) == n_states and k >= n_mandatory:
             break
         adj.append(i_adj[k])
         l2r.append(-1)
-        if _augment(len(adj) - 1, adj, l2r, r2l):
+        if len(chosen) < n_states and _augment(len(adj) - 1, adj, l2r, r2l):
             chosen.append(k)
         else:
             adj.pop()
             l2r.pop()
-    return np.array(chosen, dtype=np.int64)
+            if k < n_mandatory:
+                redundant.append(k)
+    return np.array(chosen, dtype=np.int64), redundant
 
 
 def _augment(root, adj, l2r, r2l) -> bool:
@@ -345,17 +356,63 @@ def _inline_after_index_reduction(system, reduction) -> None:
             s.graph[e], s.coeff[e] = system.incidence(eq.residual)
 
 
-def _dynamic(reduction) -> DynamicSets:
+def _dynamic(reduction, caus) -> DynamicSets:
+    """The level blocks of the run-time choice of states, over the rows of F and the
+    solver vector z (the full form, without its assigned definitions)."""
     s = reduction.structure
     sel = reduction.selection
+    zpos = {v: k for k, v in enumerate(caus.z)}
+    row = {e: k for k, e in enumerate(caus.residual_eqs)}
     level_rows = {r for rows, _ in sel.levels for r in rows}
-    row_vars = {r: [v for v in s.graph[r] if s.diff_to_var[v] is not UNASSIGNED]
+    # level 1's columns of lower kinematic order are no candidates (compiler/states.py)
+    excluded = set(getattr(sel, "excluded", ()))
+    row_vars = {row[r]: [zpos[v] for v in s.graph[r] if s.diff_to_var[v] is not UNASSIGNED
+                         and v not in excluded]
                 for r in level_rows}
-    priority = list(s.state_priority)
-    return DynamicSets([list(rows) for rows, _ in sel.levels], row_vars,
-                       [(-1 if d is UNASSIGNED else d) for d in s.var_to_diff],
-                       [(-1 if d is UNASSIGNED else d) for d in s.diff_to_var],
-                       priority, [s.order(v) for v in range(s.n_vars)], s.var_names)
+
+    def mapped(d):
+        return -1 if d is UNASSIGNED else zpos[d]
+
+    z = caus.z
+    return DynamicSets([[row[r] for r in rows] for rows, _ in sel.levels], row_vars,
+                       [mapped(s.var_to_diff[v]) for v in z],
+                       [mapped(s.diff_to_var[v]) for v in z],
+                       [s.state_priority[v] for v in z], [s.order(v) for v in z],
+                       [s.var_names[v] for v in z])
+
+
+def _fixed_definitions(system, reduction) -> list:
+    """The intermediate quantities of the outline pass that the choice of states
+    cannot involve -- their equation never differentiated, no derivative of theirs, in
+    no row of a level block -- as ``(variable, equation)`` in an order that computes
+    each after the others it reads: with dynamic state selection they are assigned,
+    not unknowns of the solver (compiler/outline.py makes hundreds for a long law)."""
+    s = reduction.structure
+    level_vars = {v for rows, _ in reduction.selection.levels for r in rows
+                  for v in s.graph[r]}
+    found = {}
+    for e, eq in enumerate(system.equations):
+        sym = definition_of(eq)
+        v = system.index.get(sym) if sym is not None else None
+        if (v is not None and s.eq_to_diff[e] is UNASSIGNED
+                and s.var_to_diff[v] is UNASSIGNED and v not in level_vars
+                and s.coeff[e].get(v) == LINEAR_CONST):
+            found[v] = e
+    order, done = [], set()
+    for v in sorted(found):               # depth first over what each reads, no recursion
+        stack = [(v, False)]
+        while stack:
+            u, ready = stack.pop()
+            if u in done:
+                continue
+            if ready:
+                done.add(u)
+                order.append((u, found[u]))
+                continue
+            stack.append((u, True))
+            stack.extend((w, False) for w in s.graph[found[u]]
+                         if w in found and w != u and w not in done)
+    return order
 
 
 def _nominal(system, k) -> float:
@@ -418,27 +475,23 @@ def _derived_bounds(parameters, psyms) -> list:
     return [(n, q.min, q.max, funcs[n]) for n, (q, _) in derived.items()]
 
 
-def _initial_rows(system, reduced, reduction, caus, flat=None):
+def _initial_rows(system, reduced, reduction, caus):
     """Initial equations and fixed starts (mandatory), then a start-value row for every
     other state (optional: :func:`choose_initial_rows` keeps those that
     make the initial system structurally nonsingular)."""
     rows = [e.residual for e in reduced.initial_equations]
     text = [f"initial equation {e.text} [{e.where}]" for e in reduced.initial_equations]
-    needed = reduction.n_states
+    # the size of each of the user's conditions where it is known (|start| + nominal of
+    # a fixed start value): the scale a redundant one is checked on (runtime/redundant.py)
+    sizes = [0.0] * len(rows)
     fixed = set()
     for k, sym in enumerate(system.symbols):
         info = system.var_info.get(sym)
         if info is not None and info.attrs.fixed and info.attrs.start is not None:
             rows.append(sym - info.attrs.start)
             text.append(f"{sym.name} = {info.attrs.start} (fixed start value) [{info.where}]")
+            sizes.append(abs(float(info.attrs.start)) + _nominal(system, k))
             fixed.add(k)
-    if len(rows) > needed:
-        places = [w.rsplit("[", 1)[-1].split(" (")[0] for w in text]
-        cause = zero_causes(reduced.structural_zeros, places, flat)
-        raise InitializationFailed(
-            f"the initial problem is over-specified: {len(rows)} initial conditions for "
-            f"{needed} states ({listed(system.symbols[v].name for v in reduction.states)}"
-            f"); conditions: {listed(text, 6)}" + (f"; {cause}" if cause else ""))
     n_mandatory = len(rows)
     for v in reduction.states:
         if v not in fixed:
@@ -446,7 +499,7 @@ def _initial_rows(system, reduced, reduction, caus, flat=None):
             # x - 0 is x (what sympy's subtraction returns, at a fraction of its cost)
             rows.append(system.symbols[v] if start == 0.0 else system.symbols[v] - start)
             text.append(f"{system.symbols[v].name} = {start} (start value of a state)")
-    return rows, text, n_mandatory
+    return rows, text, n_mandatory, sizes
 
 
 # -- delays (compiler/frontend/delays.py made them inputs) ------------------------------

@@ -106,11 +106,20 @@ class DynamicSets:
 @dataclass
 class InitialCode:
     """Initial-condition rows over z; ``rows`` are those kept (mandatory rows, then the
-    start-value rows a structural matching chose), ``descriptions`` label every row."""
+    start-value rows a structural matching chose), ``descriptions`` label every row.
+
+    The first ``n_mandatory`` rows are the user's initial equations and fixed start
+    values; ``redundant`` lists those among them that the structure cannot use beside
+    the others (more conditions than states, or two fixing the same unknowns): the
+    runtime then chooses the kept rows numerically and checks the dropped ones at the
+    initial point (:mod:`acausal.runtime.initial`)."""
 
     code: object
     descriptions: list
     rows: np.ndarray
+    redundant: list = field(default_factory=list)
+    n_mandatory: int = 0
+    sizes: list = field(default_factory=list)    # |start| + nominal of a fixed start
 
 
 @dataclass

@@ -5,7 +5,7 @@ the passes have made so far) and runs each pass on it in this order, timing it i
 index report, until one has made the ModelCode (a model found in the compile cache) or
 the pass named by ``until`` has run::
 
-    flatten -> cache_lookup -> units -> discrete -> sampled -> delays -> reinit_states
+    flatten -> cache_lookup -> outline -> units -> discrete -> sampled -> delays -> reinit_states
     -> alias -> alias_resolution -> structure -> balance -> conversion -> index_reduction
     -> state_selection -> assemble -> codegen -> index_as_written -> report -> c_backend
     -> cache_store
@@ -39,6 +39,7 @@ from .frontend.alias import eliminate_aliases, resolve_aliases_in
 from .frontend.delays import extract_delays
 from .frontend.discrete import freeze_integer_functions
 from .frontend.flatten import flatten
+from .frontend.outline import outline_expressions
 from .frontend.sampled import (declare_discrete_variables, explain_overdetermined,
                                pre_after_aliases, reinit_targets_are_states)
 from .frontend.unitcheck import check_units
@@ -117,6 +118,14 @@ def _cache_lookup(c: Compilation) -> None:
     code.report.units = check_units(c.flat, c.check_units, code.report.units)
     seconds = _time.perf_counter() - t0 + c.report.timings.get("flatten", 0.0)
     c.code = compile_cache.from_cache(found, seconds, "its flat model")
+
+
+def _outline(c: Compilation) -> None:
+    made = outline_expressions(c.flat)
+    if made:
+        c.report.notes.append(f"{made} intermediate quantities named in long expressions "
+                              "(compiler/frontend/outline.py): the passes after flattening "
+                              "work on small equations")
 
 
 def _units(c: Compilation) -> None:
@@ -247,6 +256,7 @@ def _cache_store(c: Compilation) -> None:
 PASSES = (
     Pass("flatten", _flatten, "instance tree -> flat model (connections resolved)"),
     Pass("cache_lookup", _cache_lookup, "an unchanged model from the compile cache"),
+    Pass("outline", _outline, "long expressions split into intermediate quantities"),
     Pass("units", _units, "every equation checked for dimensional consistency"),
     Pass("discrete", _discrete, "floor/mod frozen between events"),
     Pass("sampled", _sampled, "discrete variables held, when-assignments checked"),

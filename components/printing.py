@@ -195,5 +195,8 @@ _PRINTER = _TextPrinter()
 
 
 def text(expr) -> str:
-    """``sympy.sstr(expr)``, the same text, faster on the sums models are made of."""
-    return _PRINTER.doprint(expr)
+    """``sympy.sstr(expr)``, the same text, faster on the sums models are made of (an
+    expression too long to read is shortened: components/longtext.py)."""
+    from .longtext import shortened
+    short = shortened(expr, _PRINTER)
+    return _PRINTER.doprint(expr) if short is None else short

@@ -19,6 +19,7 @@ import sympy as sp
 from sympy import S
 from sympy.core.parameters import global_parameters
 
+from .ifexpr import unfolded_condition
 from .printing import text
 from ..errors import InvalidEquation
 
@@ -133,13 +134,14 @@ _PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
 def has_atom_in(expr, atoms: frozenset) -> bool:
     """``expr.has(*atoms)`` for atoms: one walk over the arguments, each atom looked up
     in the set (sympy's ``has`` builds a matcher and an iterator per node)."""
-    stack = [expr]
+    stack, seen = [expr], set()
     while stack:
         e = stack.pop()
         if e.is_Atom:
             if e in atoms:
                 return True
-        else:
+        elif e not in seen:          # a shared subexpression is walked once
+            seen.add(e)
             stack.extend(e.args)
     return False
 
@@ -214,6 +216,8 @@ def if_else(condition, then, otherwise):
     the integrator steps and switched only at located events.
     """
     cond = _condition(condition, "if_else()")
+    # if-expressions inside the condition stay whole (components/ifexpr.py)
+    cond = unfolded_condition(cond)
     return sp.Piecewise((_branch(then), cond), (_branch(otherwise), True))
 
 
@@ -234,9 +238,10 @@ def _condition(condition, where: str):
 
 
 def sign(x):
-    """sign(x) as an event-generating expression."""
-    x = sympify_value(x)
-    return sp.Piecewise((1, x > 0), (-1, x < 0), (0, True))
+    """sign(x) as an event-generating expression: sympy's ``sign``, whose two relations
+    x > 0 and x < 0 the compiler makes events (an if-expression would fold into every
+    condition it appears in: components/ifexpr.py)."""
+    return sp.sign(sympify_value(x))
 
 
 class no_event(sp.Function):

@@ -73,6 +73,11 @@ class DynamicStateSelection:
         self._reference = []
         self._plan = None                     # (choice, its blocks' layout) for keeps()
 
+    def forget(self) -> None:
+        """No memory of earlier searches (a new run starts from here)."""
+        self._reference = []
+        self._plan = None
+
     def _bases(self) -> list:
         out = []
         for v in range(len(self.var_to_diff)):

@@ -42,6 +42,7 @@ from ..solvers.initialization import solve_with_fallback
 from ..solvers.linalg import SPARSE_THRESHOLD, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
+from .redundant import check_dropped, choose_rows
 
 __all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives",
            "algebraic_system", "consistent_output"]
@@ -56,10 +57,28 @@ class InitialConditions:
     def __init__(self, initial):
         self.code = initial.code
         self.all_descriptions = list(initial.descriptions)
-        self.rows = np.asarray(initial.rows, dtype=np.int64)
+        # an over-specified problem (:mod:`.redundant`): the user's conditions that the
+        # structure could not keep, and how many of the rows are the user's
+        self.redundant = list(getattr(initial, "redundant", ()))
+        self.n_mandatory = int(getattr(initial, "n_mandatory", 0))
+        self.sizes = list(getattr(initial, "sizes", ()))
+        self.dropped = []          # texts of the conditions dropped at the last solve
+        self.select(initial.rows)
+
+    def select(self, rows) -> None:
+        """Keep ``rows`` (indices into every initial row) as the initial conditions."""
+        self.rows = np.asarray(rows, dtype=np.int64)
         self._renumber = np.full(self.code.n_rows, -1)
         self._renumber[self.rows] = np.arange(len(self.rows))
         self._entries = self._renumber[self.code.jac_rows] >= 0
+
+    def residual_all(self, t, z, p, m):
+        return self.code.residual(t, z, p, m, np.empty(self.code.n_rows))
+
+    def jacobian_all(self, t, z, p, m, n):
+        c = self.code
+        vals = c.jacobian(t, z, p, m, np.empty(len(c.jac_rows)))
+        return assemble(vals, c.jac_rows, c.jac_cols, (c.n_rows, n), True)
 
     @property
     def n(self) -> int:
@@ -82,7 +101,7 @@ class InitialConditions:
 def initialize(model, t0: float):
     """Consistent (z, z') at t0 with the discrete state settled (module docstring)."""
     z = model.start.copy()
-    _settle_at_start(model, t0, z)
+    _fresh_start(model, t0, z)
     if model.dynamic is not None:
         model.dynamic.switches = []
         model.reselect_states(t0, z, hysteresis=1.0)
@@ -108,15 +127,25 @@ def initialize(model, t0: float):
         + "; ".join(model.discrete.describe(k) for k in flipping[:5]), t0)
 
 
-def _settle_at_start(model, t0, z) -> None:
-    """The relations take their values at the start values, repeatedly until they agree:
-    a relation's operand may read another relation's value (``ramp.y > 0.5`` of a ramp
-    that is ``if time < startTime then offset else ...``), which must be settled before
-    it is read, not taken from the all-false values the discrete state starts with."""
-    zeros = np.zeros(model.discrete.n_rel + model.discrete.n_disc)
-    for _ in range(_MODE_ITERATIONS):
-        if not model.discrete.set_all(t0, z, model.p, lambda: zeros):
-            return
+def _fresh_start(model, t0, z) -> None:
+    """The discrete state and the choice of states as a new run finds them, whatever
+    ran before on this model: every relation and floor value taken from the start
+    values (in rounds, as relations read through others' values), the static choice of
+    dummy derivatives and no memory of earlier searches -- the same inputs give the
+    same run."""
+    d = model.discrete
+    d.m[: d.n_rel + d.n_disc] = 0.0
+    d.offset[:] = 0.0
+    d.event_band = None
+    d.hysteresis[:] = 0.0
+    d.last_switch[:] = -np.inf
+    model.init_modes(t0, z)
+    if model.dynamic is not None:
+        model.dynamic.forget()
+        static = set(model.model_code.dummies)
+        if model.dummies != static:
+            model.dummies = static
+            model._update_links()
 
 
 def _finite_derivatives(model, t0, zp) -> None:
@@ -137,9 +166,12 @@ def _finite_derivatives(model, t0, zp) -> None:
 def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
     """[G; I](z) = 0 with the discrete state frozen; failures name equations and
     conditions in the user's words."""
-    if model.n == 0:
-        return z_guess
     init = model.initial
+    if model.n == 0:             # every unknown assigned: the user's conditions checked
+        if init.redundant:
+            init.dropped = check_dropped(model, t0, z_guess, list(init.redundant), {},
+                                         list(init.rows))
+        return z_guess
 
     def F(z):
         try:
@@ -164,16 +196,46 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
         import scipy.sparse as sps
         return sps.vstack([model.dG_dy(t0, z), sps.csr_matrix(extra)]).tocsc()
 
-    weights = 1.0 / (_NEWTON_RTOL * np.abs(z_guess) + _NEWTON_RTOL * model.nominal)
+    def weights(z):
+        # on the iterate's own scale, never finer than the guess's
+        return 1.0 / (_NEWTON_RTOL * np.maximum(np.abs(z), np.abs(z_guess))
+                      + _NEWTON_RTOL * model.nominal)
     model.evaluation_errors.clear()
+    dropped, coords = _choose_conditions(model, t0, z_guess) if init.redundant else ([], {})
     try:
-        return solve_with_fallback(F, J, z_guess.copy(), weights,
-                                   f"initialization at t = {t0}", model.names,
-                                   lambda k: _row_name(model, k), t0)
+        z = solve_with_fallback(F, J, z_guess.copy(), weights,
+                                f"initialization at t = {t0}", model.names,
+                                lambda k: _row_name(model, k), t0)
     except InitializationFailed as err:
         if model.evaluation_errors:
             err.args = (f"{err.args[0]}; {model.evaluation_errors[0]}",) + err.args[1:]
         raise
+    if dropped:
+        init.dropped = check_dropped(model, t0, z, dropped, coords, list(init.rows))
+    return z
+
+
+def _choose_conditions(model, t0, z):
+    """An over-specified problem: the initial rows kept, chosen numerically at the start
+    point (:func:`.redundant.choose_rows`); returns the user's conditions dropped and
+    the coordinates that name what each conflicts with."""
+    init = model.initial
+    try:
+        dG = model.dG_dy(t0, z, dense=True)
+        dI = init.jacobian_all(t0, z, model.p, model.m, model.n)
+    except DOMAIN_ERRORS:
+        return list(init.redundant), {}
+    dG, dI = np.asarray(dG, dtype=float), np.asarray(dI, dtype=float)
+    if not (np.all(np.isfinite(dG)) and np.all(np.isfinite(dI))):
+        return list(init.redundant), {}
+    order = list(range(init.code.n_rows))      # the user's conditions first, as written
+    chosen, coords = choose_rows(dG, dI, model.state_index, model.algebraic_index,
+                                 np.abs(z) + model.nominal, order, len(init.rows))
+    if chosen is None:                         # keep the structural choice: Newton says why
+        return list(init.redundant), {}
+    init.select(sorted(chosen))
+    kept = set(chosen)
+    return [k for k in range(init.n_mandatory) if k not in kept], coords
 
 
 def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-6):
@@ -183,7 +245,11 @@ def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-
     alg, F, J = algebraic_system(model, t, z)
     if alg.size:
         atol_v = atol * model.nominal[alg]
-        weights = 1.0 / (rtol * np.abs(z[alg]) + atol_v)
+
+        def weights(za):
+            # on the iterate's own scale: an unknown that the event takes from 0 to
+            # 2e9 (a rate after a switch) is not judged on its value before it
+            return 1.0 / (rtol * np.maximum(np.abs(za), np.abs(z[alg])) + atol_v)
         model.evaluation_errors.clear()
         z[alg] = solve_with_fallback(F, J, z[alg].copy(), weights,
                                      "consistent algebraic values after the event",
@@ -327,8 +393,12 @@ def _note_evaluation(model, init, t, exc) -> None:
 
 def _note_singular(model, t, err, alg) -> None:
     report = getattr(model, "report", None)
-    if report is None:
+    if report is None or getattr(model, "_singular_noted", False):
         return
+    # once per model: naming the block analyses the matrix (an SVD), and a model whose
+    # charges' potentials are related only through the charges' balance meets it after
+    # every event
+    model._singular_noted = True
     eqs = [model.equation_names[r] for r in err.rows[:4]] if err.rows else []
     cols = [model.names[alg[c]] for c in err.cols[:4]] if err.cols else []
     note = (f"structural analysis fails at t = {t:.6g}: the Jacobian of the equations with "

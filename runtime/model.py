@@ -312,7 +312,7 @@ class CompiledModel(DAEProblem):
             jac_rows=code.jac_rows, jac_cols=code.jac_cols,
             jac_sign=np.where(self._der_entries, -1.0, 1.0), n_rel=d.n_rel, n_disc=d.n_disc,
             root_nominal=d.nominal, timed=d._timed.astype(float), p=self.p, m=d.m,
-            offset=d.offset, orientation=d._orientation, links=links,
+            offset=d.offset, orientation=d.loop_orientation, links=links,
             dynamic_test=dynamic_test if self.dynamic is not None else None)
 
     # -- evaluation of the generated code ------------------------------------------------
@@ -406,6 +406,11 @@ class CompiledModel(DAEProblem):
     # -- events (solver contract item 8) --------------------------------------------------
     def roots(self, t, z, zp):
         return self.discrete.oriented(t, z, self._params())
+
+    def tolerances(self, rtol, atol) -> None:
+        """Solver contract item 18: the run's tolerances (the relations' hysteresis
+        against chattering is bounded by atol, :mod:`.modes`)."""
+        self.discrete.atol = float(np.max(atol)) if np.size(atol) else 0.0
 
     def arm(self, t, z, zp, resolution: float = 0.0) -> None:
         """The driver (re)arms the zero-crossing functions; ``resolution`` is how

@@ -31,6 +31,17 @@ At an event the relations that crossed take the value they have just after it: t
 of g where it is clearly non-zero, else the sign of its rate dg/dt along the solution
 (the side the dynamics choose; a rate below the item's tolerance per unit of time is
 round-off), else the value of the relation at exactly zero.
+
+Chattering on round-off.  A relation whose both sides agree where it switches (a drain
+current that is 0 on both sides of vds = 0) may sit at zero as the solution converges
+there: its value then changes sign with the solver's noise, an event each time.  The
+solver does not know a variable better than its absolute tolerance, so a relation that
+switches back within ``_CHATTER_WINDOW`` event resolutions of its last switch gets a
+hysteresis ``h_k`` (first ``_FIRST_HYSTERESIS`` atol x its nominal, doubled at each such
+switch, at most atol x nominal): r_k = s_k g_k + side tolerance + h_k, so it switches
+again only when g leaves zero by more than h_k on the other side.  A relation that
+switches after a quiet spell loses its hysteresis.  A genuine sliding mode still
+chatters, on the scale of atol, and the driver stops it as before.
 """
 from __future__ import annotations
 
@@ -38,10 +49,14 @@ import math
 
 import numpy as np
 
+from .diagnostics import DOMAIN_ERRORS
+
 __all__ = ["DiscreteState", "ZERO_RTOL", "ZERO_NOMINAL"]
 
 ZERO_RTOL = 1e-10        # at zero: within this fraction of the relation's |lhs| + |rhs| ...
 ZERO_NOMINAL = 1e-12     # ... plus this fraction of the nominal of the variables it reads
+_CHATTER_WINDOW = 1e3    # a switch back within this many event resolutions is chattering
+_FIRST_HYSTERESIS = 1e-3  # a chattering relation's hysteresis starts at this of atol ...
 
 _UPWARD = {"StrictGreaterThan": True, "GreaterThan": True,
            "StrictLessThan": False, "LessThan": False}
@@ -78,6 +93,11 @@ class DiscreteState:
         self.m = np.zeros(self.n_rel + self.n_disc + 2 * self.n_held + self.has_initial)
         self.reset_held()
         self.offset = np.zeros(self.n_rel + 2 * self.n_disc)
+        # chattering on round-off (module docstring): per relation its hysteresis and
+        # the time of its last switch; atol is the run's (set by the driver)
+        self.hysteresis = np.zeros(self.n_rel)
+        self.last_switch = np.full(self.n_rel, -np.inf)
+        self.atol = 0.0
         self.time_linear = np.asarray(info.time_linear, dtype=np.int64)
         # items whose switching time is predicted exactly (time events) are only a
         # safety net in the zero-crossing search: they never switch ahead of that time
@@ -94,13 +114,28 @@ class DiscreteState:
 
     # -- values ------------------------------------------------------------------------
     def values(self, t, z, p) -> np.ndarray:
-        """g of every relation, then u of every floor value (unoriented)."""
-        return self._roots(t, z, p, self.m, np.empty(self.n_rel + self.n_disc))
+        """g of every relation, then u of every floor value (unoriented); NaN where the
+        functions cannot be evaluated (a relation's side read in the modes of the
+        relations inside it, before those are settled: abs(x) as -x under a root)."""
+        out = np.full(self.n_rel + self.n_disc, np.nan)
+        try:
+            return self._roots(t, z, p, self.m, out)
+        except DOMAIN_ERRORS:
+            return out           # what was computed before the failure (the C values)
+
+    def _scale_values(self, t, z, p) -> np.ndarray:
+        """|lhs| + |rhs| of every relation; NaN where it cannot be evaluated (see
+        :meth:`values`)."""
+        out = np.full(self.n_rel, np.nan)
+        try:
+            return self._scales(t, z, p, self.m, out)
+        except DOMAIN_ERRORS:
+            return out
 
     def tolerance(self, t, z, p, v=None) -> np.ndarray:
         """Per item, the distance from zero below which it counts as zero (``v``: the
         values at (t, z) if already computed)."""
-        scale = self._scales(t, z, p, self.m, np.empty(self.n_rel))
+        scale = self._scale_values(t, z, p)
         tol_rel = ZERO_RTOL * np.abs(scale) + ZERO_NOMINAL * self.nominal
         u = (self.values(t, z, p) if v is None else v)[self.n_rel:]
         tol_disc = ZERO_RTOL * (np.abs(u) + 1.0)
@@ -155,8 +190,13 @@ class DiscreteState:
         sign, side = self._orientation()
         r = np.empty(self.n_roots)
         if self.n_rel:
-            scale = self._scales(t, z, p, self.m, np.empty(self.n_rel))
+            scale = self._scale_values(t, z, p)
             tol = ZERO_RTOL * np.abs(scale) + ZERO_NOMINAL * self.nominal
+            if self.hysteresis.any():
+                # written as the compiled loop computes it (solvers/cbdf.py): the
+                # hysteresis rides on the nominal term, side^2 = 1
+                nominal = self.nominal + side * self.hysteresis / ZERO_NOMINAL
+                tol = ZERO_RTOL * np.abs(scale) + ZERO_NOMINAL * nominal
             r[: self.n_rel] = sign * g + side * tol
         if self.n_disc:
             n = self.m[self.n_rel:self.n_rel + self.n_disc]
@@ -165,6 +205,14 @@ class DiscreteState:
             r[self.n_rel + 1::2] = n + 1.0 - u + np.where(self._timed[self.n_rel:], tol_u,
                                                           -tol_u)
         return r + self.offset
+
+    def loop_orientation(self):
+        """``(sign, side, nominal)`` for a compiled step loop (solver contract item 18):
+        the orientation of :meth:`_orientation`, and the nominal term of each relation's
+        tolerance with its hysteresis (a chattering relation's, :meth:`_chatter`), which
+        the loop adds with the side's sign (side^2 = 1)."""
+        sign, side = self._orientation()
+        return sign, side, self.nominal[: self.n_rel] + side * self.hysteresis / ZERO_NOMINAL
 
     def _orientation(self):
         """Per relation, the sign that makes g >= 0 on the side its frozen value holds,
@@ -224,12 +272,31 @@ class DiscreteState:
         if vdot is None and at_zero.any():
             vdot = rates()
         for k in np.flatnonzero(which):
+            if math.isnan(v[k]):
+                continue     # not evaluable in these modes (NaN): settled in a later round
             if k < self.n_rel:
                 self.m[k] = float(self._relation_after(k, v[k], tol[k], at_zero[k], vdot,
                                                        resting))
             else:
                 self.m[k] = self._floor_after(v[k], tol[k], at_zero[k], vdot, k)
+        if resolution > 0.0:
+            self._chatter(t, np.flatnonzero(self.m[: self.n_rel] != before[: self.n_rel]),
+                          resolution)
         return not np.array_equal(before, self.m)
+
+    def _chatter(self, t, switched, resolution) -> None:
+        """Hysteresis for the relations that switch back on round-off (module
+        docstring)."""
+        if not switched.size:
+            return
+        # back within the window, at a later instant (an event iteration that flips a
+        # relation twice at one time is no chattering: a ball leaving the floor)
+        since = t - self.last_switch[switched]
+        quick = (since > 0.0) & (since <= _CHATTER_WINDOW * resolution)
+        limit = self.atol * self.nominal[switched]
+        grown = np.maximum(2.0 * self.hysteresis[switched], _FIRST_HYSTERESIS * limit)
+        self.hysteresis[switched] = np.where(quick, np.minimum(grown, limit), 0.0)
+        self.last_switch[switched] = t
 
     def set_all(self, t, z, p, rates, resolution: float = 0.0, resting: str = "value") -> bool:
         """Every item takes its value just after t: at the start (an item at zero whose

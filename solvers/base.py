@@ -104,6 +104,10 @@ What a problem provides (numbered, so integrators can cite it)
    not ends the run as a failure (``nonfinite="warn"``: said, and the run goes on).
    The driver itself checks that y is finite at every output point.
 
+18. ``tolerances(rtol, atol)`` (optional): called once before a run with its
+   tolerances (a compiled model bounds the hysteresis it gives a relation that chatters
+   on round-off by atol).
+
 What a solver counts (``SolverStats``): steps, residual evaluations, Jacobian
 evaluations, LU factorizations, Newton iterations, error-test failures, Newton
 (convergence) failures, events, the steps taken at each order, the order reductions
@@ -184,8 +188,10 @@ class LoopModel:
     ``int f(double t, const double *z, const double *p, const double *m, double *out,
     double *work)`` (``work``: ``n_work`` doubles) or a Python callable
     ``f(t, z, out)`` that writes ``out`` in place (raising where it fails).  The roots
-    are the relations' values ``g`` (``n_rel`` of them, oriented by ``orientation()``:
-    ``sign * g + side * (1e-10 |scale| + 1e-12 nominal)``) followed by the frozen
+    are the relations' values ``g`` (``n_rel`` of them, oriented by ``orientation()``,
+    which returns ``(sign, side, nominal)``: ``sign * g + side * (1e-10 |scale| + 1e-12
+    nominal)``, the nominal term carrying a chattering relation's hysteresis, all three
+    changing only with the discrete state) followed by the frozen
     integer values' arguments (``n_disc``, each two oriented functions), plus
     ``offset``; ``timed`` marks the items that are functions of time alone.  ``p`` and
     ``m`` are the model's own parameter and discrete-state arrays (read by address).
@@ -234,6 +240,9 @@ class SolverStats:
                                  # (solvers.linalg.LinearSolver.kind)
     step_loop: str = "python"    # where the steps ran: "python" or "c" (solvers.cbdf)
     interpolated_outputs: int = 0   # output times whose item-17 solve failed
+    relaxed_components: int = 0     # algebraic components the driver took out of the
+                                    # error test to recover a step (solvers/recovery.py)
+    forced_steps: int = 0           # steps accepted without the error test (the same)
 
     def as_dict(self) -> dict:
         return dict(self.__dict__)

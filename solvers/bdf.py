@@ -162,6 +162,7 @@ class BDF:
         self.gamma = [0.0] * (MAX_ORDER + 2)
         self.t_stop = float(t_stop)
         self.stald = StabilityLimitDetector() if stald and self.max_order >= 3 else None
+        self.relaxed = None       # components the driver took out of the error test
         self.restart(t0, y0, yp0, first_step, probe=probe)
 
     # ------------------------------------------------------------------ set-up
@@ -193,6 +194,9 @@ class BDF:
         self.ss = 20.0
         self.force_setup = True
         self._last_fail = self._last_err = None
+        # forced steps since the restart (solvers/recovery.py), the last one's size
+        self.forced, self.forced_ok, self.forced_h = 0, False, 0.0
+        self.t_restart = self.tn
         self.kmax = self.max_order     # lowered by stability limit detection
         if self.stald is not None:
             self.stald.reset()
@@ -209,6 +213,15 @@ class BDF:
         # which components are algebraic depends on the formulation (the choice of states)
         self.alg = np.asarray(self.problem.algebraic, bool).copy()
         self.self_scaled = unbounded(self.alg, getattr(self.problem, "self_scaled", None))
+        if self.relaxed is not None:
+            self.self_scaled = self.self_scaled | (self.relaxed & self.alg)
+
+    def relax(self, mask) -> None:
+        """Judge the components in ``mask`` (algebraic ones) as ``self_scaled`` from the
+        next restart on: out of the error test, through the unknowns they determine (the
+        driver's recovery from a step that fails at round-off, :mod:`.driver`)."""
+        mask = np.asarray(mask, bool)
+        self.relaxed = mask.copy() if self.relaxed is None else (self.relaxed | mask)
 
     def _update_weights(self) -> None:
         self.ewt_newton = 1.0 / (self.rtol * np.abs(self.phi[0]) + self.atol)
@@ -299,9 +312,16 @@ class BDF:
     def _hmin(self) -> float:
         return 16.0 * _EPS * max(abs(self.tn), abs(self.hused), 1e-300)
 
-    def step(self) -> None:
-        """Take one accepted step (IDAStep); raise :class:`StepFailure` if impossible."""
+    def step(self, forced: bool = False) -> None:
+        """Take one accepted step (IDAStep); raise :class:`StepFailure` if impossible.
+
+        ``forced``: a backward-Euler step of the set size ``hh`` accepted without the
+        error test (the driver's passage through a transient faster than the time
+        resolution, :mod:`.recovery`); :attr:`forced_ok` says whether the test would
+        have passed."""
         st = self.stats
+        if forced:
+            self.kk = 1
         ncf = nef = nsing = 0
         saved_t = self.tn
         self._last_fail = None
@@ -358,6 +378,10 @@ class BDF:
                 self.force_setup = True
                 continue
             ok, err_k, err_km1, knew = self._test_error(ck, ee)
+            if forced:
+                self.forced_ok, knew = ok, 1
+                self.forced += 1
+                break
             if ok:
                 break
             # IDAHandleNFlag, error-test failure: same or lower order, smaller step

@@ -349,9 +349,10 @@ class CompiledBDF(BDF):
             self._keep["sign_ref"][:nr] = sign_ref
             self._keep["g_prev"][:nr] = g_prev
             if self.mode == 0:
-                sign, side = m.orientation()
+                sign, side, nominal = m.orientation()
                 self._set("root_sign", sign)
                 self._set("root_side", side)
+                self._set("root_nominal", nominal)
                 self._share("root_offset", m.offset)
         if self.mode == 0:
             self._share("par", m.p)

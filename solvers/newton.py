@@ -48,17 +48,34 @@ def _rms(v: np.ndarray) -> float:
     return float(np.sqrt(np.mean(v * v))) if v.size else 0.0
 
 
-def _solve(J, b: np.ndarray) -> np.ndarray:
-    """Solve J dx = b: LU when square, least squares (minimum norm) otherwise."""
+def _solve(J, b: np.ndarray, singular_ok: bool = False) -> np.ndarray:
+    """Solve J dx = b: LU when square, least squares (minimum norm) otherwise.
+
+    ``singular_ok``: a square J that LU finds singular is solved in the least-squares
+    sense too (rows equilibrated), so that a point that already solves a system whose
+    Jacobian is singular there -- node charges given with potentials that only the
+    charges' balance relates, q = g(U) with dg/dU singular -- is kept; the caller
+    checks the residual (:func:`damped_newton`)."""
     m, n = J.shape
     if n == 0:   # nothing unknown (a model without states at steady state)
         return np.zeros(0)
     if m == n:
         lin = LinearSolver(n, issparse(J) and n > SPARSE_THRESHOLD)
-        lin.factor(J)
+        try:
+            lin.factor(J)
+        except SingularMatrixError:
+            if not singular_ok or n > _LSTSQ_LIMIT:
+                raise
+            D = _row_scale(J)
+            A = J.toarray() if issparse(J) else np.asarray(J)
+            return np.linalg.lstsq(A * D[:, None], b * D, rcond=None)[0]
         return lin.solve(b)
     A = J.toarray() if issparse(J) else np.asarray(J)
     return np.linalg.lstsq(A, b, rcond=None)[0]
+
+
+_LSTSQ_LIMIT = 4000      # a singular square Jacobian up to this size is solved by lstsq
+_CONSISTENT = 1e-10      # ... and the point accepted where its row-scaled residual is below
 
 
 def _row_scale(J) -> np.ndarray:
@@ -101,14 +118,31 @@ def damped_newton(fun, jac, x0, *, weights=None, tol: float = 1e-6, max_iter: in
     nev = 1
     step = np.zeros_like(x)
     last = np.inf
+    pending = None        # the singular Jacobian met on the way, if it never converges
     for it in range(1, max_iter + 1):
         if not np.all(np.isfinite(g)):
             return NewtonResult(x, False, it, g, step, "non-finite residual", nev)
         J = jac(x)
-        dx = _solve(J, -g)
+        try:
+            dx, singular = _solve(J, -g), None
+        except SingularMatrixError as exc:
+            # a singular J at a point that solves the system is no failure: keep it
+            # when the least-squares step is below the tolerance and the residual nil
+            dx, singular = _solve(J, -g, singular_ok=True), exc
         w = weights(x) if callable(weights) else (1.0 if weights is None else weights)
         step = dx * w
         size = _rms(step)
+        if singular is not None:
+            D = _row_scale(J)
+            if size <= tol and np.max(np.abs(g) * D, initial=0.0) <= _CONSISTENT:
+                return NewtonResult(x, True, it, g, step, "converged (singular)", nev)
+            # Gauss-Newton: the least-squares step, while it reduces the residual
+            found, xt, gt, n_ls = _line_search(fun, x, dx, g, D, min_damping)
+            nev += n_ls
+            if not found or not np.all(np.isfinite(gt)):
+                raise singular
+            x, g, last, pending = xt, gt, size, singular
+            continue
         # Converged: the step is below tol, or it has stopped contracting while far
         # below the error scale (round-off in an ill-conditioned J: iterating more
         # only moves x around within that noise)
@@ -124,6 +158,8 @@ def damped_newton(fun, jac, x0, *, weights=None, tol: float = 1e-6, max_iter: in
         if not found:
             return NewtonResult(x, False, it, g, step, "line search failed", nev)
         x, g = xt, gt
+    if pending is not None:
+        raise pending
     return NewtonResult(x, False, max_iter, g, step, "too many iterations", nev)
 
 

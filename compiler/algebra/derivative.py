@@ -16,7 +16,7 @@ import sympy as sp
 from .substitution import Fallback, assemble_sum
 
 __all__ = ["partial", "plain_coefficient", "solve_linear", "simple_partials", "terms_with",
-           "symbol_nodes"]
+           "symbol_nodes", "dag_partial"]
 
 _CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
 _CANONICAL = cmp_to_key(sp.Basic.compare)     # the order of a sum's or product's arguments
@@ -29,6 +29,8 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
         return sp.S.Zero
     if expr is x or (type(expr) is sp.Symbol and expr == x):
         return sp.S.One
+    if _depth(expr) > _DEEP:
+        return dag_partial(expr, x)    # the walk below recurses as deep as expr is
     if expr.is_Add:
         return _sum([partial(a, x) for a in expr.args if x in _symbols(a)])
     if expr.is_Mul:
@@ -54,7 +56,90 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
         # r u^(r-1) u' directly: sympy writes r u^r/u, which is 0/0 where u = 0
         base, r = expr.args
         return r * base ** (r - 1) * partial(base, x)
-    return sp.diff(expr, x)
+    return dag_partial(expr, x)
+
+
+def dag_partial(expr, x):
+    """d expr / d x by forward differentiation over the expression's DAG: every
+    distinct subexpression that contains x is differentiated once, children first,
+    without recursion (:mod:`acausal.compiler.dag`), so the work and the result grow
+    with the DAG, not with the tree.  The discontinuous functions of a model are
+    piecewise smooth: sign, floor and ceiling are constant between their events (d = 0,
+    not sympy's DiracDelta), abs is sign(u) u', min and max follow the branch that
+    holds, an if-expression differentiates its branches under the same conditions, and
+    no_event(u) is u."""
+    from .dag import postorder
+    symbols = _symbols(expr)
+    if x not in symbols:
+        return sp.S.Zero
+    boolean = sp.logic.boolalg.Boolean
+    nodes = postorder([expr], lambda n: () if isinstance(n, boolean) else n.args)
+    d = {}
+    for node in nodes:
+        if node.is_Atom:
+            d[node] = sp.S.One if node == x else sp.S.Zero
+        elif isinstance(node, boolean) or x not in _symbols(node):
+            d[node] = sp.S.Zero
+        else:
+            d[node] = _node_derivative(node, d)
+    return d[expr]
+
+
+def _node_derivative(node, d):
+    """d node from the derivatives ``d`` of its arguments (see :func:`dag_partial`)."""
+    from ...components.ifexpr import IfExpr
+    from ...components.symbols import no_event
+    args = node.args
+    da = [d.get(a, sp.S.Zero) for a in args]
+    if node.is_Add:
+        return sp.Add(*[t for t in da if t != 0])
+    if node.is_Mul:
+        terms = [sp.Mul(*args[:i], t, *args[i + 1:]) for i, t in enumerate(da) if t != 0]
+        return sp.Add(*terms)
+    if node.is_Pow:
+        base, e = args
+        out = sp.S.Zero
+        if da[0] != 0:
+            out += e * base ** (e - 1) * da[0]
+        if da[1] != 0:
+            out += node * sp.log(base) * da[1]
+        return out
+    if isinstance(node, (sp.sign, sp.floor, sp.ceiling)):
+        return sp.S.Zero
+    if isinstance(node, sp.Abs):
+        return sp.sign(args[0]) * da[0]
+    if isinstance(node, no_event):
+        return da[0]
+    if isinstance(node, sp.Piecewise):
+        return sp.Piecewise(*[(d.get(e, sp.S.Zero), c) for e, c in args])
+    if isinstance(node, sp.functions.elementary.piecewise.ExprCondPair):
+        return sp.S.Zero              # read through its Piecewise
+    if isinstance(node, IfExpr):
+        pairs = node.pairs()
+        return IfExpr(*[v for e, c in pairs for v in (d.get(e, sp.S.Zero), c)])
+    if isinstance(node, (sp.Min, sp.Max)):
+        op = (lambda u, v: u <= v) if isinstance(node, sp.Min) else (lambda u, v: u >= v)
+        out, dout = args[0], da[0]
+        for a, t in zip(args[1:], da[1:]):
+            cond = op(out, a)
+            out, dout = sp.Piecewise((out, cond), (a, True)), sp.Piecewise((dout, cond),
+                                                                            (t, True))
+        return dout
+    if isinstance(node, sp.Mod):
+        return da[0]                  # d/du Mod(u, T), T constant: frozen floor values
+    if isinstance(node, sp.Function):
+        return sp.Add(*[node.fdiff(i + 1) * t for i, t in enumerate(da) if t != 0])
+    return _sympy_derivative(node, da)
+
+
+def _sympy_derivative(node, da):
+    """A node this module has no rule for: sympy's chain rule over its arguments."""
+    out = sp.S.Zero
+    for a, t in zip(node.args, da):
+        if t != 0:
+            dummy = sp.Dummy()
+            out += sp.diff(node.xreplace({a: dummy}), dummy).xreplace({dummy: a}) * t
+    return out
 
 
 def simple_partials(expr, wanted) -> dict | None:
@@ -126,6 +211,21 @@ def solve_linear(residual, x):
     return _solve_general(residual, x)
 
 
+_DEEP = 48      # expressions nested deeper are differentiated by dag_partial
+
+
+@lru_cache(maxsize=200_000)
+def _depth(e) -> int:
+    """The depth of e's tree, over its DAG without recursion."""
+    from .dag import postorder
+    if e.is_Atom:
+        return 0
+    depth = {}
+    for node in postorder([e]):
+        depth[node] = 1 + max((depth[a] for a in node.args), default=-1)
+    return depth[e]
+
+
 @lru_cache(maxsize=200_000)
 def _symbols(e) -> frozenset:
     """Every Symbol node of e, bound ones included: ``x in _symbols(e)`` is
@@ -133,12 +233,13 @@ def _symbols(e) -> frozenset:
     the partials of a model ask it of the same subexpressions many times)."""
     if e.is_Symbol:
         return frozenset((e,))
-    out, stack = set(), list(e.args)
+    out, stack, seen = set(), list(e.args), set()
     while stack:            # iterative: a deeply nested expression must not recurse
         node = stack.pop()
         if node.is_Symbol:
             out.add(node)
-        else:
+        elif node not in seen:       # and over the DAG: a shared part once
+            seen.add(node)
             stack.extend(node.args)
     return frozenset(out)
 
@@ -271,11 +372,12 @@ def symbol_nodes(e: sp.Basic) -> set:
     ``has`` finds)."""
     if e.is_Symbol:
         return {e}
-    out, stack = set(), [e]
+    out, stack, seen = set(), [e], set()
     while stack:
         node = stack.pop()
         if node.is_Symbol:
             out.add(node)
-        else:
+        elif node not in seen:        # a shared subexpression is walked once
+            seen.add(node)
             stack.extend(node.args)
     return out

@@ -46,10 +46,14 @@ def fast_xreplace(expr, mapping: dict):
     """``expr.xreplace(mapping)`` (the same expression), faster on sums and products."""
     if not mapping:
         return expr
+    from .dag import xreplace
+    from .derivative import _depth
+    if _depth(expr) > _DEEP:
+        return xreplace(expr, mapping)       # the fast path recurses as deep as expr is
     try:
         out = _sub(expr, mapping)
     except Fallback:
-        return expr.xreplace(mapping)
+        return xreplace(expr, mapping)
     if _CHECK:
         ref = expr.xreplace(mapping)
         if out != ref or type(out) is not type(ref):
@@ -58,6 +62,7 @@ def fast_xreplace(expr, mapping: dict):
 
 
 _UNDEFINED = frozenset((sp.zoo, sp.nan))
+_DEEP = 48       # deeper expressions are substituted over their DAG (compiler/dag.py)
 
 
 def has_undefined(expr) -> bool:
@@ -66,12 +71,14 @@ def has_undefined(expr) -> bool:
 
 
 def _contains_key(e, mapping) -> bool:
-    stack = [e]
+    stack, seen = [e], set()
     while stack:
         node = stack.pop()
         if node in mapping:
             return True
-        stack.extend(node.args)
+        if node not in seen:
+            seen.add(node)
+            stack.extend(node.args)
     return False
 
 

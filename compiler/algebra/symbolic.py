@@ -213,7 +213,7 @@ class SymbolicSystem:
         return self._chain_rule(r)
 
     def _chain_rule(self, r: sp.Expr) -> sp.Expr:
-        dr = sp.diff(r, time) if r.has(time) else sp.Integer(0)
+        dr = partial(r, time) if time in symbols_of(r) else sp.Integer(0)
         for sym in sorted((q for q in symbols_of(r) if q in self.index),
                           key=lambda q: self.index[q]):
             dr += sum_partial(r, sym) * derivative_symbol(sym, self.derivatives)
@@ -289,25 +289,28 @@ def sum_partial(r: sp.Expr, x: sp.Symbol) -> sp.Expr:
 @lru_cache(maxsize=200_000)
 def symbols_of(expr: sp.Basic) -> frozenset:
     """``expr.free_symbols``, computed once per expression: every pass asks for it, and
-    sympy walks the whole tree each time.  Sums, products and powers are walked here;
-    any other node answers for itself (it may bind symbols, as an integral does)."""
+    sympy walks the whole tree each time.  Walked here over the DAG (a shared part once,
+    without recursion); a node that binds symbols of its own (an integral) answers for
+    itself."""
     if expr.is_Symbol:
         return frozenset((expr,))
-    out, stack = set(), [expr]
+    out, stack, seen = set(), [expr], set()
     while stack:
         e = stack.pop()
         if e.is_Symbol:
             out.add(e)
-        elif e.is_Atom:
+        elif e.is_Atom or e in seen:
             continue
-        elif type(e) in _PLAIN_NODES:
-            stack.extend(e.args)
-        else:
+        elif type(e) in _BINDING:
             out |= e.free_symbols
+        else:                         # over the DAG: a shared subexpression once
+            seen.add(e)
+            stack.extend(e.args)
     return frozenset(out)
 
 
-_PLAIN_NODES = (sp.Add, sp.Mul, sp.Pow)
+# nodes that bind symbols of their own: they answer for themselves
+_BINDING = (sp.Lambda, sp.Integral, sp.Derivative, sp.Subs, sp.Sum, sp.Product)
 
 
 def forget_expressions() -> None:

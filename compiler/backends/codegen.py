@@ -30,7 +30,9 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from ...components.ifexpr import IfExpr
 from ...components.symbols import no_event, time
+from ..algebra.dag import transform, tree_size, xreplace
 from ..algebra.derivative import partial as _partial
 from ..algebra.derivative import simple_partials
 from ..algebra.symbolic import symbols_of
@@ -38,7 +40,7 @@ from .emit import Emitter, _plain
 from .lazycode import GeneratedModule, ModuleSource
 
 __all__ = ["GeneratedCode", "Program", "generate", "plan", "python_code", "python_source",
-           "extract_relations"]
+           "extract_relations", "FrozenSymbols"]
 
 
 class GeneratedCode(ModuleSource):
@@ -60,19 +62,48 @@ class GeneratedCode(ModuleSource):
 
 def event_form(expr: sp.Expr) -> sp.Expr:
     """abs, min, max and sign as if-expressions, so their kinks generate events (as in
-    Modelica, where only noEvent(...) suppresses them); inside no_event(...) they stay."""
-    if not expr.has(sp.Abs, sp.Min, sp.Max, sp.sign, no_event):
-        return expr
-    quiet = {}
-    for k, q in enumerate(expr.atoms(no_event)):
-        quiet[q] = sp.Dummy(f"quiet{k}")
-    e = expr.xreplace(quiet) if quiet else expr
-    e = e.replace(sp.Abs, lambda x: sp.Piecewise((x, x >= 0), (-x, True)))
-    e = e.replace(sp.sign, lambda x: sp.Piecewise((1, x > 0), (-1, x < 0), (0, True)))
-    e = e.replace(sp.Min, lambda *a: _fold(a, lambda u, v: sp.Piecewise((u, u <= v), (v, True))))
-    e = e.replace(sp.Max, lambda *a: _fold(a, lambda u, v: sp.Piecewise((u, u >= v), (v, True))))
-    # the no_event wrappers go back in: _freeze unwraps them after relations are taken
-    return e.xreplace({d: q for q, d in quiet.items()}) if quiet else e
+    Modelica, where only noEvent(...) suppresses them); inside no_event(...) they stay.
+    (The relations of such an expression are its own, not frozen: for a value read
+    directly, as a relation's scale is.)"""
+
+    def rebuild(node, args, quiet):
+        if not quiet:
+            kink = _kink(node, args, lambda rel: rel)
+            if kink is not None:
+                return kink
+            if isinstance(node, IfExpr):
+                return _if_expression(args)
+        return _rebuilt(node, args)
+
+    return transform(sp.sympify(expr), rebuild, context=False,
+                     descend=lambda node, quiet: quiet or isinstance(node, no_event))
+
+
+def _kink(node, args, mode):
+    """abs, sign, min or max of the (rebuilt) ``args`` as an if-expression on the
+    relation(s) of its kink, each given by ``mode(relation)`` (a relation, or the
+    symbol of its frozen value); None for any other node."""
+    if isinstance(node, sp.Abs):
+        x = args[0]
+        return sp.Piecewise((x, mode(x >= 0)), (-x, True))
+    if isinstance(node, sp.sign):
+        x = args[0]
+        return sp.Piecewise((1, mode(x > 0)), (-1, mode(x < 0)), (0, True))
+    if isinstance(node, (sp.Min, sp.Max)):
+        op = (lambda u, v: u <= v) if isinstance(node, sp.Min) else (lambda u, v: u >= v)
+        return _fold(args, lambda u, v: sp.Piecewise((u, mode(op(u, v))), (v, True)))
+    return None
+
+
+def _if_expression(args):
+    return sp.Piecewise(*IfExpr(*args).pairs()) if args else sp.S.Zero
+
+
+def _rebuilt(node, args):
+    """``node`` with its arguments replaced by ``args`` (itself when they are its own)."""
+    if all(a is b for a, b in zip(args, node.args)):
+        return node
+    return node.func(*args)
 
 
 def _fold(args, pair):
@@ -95,38 +126,94 @@ class FrozenSymbols:
 
 
 def extract_relations(exprs: list, frozen=None) -> tuple[list, list, dict, list]:
-    """Replace relations inside Piecewise conditions by mode symbols.
+    """Replace relations by mode symbols: their values frozen between events.
 
-    abs/min/max/sign are first written as if-expressions (:func:`event_form`); relations
-    inside ``no_event(...)`` stay as they are and are evaluated directly, and so do the
+    Every relation -- in a condition, or at the kink of abs, min, max and sign -- gets
+    its own mode ``_mK``, in the expressions and in the sides of the other relations
+    alike: a relation whose side holds an abs or an if-expression stays *one* relation,
+    its zero-crossing function ``lhs - rhs`` evaluated in the frozen modes of the
+    relations inside it (Modelica's semantics; sympy would fold an if-expression inside a
+    condition into a product of branches, ``components/ifexpr.py``).  Relations inside
+    ``no_event(...)`` stay as they are and are evaluated directly, and so do the
     relations of values that change only at events (every symbol in ``frozen``:
     parameters, Boolean and Integer variables, held and frozen values), which cannot
-    cross zero between events (``==`` and ``<>`` among them).
-    Returns (new exprs, zero-crossing expressions, {mode symbol: relation}, origin) where
-    ``origin[k]`` is the index of the first expression that relation k occurs in.
+    cross zero between events (``==`` and ``<>`` among them).  The expressions are
+    walked as DAGs, without recursion (:mod:`acausal.compiler.dag`).
+
+    Returns (new exprs, zero-crossing expressions, {mode symbol: relation as written},
+    origin) where ``origin[k]`` is the index of the first expression that relation k
+    occurs in.
     """
     exprs = [sp.sympify(e) for e in exprs]
     # Why the screening walk: most expressions of a large model hold no if-expression,
     # relation or anything that becomes one; one walk over the nodes of all of them (a
     # subtree shared by several is walked once) sets those aside, returned unchanged
     eventful = _eventful(exprs, (sp.Abs, sp.Min, sp.Max, sp.sign, no_event, sp.Piecewise,
-                                 sp.core.relational.Relational))
+                                 IfExpr, sp.core.relational.Relational))
+    modes, order, written, origin = {}, [], [], []
+    current = [0]
+
+    def mode(rel, as_written=None):
+        """The mode symbol of a (rebuilt: its sides frozen) relation."""
+        if isinstance(rel, (sp.Eq, sp.Ne)):
+            raise ValueError(f"equality relation {rel} cannot generate an event; "
+                             "use <, <=, > or >=")
+        if isinstance(rel, sp.logic.boolalg.BooleanAtom):
+            return rel
+        m = modes.get(rel)
+        if m is None:
+            m = modes[rel] = sp.Symbol(f"_m{len(order)}")
+            order.append(rel)
+            written.append(rel if as_written is None else as_written)
+            origin.append(current[0])
+        return m
+
+    def rebuild(node, args, quiet):
+        if quiet:
+            return _rebuilt(node, args)
+        if isinstance(node, no_event):
+            return args[0]                      # its inside read directly
+        if isinstance(node, sp.core.relational.Relational):
+            rel = _rebuilt(node, args)
+            if frozen is not None and frozen.covers(rel.free_symbols):
+                return rel       # constant between events: evaluated where it is read
+            return mode(rel, node)
+        kink = _kink(node, args, mode)
+        if kink is not None:
+            return kink
+        if isinstance(node, IfExpr):
+            return _if_expression(args)
+        return _rebuilt(node, args)
+
+    memo, new = {}, list(exprs)
     for i in eventful:
-        exprs[i] = event_form(exprs[i])
-    relations = {}
+        current[0] = i
+        new[i] = transform(exprs[i], rebuild, memo, context=False,
+                           descend=lambda node, quiet: quiet or isinstance(node, no_event))
+    order, written, origin = _canonical_order(order, written, origin, new, eventful)
+    crossings = [rel.lhs - rel.rhs for rel in order]
+    # the relations as written (abs, if_else and all) name the modes: texts and scales
+    return new, crossings, {sp.Symbol(f"_m{k}"): w for k, w in enumerate(written)}, origin
+
+
+_SORTED_UP_TO = 4000     # relations up to this many nodes each are numbered in text order
+
+
+def _canonical_order(order, written, origin, new, eventful):
+    """The relations numbered in the order of their texts (``srepr``), as the compiler
+    always numbered them, where they are small enough to print; the modes renamed in the
+    expressions accordingly.  (The walk finds them children first, which is as
+    deterministic; printing a huge relation is what the order by text would cost.)"""
+    if not order or any(tree_size(r) > _SORTED_UP_TO for r in order):
+        return order, written, origin
+    perm = sorted(range(len(order)), key=lambda k: sp.srepr(order[k]))
+    if perm == list(range(len(order))):
+        return order, written, origin
+    rename = {sp.Symbol(f"_m{old}"): sp.Symbol(f"_m{k}") for k, old in enumerate(perm)}
     for i in eventful:
-        for pw in _event_piecewise(exprs[i], no_event):
-            for _, cond in pw.args:
-                for rel in _relations_in(cond, frozen):
-                    relations.setdefault(rel, i)
-    ordered = sorted(relations, key=sp.srepr)
-    modes = {rel: sp.Symbol(f"_m{k}") for k, rel in enumerate(ordered)}
-    new = list(exprs)
-    for i in eventful:
-        new[i] = _freeze(exprs[i], modes, no_event)
-    # a relation's operands may read no_event(...): its functions are evaluated directly
-    crossings = [_unwrapped(rel.lhs - rel.rhs, no_event) for rel in ordered]
-    return new, crossings, {modes[r]: r for r in ordered}, [relations[r] for r in ordered]
+        new[i] = xreplace(new[i], rename)
+    return ([xreplace(order[k], rename) for k in perm], [written[k] for k in perm],
+            [origin[k] for k in perm])
 
 
 def _eventful(exprs, kinds) -> list:
@@ -149,51 +236,6 @@ def _eventful(exprs, kinds) -> list:
         else:
             clean.update(seen)
     return out
-
-
-def _event_piecewise(e, no_event):
-    """Piecewise sub-expressions of e that are not inside no_event(...)."""
-    if isinstance(e, no_event):
-        return []
-    out = [e] if isinstance(e, sp.Piecewise) else []
-    for a in e.args:
-        out += _event_piecewise(a, no_event)
-    return out
-
-
-def _freeze(e, modes, no_event):
-    """Relations -> mode symbols, except inside no_event(...), which is unwrapped.
-
-    One top-down replacement: a relation is replaced where it is met, before the walk
-    reaches a no_event(...) among its operands (``x > no_event(abs(u))`` is an event on
-    x), and a no_event(...) met first is replaced by its argument, the relations inside
-    it left to be evaluated directly."""
-    if not modes and not e.has(no_event):
-        return e
-    rule = dict(modes)
-    for q in e.atoms(no_event):
-        rule[q] = _unwrapped(q.args[0], no_event)
-    return e.xreplace(rule)
-
-
-def _unwrapped(e, no_event):
-    """e with every no_event(u) inside it replaced by u."""
-    if not e.has(no_event):
-        return e
-    return e.xreplace({q: _unwrapped(q.args[0], no_event) for q in e.atoms(no_event)})
-
-
-def _relations_in(cond, frozen=None):
-    if isinstance(cond, sp.core.relational.Relational):
-        if frozen is not None and frozen.covers(cond.free_symbols):
-            return []            # constant between events: evaluated where it is read
-        if isinstance(cond, (sp.Eq, sp.Ne)):
-            raise ValueError(f"equality relation {cond} cannot generate an event; "
-                             "use <, <=, > or >=")
-        return [cond]
-    if isinstance(cond, sp.logic.boolalg.BooleanFunction):
-        return [r for a in cond.args for r in _relations_in(a, frozen)]
-    return []
 
 
 def generate(residuals: list, y_syms: list, params: list, n_modes: int = 0,
@@ -394,8 +436,25 @@ def python_source(prog: Program) -> str:
     for name in ("roots", "scales", "expand"):
         if name in prog.functions:
             exprs = prog.functions[name]
-            lines += _py_function(name, prologue(prog.needed(exprs)), _py_rows(em, exprs))
+            if name == "expand":
+                lines += _py_function(name, prologue(prog.needed(exprs)), _py_rows(em, exprs))
+                continue
+            # a relation's side may be read in modes where it has no value (abs(x) as -x
+            # under a root, before the modes are settled): NaN for that relation alone,
+            # as the C library computes it, not an error for all of them
+            needed = prog.needed(exprs)
+            body = [ln for k in needed for ln in _guarded(prologue([k]), f"_a{k}")]
+            for k, e in enumerate(exprs):
+                body += _guarded(em.assign(f"out[{k}]", e), f"out[{k}]")
+            lines += _py_function(name, [], body)
     return "\n".join(lines) + "\n"
+
+
+def _guarded(statement: list, target: str) -> list:
+    """The lines of one statement, computing NaN into ``target`` where it fails."""
+    return (["try:"] + ["    " + ln for ln in statement]
+            + ["except (ValueError, ZeroDivisionError, OverflowError):",
+               f"    {target} = math.nan"])
 
 
 def _list(a):

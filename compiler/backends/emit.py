@@ -27,6 +27,7 @@ import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import And, BooleanFalse, BooleanTrue, Not, Or
 
+from ...components.ifexpr import IfExpr
 from ...components.symbols import no_event
 
 __all__ = ["Emitter", "CHUNK"]
@@ -107,7 +108,7 @@ class Emitter:
         return names.get(root) or done[root]
 
     def _children(self, node):
-        if isinstance(node, sp.Piecewise):
+        if isinstance(node, (sp.Piecewise, IfExpr)):
             return []      # branches are printed inline, lazily (see _piecewise)
         if node.is_Atom:
             return []
@@ -143,6 +144,8 @@ class Emitter:
             return self._pow(e, done, names)
         if isinstance(e, sp.Piecewise):
             return self._piecewise(e)
+        if isinstance(e, IfExpr):            # an if-expression kept whole in a condition
+            return self._piecewise(sp.Piecewise(*e.pairs()))
         if isinstance(e, Relational):
             op = _REL.get(type(e).__name__)
             if op is None:
@@ -337,7 +340,7 @@ def _shared(root) -> set:
             shared.add(node)
             continue
         seen.add(node)
-        if isinstance(node, sp.Piecewise):
+        if isinstance(node, (sp.Piecewise, IfExpr)):
             continue
         if node.is_Pow and node.exp.is_Number:
             stack.append(node.base)

@@ -21,7 +21,7 @@ from ...components.symbols import Assign, Reinit, When
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
 from ..algebra.symbolic import symbols_of
-from ..flatmodel import FlatModel
+from ..flatmodel import FlatEquation, FlatModel
 from ..structure.graph import STATE_SELECT
 from ...errors import InvalidEquation, ModelError
 
@@ -283,7 +283,7 @@ def _plain_alias(residual: sp.Expr, info):
 def _rebuild(flat, kept, subs, table, find, constants, resolved):
     variables = [v for v, (_, root) in zip(flat.variables, resolved)
                  if root is v.symbol and root not in constants]
-    merged = _merge_attributes(flat, variables, resolved)
+    merged, restated = _merge_attributes(flat, variables, resolved)
     derivatives = _derivatives_after_aliases(flat, find, constants, subs)
     equations = []
     for eq in kept:
@@ -301,6 +301,7 @@ def _rebuild(flat, kept, subs, table, find, constants, resolved):
                              + (": " + "; ".join(hints) if hints else ""))
         equations.append(_with_residual(eq, r))
     initial = [replace(eq, residual=eq.residual.xreplace(subs)) for eq in flat.initial_equations]
+    initial += restated
     for eq in initial:
         if eq.residual.has(sp.zoo, sp.nan):
             raise _divides_by_zero(eq, flat, find, constants)
@@ -379,18 +380,16 @@ def _when_after_aliases(w, subs, find, constants):
     return out
 
 
-def _same_value(a, b) -> bool:
-    """Two start values are the same value: numerically for numbers (sympy's integer 0,
-    the signed copy of a float 0.0, is not *structurally* equal to Float 0.0),
-    structurally for expressions of parameters."""
-    d = sp.sympify(a) - sp.sympify(b)
-    return bool(d == 0 or d.is_zero)
-
-
 def _merge_attributes(flat, variables, resolved):
     """Carry start/fixed/nominal/state_select from aliases onto their representative
-    (``resolved``: each flat variable's (sign, representative))."""
+    (``resolved``: each flat variable's (sign, representative)).  Returns the merged
+    attributes and, for every alias whose fixed start value its representative already
+    has one of, that condition as an initial equation on the representative: a second
+    condition on the same value is redundant, checked and dropped at the initial point
+    when the two agree, an error naming both when they do not
+    (:mod:`acausal.runtime.redundant`)."""
     out = {v.symbol: v.attrs for v in variables}
+    restated = []
     for v, (sign, root) in zip(flat.variables, resolved):
         if root is v.symbol or root not in out:
             continue
@@ -400,10 +399,11 @@ def _merge_attributes(flat, variables, resolved):
         new = r
         if a.start is not None and (r.start is None or (a.fixed and not r.fixed)):
             new = replace(new, start=sign * a.start, fixed=a.fixed or r.fixed)
-        elif a.fixed and r.start is not None and r.fixed and \
-                not _same_value(sign * a.start, r.start):
-            raise ModelError(f"'{v.name}' and '{root.name}' are the same variable "
-                             f"(alias) but have different fixed start values")
+        elif a.fixed and a.start is not None and r.start is not None and r.fixed:
+            restated.append(FlatEquation(
+                root - sign * a.start,
+                f"{v.name} = {a.start} (fixed start value; an alias of {root.name})",
+                v.component, v.component_class, kind="initial"))
         if a.nominal and (not r.nominal or a.nominal > r.nominal):
             new = replace(new, nominal=a.nominal)
         if STATE_SELECT[a.state_select] > STATE_SELECT[new.state_select]:
@@ -412,7 +412,7 @@ def _merge_attributes(flat, variables, resolved):
     # a representative whose attributes nothing changed is kept as it is (the same
     # value replace() would copy)
     return [v if out[v.symbol] is v.attrs else replace(v, attrs=out[v.symbol])
-            for v in variables]
+            for v in variables], restated
 
 
 def resolve_aliases_in(values, flat, aliases) -> None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ...components.symbols import der, time
+from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace
 from ..algebra.symbolic import derivative_symbol, signed_sum, signed_terms, symbols_of
 from ...errors import InvalidEquation
@@ -33,17 +34,27 @@ def has_der(expr) -> bool:
     answered from its arguments without sympy's general pattern search."""
     if expr.is_Atom:
         return False
-    if expr.is_Add or expr.is_Mul:
-        return any(not a.is_Atom and has_der(a) for a in expr.args)
-    return expr.has(der)
+    stack, seen = [expr], set()
+    while stack:                      # over the DAG: a shared part is walked once
+        e = stack.pop()
+        if isinstance(e, der):
+            return True
+        for a in e.args:
+            if not a.is_Atom and a not in seen:
+                seen.add(a)
+                stack.append(a)
+    return False
 
 
 def _outer_ders(expr) -> list:
     """The der() nodes of expr that are not inside another der(), in the order of a
     depth-first walk over the arguments (the order sympy's ``replace`` visits them)."""
-    out, stack = [], [expr]
+    out, stack, seen = [], [expr], set()
     while stack:
         e = stack.pop()
+        if e in seen:
+            continue
+        seen.add(e)
         if isinstance(e, der):
             out.append(e)
         elif not e.is_Atom:
@@ -53,9 +64,12 @@ def _outer_ders(expr) -> list:
 
 def _all_ders(expr) -> list:
     """Every der() node of expr, nested ones included (``expr.atoms(der)``, unsorted)."""
-    out, stack = [], [expr]
+    out, stack, seen = [], [expr], set()
     while stack:
         e = stack.pop()
+        if e in seen:
+            continue
+        seen.add(e)
         if isinstance(e, der):
             out.append(e)
         if not e.is_Atom:
@@ -97,7 +111,7 @@ def _replace_der(expr, var_syms, derivatives, der_syms):
     def chain_rule(arg):
         if arg in var_syms:
             return der_symbol(arg)
-        out = sp.diff(arg, time) if arg.has(time) else sp.Integer(0)
+        out = partial(arg, time) if arg.has(time) else sp.Integer(0)
         for s in sorted((q for q in symbols_of(arg) if q in var_syms or q in der_syms),
                         key=lambda s: s.name):
             if s in var_syms:
@@ -105,7 +119,7 @@ def _replace_der(expr, var_syms, derivatives, der_syms):
             else:  # s is already a derivative symbol: its derivative is the next one
                 var_syms.add(s)
                 var_syms_d = der_symbol(s)
-            out += sp.diff(arg, s) * var_syms_d
+            out += partial(arg, s) * var_syms_d
         return out
 
     coeffs = {}

@@ -13,8 +13,9 @@ from dataclasses import replace
 from ..structure.graph import Structure
 from ..structure.matching import check_structure
 from ...errors import StructuralError
+from ...words import zero_causes
 
-__all__ = ["check_balance", "zero_causes"]
+__all__ = ["check_balance"]
 
 
 def check_balance(system, structure: Structure, flat, aliases=None, n_flat=None) -> None:
@@ -43,42 +44,6 @@ def check_balance(system, structure: Structure, flat, aliases=None, n_flat=None)
             extra += f"\n  {zeros}"
         err.args = (str(err) + extra,) + err.args[1:]
         raise
-
-
-def zero_causes(zeros, components, flat=None) -> str:
-    """A sentence naming the parameters given exactly 0 (structural zeros: the terms
-    they multiply were removed, derivatives with them) of the ``components`` an error
-    is about, or of the model when none of those has one; "" when there are none.
-    With the flat model, only those that multiplied a derivative (a state lost: what
-    changes the structure), not a temperature coefficient left at its default 0."""
-    if flat is not None:
-        zeros = [z for z in zeros if _multiplies_derivative(flat, z)]
-    if not zeros:
-        return ""
-    from ...words import listed
-    places = {c for c in components if c}
-    near = [z for z in zeros if z.rsplit(".", 1)[0] in places
-            or any(z.startswith(c + ".") for c in places)]
-    named = near or list(zeros)
-    where = "of these components " if near else ""
-    return (f"the parameters {where}given 0 are structural zeros, which removed the terms "
-            f"they multiply (a derivative with them): {listed(named)}; give them a "
-            "non-zero value if that is not meant")
-
-
-def _multiplies_derivative(flat, zero: str) -> bool:
-    """Whether the parameter ``zero`` stands in an equation of its component that has a
-    derivative (as written: ``V/beta*der(p) = port.q``)."""
-    import re
-    component, _, local = zero.rpartition(".")
-    # named in full (vol.V, as flattening prints it) or by its own name (V)
-    word = re.compile(rf"(?<![\w.])({re.escape(zero)}|{re.escape(local)})(?![\w(])")
-    for e in flat.equations:
-        if e.component == component:
-            text = str(e.source)
-            if "der(" in text and word.search(text):
-                return True
-    return False
 
 
 def _removed_for(aliases, involved_names) -> list:

@@ -250,6 +250,13 @@ def chain_growth(s, t, values, scale) -> tuple:
     return worst, spread
 
 
-def full_form(reduction, n_vars: int, n_eqs: int) -> Causalization:
-    """Every variable in z, every equation a row (used with dynamic state selection)."""
-    return Causalization(list(range(n_vars)), 0, [], list(range(n_eqs)), [], causal=False)
+def full_form(reduction, n_vars: int, n_eqs: int, definitions=()) -> Causalization:
+    """Every variable in z, every equation a row (used with dynamic state selection),
+    except ``definitions``: ``(variable, equation)`` pairs, in the order they are
+    computed, of explicit definitions that no choice of states involves (the
+    intermediate quantities of :mod:`acausal.compiler.outline`), assigned."""
+    assigned = {v for v, _ in definitions}
+    defining = {e for _, e in definitions}
+    return Causalization([v for v in range(n_vars) if v not in assigned], 0,
+                         list(definitions), [e for e in range(n_eqs) if e not in defining],
+                         [], causal=False)

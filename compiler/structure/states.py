@@ -18,6 +18,18 @@ Algorithm (paper section 3, step numbers in comments):
    selected columns.
 4. Repeat until no rows remain.
 
+Kinematic equations.  A model that names its velocities writes ``der(x) = v`` (two
+unknowns, constant coefficients): v then *is* der(x), and der(v) is a second derivative
+of x although the structure counts it as a first derivative of v.  Level 1 of such a
+model can hold both der(x) and der(v) -- a velocity constraint G(x) v = 0 differentiated
+once has G der(v) + (dG/dx der(x)) v -- and picking der(x) as the dummy would make the
+position x algebraic, computed from a velocity constraint (ill-conditioned where
+dG/dx v vanishes, and a position is what a user integrates).  So every variable gets a
+*kinematic order*, its derivative order with such equations counted as links
+(:func:`kinematic_orders`), and the columns of level 1 are only those of the highest
+kinematic orders that still admit a nonsingular block: where the highest alone do, the
+lower ones are no candidates (MS93 take the highest derivatives; these are they).
+
 Column preference (which derivatives become dummies), in order:
 
 * ``state_priority`` of the column's antiderivative (the potential state): NEVER first,
@@ -52,7 +64,8 @@ from .pantelides import PantelidesResult
 from .matching import _from_sentinel, _match, _to_sentinel
 from ...errors import StructurallySingular
 
-__all__ = ["StateSet", "StateSelection", "select_states", "index1_matching"]
+__all__ = ["StateSet", "StateSelection", "select_states", "index1_matching",
+           "kinematic_orders"]
 
 
 @dataclass
@@ -123,6 +136,62 @@ class StateSelection:
     levels: list = field(default_factory=list)
     state_sets: list = field(default_factory=list)
     numeric_changes: list = field(default_factory=list)
+    excluded: list = field(default_factory=list)
+
+
+def kinematic_orders(s: Structure) -> list:
+    """The derivative order of every variable with kinematic equations ``der(x) = k v``
+    counted as links (module docstring): a variable v so linked to der(x) has the
+    order of der(x), and the chain of v's derivatives counts on from there."""
+    link = {}
+    for e in range(s.n_eqs):
+        vs = s.graph[e]
+        if len(vs) != 2 or any(s.coeff[e].get(v, NONLINEAR) > LINEAR_PARAM for v in vs):
+            continue
+        for d, v in ((vs[0], vs[1]), (vs[1], vs[0])):
+            if (s.diff_to_var[d] is not UNASSIGNED and s.diff_to_var[v] is UNASSIGNED
+                    and v not in link):
+                link[v] = d
+    def down(v):
+        """The variable one step down v's chain and the order that step removes: der(x)
+        for a linked v (the same order), x for der(x) (one order), or None."""
+        if s.diff_to_var[v] is not UNASSIGNED:
+            return s.diff_to_var[v], 1
+        if v in link:
+            return link[v], 0
+        return None, 0
+
+    orders = [None] * s.n_vars
+    for v0 in range(s.n_vars):
+        path, seen, v = [], set(), v0
+        while orders[v] is None and v not in seen:
+            seen.add(v)
+            nxt, w = down(v)
+            if nxt is None:
+                break
+            path.append((v, w))
+            v = nxt
+        # v: a variable of known order, the bottom of its chain, or where links close
+        # a cycle (der(x) = y, der(y) = x: counted from there without the links)
+        total = orders[v] if orders[v] is not None else 0
+        if orders[v] is None:
+            orders[v] = 0
+        for u, w in reversed(path):
+            total += w
+            if orders[u] is None:
+                orders[u] = total
+    return orders
+
+
+def _top_columns(s: Structure, rows: list, cols: list, korder: list) -> list:
+    """The level-1 columns of the highest kinematic orders that still match every row
+    (module docstring); all of ``cols`` when none do."""
+    tiers = sorted({korder[c] for c in cols}, reverse=True)
+    for t in tiers[:-1]:
+        top = [c for c in cols if korder[c] >= t]
+        if len(_select(s, rows, top)) == len(rows):
+            return top
+    return cols
 
 
 def _level_columns(s: Structure, rows: list, allowed) -> list:
@@ -366,8 +435,13 @@ def select_states(p: Union[PantelidesResult, Structure],
     rows = sorted(e for e in range(s.n_eqs) if s.diff_to_eq[e] is not UNASSIGNED
                   and s.eq_to_diff[e] is UNASSIGNED)              # step 1
     allowed, level, dummies, levels, sets, changes = None, 1, [], [], [], []
+    excluded = []
     while rows:
         cols = _level_columns(s, rows, allowed)
+        if allowed is None and cols:
+            top = _top_columns(s, rows, cols, kinematic_orders(s))
+            excluded = sorted(set(cols) - set(top))
+            cols = top
         r2c = _select(s, rows, cols)                              # step 2
         if len(r2c) < len(rows):
             _fail(s, rows, cols, r2c)
@@ -383,6 +457,7 @@ def select_states(p: Union[PantelidesResult, Structure],
         level += 1
     out = _selection(s, dummies, levels, sets)
     out.numeric_changes = changes
+    out.excluded = excluded
     return out
 
 

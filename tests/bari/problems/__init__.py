@@ -1,0 +1,1 @@
+"""The DAE problems of the Bari test set, one module each (see ``../testset.py``)."""
