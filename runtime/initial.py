@@ -42,6 +42,7 @@ from ..solvers.initialization import solve_with_fallback
 from ..solvers.linalg import SPARSE_THRESHOLD, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
+from .indeterminate import minimum_norm_newton, null_variables
 
 __all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives",
            "algebraic_system", "consistent_output"]
@@ -171,9 +172,34 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
                                    f"initialization at t = {t0}", model.names,
                                    lambda k: _row_name(model, k), t0)
     except InitializationFailed as err:
+        found = _indeterminate(model, t0, F, J, z_guess, weights, model.nominal,
+                               model.names, err)
+        if found is not None:
+            return found
         if model.evaluation_errors:
             err.args = (f"{err.args[0]}; {model.evaluation_errors[0]}",) + err.args[1:]
         raise
+
+
+def _indeterminate(model, t, F, J, x0, weights, scale, names, err):
+    """After a singular Jacobian: a solution of the consistent singular system, the one
+    nearest the guess (:mod:`acausal.runtime.indeterminate`), noted in the report; None
+    when the failure was not a singular Jacobian or the system has no solution."""
+    if err.residual is not None:       # a failure to converge, not a singular Jacobian
+        return None
+    found = minimum_norm_newton(F, J, x0, weights, scale)
+    if found is None:
+        return None
+    x, null = found
+    report = getattr(model, "report", None)
+    free = null_variables(null, names)
+    note = (f"at t = {t:.6g} the equations determine {', '.join(free) or 'some unknowns'} "
+            "only in combination (a singular, consistent system, e.g. friction elements "
+            "locked on one motion sharing a torque): the solution nearest the guess is "
+            "taken")
+    if report is not None and note not in report.notes:
+        report.notes.append(note)
+    return x
 
 
 def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-6):
@@ -185,10 +211,17 @@ def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-
         atol_v = atol * model.nominal[alg]
         weights = 1.0 / (rtol * np.abs(z[alg]) + atol_v)
         model.evaluation_errors.clear()
-        z[alg] = solve_with_fallback(F, J, z[alg].copy(), weights,
-                                     "consistent algebraic values after the event",
-                                     [model.names[i] for i in alg],
-                                     lambda k: _row_name(model, k), t)
+        labels = [model.names[i] for i in alg]
+        try:
+            z[alg] = solve_with_fallback(F, J, z[alg].copy(), weights,
+                                         "consistent algebraic values after the event",
+                                         labels, lambda k: _row_name(model, k), t)
+        except InitializationFailed as err:
+            found = _indeterminate(model, t, F, J, z[alg].copy(), weights,
+                                   model.nominal[alg], labels, err)
+            if found is None:
+                raise
+            z[alg] = found
     return z, consistent_derivatives(model, t, z)
 
 

@@ -109,3 +109,34 @@ def test_a_boolean_may_read_an_unknown_of_an_implicit_equation():
     # y = 1 where x = t = 2
     assert min(abs(float(e) - 2.0) for e in res.events) < 1e-7
     assert np.array_equal(res["high"], res.t > 2.0)
+
+
+
+class _TwoBearings(ac.Component):
+    """A constant torque of 5 N.m on an inertia at rest held by two bearings (1 and 2
+    N.m): with both locked at t0 their locking torques are determined only in sum (a
+    singular, consistent system); the sum, 5 N.m, is more than both hold together."""
+
+    from acausal.library.rotational import BearingFriction, ConstantTorque, Fixed, Inertia
+
+    src = ConstantTorque(tau_constant=5.0)
+    J = Inertia(J=2.0, phi={"fixed": True, "start": 0.0}, w={"fixed": True, "start": 0.0})
+    b1 = BearingFriction(tau_pos=[[0, 1.0]], useSupport=True)
+    b2 = BearingFriction(tau_pos=[[0, 2.0]], useSupport=True)
+    fixed = Fixed()
+
+    def equations(self):
+        return [ac.connect(self.src.flange, self.J.flange_a),
+                ac.connect(self.J.flange_b, self.b1.flange_a, self.b2.flange_a),
+                ac.connect(self.b1.support, self.fixed.flange, self.b2.support)]
+
+
+def test_two_elements_locked_on_one_motion_initialize_and_break_away():
+    """Both bearings start locked (w = 0): the split of the 5 N.m between them is
+    indeterminate, yet any split exceeds what one of them holds, so both break away at
+    t0 and slide: J der(w) = 5 - 1 - 2, w = t (closed form)."""
+    res = ac.simulate(_TwoBearings(), t_end=1.0, rtol=1e-8, t_eval=np.linspace(0, 1, 11))
+    assert res.success
+    assert np.max(np.abs(res["J.w"] - res.t)) <= 1e-6
+    assert np.all(res["b1.mode"][1:] == 1) and np.all(res["b2.mode"][1:] == 1)
+    assert np.allclose(res["b1.tau"][1:], 1.0) and np.allclose(res["b2.tau"][1:], 2.0)

@@ -99,3 +99,19 @@ def test_homotopy_solves_what_newton_cannot():
     res = damped_newton(fun, jac, [6.0], tol=1e-10)
     assert res.converged and res.x[0] == pytest.approx(1.0, abs=1e-9)
 
+
+
+def test_a_consistent_singular_system_gets_its_minimum_norm_solution_and_an_inconsistent_none():
+    """x1 + x2 = 3 twice (dependent rows) with x3 = 1: the solutions are a line, the
+    minimum-norm one from zero is x1 = x2 = 1.5; with 3 and 4 on the right there is none."""
+    from acausal.runtime.indeterminate import minimum_norm_newton, null_variables
+    A = np.array([[1.0, 1.0, 0.0], [2.0, 2.0, 0.0], [0.0, 0.0, 1.0]])
+    for b, expect in (([3.0, 6.0, 1.0], [1.5, 1.5, 1.0]), ([3.0, 8.0, 1.0], None)):
+        found = minimum_norm_newton(lambda x: A @ x - b, lambda x: A, np.zeros(3),
+                                    np.full(3, 1e6), np.ones(3))
+        if expect is None:
+            assert found is None
+            continue
+        x, null = found
+        assert np.allclose(x, expect, rtol=1e-12)
+        assert null_variables(null, ["x1", "x2", "x3"]) == ["x1", "x2"]

@@ -18,10 +18,12 @@ class LossyGearDemo2(ac.Component):
     msl_name = "Modelica.Mechanics.Rotational.Examples.LossyGearDemo2"
     stop_time = 0.5
     msl_known_failure = (
-        "defect (initialization): two friction elements, the gear and the bearing, "
-        "are locked on one motion at t0, so the split of the torque between them "
-        "(gear.sa) is indeterminate: InitializationFailed, the Jacobian is singular in "
-        "gear.sa; the MSL's tools pick one solution of the singular system")
+        "defect (integration): the gear and the bearing lock on one motion at "
+        "t = 0.0636 s, so the split of the torque between them (gear.sa) is "
+        "indeterminate while both stay locked; initialization and the re-initialization "
+        "at events solve such a singular, consistent system for its solution nearest "
+        "the guess, but the integrator's iteration matrix is singular there: "
+        "'singular iteration matrix at t=0.06359', variables ['gear.sa']")
     tolerance = 1e-6
 
     PowerLoss = ac.Variable(unit="W", description="power lost in the gear")
