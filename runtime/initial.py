@@ -16,7 +16,9 @@ Newton homotopy: :func:`acausal.solvers.initialization.solve_with_fallback`).
 Relations take part as in Modelica's initialization: they first take their values at
 the start values (repeatedly, as one relation may read another's value), the system is
 solved with the relations frozen, then every relation takes the value it has at the
-solution (the side the dynamics choose where it sits at zero), and the system is solved
+solution (the side the dynamics choose where it sits at zero; one at zero that its rate
+does not move keeps its value: a stuck friction element's speed, solved to 1e-31, says
+nothing of a side, and either value agrees with the solution), and the system is solved
 again, until the values agree with the solution (a fixed point on the discrete state).
 
 Then the derivatives of *every* unknown are made consistent: z'[S] of the states from the
@@ -93,7 +95,8 @@ def initialize(model, t0: float):
         zp = consistent_derivatives(model, t0, z)
         _finite_derivatives(model, t0, zp)
         history.append(model.m.copy())
-        changed = model.discrete.set_all(t0, z, model.p, lambda: model.rates(t0, z, zp))
+        changed = model.discrete.set_all(t0, z, model.p, lambda: model.rates(t0, z, zp),
+                                         resting="kept")
         if model.whens is not None and model.whens.has_equations:
             # the Boolean and Integer equations, pre() at the start values
             z, moved = model.whens.update_equations(model, t0, z, model.p)
