@@ -258,7 +258,7 @@ def consistent_output(model, t: float, z: np.ndarray, rtol: float):
     lin = kept[1] if kept is not None and kept[0] is model._jac_indptr else None
     for fresh in ((False, True) if lin is not None else (True,)):
         if fresh:
-            lin = _output_factor(model, t, z, alg)
+            lin = _output_factor(model, t, z, alg, rtol)
             if lin is None:
                 return None
             model._output_lu = (model._jac_indptr, lin)
@@ -268,13 +268,23 @@ def consistent_output(model, t: float, z: np.ndarray, rtol: float):
     return None
 
 
-def _output_factor(model, t, z, alg):
-    """The LU of dG/dz over the algebraic unknowns at (t, z), or None if singular."""
+def _output_factor(model, t, z, alg, rtol):
+    """The LU of dG/dz over the algebraic unknowns at (t, z), or None if singular; a
+    consistent rank-deficient one (friction elements locked on one motion) is factored
+    for minimum-norm corrections, as the integrator's (:mod:`acausal.solvers.linalg`)."""
     dense = model.n <= SPARSE_THRESHOLD
     try:
         J = model.dG_dy(t, z, dense=dense)
         lin = LinearSolver(alg.size, not dense)
         lin.factor(J[:, alg] if dense else J.tocsc()[:, alg])
+        return lin
+    except SingularMatrixError:
+        pass
+    # the sparse form carries the structure the rank-deficient factorization judges
+    weights = 1.0 / (rtol * (np.abs(z[alg]) + model.nominal[alg]))
+    try:
+        lin = LinearSolver(alg.size, not dense)
+        lin.factor(model.dG_dy(t, z).tocsc()[:, alg], weights)
     except SingularMatrixError:
         return None
     return lin
@@ -288,7 +298,10 @@ def _chord(model, t, z, alg, lin, rtol) -> bool:
     nominal = model.nominal[alg]
     for _ in range(_OUTPUT_ITERATIONS):
         g = model.G(t, z)
-        dx = lin.solve(g)
+        try:
+            dx = lin.solve(g)
+        except SingularMatrixError:        # rank-deficient and inconsistent here
+            return False
         if not np.isfinite(dx.sum()):
             return False
         za = z[alg] - dx

@@ -115,3 +115,42 @@ def test_a_consistent_singular_system_gets_its_minimum_norm_solution_and_an_inco
         x, null = found
         assert np.allclose(x, expect, rtol=1e-12)
         assert null_variables(null, ["x1", "x2", "x3"]) == ["x1", "x2"]
+
+
+class DependentRows(DAEProblem):
+    """x' = 1 with z1 + z2 = g1(t) and 2 (z1 + z2) = g2(t): the iteration matrix is
+    singular for every step.  With g2 = 2 g1 the rows are consistent and z1 = z2 = t/2
+    (the minimum-norm solution from z1 = z2 = 0); with g2 = 2 g1 + t they disagree as
+    soon as t > 0, and the integration must stop as singular, not return a least-squares
+    answer.  (The start is given consistent: the initialization's own treatment of a
+    singular system is :mod:`acausal.runtime.indeterminate`'s.)"""
+
+    def __init__(self, inconsistent):
+        super().__init__(3, ["x", "z1", "z2"])
+        self.algebraic[1:] = True
+        self.bad = inconsistent
+
+    def residual(self, t, y, yp):
+        s = y[1] + y[2]
+        return np.array([yp[0] - 1.0, s - t, 2 * s - 2 * t - (t if self.bad else 0.0)])
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj, 0.0, 0.0], [0.0, 1.0, 1.0], [0.0, 2.0, 2.0]])
+
+
+@pytest.mark.parametrize("bad", [False, True])
+def test_integration_through_a_rank_deficient_iteration_matrix_only_when_consistent(bad):
+    from acausal.solvers.base import SimulationError
+    p = DependentRows(bad)
+    ts = np.linspace(0.0, 1.0, 11)
+    if bad:
+        with pytest.raises(SimulationError, match="singular"):
+            integrate(p, (0.0, 1.0), [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], rtol=1e-8,
+                      atol=1e-10, t_eval=ts, initialize=False)
+        return
+    out = integrate(p, (0.0, 1.0), [0.0, 0.0, 0.0], [1.0, 0.5, 0.5], rtol=1e-8,
+                    atol=1e-10, t_eval=ts, initialize=False)
+    assert out.success
+    np.testing.assert_allclose(out.y[:, 0], ts, atol=1e-9)
+    np.testing.assert_allclose(out.y[:, 1], ts / 2, atol=1e-9)
+    np.testing.assert_allclose(out.y[:, 2], ts / 2, atol=1e-9)
