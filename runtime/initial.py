@@ -16,7 +16,9 @@ Newton homotopy: :func:`acausal.solvers.initialization.solve_with_fallback`).
 Relations take part as in Modelica's initialization: they first take their values at
 the start values (repeatedly, as one relation may read another's value), the system is
 solved with the relations frozen, then every relation takes the value it has at the
-solution (the side the dynamics choose where it sits at zero), and the system is solved
+solution (the side the dynamics choose where it sits at zero; one at zero that its rate
+does not move keeps its value: a stuck friction element's speed, solved to 1e-31, says
+nothing of a side, and either value agrees with the solution), and the system is solved
 again, until the values agree with the solution (a fixed point on the discrete state).
 
 Then the derivatives of *every* unknown are made consistent: z'[S] of the states from the
@@ -42,6 +44,7 @@ from ..solvers.initialization import solve_with_fallback
 from ..solvers.linalg import SPARSE_THRESHOLD, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
+from .indeterminate import minimum_norm_newton, null_variables
 from .redundant import check_dropped, choose_rows
 
 __all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives",
@@ -111,7 +114,8 @@ def initialize(model, t0: float):
         zp = consistent_derivatives(model, t0, z)
         _finite_derivatives(model, t0, zp)
         history.append(model.m.copy())
-        changed = model.discrete.set_all(t0, z, model.p, lambda: model.rates(t0, z, zp))
+        changed = model.discrete.set_all(t0, z, model.p, lambda: model.rates(t0, z, zp),
+                                         resting="kept")
         if model.whens is not None and model.whens.has_equations:
             # the Boolean and Integer equations, pre() at the start values
             z, moved = model.whens.update_equations(model, t0, z, model.p)
@@ -207,9 +211,12 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
                                 f"initialization at t = {t0}", model.names,
                                 lambda k: _row_name(model, k), t0)
     except InitializationFailed as err:
-        if model.evaluation_errors:
-            err.args = (f"{err.args[0]}; {model.evaluation_errors[0]}",) + err.args[1:]
-        raise
+        z = _indeterminate(model, t0, F, J, z_guess, weights, model.nominal,
+                           model.names, err)
+        if z is None:
+            if model.evaluation_errors:
+                err.args = (f"{err.args[0]}; {model.evaluation_errors[0]}",) + err.args[1:]
+            raise
     if dropped:
         init.dropped = check_dropped(model, t0, z, dropped, coords, list(init.rows))
     return z
@@ -238,6 +245,27 @@ def _choose_conditions(model, t0, z):
     return [k for k in range(init.n_mandatory) if k not in kept], coords
 
 
+def _indeterminate(model, t, F, J, x0, weights, scale, names, err):
+    """After a singular Jacobian: a solution of the consistent singular system, the one
+    nearest the guess (:mod:`acausal.runtime.indeterminate`), noted in the report; None
+    when the failure was not a singular Jacobian or the system has no solution."""
+    if err.residual is not None:       # a failure to converge, not a singular Jacobian
+        return None
+    found = minimum_norm_newton(F, J, x0, weights, scale)
+    if found is None:
+        return None
+    x, null = found
+    report = getattr(model, "report", None)
+    free = null_variables(null, names)
+    note = (f"at t = {t:.6g} the equations determine {', '.join(free) or 'some unknowns'} "
+            "only in combination (a singular, consistent system, e.g. friction elements "
+            "locked on one motion sharing a torque): the solution nearest the guess is "
+            "taken")
+    if report is not None and note not in report.notes:
+        report.notes.append(note)
+    return x
+
+
 def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-6):
     """After an event: the states kept, G(t, z) = 0 solved for the algebraic unknowns,
     then consistent z' of every unknown."""
@@ -251,10 +279,17 @@ def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-
             # 2e9 (a rate after a switch) is not judged on its value before it
             return 1.0 / (rtol * np.maximum(np.abs(za), np.abs(z[alg])) + atol_v)
         model.evaluation_errors.clear()
-        z[alg] = solve_with_fallback(F, J, z[alg].copy(), weights,
-                                     "consistent algebraic values after the event",
-                                     [model.names[i] for i in alg],
-                                     lambda k: _row_name(model, k), t)
+        labels = [model.names[i] for i in alg]
+        try:
+            z[alg] = solve_with_fallback(F, J, z[alg].copy(), weights,
+                                         "consistent algebraic values after the event",
+                                         labels, lambda k: _row_name(model, k), t)
+        except InitializationFailed as err:
+            found = _indeterminate(model, t, F, J, z[alg].copy(), weights,
+                                   model.nominal[alg], labels, err)
+            if found is None:
+                raise
+            z[alg] = found
     return z, consistent_derivatives(model, t, z)
 
 
@@ -288,7 +323,7 @@ def consistent_output(model, t: float, z: np.ndarray, rtol: float):
     lin = kept[1] if kept is not None and kept[0] is model._jac_indptr else None
     for fresh in ((False, True) if lin is not None else (True,)):
         if fresh:
-            lin = _output_factor(model, t, z, alg)
+            lin = _output_factor(model, t, z, alg, rtol)
             if lin is None:
                 return None
             model._output_lu = (model._jac_indptr, lin)
@@ -298,13 +333,23 @@ def consistent_output(model, t: float, z: np.ndarray, rtol: float):
     return None
 
 
-def _output_factor(model, t, z, alg):
-    """The LU of dG/dz over the algebraic unknowns at (t, z), or None if singular."""
+def _output_factor(model, t, z, alg, rtol):
+    """The LU of dG/dz over the algebraic unknowns at (t, z), or None if singular; a
+    consistent rank-deficient one (friction elements locked on one motion) is factored
+    for minimum-norm corrections, as the integrator's (:mod:`acausal.solvers.linalg`)."""
     dense = model.n <= SPARSE_THRESHOLD
     try:
         J = model.dG_dy(t, z, dense=dense)
         lin = LinearSolver(alg.size, not dense)
         lin.factor(J[:, alg] if dense else J.tocsc()[:, alg])
+        return lin
+    except SingularMatrixError:
+        pass
+    # the sparse form carries the structure the rank-deficient factorization judges
+    weights = 1.0 / (rtol * (np.abs(z[alg]) + model.nominal[alg]))
+    try:
+        lin = LinearSolver(alg.size, not dense)
+        lin.factor(model.dG_dy(t, z).tocsc()[:, alg], weights)
     except SingularMatrixError:
         return None
     return lin
@@ -318,7 +363,10 @@ def _chord(model, t, z, alg, lin, rtol) -> bool:
     nominal = model.nominal[alg]
     for _ in range(_OUTPUT_ITERATIONS):
         g = model.G(t, z)
-        dx = lin.solve(g)
+        try:
+            dx = lin.solve(g)
+        except SingularMatrixError:        # rank-deficient and inconsistent here
+            return False
         if not np.isfinite(dx.sum()):
             return False
         za = z[alg] - dx

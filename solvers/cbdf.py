@@ -18,6 +18,12 @@ reads from that header (:mod:`.cbdf_layout`) -- whose divided differences ``phi`
 the driver and :meth:`BDF.interpolate` read.  Output at requested times is the BDF
 interpolant, evaluated in C.
 
+A step whose iteration matrix the C loop finds singular is taken by the Python loop
+(:meth:`BDF.step` on the same state), which may solve a consistent rank-deficient matrix
+in the minimum-norm sense (:mod:`.linalg`: friction elements locked on one motion) and
+refuses an inconsistent one; the following steps stay in Python while its matrix stays
+rank-deficient, then return to C.
+
 With dynamic state selection the loop also tests, after every step, whether the current
 choice of states is still good enough (:mod:`.cbdf_dyn`), and returns to Python only for
 the search when it is not; a new choice comes back as other active linking rows, the
@@ -159,6 +165,8 @@ class CompiledBDF(BDF):
         st.phi = self._pointer(self.phi)
         self._splu = None
         self.pending = False
+        self._in_python = False     # steps taken by the Python loop (module docstring)
+        self._python_failure = None
 
     # ------------------------------------------------------------------ buffers
     def _pointer(self, a: np.ndarray):
@@ -335,6 +343,8 @@ class CompiledBDF(BDF):
         place).  Returns R_BUDGET, R_FULL, R_SPECIAL or R_FAIL; the points output are in
         :attr:`points`."""
         st, m = self.st, self.model
+        if self._in_python:
+            return self._python_step(i_eval)
         if self.sparse:
             self._bind_sparse()
         self._push()
@@ -372,10 +382,35 @@ class CompiledBDF(BDF):
         self.points = (self.out_t[:k].copy(), self.out_y[:k].copy(), self.out_yp[:k].copy())
         self.i_eval = st.i_eval
         self.pending = bool(st.pending)
+        if code == R_FAIL and st.fail_kind == F_SINGULAR:
+            return self._python_step(self.i_eval, self.points)
         return code
+
+    def _python_step(self, i_eval, points=None) -> int:
+        """One step of the Python loop from the current state (a singular iteration
+        matrix: module docstring); R_SPECIAL (the driver handles the step as one that
+        needs Python), or R_FAIL with its failure.  ``points``: the output of the C
+        steps before it."""
+        self.i_eval, self.pending = i_eval, False
+        if points is None:
+            n = self.n
+            points = (np.empty(0), np.empty((0, n)), np.empty((0, n)))
+        self.points = points
+        self._python_failure = None
+        try:
+            BDF.step(self)
+        except StepFailure as exc:
+            self._in_python = False
+            self._python_failure = exc
+            return R_FAIL
+        self._in_python = self.lin.deficient
+        self.force_setup = True        # the C loop's factorization is not this one
+        return R_SPECIAL
 
     def failure(self) -> StepFailure:
         """The :class:`StepFailure` of a failed :meth:`run`, worded as the Python loop's."""
+        if self._python_failure is not None:
+            return self._python_failure
         st = self.st
         kind = _KINDS.get(st.fail_kind, "step_size")
         t, h = st.fail_t, st.fail_h

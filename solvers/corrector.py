@@ -78,7 +78,7 @@ def setup(bdf, t, y, yp) -> None:
     st.jacobian_evaluations += 1
     J = iteration_matrix(bdf.problem, bdf.lin, t, y, yp, bdf.cj)
     st.lu_factorizations += 1
-    bdf.lin.factor(J)
+    bdf.lin.factor(J, bdf.ewt_newton)     # a consistent rank deficiency allowed
     bdf.cjold = bdf.cj
     bdf.cjratio = 1.0
     bdf.ss = 20.0

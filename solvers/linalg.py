@@ -43,6 +43,25 @@ Koster 2001 (MC64), not done here).  If ``B`` passes, its factorization is used 
 solves use ``x = D_c B^{-1} D_r b``.  Equilibrating only then leaves the arithmetic of
 the common, well-scaled case untouched (and costs nothing there).
 
+An integrator may allow a *consistent* rank-deficient iteration matrix (``factor(J,
+weights)``): two friction elements locked on one motion impose the same constraint twice,
+so the force balance fixes only the sum of their locking forces (the MSL's
+Rotational.Examples.LossyGearDemo2: "If both friction models are stuck, there is no
+unique solution.  Still a reliable Modelica simulator should be able to handle this
+situation").  Where the LU finds the matrix singular, the equilibrated matrix ``B`` is
+then factored by its singular value decomposition (rank-revealing; singular values below
+:data:`_RANK_RTOL` times the largest are zero) and each solve returns the minimum-norm
+least-squares solution ``x = D_c B^+ D_r b``: no correction along the indeterminate
+directions, which keep the split the last consistent solve chose.  The safeguards: the
+matrix must be structurally regular (the problem's Jacobian pattern, else the entries of
+a sparse matrix, else the nonzeros, admit a perfect matching: an unknown that no equation
+reads, or an equation that reads none, is a modelling error, not an indeterminate split),
+and the part
+of ``D_r b`` that no ``x`` can produce (its component along the left null vectors, in the
+units of the variables those rows constrain, weighted by ``weights``) must be within one
+unit of the error test; otherwise the equations are inconsistent and the solve raises
+:class:`SingularMatrixError`, as a singular matrix always did.
+
 A singular iteration matrix raises :class:`SingularMatrixError`, which carries the
 equations (rows) and variables (columns) involved, found first structurally (maximum
 bipartite matching: unmatched rows/columns) and, for a structurally regular matrix,
@@ -70,6 +89,12 @@ SPARSE_THRESHOLD = 60
 #: (Which LU runs depends on the size and the installation only, never on what a process
 #: has imported: the same run gives the same numbers.)
 NUMPY_LU_MAX = 16
+
+#: Largest system whose singular iteration matrix may be factored by its SVD (dense:
+#: ``n^3`` work per factorization) when the integrator allows a consistent rank deficiency.
+RANK_DEFICIENT_MAX = 400
+# Singular values of the equilibrated matrix below this times the largest are zero.
+_RANK_RTOL = 1e-10
 
 # A pivot of the equilibrated matrix this small relative to the largest one is treated
 # as zero: below it, LU solutions carry no correct digits and a Newton step built on
@@ -233,6 +258,7 @@ class LinearSolver:
         self._dlu = None             # the compiled step loop's library, for a dense LU
         self._in_c = False           # whether the last factorization is the compiled one
         self._numpy = False          # dense, judged by _numpy_lu and solved by numpy
+        self._deficient = None       # the SVD of a consistent rank-deficient matrix
 
     def dense_decided(self) -> bool:
         """Whether the factorization is dense whatever form the matrix comes in."""
@@ -265,15 +291,70 @@ class LinearSolver:
         from scipy.linalg import get_lapack_funcs    # only a dense factorization needs it
         self._getrf, self._getrs = get_lapack_funcs(("getrf", "getrs"), (np.empty((1, 1)),))
 
-    def factor(self, J) -> None:
-        """LU-factor ``J``; raise :class:`SingularMatrixError` if it is singular."""
+    def factor(self, J, weights=None) -> None:
+        """LU-factor ``J``; raise :class:`SingularMatrixError` if it is singular.  With
+        ``weights`` (of the error test, per variable) a singular ``J`` of at most
+        :data:`RANK_DEFICIENT_MAX` unknowns is factored by its SVD instead, and solves
+        are minimum-norm while the right-hand sides are consistent (module docstring)."""
+        self._deficient = None
         if self.sparse is None or (not self.sparse and self._getrf is None
                                    and self._dlu is None and not self._numpy):
             self._decide(J)
-        if self.sparse:
-            self._factor_sparse(J)
-        else:
-            self._factor_dense(J)
+        try:
+            if self.sparse:
+                self._factor_sparse(J)
+            else:
+                self._factor_dense(J)
+        except SingularMatrixError:
+            if weights is None or self.n > RANK_DEFICIENT_MAX or \
+                    not self._factor_deficient(J, weights):
+                raise
+
+    @property
+    def deficient(self) -> bool:
+        """Whether the last factorization is of a rank-deficient matrix (its SVD)."""
+        return self._deficient is not None
+
+    def _factor_deficient(self, J, weights) -> bool:
+        """The SVD of the equilibrated ``J`` for minimum-norm solves, and per left null
+        vector the weight of its mismatch (module docstring); False if ``J`` is not
+        finite."""
+        A = J.toarray() if issparse(J) else np.array(J, dtype=float)
+        if not np.all(np.isfinite(A)):
+            return False
+        import scipy.sparse as sp
+        if self.pattern is not None:      # the structure: the problem's pattern, ...
+            rows, cols = self.pattern
+            S = sp.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=A.shape)
+        else:                             # ... a sparse matrix's entries, or the nonzeros
+            S = sp.csr_matrix(J) if issparse(J) else sp.csr_matrix(A)
+        rows, cols = _structural_defect(S)
+        if rows.size or cols.size:     # an unknown no equation determines: an error
+            return False
+        r, c = equilibrate(A)
+        B = A * r[:, None] * c
+        u, sv, vt = np.linalg.svd(B)
+        rank = int(np.count_nonzero(sv > _RANK_RTOL * sv[0])) if sv.size else 0
+        null = u[:, rank:]
+        # a left null vector's mismatch is in the units (over D_c) of the variables its
+        # rows constrain: the most sensitive of them judges it
+        w = np.asarray(weights, dtype=float) * c
+        sens = np.empty(null.shape[1])
+        for k in range(null.shape[1]):
+            rows = np.abs(null[:, k]) > 0.1 * np.abs(null[:, k]).max()
+            cols = np.any(np.abs(B[rows]) > 0.1, axis=0)
+            sens[k] = w[cols].max() if cols.any() else w.max()
+        self._deficient = (u[:, :rank], sv[:rank], vt[:rank], null, sens, r, c, A)
+        return True
+
+    def _solve_deficient(self, b: np.ndarray) -> np.ndarray:
+        ur, sv, vr, null, sens, r, c, A = self._deficient
+        rb = r * np.asarray(b, dtype=float)
+        mismatch = np.abs(null.T @ rb) * sens
+        if not np.all(mismatch <= 1.0):      # NaN too
+            raise SingularMatrixError("iteration matrix is singular and the equations "
+                                      "it makes dependent are inconsistent", matrix=A)
+        return c * (vr.T @ ((ur.T @ rb) / sv))
 
     def _factor_dense(self, J) -> None:
         A = J.toarray() if issparse(J) else np.asarray(J, dtype=float)
@@ -386,7 +467,10 @@ class LinearSolver:
         return np.flatnonzero(bad.any(axis=1)), np.flatnonzero(bad.any(axis=0))
 
     def solve(self, b: np.ndarray) -> np.ndarray:
-        """Return ``J^{-1} b`` with the last factorization."""
+        """Return ``J^{-1} b`` with the last factorization (the minimum-norm solution
+        where it is rank-deficient)."""
+        if self._deficient is not None:
+            return self._solve_deficient(b)
         r = self._r
         if self.sparse:
             return self._lu.solve(b) if r is None else self._c * self._lu.solve(r * b)

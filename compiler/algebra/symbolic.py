@@ -23,7 +23,7 @@ from ...components.symbols import der, time
 from .derivative import partial, symbol_nodes, terms_with
 from .substitution import forget_negated, negated, sort_args
 from ..structure.graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER,
-                               STATE_SELECT, UNASSIGNED, Names, Structure)
+                               STATE_SELECT, UNASSIGNED, Names, Structure, state_tie_break)
 from ...errors import ModelError
 
 __all__ = ["SymbolicEquation", "SymbolicSystem", "ExactText", "coefficient_kind",
@@ -163,11 +163,14 @@ class SymbolicSystem:
         priority = [min(STATE_SELECT[info.attrs.state_select], PREFER)
                     if sym not in self.var_info else STATE_SELECT[info.attrs.state_select]
                     for sym, info in zip(self.symbols, self.base_infos())]
+        tie = [state_tie_break(self.var_info[sym].attrs.fixed,
+                               self.var_info[sym].attrs.nominal)
+               if sym in self.var_info else 0 for sym in self.symbols]
         return Structure(graph=graph, var_to_diff=var_to_diff,
                          eq_to_diff=[UNASSIGNED] * len(graph), coeff=coeff,
                          var_names=names,
                          eq_names=Names(self._namer(e) for e in self.equations),
-                         state_priority=priority)
+                         state_priority=priority, tie_break=tie)
 
     def _namer(self, eq: SymbolicEquation):
         # a bound call, not a lambda: a structure naming its equations stays picklable

@@ -23,6 +23,9 @@ Conventions
   ``eq_names`` may be a :class:`Names`, whose entries are printed when first read.
 * ``state_priority[v]``: the user's hint, one of the STATE_SELECT values below
   (higher = more wanted as a state).
+* ``tie_break[v]``: among variables of equal ``state_priority``, higher = more wanted
+  as a state: what the user said of v's initial value and scale, as Modelica tools
+  read it (:func:`state_tie_break`).
 """
 from __future__ import annotations
 
@@ -32,7 +35,16 @@ from dataclasses import dataclass, field
 __all__ = [
     "UNASSIGNED", "LINEAR_CONST", "LINEAR_PARAM", "LINEAR_VAR", "NONLINEAR",
     "NEVER", "AVOID", "DEFAULT", "PREFER", "ALWAYS", "STATE_SELECT", "Structure", "Names",
+    "state_tie_break",
 ]
+
+
+def state_tie_break(fixed, nominal) -> int:
+    """The rank of a declared variable among candidates of equal StateSelect: one with a
+    fixed start value first (its initial condition then applies to a state, as written,
+    rather than to an algebraic function of other states), then one with a nominal value
+    of its own (its error is then judged on the scale the user gave)."""
+    return 2 * bool(fixed) + (nominal is not None)
 
 
 class _Unassigned:
@@ -116,6 +128,7 @@ class Structure:
     eq_names: list = None
     state_priority: list = None
     diff_to_var: list = field(default=None)
+    tie_break: list = None           # var -> rank among equal priorities (STATE_TIE_BREAK)
     diff_to_eq: list = field(default=None)
 
     def __post_init__(self):
@@ -127,6 +140,8 @@ class Structure:
             self.eq_names = [f"e{i}" for i in range(len(self.graph))]
         if self.state_priority is None:
             self.state_priority = [DEFAULT] * len(self.var_to_diff)
+        if self.tie_break is None:
+            self.tie_break = [0] * len(self.var_to_diff)
         if self.diff_to_var is None:
             self.diff_to_var = _invert(self.var_to_diff)
         if self.diff_to_eq is None:

@@ -96,6 +96,7 @@ class _Work:
         self.s = replace(
             s, graph=list(s.graph), coeff=list(s.coeff), var_names=list(s.var_names),
             eq_names=Names(s.eq_names), state_priority=list(s.state_priority),
+            tie_break=list(s.tie_break),
             var_to_diff=list(s.var_to_diff), diff_to_var=list(s.diff_to_var),
             eq_to_diff=list(s.eq_to_diff), diff_to_eq=list(s.diff_to_eq))
         self.v2d = _from_sentinel(s.var_to_diff)
@@ -110,6 +111,7 @@ class _Work:
         s.diff_to_var.append(v)
         s.var_names.append(f"der({s.var_names[v]})")
         s.state_priority.append(DEFAULT)   # user hints belong to declared variables
+        s.tie_break.append(0)
         self.v2d[v] = dv
         self.v2d.append(-1)
         self.var_to_eq.append(-1)

@@ -36,6 +36,9 @@ Column preference (which derivatives become dummies), in order:
   then AVOID, DEFAULT, PREFER; ALWAYS is never a dummy;
 * within a priority, columns selectable through LINEAR_CONST/LINEAR_PARAM coefficients
   first, so that the choice is valid everywhere;
+* then by ``tie_break`` of the antiderivative: a variable with a fixed start value, then
+  one with a nominal value of its own, is kept as a state before one without (Modelica
+  tools' rule among equal StateSelect: the initial conditions stay on states as written);
 * then columns whose antiderivative is itself a derivative (keeping declared variables,
   e.g. a velocity ``v`` rather than ``der(x)``, as states);
 * then higher variable index (keeping earlier declared variables as states).
@@ -212,7 +215,7 @@ def _level_columns(s: Structure, rows: list, allowed) -> list:
 
 def _sort_key(s: Structure, v: int) -> tuple:
     anti = s.diff_to_var[v]
-    return (s.state_priority[anti], -s.order(anti), -v)
+    return (s.state_priority[anti], s.tie_break[anti], -s.order(anti), -v)
 
 
 def _augment_col(c: int, cadj: dict, r2c: dict, c2r: dict, kmax: int,

@@ -208,7 +208,7 @@ def test_report_json_names_the_states_the_report_names(capsys, reference, tmp_pa
     report = compiled.report
     assert data["model"] == "MotorDrive"
     assert data["states"] == report.states
-    assert data["dummy_derivatives"] == report.dummy_derivatives == ["der(load.phi)"]
+    assert data["dummy_derivatives"] == report.dummy_derivatives == ["der(motor.emf.flange.phi)"]
     assert data["differential_index"] == report.differential_index == 2
     # the blocks in names: every state-free unknown is solved by exactly one block
     texts = {e["text"] for e in report.equations}

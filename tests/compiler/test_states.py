@@ -109,6 +109,25 @@ def test_gear_priorities():
         select_states(pantelides(gear({"phi1": ALWAYS, "phi2": ALWAYS})))
 
 
+def test_gear_keeps_the_variables_with_fixed_starts_as_states():
+    """Among equally valid candidates the ones with fixed start values (tie_break) stay
+    states; a StateSelect hint still comes first."""
+    from acausal.compiler.structure.graph import state_tie_break
+    def tied(priority=None):
+        s = gear(priority)
+        for name in ("phi2", "w2"):
+            s.tie_break[s.var_names.index(name)] = state_tie_break(True, None)
+        return s
+    r, sel, s = run(tied())
+    assert names(s, sel.states) == ["phi2", "w2"]
+    assert_index1(r, sel)
+    _, sel, s = run(tied({"phi1": PREFER, "w1": PREFER}))
+    assert names(s, sel.states) == ["phi1", "w1"]
+    # a nominal of its own ranks below a fixed start, above nothing
+    assert state_tie_break(True, None) > state_tie_break(False, 1e-3) > \
+        state_tie_break(None, None)
+
+
 def test_capacitor_across_voltage_source_has_no_state():
     # src: u = V(t)     cap: C der(u) = i
     s = make_structure([{"u": C}, {"der(u)": P, "i": C}], derivatives={"u": "der(u)"},

@@ -109,3 +109,77 @@ def test_a_boolean_may_read_an_unknown_of_an_implicit_equation():
     # y = 1 where x = t = 2
     assert min(abs(float(e) - 2.0) for e in res.events) < 1e-7
     assert np.array_equal(res["high"], res.t > 2.0)
+
+
+
+class _TwoBearings(ac.Component):
+    """A constant torque of 5 N.m on an inertia at rest held by two bearings (1 and 2
+    N.m): with both locked at t0 their locking torques are determined only in sum (a
+    singular, consistent system); the sum, 5 N.m, is more than both hold together."""
+
+    from acausal.library.rotational import BearingFriction, ConstantTorque, Fixed, Inertia
+
+    src = ConstantTorque(tau_constant=5.0)
+    J = Inertia(J=2.0, phi={"fixed": True, "start": 0.0}, w={"fixed": True, "start": 0.0})
+    b1 = BearingFriction(tau_pos=[[0, 1.0]], useSupport=True)
+    b2 = BearingFriction(tau_pos=[[0, 2.0]], useSupport=True)
+    fixed = Fixed()
+
+    def equations(self):
+        return [ac.connect(self.src.flange, self.J.flange_a),
+                ac.connect(self.J.flange_b, self.b1.flange_a, self.b2.flange_a),
+                ac.connect(self.b1.support, self.fixed.flange, self.b2.support)]
+
+
+def test_two_elements_locked_on_one_motion_initialize_and_break_away():
+    """Both bearings start locked (w = 0): the split of the 5 N.m between them is
+    indeterminate, yet any split exceeds what one of them holds, so both break away at
+    t0 and slide: J der(w) = 5 - 1 - 2, w = t (closed form)."""
+    res = ac.simulate(_TwoBearings(), t_end=1.0, rtol=1e-8, t_eval=np.linspace(0, 1, 11))
+    assert res.success
+    assert np.max(np.abs(res["J.w"] - res.t)) <= 1e-6
+    assert np.all(res["b1.mode"][1:] == 1) and np.all(res["b2.mode"][1:] == 1)
+    assert np.allclose(res["b1.tau"][1:], 1.0) and np.allclose(res["b2.tau"][1:], 2.0)
+
+
+class _TwoBearingsStopping(ac.Component):
+    """An inertia J = 2 kg.m2 turning at 3 rad/s against a constant torque of -1.5 N.m,
+    held by two bearings (1 and 2 N.m): it slides to rest, J w' = -1.5 - 1 - 2, and then
+    both bearings lock on its one motion and share the 1.5 N.m they hold together (3 N.m
+    at most), a split the equations leave indeterminate while they stay locked."""
+
+    from acausal.library.rotational import BearingFriction, ConstantTorque, Fixed, Inertia
+
+    src = ConstantTorque(tau_constant=-1.5)
+    J = Inertia(J=2.0, phi={"fixed": True, "start": 0.0}, w={"fixed": True, "start": 3.0})
+    b1 = BearingFriction(tau_pos=[[0, 1.0]], useSupport=True)
+    b2 = BearingFriction(tau_pos=[[0, 2.0]], useSupport=True)
+    fixed = Fixed()
+
+    def equations(self):
+        return [ac.connect(self.src.flange, self.J.flange_a),
+                ac.connect(self.J.flange_b, self.b1.flange_a, self.b2.flange_a),
+                ac.connect(self.b1.support, self.fixed.flange, self.b2.support)]
+
+
+@pytest.mark.parametrize("loop", ["python", "auto"])
+def test_two_elements_locked_on_one_motion_during_integration(loop):
+    """Closed form: w = 3 - 2.25 t and phi = 3 t - 1.125 t^2 until t1 = 4/3 s, then at
+    rest at phi = 2 rad; the iteration matrix is rank-deficient while both are locked,
+    the locking torques sum to the 1.5 N.m they hold, and each stays within its own
+    limit (the minimum-norm split)."""
+    t = np.linspace(0.0, 3.0, 31)
+    res = ac.simulate(_TwoBearingsStopping(), t_end=3.0, rtol=1e-8, t_eval=t,
+                      step_loop=loop)
+    assert res.success
+    t1 = 4.0 / 3.0
+    w = np.where(t < t1, 3.0 - 2.25 * t, 0.0)
+    phi = np.where(t < t1, 3.0 * t - 1.125 * t ** 2, 2.0)
+    assert np.max(np.abs(res["J.w"] - w)) <= 1e-6 * 3.0
+    assert np.max(np.abs(res["J.phi"] - phi)) <= 1e-6 * 2.0
+    after = t > t1 + 1e-3
+    assert np.all(res["b1.mode"][after] == 0) and np.all(res["b2.mode"][after] == 0)
+    held = res["b1.tau"][after] + res["b2.tau"][after]
+    assert np.allclose(held, held[0]) and abs(abs(held[0]) - 1.5) <= 1e-9
+    assert np.all(np.abs(res["b1.tau"][after]) <= 1.0)
+    assert np.all(np.abs(res["b2.tau"][after]) <= 2.0)

@@ -152,15 +152,12 @@ def test_eddy_current_brake_energy_and_its_temperature(domain):
     np.testing.assert_allclose(force, law, rtol=1e-7, atol=1e-9)
 
 
-@pytest.mark.xfail(strict=True, raises=ac.InitializationFailed, reason=(
-    "defect: friction elements stuck together on motions they over-determine (the lossy "
-    "gear, clutch, one-way clutch and brake at t0: four lock constraints on three "
-    "inertias) leave the split of their torques indeterminate; the initialization stops, "
-    "singular in clutch.sa"))
 def test_rotational_heat_losses_balance_the_work_of_the_source():
     """Rotational.Examples.HeatLosses (no MAP-LIB reference available): the work of the
     torque source is the kinetic and spring energy of the train plus the heat that left
-    through the convection."""
+    through the convection.  At t0 the lossy gear, clutch, one-way clutch and brake are
+    stuck together (four lock constraints on three inertias): the split of their torques
+    is indeterminate, and the integrator solves the consistent rank-deficient system."""
     from acausal.library.rotational.examples.heat_losses import HeatLosses
 
     class Audited(HeatLosses):

@@ -297,6 +297,28 @@ def test_a_relation_near_its_threshold_takes_the_side_its_value_says():
     assert list(res["y"]) == pytest.approx([1e15] * 4, rel=1e-15)
 
 
+class RestingAtZero(ac.Component):
+    """v + v^3 = 1e-20 (-1 if v > 0, else 1), v solved by Newton at initialization: a
+    stuck friction element's speed, zero but for round-off.  Each side of the relation
+    puts the solution a hair on the other side, both within the relation's zero band,
+    so either value is consistent: the relation keeps the value it was solved with (v
+    > 0 false at the start value 0) and v = 1e-20, instead of the two alternating."""
+
+    x = ac.Variable(start=1.0, fixed=True)
+    v = ac.Variable(start=0.0)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), -self.x),
+                ac.Eq(self.v + self.v ** 3, 1e-20 * ac.if_else(self.v > 0, -1.0, 1.0))]
+
+
+def test_a_relation_solved_to_round_off_of_its_threshold_keeps_its_value_at_initialization():
+    res = ac.simulate(RestingAtZero(), t_end=1.0, rtol=1e-8, t_eval=[0.0, 0.5, 1.0])
+    assert res.success
+    assert list(res["v"]) == pytest.approx([1e-20] * 3, rel=1e-12)
+    assert list(res["x"]) == pytest.approx(np.exp(-np.array([0.0, 0.5, 1.0])), rel=1e-6)
+
+
 class TwoFloorsOfOneRamp(ac.Component):
     """y = floor(x) + floor(2 x), x = time: floor(2 x) steps at 0.5, 1, 1.5 and floor(x)
     at 1 too, so the run has three event instants, one of them two items at once."""

@@ -99,3 +99,58 @@ def test_homotopy_solves_what_newton_cannot():
     res = damped_newton(fun, jac, [6.0], tol=1e-10)
     assert res.converged and res.x[0] == pytest.approx(1.0, abs=1e-9)
 
+
+
+def test_a_consistent_singular_system_gets_its_minimum_norm_solution_and_an_inconsistent_none():
+    """x1 + x2 = 3 twice (dependent rows) with x3 = 1: the solutions are a line, the
+    minimum-norm one from zero is x1 = x2 = 1.5; with 3 and 4 on the right there is none."""
+    from acausal.runtime.indeterminate import minimum_norm_newton, null_variables
+    A = np.array([[1.0, 1.0, 0.0], [2.0, 2.0, 0.0], [0.0, 0.0, 1.0]])
+    for b, expect in (([3.0, 6.0, 1.0], [1.5, 1.5, 1.0]), ([3.0, 8.0, 1.0], None)):
+        found = minimum_norm_newton(lambda x: A @ x - b, lambda x: A, np.zeros(3),
+                                    np.full(3, 1e6), np.ones(3))
+        if expect is None:
+            assert found is None
+            continue
+        x, null = found
+        assert np.allclose(x, expect, rtol=1e-12)
+        assert null_variables(null, ["x1", "x2", "x3"]) == ["x1", "x2"]
+
+
+class DependentRows(DAEProblem):
+    """x' = 1 with z1 + z2 = g1(t) and 2 (z1 + z2) = g2(t): the iteration matrix is
+    singular for every step.  With g2 = 2 g1 the rows are consistent and z1 = z2 = t/2
+    (the minimum-norm solution from z1 = z2 = 0); with g2 = 2 g1 + t they disagree as
+    soon as t > 0, and the integration must stop as singular, not return a least-squares
+    answer.  (The start is given consistent: the initialization's own treatment of a
+    singular system is :mod:`acausal.runtime.indeterminate`'s.)"""
+
+    def __init__(self, inconsistent):
+        super().__init__(3, ["x", "z1", "z2"])
+        self.algebraic[1:] = True
+        self.bad = inconsistent
+
+    def residual(self, t, y, yp):
+        s = y[1] + y[2]
+        return np.array([yp[0] - 1.0, s - t, 2 * s - 2 * t - (t if self.bad else 0.0)])
+
+    def jacobian(self, t, y, yp, cj):
+        return np.array([[cj, 0.0, 0.0], [0.0, 1.0, 1.0], [0.0, 2.0, 2.0]])
+
+
+@pytest.mark.parametrize("bad", [False, True])
+def test_integration_through_a_rank_deficient_iteration_matrix_only_when_consistent(bad):
+    from acausal.solvers.base import SimulationError
+    p = DependentRows(bad)
+    ts = np.linspace(0.0, 1.0, 11)
+    if bad:
+        with pytest.raises(SimulationError, match="singular"):
+            integrate(p, (0.0, 1.0), [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], rtol=1e-8,
+                      atol=1e-10, t_eval=ts, initialize=False)
+        return
+    out = integrate(p, (0.0, 1.0), [0.0, 0.0, 0.0], [1.0, 0.5, 0.5], rtol=1e-8,
+                    atol=1e-10, t_eval=ts, initialize=False)
+    assert out.success
+    np.testing.assert_allclose(out.y[:, 0], ts, atol=1e-9)
+    np.testing.assert_allclose(out.y[:, 1], ts / 2, atol=1e-9)
+    np.testing.assert_allclose(out.y[:, 2], ts / 2, atol=1e-9)

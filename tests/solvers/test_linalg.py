@@ -83,3 +83,28 @@ def test_badly_scaled_singular_matrix_is_still_named():
         LinearSolver(3).factor(A * r[:, None] * c)
     assert sorted(info.value.rows) == [0, 2]
     assert 1 not in info.value.cols or len(info.value.cols) == 3
+
+
+def test_a_consistent_rank_deficient_matrix_gives_minimum_norm_solutions_with_weights():
+    """x1 + x2 = b1 twice (dependent rows) and x3 = b3: without weights the matrix is
+    refused as singular; with them (the integrator's error weights) a consistent right
+    side gets the minimum-norm solution, x1 = x2 = b1/2, and an inconsistent one (the
+    dependent rows disagree by more than the variables' tolerance) is still refused."""
+    A = np.array([[1.0, 1.0, 0.0], [2.0, 2.0, 0.0], [0.0, 0.0, 1.0]])
+    with pytest.raises(SingularMatrixError):
+        LinearSolver(3).factor(A)
+    for kind in (False, True):
+        lin = LinearSolver(3, sparse=kind)
+        lin.factor(sp.csc_matrix(A) if kind else A, np.full(3, 1e6))
+        assert lin.deficient
+        assert np.allclose(lin.solve(np.array([3.0, 6.0, 1.0])), [1.5, 1.5, 1.0],
+                           rtol=1e-13)
+        # a mismatch of 1e-9 in units of x (below the tolerance 1e-6): round-off
+        assert np.allclose(lin.solve(np.array([3.0, 6.0 + 2e-9, 1.0])),
+                           [1.5, 1.5, 1.0], rtol=1e-8)
+        with pytest.raises(SingularMatrixError):
+            lin.solve(np.array([3.0, 8.0, 1.0]))
+    # a regular matrix is factored as before
+    lin = LinearSolver(3)
+    lin.factor(np.eye(3), np.ones(3))
+    assert not lin.deficient

@@ -18,12 +18,6 @@ class LossyGearDemo1(ac.Component):
 
     msl_name = "Modelica.Mechanics.Rotational.Examples.LossyGearDemo1"
     stop_time = 0.5
-    msl_known_failure = (
-        "defect (state selection): the states chosen are gear.phi_a/gear.w_a (declared "
-        "first, nominal 1), where the reference keeps Inertia2.phi/w (fixed starts); "
-        "Inertia2.phi, of amplitude 1.3e-3 rad, is then held to rtol 1e-6 of the "
-        "gear's angle only: 1.67e-3 x amplitude (Inertia2.w 3.8e-5, gear.mode exact); "
-        "with Inertia2 as states it passes at 6.5e-5")
     tolerance = 1e-6
 
     PowerLoss = ac.Variable(unit="W", description="power lost in the gear")
