@@ -155,6 +155,12 @@ def damped_newton(fun, jac, x0, *, weights=None, tol: float = 1e-6, max_iter: in
         last = size
         found, xt, gt, n_ls = _line_search(fun, x, dx, g, _row_scale(J), min_damping)
         nev += n_ls
+        if not found and size <= _STALL_FLOOR:
+            # x is already within a tenth of the error scale of the root the step
+            # points to, and no point along the step lowers the residual: it is at its
+            # round-off floor (weights of a tight tolerance ask for a step below the
+            # round-off of x itself: rtol 1e-12 times the Newton tolerance)
+            return NewtonResult(x, True, it, g, step, "converged", nev)
         if not found:
             return NewtonResult(x, False, it, g, step, "line search failed", nev)
         x, g = xt, gt

@@ -1,5 +1,6 @@
 """Electrical domain (Modelica.Electrical.Analog): pins, one-ports, basic components,
-ideal elements, semiconductors, operational amplifiers, sources and sensors."""
+ideal elements, semiconductors, operational amplifiers, sources and sensors; the
+9-valued digital signals of Modelica.Electrical.Digital in :mod:`.digital`."""
 from ... import _lazy_exports
 
 __all__ = ["OnePort", "TwoPin", "TwoPort", "FourPin", "ConditionalHeatPort",
@@ -9,7 +10,7 @@ __all__ = ["OnePort", "TwoPin", "TwoPort", "FourPin", "ConditionalHeatPort",
            "Potentiometer", "Transformer", "Gyrator", "SaturatingInductor",
            "GeneralCurrentToVoltageAdaptor", "GeneralVoltageToCurrentAdaptor",
            "IdealTransformer", "IdealDiode", "IdealThyristor", "IdealGTOThyristor",
-           "IdealTriac", "Short", "Idle",
+           "IdealTriac", "Short", "Idle", "AD_Converter", "DA_Converter",
            "IdealClosingSwitch", "IdealOpeningSwitch", "IdealTwoWaySwitch",
            "IdealIntermediateSwitch", "ControlledIdealClosingSwitch",
            "ControlledIdealOpeningSwitch", "ControlledIdealTwoWaySwitch",
@@ -35,6 +36,7 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                "VariableCapacitor", "VariableConductor", "VariableInductor",
                "VariableResistor"),
     ".controlled": ("CCC", "CCV", "VCC", "VCV"),
+    ".converters": ("AD_Converter", "DA_Converter"),
     ".ideal": ("IdealDiode", "IdealGTOThyristor", "IdealThyristor", "IdealTransformer",
                "IdealTriac", "Idle", "Short"),
     ".interfaces": ("ConditionalHeatPort", "FourPin", "IdealSemiconductor", "IdealSwitch",
@@ -59,4 +61,4 @@ __getattr__, __dir__ = _lazy_exports(globals(), {
                           "SignalCurrent", "SignalVoltage",
                           "SineCurrentVariableFrequencyAndAmplitude",
                           "SineVoltageVariableFrequencyAndAmplitude", "SupplyVoltage"),
-}, submodules=("examples",))
+}, submodules=("examples", "digital"))
