@@ -39,7 +39,7 @@ import math
 import numpy as np
 
 from ..solvers.initialization import solve_with_fallback
-from ..solvers.linalg import SPARSE_THRESHOLD, LinearSolver, SingularMatrixError, assemble
+from ..solvers.linalg import DENSE_MAX, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
 
@@ -149,9 +149,10 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
             extra = np.full(init.n, np.nan)
         return np.concatenate([model.G(t0, z), extra])
 
-    # a system Newton factors densely is built dense: the same entries, and no
-    # scipy.sparse (whose import costs more than a small model's whole run)
-    dense = model.n <= SPARSE_THRESHOLD
+    # a system of the size the step loop factors densely is built and factored dense:
+    # the same entries, and no scipy.sparse (whose import costs more than a mid-size
+    # model's whole run, and a sweep's every worker would pay it)
+    dense = model.n <= DENSE_MAX
 
     def J(z):
         try:
@@ -234,7 +235,7 @@ def consistent_output(model, t: float, z: np.ndarray, rtol: float):
 
 def _output_factor(model, t, z, alg):
     """The LU of dG/dz over the algebraic unknowns at (t, z), or None if singular."""
-    dense = model.n <= SPARSE_THRESHOLD
+    dense = model.n <= DENSE_MAX
     try:
         J = model.dG_dy(t, z, dense=dense)
         lin = LinearSolver(alg.size, not dense)
