@@ -41,7 +41,7 @@ import math
 import numpy as np
 
 from ..solvers.initialization import solve_with_fallback
-from ..solvers.linalg import SPARSE_THRESHOLD, LinearSolver, SingularMatrixError, assemble
+from ..solvers.linalg import DENSE_MAX, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
 from .indeterminate import minimum_norm_newton, null_variables
@@ -185,9 +185,10 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
             extra = np.full(init.n, np.nan)
         return np.concatenate([model.G(t0, z), extra])
 
-    # a system Newton factors densely is built dense: the same entries, and no
-    # scipy.sparse (whose import costs more than a small model's whole run)
-    dense = model.n <= SPARSE_THRESHOLD
+    # a system of the size the step loop factors densely is built and factored dense:
+    # the same entries, and no scipy.sparse (whose import costs more than a mid-size
+    # model's whole run, and a sweep's every worker would pay it)
+    dense = model.n <= DENSE_MAX
 
     def J(z):
         try:
@@ -337,7 +338,7 @@ def _output_factor(model, t, z, alg, rtol):
     """The LU of dG/dz over the algebraic unknowns at (t, z), or None if singular; a
     consistent rank-deficient one (friction elements locked on one motion) is factored
     for minimum-norm corrections, as the integrator's (:mod:`acausal.solvers.linalg`)."""
-    dense = model.n <= SPARSE_THRESHOLD
+    dense = model.n <= DENSE_MAX
     try:
         J = model.dG_dy(t, z, dense=dense)
         lin = LinearSolver(alg.size, not dense)

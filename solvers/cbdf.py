@@ -60,13 +60,13 @@ from .cbdf_callbacks import Callbacks, problem_callbacks
 from .cbdf_dyn import bind as bind_dynamic
 from .cbdf_layout import CbdfState
 from .cbdf_library import library
-from .linalg import LinearSolver, singular_block
+from .linalg import DENSE_MAX, LinearSolver, singular_block
 from ..errors import BackendError
 
 __all__ = ["CompiledBDF", "MAX_DENSE", "STEP_LOOPS", "choose_step_loop", "library",
            "R_BUDGET", "R_FULL", "R_SPECIAL", "R_FAIL"]
 
-MAX_DENSE = 200          # largest system the compiled loop factors dense (above: sparse LU)
+MAX_DENSE = DENSE_MAX    # largest system the compiled loop factors dense (above: sparse LU)
 STEP_LOOPS = ("auto", "c", "python")
 CAPACITY = 512           # output points per return to Python (fewer above MAX_DENSE)
 

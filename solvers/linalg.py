@@ -78,7 +78,7 @@ import numpy as np
 from .cbdf_library import library
 from .cbdf_sparse import SparseLU
 
-__all__ = ["SPARSE_THRESHOLD", "NUMPY_LU_MAX", "LinearSolver", "SingularMatrixError",
+__all__ = ["SPARSE_THRESHOLD", "DENSE_MAX", "NUMPY_LU_MAX", "LinearSolver", "SingularMatrixError",
            "singular_block", "make_linear_solver", "equilibrate"]
 
 #: Systems larger than this use sparse LU when the problem offers sparsity.
@@ -89,6 +89,13 @@ SPARSE_THRESHOLD = 60
 #: (Which LU runs depends on the size and the installation only, never on what a process
 #: has imported: the same run gives the same numbers.)
 NUMPY_LU_MAX = 16
+#: Systems up to this size are built and factored dense where the caller chooses the
+#: form: the compiled step loop's iteration matrix, and the Newton systems of
+#: initialization and of the values at output times.  A dense LU of 200 unknowns takes
+#: well under a millisecond, and a dense system needs no scipy.sparse (whose import,
+#: with the SuperLU it brings, takes 0.3-0.5 s: more than a mid-size model's run, and
+#: what every new worker process of a sweep would pay).
+DENSE_MAX = 200
 
 #: Largest system whose singular iteration matrix may be factored by its SVD (dense:
 #: ``n^3`` work per factorization) when the integrator allows a consistent rank deficiency.

@@ -145,8 +145,8 @@ def _signed_symbol(v):
 
 
 def _product(e, mapping):
-    """A product whose changed factors are +-symbols or 0: the sign into the coefficient,
-    the factors re-sorted, 0 if a factor became 0; a new factor whose base another
+    """A product whose changed factors are +-symbols, 0 or rational numbers: the sign and
+    the numbers into the coefficient, the factors re-sorted, 0 if a factor became 0; a new factor whose base another
     factor shares (x*x) falls back, as does a coefficient with a sum left to distribute
     over."""
     args = e.args
@@ -176,6 +176,16 @@ def _product(e, mapping):
             zero = changed = True
             continue
         if g is not f:
+            if isinstance(g, _Rational):
+                # a factor that became a rational number joins the coefficient (a
+                # factor 1 + alpha*(T - T_ref) with alpha = 0 is 1)
+                coeff = g if coeff is None else coeff * g
+                if not isinstance(coeff, _Rational):
+                    raise Fallback
+                if coeff is _ONE:
+                    coeff = None
+                changed = True
+                continue
             if g.is_Number or type(g) is _Mul or not g.is_commutative:
                 raise Fallback
             changed = True

@@ -433,27 +433,31 @@ def _cycle_error(flat: FlatModel, exprs: dict, waits: dict) -> InvalidValue:
 def _check_bounds(flat: FlatModel, resolved: dict) -> None:
     """Each parameter's value (a binding evaluated with the values it uses) is a real
     number within its declared [min, max]."""
-    leaf = None        # the values bindings are evaluated with, made for the first one
+    # the values bindings are evaluated with: only those of the parameters they read
+    read = set().union(*(e.free_symbols for e in resolved.values())) if resolved else ()
+    leaf = {q.symbol: _as_sympy_number(q.value) for q in flat.parameters
+            if q.symbol in read and q.symbol not in resolved}
     for p in flat.parameters:
         if p.symbol in resolved:
-            if leaf is None:
-                leaf = {q.symbol: _as_sympy_number(q.value) for q in flat.parameters
-                        if q.symbol not in resolved}
             expr = resolved[p.symbol].xreplace(leaf)
             try:
                 value = float(expr)
             except (TypeError, ValueError):
                 raise InvalidValue(f"{p.describe()} = {sp.sstr(p.value)} (= {sp.sstr(expr)}) "
                                    "is not a real number") from None
-            text = f"{sp.sstr(p.value)} (= {value!r})"
             if value != value:
-                raise InvalidValue(f"{p.describe()} = {text} is not a number (NaN)")
-            flat.derived[p.name] = (sp.sstr(p.value), value)
+                raise InvalidValue(f"{p.describe()} = {sp.sstr(p.value)} (= {value!r}) "
+                                   "is not a number (NaN)")
+            source = sp.sstr(p.value)
+            flat.derived[p.name] = (source, value)
+            why = bound_violation(value, p.min, p.max)
+            if why:
+                raise InvalidValue(f"{p.describe()} = {source} (= {value!r}) {why}")
         else:
-            value, text = float(p.value), f"{p.value!r}"
-        why = bound_violation(value, p.min, p.max)
-        if why:
-            raise InvalidValue(f"{p.describe()} = {text} {why}")
+            value = float(p.value)
+            why = bound_violation(value, p.min, p.max)
+            if why:
+                raise InvalidValue(f"{p.describe()} = {p.value!r} {why}")
 
 
 def _as_sympy_number(value) -> sp.Expr:

@@ -108,3 +108,25 @@ def test_sort_args_is_sympys_order():
         sort_args(out)
         ref = sorted(terms, key=cmp_to_key(sp.Basic.compare))
         assert all(x is y for x, y in zip(out, ref)), (out, ref)
+
+
+def test_factor_that_becomes_a_number_joins_the_coefficient():
+    """R (1 + alpha (T - T_ref)) i with alpha = 0 or T = T_ref: the factor becomes a
+    rational number, folded into the product's coefficient on the fast path (no
+    rebuild of the whole residual by sympy), the same expression as xreplace's."""
+    from acausal.compiler.algebra import substitution
+    v, i, a, T, T_ref = X[:5]
+    R = P[0]
+    for expr, mapping in [
+            (v - R * (1 + a * (T - T_ref)) * i, {a: sp.S.Zero, T: T_ref}),
+            (v - R * (1 + a * (T - T_ref)) * i, {T: T_ref}),
+            (v - 2 * R * (3 + a * (T - T_ref)) * i, {T: T_ref}),
+            (v - sp.Rational(1, 3) * R * (2 + a * (T - T_ref)) * i, {a: sp.S.Zero}),
+            (v + (-1 + a * (T - T_ref)) * i * R, {T: T_ref}),
+            (i / (1 + a * (T - T_ref)) - v, {T: T_ref})]:
+        _same(expr, mapping)
+        if not expr.has(sp.Pow):
+            substitution._sub(expr, mapping)     # no Fallback: the fast path made it
+    # a float coefficient, or a number left to distribute over a sum, stays sympy's
+    _same(v - sp.Float(0.5) * R * (2 + a * (T - T_ref)) * i, {T: T_ref})
+    _same(v - (3 + a * (T - T_ref)) * (i + R), {T: T_ref})
