@@ -17,11 +17,6 @@ class RollingWheelExample(ac.Component):
     stop_time = 4.0
     tolerance = 1e-6
     msl_signals = MSLNames()
-    msl_known_failure = (
-        "reference: its der_angles[2] differs by 9.1e-4 of the amplitude from the model "
-        "solved at 1e-9 (acausal at 1e-6: 1.8e-4; sum 1.01e-3); the energy of ideal "
-        "rolling, constant, drifts by 2.4e-5 in the reference, by 4e-8 at 1e-9")
-
     wheel1 = RollingWheel(radius=0.3, m=2.0, I_axis=0.06, I_long=0.12, x={"start": 0.2},
                           y={"start": 0.2}, der_angles={"start": [0.0, 5.0, 1.0]})
     world = World(n_1=0.0, n_2=0.0, n_3=-1.0)
