@@ -430,6 +430,18 @@ def _self_scaled(system, z_syms, kept) -> list:
                                             .attrs.nominal) for q in z_syms]
 
 
+def _default_start(attrs) -> float:
+    """A Real's start value where none is given (Modelica 3.6, sec. 4.8.7): 0, or the
+    bound of [min, max] nearest to it."""
+    lo, hi = getattr(attrs, "min", None), getattr(attrs, "max", None)
+    x = 0.0
+    if lo is not None and x < float(lo):
+        x = float(lo)
+    if hi is not None and x > float(hi):
+        x = float(hi)
+    return x
+
+
 def _start(system, k) -> float:
     s = system.symbols[k]
     if s in system.var_info and system.var_info[s].attrs.start is not None:
@@ -487,10 +499,15 @@ def _initial_rows(system, reduced, reduction, caus):
     fixed = set()
     for k, sym in enumerate(system.symbols):
         info = system.var_info.get(sym)
-        if info is not None and info.attrs.fixed and info.attrs.start is not None:
-            rows.append(sym - info.attrs.start)
-            text.append(f"{sym.name} = {info.attrs.start} (fixed start value) [{info.where}]")
-            sizes.append(abs(float(info.attrs.start)) + _nominal(system, k))
+        if info is not None and info.attrs.fixed:
+            # no start given: Modelica's default, 0 (or the bound nearest to it)
+            start = info.attrs.start if info.attrs.start is not None else \
+                _default_start(info.attrs)
+            rows.append(sym - start)
+            text.append(f"{sym.name} = {start} (fixed start value"
+                        + ("" if info.attrs.start is not None else ", the default")
+                        + f") [{info.where}]")
+            sizes.append(abs(float(start)) + _nominal(system, k))
             fixed.add(k)
     n_mandatory = len(rows)
     for v in reduction.states:

@@ -102,3 +102,22 @@ def test_parallel_capacitor_voltages_that_disagree_are_refused():
     text = str(err.value)
     assert "C1.v = 2.0 (fixed start value" in text and "C2.v = 3.0" in text
     assert "residual 1," in text and "conflicts with" in text
+
+
+class _RestingRate(ac.Component):
+    """x' = c (1 - x), c' = 0: the rate a = x' held at 0 at the start fixes c."""
+
+    x = ac.Variable(start=0.5, fixed=True)
+    c = ac.Variable(start=100.0)
+    a = ac.Variable(fixed=True)           # fixed, no start: Modelica's default start 0
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), self.c * (1 - self.x)), ac.Eq(ac.der(self.c), 0),
+                ac.Eq(self.a, ac.der(self.x))]
+
+
+def test_fixed_without_a_start_holds_the_default_start():
+    # a(0) = 0 with x(0) = 0.5 forces c = 0: x stays 0.5 (with c at its start, 100, x
+    # would rise to 1 within 0.05 s)
+    res = ac.simulate(_RestingRate(), t_end=1.0, rtol=1e-9, n_points=11)
+    assert abs(res["c"][0]) <= 1e-12 and np.max(np.abs(res["x"] - 0.5)) <= 1e-12
