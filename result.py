@@ -237,9 +237,9 @@ class Result:
 
     def _vectorized(self) -> bool:
         c = self.compiled
-        if c.code.expand is not None and getattr(c, "_vector_outputs", None) is None:
-            from .runtime.outputs import source_at_hand
-            if source_at_hand(c.code) is None:
+        if c.code.expand is not None:
+            from .runtime.outputs import pointwise
+            if pointwise(c, len(self.t)):
                 return False
         known = len(self._discrete_index) == len(self.t) and bool(self._discrete)
         # the delayed values (and varying inputs') recorded at the points, where needed

@@ -13,10 +13,11 @@ not taken discarded), as the array code of the numpy backend does
 (:mod:`acausal.compiler.backends.arraycode`).  The operations are those of the
 generated statements in the same order; numpy's functions agree with ``math``'s to
 rounding, so values agree with a point-by-point ``expand`` to rounding, not bitwise.
-Every result of a model on the numpy backend reads its values this way, and every result
-of a model behind its C library reads them from its C ``expand`` point by point
-(:func:`source_at_hand`), so what a run gives depends neither on how it is read nor on
-what ran before.
+Every result of a model on the numpy backend reads its values this way, and so does a
+large result of a model behind its C library; a smaller one reads them from its C
+``expand`` point by point (:func:`pointwise`: no Python source, no sympy for a model
+loaded from the compile cache).  What a run gives depends neither on how it is read
+nor on what ran before.
 """
 from __future__ import annotations
 
@@ -25,7 +26,7 @@ import functools
 
 import numpy as np
 
-__all__ = ["VectorOutputs", "evaluate", "source_at_hand"]
+__all__ = ["VectorOutputs", "evaluate", "pointwise", "POINTWISE"]
 
 _CACHED = 64            # compiled selections kept per model
 
@@ -155,16 +156,19 @@ class VectorOutputs:
 _CHUNK = 1 << 22     # values (points x outputs) computed at once, at most
 
 
-def source_at_hand(code) -> str | None:
-    """The generated Python source whose ``expand`` computes the outputs on arrays, or
-    None for a model behind its C library: its outputs are its C ``expand``'s, point by
-    point, whether it was compiled in this process or loaded from the cache, so a
-    result's values do not depend on what ran before (the array statements and the C
-    function agree to rounding, not bitwise; nor does the C library's model need sympy
-    to print its Python source)."""
-    if getattr(code, "backend", None) == "c":
-        return None
-    return code.source
+POINTWISE = 2_000_000   # points x outputs up to which a C library's own expand is read
+
+
+def pointwise(compiled, n_points: int) -> bool:
+    """Whether a result of ``n_points`` points of ``compiled`` reads its outputs from the
+    model's C ``expand``, point by point: for a model behind its C library and a result
+    of at most :data:`POINTWISE` values (points x outputs), which then needs neither the
+    generated Python source nor sympy to print it (a model loaded from the compile
+    cache); a larger result is read on arrays from the Python source, printed if need be.
+    The choice depends on the model and the result only, never on what ran before (the
+    two agree to rounding, not bitwise)."""
+    return getattr(compiled.code, "backend", None) == "c" and \
+        n_points * max(len(compiled.outputs), 1) <= POINTWISE
 
 
 def evaluate(compiled, cols, t, z, parameters, discrete, index, delayed=None) -> list:
@@ -176,14 +180,13 @@ def evaluate(compiled, cols, t, z, parameters, discrete, index, delayed=None) ->
     n = len(t)
     if compiled.code.expand is None:
         return [np.array(z[:, k], dtype=float) for k in cols]
+    if pointwise(compiled, n):        # the model's own C expand, point by point
+        from ..result import _expand
+        y = _expand(compiled, t, z, parameters, list(discrete), list(index), delayed)
+        return [y[:, k] for k in cols]
     vec = getattr(compiled, "_vector_outputs", None)
     if vec is None:
-        source = source_at_hand(compiled.code)
-        if source is None:            # the model's own expand, point by point
-            from ..result import _expand
-            y = _expand(compiled, t, z, parameters, list(discrete), list(index), delayed)
-            return [y[:, k] for k in cols]
-        vec = compiled._vector_outputs = VectorOutputs(source)
+        vec = compiled._vector_outputs = VectorOutputs(compiled.code.source)
     table = np.array(discrete, dtype=float).reshape(len(discrete), -1)
     index = np.asarray(index, dtype=np.int64)
     params = [float(x) for x in parameters]

@@ -3,8 +3,9 @@ point at once (:mod:`acausal.runtime.outputs`), and agrees with the model's own 
 point by point in the modes each point was integrated in: to 1e-12 of each variable's
 size on models with events, if-expressions, sampled parts, friction, delays and
 dynamic state selection (the two run the same statements; numpy's functions and math's
-agree to rounding).  Behind a C library the outputs are the C ``expand``'s, point by
-point, however the model was compiled or loaded: bitwise the same whatever ran before."""
+agree to rounding).  Behind a C library a result of up to POINTWISE values reads the C
+``expand``'s outputs, point by point, however the model was compiled or loaded (bitwise
+the same whatever ran before); a larger one is read on arrays as on the numpy backend."""
 import numpy as np
 import pytest
 
@@ -64,6 +65,24 @@ def test_behind_a_c_library_the_outputs_are_its_expand_bitwise():
     for name, (sign, k) in c.outputs.items():
         if sign is not None:
             assert np.array_equal(res[name], sign * full[:, k]), name
+
+
+def test_a_large_result_behind_a_c_library_is_read_on_arrays(monkeypatch):
+    from acausal.native import find_compiler
+    from acausal.runtime import outputs
+    if find_compiler() is None:
+        pytest.skip("no C compiler")
+    monkeypatch.setattr(outputs, "POINTWISE", 1000)      # this result counts as large
+    res = ac.simulate(MotorDrive(), 0.5, rtol=1e-8, backend="c")
+    c = res.compiled
+    assert res._vectorized()
+    full = _expand(c, res.t, res._z, res.parameters, res._discrete, res._discrete_index,
+                   res._delayed)
+    for name, (sign, k) in c.outputs.items():
+        if sign is not None:
+            want = sign * full[:, k]
+            scale = max(float(np.max(np.abs(want))), 1e-300)
+            assert np.max(np.abs(res[name] - want)) <= 1e-12 * scale, name
 
 
 class Lag(ac.Component):
