@@ -175,8 +175,11 @@ def extract_relations(exprs: list, frozen=None) -> tuple[list, list, dict, list]
             return args[0]                      # its inside read directly
         if isinstance(node, sp.core.relational.Relational):
             rel = _rebuilt(node, args)
-            if frozen is not None and frozen.covers(rel.free_symbols):
-                return rel       # constant between events: evaluated where it is read
+            if frozen is not None and (frozen.covers(rel.free_symbols) or (
+                    isinstance(rel, (sp.Eq, sp.Ne)) and rel.free_symbols <= frozen.symbols)):
+                # constant between events (an equality of parameters alone among them,
+                # which no event could follow): evaluated where it is read
+                return rel
             return mode(rel, node)
         kink = _kink(node, args, mode)
         if kink is not None:

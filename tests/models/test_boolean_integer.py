@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 import pytest
+import sympy as sp
 
 import acausal as ac
 from acausal.ports import BooleanInput, BooleanOutput, IntegerOutput, RealInput, RealOutput
@@ -245,3 +246,25 @@ def test_values_of_the_wrong_type_are_refused_where_they_are_given():
             b = ac.Variable(type=bool, nominal=2.0)
     with pytest.raises(ac.InvalidValue, match="is a bool, not a real number"):
         Thermostat(P=True)
+
+
+class _NonZeroCount(ac.Component):
+    """b = (n <> 0) of an Integer parameter n; x' = 1 while b, else 0."""
+
+    n = ac.Parameter(-1, type=int)
+    b = ac.Variable(type=bool)
+    x = ac.Variable(start=0.0, fixed=True)
+
+    def equations(self):
+        return [ac.Eq(self.b, sp.Ne(self.n, 0)),
+                ac.Eq(ac.der(self.x), ac.if_else(self.b, 1.0, 0.0))]
+
+
+def test_an_equality_of_parameters_alone_is_a_value_not_an_event():
+    # (the MSL writes nperiod <> 0 in its digital pulse): x(1) = 1 while n <> 0, and 0
+    # once n is tuned to 0
+    compiled = ac.compile(_NonZeroCount())
+    res = ac.simulate(compiled, 1.0, rtol=1e-9)
+    assert res["b"].all() and abs(res["x"][-1] - 1.0) <= 1e-9
+    res = ac.simulate(compiled, 1.0, rtol=1e-9, parameters={"n": 0})
+    assert not res["b"].any() and res["x"][-1] == 0.0
