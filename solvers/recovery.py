@@ -21,7 +21,7 @@ tolerance is tight, neither of them a property of the solution:
   mode is damped however large h/tau, and linear invariants (the charge on a node, a
   momentum) are kept exactly, so it lands on the slow solution the transient leads to;
   what it does not resolve is the transient's shape inside a few time resolutions.  It
-  applies from the first step after a restart on (and goes on while steps the error test
+  applies from the first step after a restart at an event on (and goes on while steps the error test
   accepts alternate with failing ones in the transient), it stops (and the
   run fails as it would have) after :data:`PASSAGE_STEPS` forced steps or where a forced
   step would exceed :data:`PASSAGE_SPAN` of the time scale, and the forced steps are
@@ -68,8 +68,9 @@ def passage(run, s, exc: StepFailure) -> bool:
     """One forced backward-Euler step (module docstring), twice as long as the previous
     forced one (the first a few time resolutions); False where a passage does not apply
     or has gone as far as it may."""
-    if exc.kind not in ("step_size", "error_test") or not (s.nst == 0 or s.forced):
-        return False
+    if exc.kind not in ("step_size", "error_test") or not (s.nst == 0 or s.forced) \
+            or not run.event_times:
+        return False     # a restart at an event only, as relax()
     scale = PASSAGE_SPAN * max(abs(s.t), run.span)
     if s.forced >= PASSAGE_STEPS or s.t - s.t_restart > 4.0 * scale:
         return False

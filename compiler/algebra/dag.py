@@ -11,7 +11,9 @@ the DAG's size and any depth is fine.
 """
 from __future__ import annotations
 
-__all__ = ["postorder", "transform", "xreplace", "dag_size", "tree_size", "depth"]
+from functools import lru_cache
+
+__all__ = ["postorder", "transform", "xreplace", "dag_size", "tree_size", "depth", "DEEP"]
 
 
 def postorder(roots, children=None):
@@ -103,8 +105,15 @@ def _stop_at(mapping):
     return lambda node, inside: inside or node in mapping
 
 
+DEEP = 48     # deeper expressions are walked here by the algebra's passes, not by sympy
+
+
+@lru_cache(maxsize=200_000)
 def depth(expr) -> int:
-    """The depth of ``expr``'s tree (0 for an atom)."""
+    """The depth of ``expr``'s tree (0 for an atom), over its DAG without recursion;
+    remembered per expression (the passes ask it of the same ones many times)."""
+    if expr.is_Atom:
+        return 0
     d = {}
     for node in postorder([expr]):
         d[node] = 1 + max((d[a] for a in node.args), default=-1)

@@ -13,10 +13,11 @@ from functools import cmp_to_key, lru_cache
 
 import sympy as sp
 
+from .dag import DEEP, depth, postorder
 from .substitution import Fallback, assemble_sum
 
 __all__ = ["partial", "plain_coefficient", "solve_linear", "simple_partials", "terms_with",
-           "symbol_nodes", "dag_partial"]
+           "symbol_nodes", "dag_partial", "forget_partials"]
 
 _CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
 _CANONICAL = cmp_to_key(sp.Basic.compare)     # the order of a sum's or product's arguments
@@ -29,7 +30,7 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
         return sp.S.Zero
     if expr is x or (type(expr) is sp.Symbol and expr == x):
         return sp.S.One
-    if _depth(expr) > _DEEP:
+    if depth(expr) > DEEP:
         return dag_partial(expr, x)    # the walk below recurses as deep as expr is
     if expr.is_Add:
         return _sum([partial(a, x) for a in expr.args if x in _symbols(a)])
@@ -68,7 +69,6 @@ def dag_partial(expr, x):
     not sympy's DiracDelta), abs is sign(u) u', min and max follow the branch that
     holds, an if-expression differentiates its branches under the same conditions, and
     no_event(u) is u."""
-    from .dag import postorder
     symbols = _symbols(expr)
     if x not in symbols:
         return sp.S.Zero
@@ -209,21 +209,6 @@ def solve_linear(residual, x):
                 rest = [a for a in residual.args if hash(a) != h or a != t]
                 return _solved(rest, c)
     return _solve_general(residual, x)
-
-
-_DEEP = 48      # expressions nested deeper are differentiated by dag_partial
-
-
-@lru_cache(maxsize=200_000)
-def _depth(e) -> int:
-    """The depth of e's tree, over its DAG without recursion."""
-    from .dag import postorder
-    if e.is_Atom:
-        return 0
-    depth = {}
-    for node in postorder([e]):
-        depth[node] = 1 + max((depth[a] for a in node.args), default=-1)
-    return depth[e]
 
 
 @lru_cache(maxsize=200_000)
@@ -381,3 +366,10 @@ def symbol_nodes(e: sp.Basic) -> set:
             seen.add(node)
             stack.extend(node.args)
     return out
+
+
+def forget_partials() -> None:
+    """Empty the caches of :func:`partial` and of the symbols of subexpressions (a
+    compile's end, :func:`acausal.compiler.algebra.symbolic.forget_expressions`)."""
+    partial.cache_clear()
+    _symbols.cache_clear()

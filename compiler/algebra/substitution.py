@@ -26,6 +26,7 @@ from sympy.calculus.accumulationbounds import AccumBounds
 from sympy.tensor.tensor import TensExpr
 
 from ...components.symbols import has_atom_in
+from .dag import DEEP, depth, xreplace
 
 __all__ = ["fast_xreplace", "fast_difference", "has_undefined", "sort_args", "negated",
            "forget_negated",
@@ -46,9 +47,7 @@ def fast_xreplace(expr, mapping: dict):
     """``expr.xreplace(mapping)`` (the same expression), faster on sums and products."""
     if not mapping:
         return expr
-    from .dag import xreplace
-    from .derivative import _depth
-    if _depth(expr) > _DEEP:
+    if depth(expr) > DEEP:
         return xreplace(expr, mapping)       # the fast path recurses as deep as expr is
     try:
         out = _sub(expr, mapping)
@@ -62,7 +61,6 @@ def fast_xreplace(expr, mapping: dict):
 
 
 _UNDEFINED = frozenset((sp.zoo, sp.nan))
-_DEEP = 48       # deeper expressions are substituted over their DAG (compiler/dag.py)
 
 
 def has_undefined(expr) -> bool:

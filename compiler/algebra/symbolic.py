@@ -20,7 +20,8 @@ from functools import lru_cache, partial as bound
 import sympy as sp
 
 from ...components.symbols import der, time
-from .derivative import partial, symbol_nodes, terms_with
+from .dag import depth
+from .derivative import forget_partials, partial, symbol_nodes, terms_with
 from .substitution import forget_negated, negated, sort_args
 from ..structure.graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER,
                                STATE_SELECT, UNASSIGNED, Names, Structure, state_tie_break)
@@ -317,12 +318,15 @@ _BINDING = (sp.Lambda, sp.Integral, sp.Derivative, sp.Subs, sp.Sum, sp.Product)
 
 
 def forget_expressions() -> None:
-    """Empty the caches of :func:`symbols_of`, ``terms_with`` and :func:`negated` (a
-    compile's end): the expressions they keep would outlive the compile, in memory and
-    in every walk of the garbage collector over the live objects."""
+    """Empty the caches of :func:`symbols_of`, ``terms_with``, :func:`negated`, the
+    partial derivatives and the depths of expressions (a compile's end): the expressions
+    they keep would outlive the compile, in memory and in every walk of the garbage
+    collector over the live objects."""
     symbols_of.cache_clear()
     terms_with.cache_clear()
     forget_negated()
+    forget_partials()
+    depth.cache_clear()
 
 
 def derivative_symbol(x: sp.Symbol, derivatives: dict) -> sp.Symbol:
