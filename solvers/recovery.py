@@ -21,9 +21,9 @@ tolerance is tight, neither of them a property of the solution:
   mode is damped however large h/tau, and linear invariants (the charge on a node, a
   momentum) are kept exactly, so it lands on the slow solution the transient leads to;
   what it does not resolve is the transient's shape inside a few time resolutions.  It
-  applies from the first step after a restart at an event on (and goes on while steps the error test
-  accepts alternate with failing ones in the transient), it stops (and the
-  run fails as it would have) after :data:`PASSAGE_STEPS` forced steps or where a forced
+  applies from the first step after a restart at an event on (and goes on while steps
+  the error test accepts alternate with failing ones in the transient), it stops (and
+  the run fails as it would have) after :data:`PASSAGE_STEPS` forced steps or where a forced
   step would exceed :data:`PASSAGE_SPAN` of the time scale, and the forced steps are
   counted (``stats.forced_steps``).  A passage belongs to the restart: a step that fails
   later than four :data:`PASSAGE_SPAN` after it is not forced.
