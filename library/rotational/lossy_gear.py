@@ -177,7 +177,8 @@ class LossyGear(PartialFriction, PartialElementaryTwoFlangesAndSupport,
             w = self.w_a                     # the mode signals as the speed's sign says
             return eqs + [ac.Eq(self.tauLoss, 0), ac.Eq(self.sa, 0),
                           ac.Eq(self.free, False), ac.Eq(self.startForward, False),
-                          ac.Eq(self.startBackward, False), ac.Eq(self.locked, False),
+                          ac.Eq(self.startBackward, False),
+                          ac.Eq(self.locked, ~((w > 0) | (w < 0))),
                           ac.Eq(self.mode, ac.if_else(w > 0, self.Forward,
                                                       ac.if_else(w < 0, self.Backward,
                                                                  self.Stuck)))]

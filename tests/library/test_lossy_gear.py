@@ -75,6 +75,12 @@ def test_the_ideal_table_is_an_ideal_gear():
                       atol=1e-12, t_eval=np.linspace(0, 1, 11))
     a1 = R**2 * T / (J2 + R**2 * J1)
     assert np.max(np.abs(res["one.w"] - a1 * res.t)) < 1e-9 * a1
+    # its mode signals follow the speed's sign: rolling forward from the start ...
+    assert (res["gear.mode"] == 1).all() and not res["gear.locked"].any()
+    assert not res["gear.free"].any()
+    # ... and at rest without a torque, stuck
+    rest = ac.simulate(geared([[0, 1, 1, 0, 0]], drive_a=0.0), t_end=1.0, n_points=3)
+    assert (rest["gear.mode"] == 0).all() and rest["gear.locked"].all()
     assert rot.LossyGear().ideal and not rot.LossyGear(lossTable=[0, 0.9, 0.9, 0, 0]).ideal
 
 
