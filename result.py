@@ -227,8 +227,10 @@ class Result:
         if missing:
             if self._y is None and not self._vectorized():
                 # no modes recorded for the points: each point settles its own, as before
-                self._y = _expand(self.compiled, self.t, self._z, self.parameters,
-                                  self._discrete, self._discrete_index, self._delayed)
+                from .runtime.outputs import expand_points
+                self._y = expand_points(self.compiled, self.t, self._z, self.parameters,
+                                        self._discrete, self._discrete_index,
+                                        self._delayed)
             if self._y is not None:
                 self._cols.update({c: self._y[:, c] for c in missing})
             else:
@@ -399,43 +401,3 @@ def _signal_name(name, known):
         if full in known:
             return full
     return None
-
-
-def _expand(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
-    """Every variable at every output time, from the solver vector z, each point in the
-    discrete state (relation values) it was integrated in: values computed from
-    if-expressions are those of the branch the integrator used there, so an output never
-    contradicts the trajectory (at an event, the point before it is in the old modes and
-    the point after it in the new).  ``delayed``: the delayed values recorded at each
-    point, for a model with delay()."""
-    saved, saved_p = compiled.m.copy(), compiled.p.copy()
-    compiled.p[:] = p
-    known = len(index) == len(t) and discrete
-    lines = getattr(compiled, "delays", None)
-    # the recorded values: the delayed ones, then those of inputs that varied
-    n_delayed = lines.n if lines is not None else 0
-    inputs = getattr(compiled, "inputs", None)
-    varied = inputs is not None and delayed is not None and len(delayed) == len(t) \
-        and np.ndim(delayed) == 2 and delayed.shape[1] > n_delayed
-    if lines is not None and (delayed is None or len(delayed) != len(t)):
-        raise ValueError("the values of this result's delay() expressions were not "
-                         "recorded (a result of a model with delays needs the values the "
-                         "run recorded at its points)")
-    try:
-        rows = []
-        for k, (tk, zk) in enumerate(zip(t, z)):
-            if lines is not None:
-                lines.held = delayed[k][:n_delayed]
-            if varied:
-                compiled.p[inputs.slots] = delayed[k][n_delayed:]
-            if known:
-                compiled.m[:] = discrete[index[k]]
-            else:                      # a result without its modes: take them from the point
-                compiled.init_modes(tk, zk)
-            rows.append(compiled.expand(tk, zk))
-        return np.array(rows).reshape(len(t), -1)
-    finally:
-        if lines is not None:
-            lines.held = None
-        compiled.m[:] = saved
-        compiled.p[:] = saved_p

@@ -313,8 +313,8 @@ def _resolve(compiled, name) -> list:
 def _columns_of(res, cols, lo, hi) -> list:
     """The outputs ``cols`` of an in-memory result at its points lo:hi, as it reads
     them (a result without recorded modes settles each point's own)."""
-    from .result import _expand
-    y = _expand(res.compiled, res.t[lo:hi], res._z[lo:hi], res.parameters, (), (),
+    from .runtime.outputs import expand_points
+    y = expand_points(res.compiled, res.t[lo:hi], res._z[lo:hi], res.parameters, (), (),
                 None if res._delayed is None else res._delayed[lo:hi])
     return [y[:, k] for k in cols]
 

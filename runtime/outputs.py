@@ -26,7 +26,7 @@ import functools
 
 import numpy as np
 
-__all__ = ["VectorOutputs", "evaluate", "pointwise", "POINTWISE"]
+__all__ = ["VectorOutputs", "evaluate", "expand_points", "pointwise", "POINTWISE"]
 
 _CACHED = 64            # compiled selections kept per model
 
@@ -181,8 +181,7 @@ def evaluate(compiled, cols, t, z, parameters, discrete, index, delayed=None) ->
     if compiled.code.expand is None:
         return [np.array(z[:, k], dtype=float) for k in cols]
     if pointwise(compiled, n):        # the model's own C expand, point by point
-        from ..result import _expand
-        y = _expand(compiled, t, z, parameters, list(discrete), list(index), delayed)
+        y = expand_points(compiled, t, z, parameters, list(discrete), list(index), delayed)
         return [y[:, k] for k in cols]
     vec = getattr(compiled, "_vector_outputs", None)
     if vec is None:
@@ -230,3 +229,43 @@ class _Modes:
         if out is None:
             out = self.made[k] = self.table[self.index, k]
         return out
+
+
+def expand_points(compiled, t, z, p, discrete, index, delayed=None) -> np.ndarray:
+    """Every variable at every output time, from the solver vector z, each point in the
+    discrete state (relation values) it was integrated in: values computed from
+    if-expressions are those of the branch the integrator used there, so an output never
+    contradicts the trajectory (at an event, the point before it is in the old modes and
+    the point after it in the new).  ``delayed``: the delayed values recorded at each
+    point, for a model with delay()."""
+    saved, saved_p = compiled.m.copy(), compiled.p.copy()
+    compiled.p[:] = p
+    known = len(index) == len(t) and discrete
+    lines = getattr(compiled, "delays", None)
+    # the recorded values: the delayed ones, then those of inputs that varied
+    n_delayed = lines.n if lines is not None else 0
+    inputs = getattr(compiled, "inputs", None)
+    varied = inputs is not None and delayed is not None and len(delayed) == len(t) \
+        and np.ndim(delayed) == 2 and delayed.shape[1] > n_delayed
+    if lines is not None and (delayed is None or len(delayed) != len(t)):
+        raise ValueError("the values of this result's delay() expressions were not "
+                         "recorded (a result of a model with delays needs the values the "
+                         "run recorded at its points)")
+    try:
+        rows = []
+        for k, (tk, zk) in enumerate(zip(t, z)):
+            if lines is not None:
+                lines.held = delayed[k][:n_delayed]
+            if varied:
+                compiled.p[inputs.slots] = delayed[k][n_delayed:]
+            if known:
+                compiled.m[:] = discrete[index[k]]
+            else:                      # a result without its modes: take them from the point
+                compiled.init_modes(tk, zk)
+            rows.append(compiled.expand(tk, zk))
+        return np.array(rows).reshape(len(t), -1)
+    finally:
+        if lines is not None:
+            lines.held = None
+        compiled.m[:] = saved
+        compiled.p[:] = saved_p

@@ -17,7 +17,7 @@ from acausal.library.examples.pendulum import Pendulum
 from acausal.library.friction.examples.stick_slip import StickSlip
 from acausal.library.rotational.examples.coupled_clutches import CoupledClutches
 from acausal.ports import RealInput
-from acausal.result import _expand
+from acausal.runtime.outputs import expand_points as _expand
 
 from ..library.test_delays import FixedDelayLoop
 from .models import BouncingBall
