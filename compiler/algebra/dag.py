@@ -51,6 +51,14 @@ def transform(root, rebuild, memo=None, context=None, descend=None):
     calls (the same nodes are then rebuilt once for several roots)."""
     memo = {} if memo is None else memo
     step = descend or (lambda node, ctx: ctx)
+    kept = set()        # keys whose node ``rebuild`` returned unchanged
+
+    def new_arg(a, inner):
+        # an unchanged argument is passed as the very object the parent holds: an equal
+        # subexpression met first elsewhere may be another object, and rebuilding the
+        # parent from it would make sympy compare the two as deep as they go
+        return a if (a, inner) in kept else memo[(a, inner)]
+
     stack = [(root, context, False)]
     while stack:
         node, ctx, ready = stack.pop()
@@ -64,7 +72,10 @@ def transform(root, rebuild, memo=None, context=None, descend=None):
                 if (a, inner) not in memo:
                     stack.append((a, inner, False))
             continue
-        memo[key] = rebuild(node, [memo[(a, inner)] for a in node.args], ctx)
+        out = rebuild(node, [new_arg(a, inner) for a in node.args], ctx)
+        memo[key] = out
+        if out is node:
+            kept.add(key)
     return memo[(root, context)]
 
 
