@@ -99,13 +99,17 @@ class EventHandling:
         if self.commit is not None:          # the solution up to the event, old modes
             self.commit(t_prev, t_e, s.interpolate, rtol=self.rtol)
         before = len(self.snapshots) - 1
+        if self.t_eval is not None:
+            # the requested times before the event, completed (output_point) in the
+            # discrete state before it, which the event iteration is about to change
+            self._emit_step(t_prev, t_e, y, yp, snapshot=before, before_event=True)
         y_new, yp_new, action, changed = self._iterate_event(t_e, y, yp, crossed)
         # A relation flipping straight back after the previous event (a ball leaving
         # the floor, a heater's threshold left behind) changes nothing: it is the same
         # instant, handled, but not reported as another event.
         echo = (not changed and not action.stop and bool(self.event_times)
                 and t_e - self.event_times[-1] <= _ECHO_TTOLS * self._ttol(t_e))
-        if not (echo and self.t_eval is None):
+        if self.t_eval is None and not echo:
             self._emit_step(t_prev, t_e, y, yp, snapshot=before, before_event=True)
         if changed:
             # only events that change something can chatter

@@ -183,3 +183,49 @@ def test_two_elements_locked_on_one_motion_during_integration(loop):
     assert np.allclose(held, held[0]) and abs(abs(held[0]) - 1.5) <= 1e-9
     assert np.all(np.abs(res["b1.tau"][after]) <= 1.0)
     assert np.all(np.abs(res["b2.tau"][after]) <= 2.0)
+
+
+class _TwoBearingsRamped(ac.Component):
+    """An inertia J = 2 kg.m2 at rest held by two bearings (1 and 2 N.m, the same at
+    rest and sliding) and driven by a ramp torque k t, k = 10 N.m/s."""
+
+    from acausal.library.blocks import Ramp
+    from acausal.library.rotational import BearingFriction, Fixed, Inertia, Torque
+
+    src = Torque()
+    ramp = Ramp(height=10.0, duration=1.0)
+    J = Inertia(J=2.0, phi={"fixed": True, "start": 0.0}, w={"fixed": True, "start": 0.0})
+    b1 = BearingFriction(tau_pos=[[0, 1.0]], useSupport=True)
+    b2 = BearingFriction(tau_pos=[[0, 2.0]], useSupport=True)
+    fixed = Fixed()
+
+    def equations(self):
+        return [ac.connect(self.ramp.y, self.src.tau),
+                ac.connect(self.src.flange, self.J.flange_a),
+                ac.connect(self.J.flange_b, self.b1.flange_a, self.b2.flange_a),
+                ac.connect(self.b1.support, self.fixed.flange, self.b2.support)]
+
+
+@pytest.mark.parametrize("loop", ["python", "auto"])
+def test_two_stuck_elements_on_one_motion_break_away_together(loop):
+    """Closed form (Coulomb friction as a complementarity problem): the shaft stays at
+    rest while some split of k t holds each bearing within its limit, k t <= 1 + 2, so
+    it breaks away at t* = 3/k = 0.3 s, and then both bearings slide (they share the
+    motion): J w = k (t^2 - t*^2)/2 - 3 (t - t*).  Before t* the split between them is
+    indeterminate; their torques sum to k t, each within its own limit, also at the
+    requested times that the step ending at the break-away event spans (they are
+    solved in the modes before the event)."""
+    k, ts = 10.0, 0.3
+    t = np.linspace(0.0, 1.0, 201)
+    res = ac.simulate(_TwoBearingsRamped(), t_end=1.0, rtol=1e-8, t_eval=t, step_loop=loop)
+    assert res.success
+    w = np.where(t > ts, (k * (t ** 2 - ts ** 2) / 2 - 3.0 * (t - ts)) / 2.0, 0.0)
+    assert np.max(np.abs(res["J.w"] - w)) <= 1e-6 * np.max(w)
+    assert min(abs(float(e) - ts) for e in res.events) <= 1e-7
+    rest, slide = t < ts - 1e-3, t > ts + 1e-3
+    for b, limit in (("b1", 1.0), ("b2", 2.0)):
+        assert np.all(res[f"{b}.mode"][rest] == 0) and np.all(res[f"{b}.mode"][slide] == 1)
+        assert np.all(np.abs(res[f"{b}.tau"][rest]) <= limit * (1 + 1e-9))
+        assert np.allclose(res[f"{b}.tau"][slide], limit, rtol=1e-9)
+    held = res["b1.tau"][rest] + res["b2.tau"][rest]
+    assert np.max(np.abs(held - k * t[rest])) <= 1e-9 * 3.0

@@ -3,10 +3,16 @@ bearing friction together.
 
 LossyGearDemo1 with bearing friction (0.5 N.m at rest, rising 0.5 N.m per rad/s)
 between the drive and Inertia1: two friction elements that stick and slip in turn.
-From t = 0.0636 s both are stuck on one motion, so the split of the torque between them
-(gear.sa against bearingFriction.sa) is indeterminate: the initialization at events and
-the integrator take the minimum-norm solution of the singular, consistent system
-(:mod:`acausal.runtime.indeterminate`, :mod:`acausal.solvers.linalg`).
+While both are at rest (0.0636 .. 0.2304 s and 0.3083 .. 0.4727 s) the split of the
+torque between them (gear.sa against bearingFriction.sa) is indeterminate: together
+they carry tau1 + tau2/ratio (tau1 = torque1.tau, tau2 = torque2.tau; -1.03 N.m at
+0.0636 s), and any bearing torque in [max(-0.5, tau1 - 2 c), min(0.5, tau1 - c/2)],
+c = -tau2/ratio, keeps the gear within its limits [-flange_a.tau, 0.5 flange_a.tau]
+(flange_a.tau > 0 there).  The initialization at events and the integrator take the
+minimum-norm solution of the singular, consistent system
+(:mod:`acausal.runtime.indeterminate`, :mod:`acausal.solvers.linalg`).  The motion
+does not depend on the split: it starts forward at 0.230374 s (tau1 - 2 c = 0.5) and
+backward at 0.472738 s (tau1 - c/2 = -0.5), as in the reference.
 """
 import acausal as ac
 from acausal.library.blocks import Ramp, Sine
@@ -23,12 +29,18 @@ class LossyGearDemo2(ac.Component):
     stop_time = 0.5
     msl_known_failure = (
         "indeterminate (modes): the motion matches the reference (Inertia2.phi 2.1e-6, "
-        "Inertia2.w 4.8e-7 x amplitude), but while the gear and the bearing are both "
-        "stuck on one motion the split of the torque between them is not unique, and "
-        "the mode signals follow the split: Dymola's has the bearing slide forward "
-        "(mode 1) from the reversal at t = 0.0636 s, the minimum-norm split taken here "
-        "only once its share reaches 0.5 N.m at t = 0.0758 s (bearingFriction.mode, 10 "
-        "instants; likewise gear.mode on 0.456 .. 0.473 s, 14 instants)")
+        "Inertia2.w 4.8e-7 x amplitude), the mode signals cannot.  While the gear holds "
+        "the motion (w_a = 0) the MSL's mode equation gives Stuck whatever the split of "
+        "the torque between gear and bearing; the reference has bearingFriction.mode = "
+        "Forward on 0.0636 .. 0.2304 s (163 instants) and gear.mode = Backward on "
+        "0.4562 .. 0.4727 s (14), from the speed its event location leaves past each "
+        "stop (Inertia2.w = +5.0e-11, then -5.0e-11 rad/s).  Its split, read from its "
+        "modes, holds the bearing at +0.5 N.m until the gear reaches a limit (0.0636 .. "
+        "0.2304 s, 0.3083 .. 0.4562 s), at 0.0636 s against the -1.03 N.m the pair "
+        "carries (any bearing torque in [-0.5, 0.5] is admissible there); "
+        "startForward follows the split: here the minimum-norm one (the bearing breaks "
+        "away from 0.0758 s: 153 instants), the complementarity rule (stuck while a "
+        "split holds both) gives 146")
     tolerance = 1e-6
 
     PowerLoss = ac.Variable(unit="W", description="power lost in the gear")
