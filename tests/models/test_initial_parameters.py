@@ -108,3 +108,12 @@ def test_msl_init_spring_constant_closed_form():
     res = ac.simulate(InitSpringConstant(), 0.5)
     assert res.parameter_values["spring.c"] == pytest.approx(5 * 9.80665, rel=1e-9)
     assert np.max(np.abs(res["rev.phi"])) < 1e-9
+
+
+def test_fmu_export_refuses_a_found_parameter(tmp_path):
+    pytest.importorskip("fmpy")
+    import shutil
+    if shutil.which("cc") is None and shutil.which("gcc") is None:
+        pytest.skip("no C compiler")
+    with pytest.raises(ac.ModelError, match="found by initialization"):
+        ac.export_fmu(AtRest(), str(tmp_path / "at_rest.fmu"))
