@@ -45,7 +45,7 @@ from ..solvers.linalg import DENSE_MAX, LinearSolver, SingularMatrixError, assem
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
 from .indeterminate import minimum_norm_newton, null_variables
-from .initparams import augmented, reset_free
+from .initparams import augmented, check_found, reset_free
 from .redundant import check_dropped, choose_rows
 
 __all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives",
@@ -226,6 +226,7 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
             raise
     if split is not None:
         z = split(z).copy()
+        check_found(model, t0)
     if dropped:
         init.dropped = check_dropped(model, t0, z, dropped, coords, list(init.rows))
     return z

@@ -15,7 +15,9 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["free_parameters", "reset_free", "augmented", "not_tunable"]
+from ..errors import InitializationFailed
+
+__all__ = ["free_parameters", "reset_free", "augmented", "not_tunable", "check_found"]
 
 
 def free_parameters(model):
@@ -31,6 +33,21 @@ def reset_free(model) -> None:
     index, start, _ = free_parameters(model)
     if index.size:
         model.p[index] = start
+
+
+def check_found(model, t0) -> None:
+    """The values found respect the parameters' declared [min, max] (as Modelica's
+    assertions on min and max): else InitializationFailed naming the parameter."""
+    index, _, names = free_parameters(model)
+    bounds = model.meta.get("parameter_bounds", {})
+    for k, name in zip(index, names):
+        lo, hi = bounds.get(name, (None, None))
+        x = float(model.p[k])
+        if (lo is not None and x < lo) or (hi is not None and x > hi):
+            raise InitializationFailed(
+                f"initialization at t = {t0}: parameter '{name}' (found by "
+                f"initialization, fixed=False) = {x!r} is outside its range "
+                f"[{'-inf' if lo is None else lo}, {'inf' if hi is None else hi}]", t0)
 
 
 def not_tunable(model, name) -> str | None:

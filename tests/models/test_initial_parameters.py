@@ -117,3 +117,25 @@ def test_fmu_export_refuses_a_found_parameter(tmp_path):
         pytest.skip("no C compiler")
     with pytest.raises(ac.ModelError, match="found by initialization"):
         ac.export_fmu(AtRest(), str(tmp_path / "at_rest.fmu"))
+
+
+def test_a_found_value_outside_its_range_fails_initialization():
+    # the mass held above the spring's rest length: the spring would have to pull
+    # upwards with c < 0, below the declared minimum 0
+    with pytest.raises(ac.InitializationFailed, match=r"parameter 'c' .* outside its range"):
+        ac.simulate(AtRest(s={"start": S0 - D}), 1.0)
+
+
+def test_a_parameter_found_from_an_algebraic_condition():
+    class Algebraic(ac.Component):     # no state: the initial condition is the only one
+        c = ac.Parameter(1.0, fixed=False)
+        x = ac.Variable()
+
+        def equations(self):
+            return [ac.Eq(self.x, 2 * self.c)]
+
+        def initial_equations(self):
+            return [ac.Eq(self.x, 4.0)]
+    res = ac.simulate(Algebraic(), 1.0)
+    assert res.parameter_values["c"] == pytest.approx(2.0, rel=1e-12)
+    assert np.all(res["x"] == pytest.approx(4.0, rel=1e-12))
