@@ -304,6 +304,8 @@ class Parameter(_Declaration):
                  if getattr(self, k) not in (None, "")]
         if self.type is int:
             args.append("type=int")
+        if not self.fixed:
+            args += ["fixed=False"] + ([f"start={self.start!r}"] if self.start is not None else [])
         if self.shape is not None and not isinstance(self.value, (np.ndarray, list, tuple)):
             args.append(f"shape={self.shape!r}")
         return f"Parameter({', '.join(args)})"

@@ -11,7 +11,9 @@ variable in the full form).  The equations are the model's rows G(t0, z) = 0 plu
    complete a perfect structural matching of the initial system.
 
 Start values of everything else are guesses for Newton's method (damped Newton, then a
-Newton homotopy: :func:`acausal.solvers.initialization.solve_with_fallback`).
+Newton homotopy: :func:`acausal.solvers.initialization.solve_with_fallback`).  The
+parameters found by initialization (``Parameter(fixed=False)``) are unknowns too, each
+with a condition of its own, and are written into p (:mod:`.initparams`).
 
 Relations take part as in Modelica's initialization: they first take their values at
 the start values (repeatedly, as one relation may read another's value), the system is

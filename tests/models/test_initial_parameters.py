@@ -139,3 +139,15 @@ def test_a_parameter_found_from_an_algebraic_condition():
     res = ac.simulate(Algebraic(), 1.0)
     assert res.parameter_values["c"] == pytest.approx(2.0, rel=1e-12)
     assert np.all(res["x"] == pytest.approx(4.0, rel=1e-12))
+
+
+def test_a_found_parameter_starting_at_zero_is_no_structural_zero():
+    # a parameter of exactly 0 is a structural zero, evaluated away before compiling;
+    # one found by initialization is not (its 0 is a guess), and the spring stays
+    class Top(ac.Component):
+        h = Hanging(c={"fixed": False, "start": 0.0}, v={"steady": True})
+    compiled = ac.compile(Top())
+    assert "h.c" not in compiled.meta["structural_zeros"]
+    res = ac.simulate(compiled, 1.0)
+    assert res.parameter_values["h.c"] == pytest.approx(M * G / D, rel=1e-9)
+    assert repr(AtRest.c) == "Parameter(100.0, unit='N/m', min=0, fixed=False)"
