@@ -24,7 +24,7 @@ from .backends.parametric import parameter_functions
 from .frontend.outline import definition_of
 from .frontend.sampled import when_rows as clause_rows
 from .index.numeric import CoefficientValues, is_number
-from .initrows import choose_initial_rows, free_parameters
+from .initrows import choose_initial_rows, followers, free_parameters
 from .modelcode import (DelayCode, DynamicSets, InitialCode, InputCode, ModelCode, RelationInfo,
                         WhenCode)
 from .report import EquationNames
@@ -162,6 +162,7 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
               "derived_parameters": dict(flat.derived),
               "free_parameters": {} if free is None else {
                   "index": free.index, "names": free.names, "start": free.start},
+              "found_followers": followers(reduced.parameters, free, psyms, zeros),
               "value_types": _value_types(flat),
               "parameter_types": {p.name: _TYPE_NAME[p.type] for p in params
                                   if getattr(p, "type", float) is not float}})

@@ -18,7 +18,7 @@ import numpy as np
 from .structure.matching import _match
 from ..errors import UnderdeterminedInitialization
 
-__all__ = ["choose_initial_rows", "free_parameters", "FreeParameters"]
+__all__ = ["choose_initial_rows", "free_parameters", "FreeParameters", "followers"]
 
 
 @dataclass
@@ -54,6 +54,31 @@ def free_parameters(params, assigned, rows, init_rows) -> FreeParameters | None:
         [p.describe() for _, p in free],
         [sorted(_reads(r, col, reads)) for r in rows],
         [sorted(_reads(r, col, reads)) for r in init_rows])
+
+
+def followers(parameters, free: FreeParameters | None, psyms, zeros=()) -> list:
+    """(name, f(p)) of each parameter bound to an expression that reads a free one
+    (``c2 = 2 c``): its value is known once initialization has found them."""
+    if free is None:
+        return []
+    import sympy as sp
+    found = {s for s in psyms if s.name in set(free.names)}
+    zero = {q.symbol: sp.Integer(0) for q in parameters if q.name in set(zeros)}
+    exprs = {q.symbol: sp.sympify(q.value) for q in parameters
+             if isinstance(q.value, sp.Basic) and not q.value.is_number}
+    out = {}
+    for q in parameters:
+        e = exprs.get(q.symbol)
+        for _ in range(len(exprs)):          # bindings of bindings, down to p
+            if e is None or not (e.free_symbols & exprs.keys()):
+                break
+            e = e.xreplace({s: exprs[s] for s in e.free_symbols if s in exprs})
+        if e is not None:
+            e = e.xreplace(zero)
+            if e.free_symbols & found and e.free_symbols <= set(psyms):
+                out[q.name] = e
+    from .backends.parametric import parameter_functions
+    return parameter_functions(out, psyms) if out else []
 
 
 def _reads(expr, col, reads) -> set:

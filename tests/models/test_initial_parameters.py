@@ -43,8 +43,9 @@ class TwoSprings(AtRest):
         return self.c + self.c2
 
 
-def test_spring_constant_found_so_that_the_mass_rests():
-    res = ac.simulate(AtRest(), 2.0)
+@pytest.mark.parametrize("backend", ["numpy", "auto"])
+def test_spring_constant_found_so_that_the_mass_rests(backend):
+    res = ac.simulate(AtRest(), 2.0, backend=backend)
     assert res.parameter_values["c"] == pytest.approx(M * G / D, rel=1e-9)
     # at rest for the whole run: the found value is the one the run used
     assert np.max(np.abs(res["s"] - (S0 + D))) < 1e-9 * (S0 + D)
@@ -59,6 +60,7 @@ def test_a_binding_to_a_found_parameter_follows_it():
     assert res.parameter_values["c"] == pytest.approx(M * G / D / 3, rel=1e-9)
     assert np.max(np.abs(res["v"])) < 1e-9
     assert res.compiled.derived_parameters["c2"] is None   # no stale compile-time value
+    assert res.parameter_values["c2"] == 2 * res.parameter_values["c"]
 
 
 def test_modification_makes_a_parameter_free_and_each_run_starts_from_its_start():
