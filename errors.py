@@ -43,7 +43,8 @@ __all__ = ["ModelError", "InvalidValue", "InvalidEquation", "DiscreteVariableErr
            "InvalidConnection", "InvalidHierarchy", "InvalidInheritance", "InvalidIndex",
            "NotInModel", "AbsentComponent", "MissingInput", "UnitError", "StructuralError",
            "IndexReductionFailed", "StructurallySingular", "OverdeterminedModel", "UnderdeterminedModel",
-           "SimulationError", "InitializationFailed", "BackendError", "CacheError",
+           "UnderdeterminedInitialization", "SimulationError", "InitializationFailed",
+           "BackendError", "CacheError",
            "CacheWarning", "InvalidArgument",
            "OperatingPointError", "SteadyStateError", "ModeConflict", "UnitWarning",
            "ModeWarning", "TransferFunctionWarning", "InitialConditionWarning"]
@@ -142,6 +143,11 @@ class OverdeterminedModel(StructurallySingular):
 
 class UnderdeterminedModel(StructurallySingular):
     """Fewer equations than unknowns in some part of the model."""
+
+
+class UnderdeterminedInitialization(StructuralError):
+    """The initial system leaves an unknown without an equation: a parameter found by
+    initialization (``fixed=False``) that no initial condition determines."""
 
 
 # -- running it ----------------------------------------------------------------------------

@@ -185,8 +185,13 @@ class Result:
 
     @property
     def parameter_values(self) -> dict:
-        """This run's parameter values, by name."""
-        return {n: float(v) for n, v in zip(self.parameter_names, self.parameters)}
+        """This run's parameter values, by name (with those found by initialization,
+        and the parameters bound to them, at the values found)."""
+        values = {n: float(v) for n, v in zip(self.parameter_names, self.parameters)}
+        meta = getattr(self.compiled, "meta", None) or {}
+        for name, f in meta.get("found_followers", ()):
+            values[name] = float(f(self.parameters))
+        return values
 
     def __contains__(self, name) -> bool:
         known = self._table if self._table is not None else (

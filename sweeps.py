@@ -90,7 +90,9 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
     compiled = compile(model, simulate_kwargs.pop("backend", "auto"))
     # a top-level input is swept as a parameter is: a number per run (or, in an
     # ensemble, a function of time or a table), given with the run's other inputs
-    unknown = sorted({k for r in runs for k in r} - set(compiled.param_names)
+    # (a parameter found by initialization, fixed=False, is not tunable: refused now)
+    found = set((compiled.meta.get("free_parameters") or {}).get("names", ()))
+    unknown = sorted({k for r in runs for k in r} - (set(compiled.param_names) - found)
                      - set(compiled.input_names))
     if unknown:                  # a mistake in the call, not a failed run: say it now
         compiled.set_parameters({unknown[0]: 1.0})

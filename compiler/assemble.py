@@ -24,12 +24,12 @@ from .backends.parametric import parameter_functions
 from .frontend.outline import definition_of
 from .frontend.sampled import when_rows as clause_rows
 from .index.numeric import CoefficientValues, is_number
+from .initrows import choose_initial_rows, followers, free_parameters
 from .modelcode import (DelayCode, DynamicSets, InitialCode, InputCode, ModelCode, RelationInfo,
                         WhenCode)
 from .report import EquationNames
 from .structure.causalize import causalize, full_form
 from .structure.graph import LINEAR_CONST, UNASSIGNED
-from .structure.matching import _match
 from ..errors import ModelError
 
 __all__ = ["assemble", "model_code", "choose_initial_rows", "delay_code", "feeds_back"]
@@ -132,8 +132,11 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
         has_initial=uses_initial, held_types=_type_names(flat, helds),
         time_linear=_time_linear(crossings + [d.argument for d in discretes], assigned,
                                  set(psyms) | set(dsyms)))
+    free = free_parameters(params, assigned, rows, init_rows)
     kept, redundant = choose_initial_rows(code, init_code, n_res, n_mandatory,
-                                          reduction.n_states, len(z_syms))
+                                          reduction.n_states, len(z_syms), free)
+    if free is not None:          # found by initialization: said in the report
+        report.initial_parameters = dict(zip(free.names, free.start))
     initial = InitialCode(init_code, init_text, kept, redundant, n_mandatory, init_sizes)
     if redundant:
         report.notes.append(
@@ -157,6 +160,9 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
                                    if p.min is not None or p.max is not None},
               "derived_bounds": _derived_bounds(reduced.parameters, psyms),
               "derived_parameters": dict(flat.derived),
+              "free_parameters": {} if free is None else {
+                  "index": free.index, "names": free.names, "start": free.start},
+              "found_followers": followers(reduced.parameters, free, psyms, zeros),
               "value_types": _value_types(flat),
               "parameter_types": {p.name: _TYPE_NAME[p.type] for p in params
                                   if getattr(p, "type", float) is not float}})
@@ -284,65 +290,6 @@ def _time_linear(items, assigned, frozen) -> list:
         if not slope.has(time) and slope != 0:
             out.append(k)
     return out
-
-
-def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z):
-    """``(kept, redundant)``: the mandatory initial rows that complete a structural
-    matching of [G; initial rows] onto z, in the order given, then those optional
-    start-value rows (in state order) that complete it (Modelica's rule: start values
-    fix the states that nothing else determines).  ``redundant`` are the mandatory rows
-    left out: an over-specified initial problem, which the runtime accepts where the
-    dropped conditions hold at the computed initial point (OpenModelica removes
-    redundant initial equations after checking them, and so do we)."""
-    keep = model_code.jac_rows < n_res
-    adj = _adjacency(model_code.jac_rows[keep], model_code.jac_cols[keep], n_res)
-    i_adj = _adjacency(init_code.jac_rows, init_code.jac_cols, init_code.n_rows)
-    l2r, r2l = _match(adj, n_z)
-    chosen, redundant = [], []
-    for k in range(init_code.n_rows):
-        if len(chosen) == n_states and k >= n_mandatory:
-            break
-        adj.append(i_adj[k])
-        l2r.append(-1)
-        if len(chosen) < n_states and _augment(len(adj) - 1, adj, l2r, r2l):
-            chosen.append(k)
-        else:
-            adj.pop()
-            l2r.pop()
-            if k < n_mandatory:
-                redundant.append(k)
-    return np.array(chosen, dtype=np.int64), redundant
-
-
-def _augment(root, adj, l2r, r2l) -> bool:
-    """One augmenting path from row ``root`` (iterative Kuhn search); flips it if found."""
-    seen, stack, parent = {root}, [(root, iter(adj[root]))], {}
-    while stack:
-        u, it = stack[-1]
-        v = next(it, None)
-        if v is None:
-            stack.pop()
-            continue
-        w = r2l[v]
-        if w < 0:
-            while True:             # flip the path back to the root
-                prev = l2r[u]
-                l2r[u], r2l[v] = v, u
-                if u == root:
-                    return True
-                u, v = parent[u], prev
-        if w not in seen:
-            seen.add(w)
-            parent[w] = u
-            stack.append((w, iter(adj[w])))
-    return False
-
-
-def _adjacency(rows, cols, n_rows) -> list:
-    adj = [[] for _ in range(n_rows)]
-    for r, c in zip(rows.tolist(), cols.tolist()):
-        adj[r].append(c)
-    return [sorted(set(a)) for a in adj]
 
 
 def _inline_after_index_reduction(system, reduction) -> None:

@@ -46,6 +46,7 @@ class FlatParameter(_Located):
     min: float | None = None
     max: float | None = None
     type: object = float      # float, bool or int (Real, Boolean, Integer)
+    fixed: bool = True        # False: found by initialization, ``value`` its start
 
     def describe(self) -> str:
         """``'R1' (Resistor): parameter R``, as the component's own errors say it."""

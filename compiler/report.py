@@ -66,6 +66,8 @@ class IndexReport:
     modes: list = field(default_factory=list)
     units: object = None            # compiler.unitcheck.UnitCheck
     derived_parameters: dict = field(default_factory=dict)   # name -> (binding, value)
+    # the parameters found by initialization (fixed=False): name -> start (the guess)
+    initial_parameters: dict = field(default_factory=dict)
     # the variables held between events (Boolean, Integer, discrete Real): name, type
     # and what sets them (an equation evaluated at every event, or a when-clause)
     discrete: list = field(default_factory=list)
@@ -170,6 +172,7 @@ class IndexReport:
             "derived_parameters": {k: {"binding": b, "value": v}
                                    for k, (b, v) in self.derived_parameters.items()},
             "discrete_variables": list(getattr(self, "discrete", [])),
+            "initial_parameters": dict(getattr(self, "initial_parameters", {})),
         }
 
     def blt_order(self) -> tuple[list, list]:
@@ -289,10 +292,17 @@ class IndexReport:
                 lines += _wrapped(f"    {d['name']} ({d['type']}): ", d["set_by"])
             if len(held) > 50:
                 lines.append(f"    ... ({len(held) - 50} more)")
+        found = getattr(self, "initial_parameters", {})
+        if found:
+            lines.append("  parameters found by initialization (fixed=False), with their "
+                         "start (Newton's guess):")
+            lines += [f"    {name} (start {start:.6g})" for name, start in found.items()]
         if self.derived_parameters:
             lines.append("  derived parameters (bound to other parameters):")
             for name, (binding, value) in self.derived_parameters.items():
-                lines += _wrapped(f"    {name} = ", f"{binding} = {value:.6g}")
+                lines += _wrapped(f"    {name} = ", f"{binding} = " + (
+                    f"{value:.6g}" if value is not None else
+                    "(follows a parameter found by initialization)"))
         if self.units is not None:
             lines += _wrapped("  ", self.units.summary())
         for note in self.notes:

@@ -236,7 +236,8 @@ class Component(metaclass=_ComponentType):
             child = self._children[key]
             object.__setattr__(child, "_mods", {**child._mods, **mod})
         elif isinstance(decls.get(key), Parameter):
-            try:
+            try:    # a dict gives attributes: {"fixed": False, "start": 100} (initparams)
+                mod = decls[key].attributes_modified(self, key, mod)
                 if decls[key].shape is not None:
                     from .arrays import check_array_value, shape_of
                     check_array_value(mod, shape_of(decls[key], self, key),

@@ -265,12 +265,19 @@ class Parameter(_Declaration):
     fixed when the component is made; ``self.name`` reads that value, and the
     component's ``build()`` creates the sub-components it implies.  It is not a
     parameter of the compiled model (changing it means a new model).
+
+    ``fixed=False`` declares a parameter found by initialization (Modelica's
+    ``parameter Real c(fixed=false, start=100)``): an unknown of the initial system,
+    determined by an initial equation, its ``start`` (else its value) Newton's guess,
+    then a constant of the run (:mod:`acausal.components.initparams`).
     """
 
     def __init__(self, value=None, unit: str = "", description: str = "",
                  min: float | None = None, max: float | None = None, shape=None,
-                 structural: bool = False, type=None, choices=None):
+                 structural: bool = False, type=None, choices=None, fixed: bool = True,
+                 start=None):
         structural = bool(structural) or choices is not None
+        self.fixed, self.start = fixed, start
         self.choices = tuple(choices) if choices is not None else None
         if type is None:
             type = bool if isinstance(value, (bool, np.bool_)) and not structural else float
@@ -297,12 +304,24 @@ class Parameter(_Declaration):
                  if getattr(self, k) not in (None, "")]
         if self.type is int:
             args.append("type=int")
+        if not self.fixed:
+            args += ["fixed=False"] + ([f"start={self.start!r}"] if self.start is not None else [])
         if self.shape is not None and not isinstance(self.value, (np.ndarray, list, tuple)):
             args.append(f"shape={self.shape!r}")
         return f"Parameter({', '.join(args)})"
 
+    def attributes_modified(self, comp, name, mod):
+        """The value ``comp``'s parameter keeps after the modification ``mod``: ``mod``
+        itself, or for a dict of attributes (``fixed``, ``start``) the value it had."""
+        if not isinstance(mod, dict):
+            return mod
+        from .initparams import parameter_attributes
+        return parameter_attributes(comp, name, mod, self)
+
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
+        from .initparams import check_free_declaration
+        check_free_declaration(self)
         if self.structural:
             check_structural_value(self.value, "default value", self.min, self.max,
                                    self.choices)

@@ -102,6 +102,9 @@ def _child_path(where: str, key: str) -> str:
 
 def _parameter_value(decl: Parameter, key: str, value, where: str):
     what = f"parameter {key}"
+    if isinstance(value, dict):     # attributes: {"fixed": False, "start": 100}
+        from .initparams import attribute_values
+        return attribute_values(decl, key, value, where)
     if decl.shape is not None:
         # an array parameter: its shape may be the instance's (shape="n"), so its value
         # is checked element by element where it is applied (components.arrays)

@@ -87,6 +87,7 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
     mc = plant.compiled.model_code
     _static_states(plant.compiled)
     _no_delays(plant.compiled)
+    _no_free_parameters(plant.compiled)
     _inputs_not_differentiated(plant, ports)
     name = model_name or (getattr(mc.report, "model_name", None) if ports is None
                           else type(model).__name__) or "Model"
@@ -226,6 +227,17 @@ def _no_delays(compiled) -> None:
     from ..runtime.delays import refuse_delays
     refuse_delays(compiled, "an FMU cannot export delay() (its engine keeps no history "
                             "of the solution)", "Replace FixedDelay by PadeDelay to export")
+
+
+def _no_free_parameters(compiled) -> None:
+    """The FMU's engine initializes the states only: a parameter found by
+    initialization (fixed=False) would keep its start there, so it is refused."""
+    names = (compiled.meta.get("free_parameters") or {}).get("names")
+    if names:
+        raise ModelError(f"an FMU cannot export parameters found by initialization "
+                         f"(fixed=False): {', '.join(names[:5])}; its engine solves for "
+                         "the states only.  Simulate once, then give the value found "
+                         "(res.parameter_values) as the parameter's value to export")
 
 
 def _static_states(compiled) -> None:

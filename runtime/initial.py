@@ -11,7 +11,9 @@ variable in the full form).  The equations are the model's rows G(t0, z) = 0 plu
    complete a perfect structural matching of the initial system.
 
 Start values of everything else are guesses for Newton's method (damped Newton, then a
-Newton homotopy: :func:`acausal.solvers.initialization.solve_with_fallback`).
+Newton homotopy: :func:`acausal.solvers.initialization.solve_with_fallback`).  The
+parameters found by initialization (``Parameter(fixed=False)``) are unknowns too, each
+with a condition of its own, and are written into p (:mod:`.initparams`).
 
 Relations take part as in Modelica's initialization: they first take their values at
 the start values (repeatedly, as one relation may read another's value), the system is
@@ -45,6 +47,7 @@ from ..solvers.linalg import DENSE_MAX, LinearSolver, SingularMatrixError, assem
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
 from .indeterminate import minimum_norm_newton, null_variables
+from .initparams import augmented, check_found, reset_free
 from .redundant import check_dropped, choose_rows
 
 __all__ = ["InitialConditions", "initialize", "reinitialize", "consistent_derivatives",
@@ -104,6 +107,7 @@ class InitialConditions:
 def initialize(model, t0: float):
     """Consistent (z, z') at t0 with the discrete state settled (module docstring)."""
     z = model.start.copy()
+    reset_free(model)            # parameters found by initialization: from their starts
     _fresh_start(model, t0, z)
     if model.dynamic is not None:
         model.dynamic.switches = []
@@ -171,7 +175,8 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
     """[G; I](z) = 0 with the discrete state frozen; failures name equations and
     conditions in the user's words."""
     init = model.initial
-    if model.n == 0:             # every unknown assigned: the user's conditions checked
+    free = model.meta.get("free_parameters")     # found by initialization (initparams)
+    if model.n == 0 and not free:  # every unknown assigned: the user's conditions checked
         if init.redundant:
             init.dropped = check_dropped(model, t0, z_guess, list(init.redundant), {},
                                          list(init.rows))
@@ -206,18 +211,24 @@ def solve_initial(model, t0: float, z_guess: np.ndarray) -> np.ndarray:
         return 1.0 / (_NEWTON_RTOL * np.maximum(np.abs(z), np.abs(z_guess))
                       + _NEWTON_RTOL * model.nominal)
     model.evaluation_errors.clear()
-    dropped, coords = _choose_conditions(model, t0, z_guess) if init.redundant else ([], {})
+    dropped, coords = _choose_conditions(model, t0, z_guess) \
+        if init.redundant and not free else (list(init.redundant), {})
+    x0, scale, names, split = z_guess, model.nominal, model.names, None
+    if free:          # the unknowns are [z; p_free]: the values found are written into p
+        F, J, x0, weights, scale, names, split = augmented(model, F, J, z_guess, weights,
+                                                           dense)
     try:
-        z = solve_with_fallback(F, J, z_guess.copy(), weights,
-                                f"initialization at t = {t0}", model.names,
-                                lambda k: _row_name(model, k), t0)
+        z = solve_with_fallback(F, J, x0.copy(), weights, f"initialization at t = {t0}",
+                                names, lambda k: _row_name(model, k), t0)
     except InitializationFailed as err:
-        z = _indeterminate(model, t0, F, J, z_guess, weights, model.nominal,
-                           model.names, err)
+        z = _indeterminate(model, t0, F, J, x0, weights, scale, names, err)
         if z is None:
             if model.evaluation_errors:
                 err.args = (f"{err.args[0]}; {model.evaluation_errors[0]}",) + err.args[1:]
             raise
+    if split is not None:
+        z = split(z).copy()
+        check_found(model, t0)
     if dropped:
         init.dropped = check_dropped(model, t0, z, dropped, coords, list(init.rows))
     return z

@@ -12,6 +12,7 @@ from ..components.declarations import typed_value
 from ..components.validation import suggestion
 from ..errors import InvalidValue, NotInModel
 from ..words import listed
+from .initparams import not_tunable
 
 __all__ = ["tuned_parameters", "no_parameter_message"]
 
@@ -23,6 +24,9 @@ def tuned_parameters(model, values: dict) -> np.ndarray:
     for name, value in _by_element(values, model.param_names).items():
         if name not in model.param_names:
             raise NotInModel(no_parameter_message(model, name))
+        why = not_tunable(model, name)
+        if why:
+            raise InvalidValue(why)
         x = _real_value(name, value, model.meta.get("parameter_types", {}).get(name))
         lo, hi = model.meta.get("parameter_bounds", {}).get(name, (None, None))
         if (lo is not None and x < lo) or (hi is not None and x > hi):

@@ -24,9 +24,12 @@ __all__ = ["parameter_values", "exact_value", "exact_rank", "left_null_vectors",
 
 # -- exact values ----------------------------------------------------------------------
 def parameter_values(parameters) -> dict:
-    """symbol -> Fraction of the float value, for every finite numeric parameter."""
+    """symbol -> Fraction of the float value, for every finite numeric parameter (not
+    one found by initialization: its value is a guess, no structural fact)."""
     out = {}
     for p in parameters:
+        if not getattr(p, "fixed", True):
+            continue
         try:
             x = float(p.value)
         except (TypeError, ValueError):

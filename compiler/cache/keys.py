@@ -126,7 +126,7 @@ def _flat_key(flat, backend: str) -> str:
     n = len(flat.variables)
     for k, p in enumerate(flat.parameters):
         h("p", p.name, ex(p.symbol), ex(p.value), p.unit, ex.ref(p.description),
-          p.component, p.component_class, ex(p.min), ex(p.max))
+          p.component, p.component_class, ex(p.min), ex(p.max), p.fixed)
         ex.memo[p.symbol] = f"\x1c{n + k}"
     for eqs, tag in ((flat.equations, "e"), (flat.initial_equations, "i")):
         for e in eqs:

@@ -23,6 +23,7 @@ from ...components import inheritance
 from ...components.component import Component, Connection, Port, compiling, in_context
 from ...components.declarations import Parameter, bound_violation
 from ...components.expandable import drop_bus_members, resolve_buses
+from ...components.initparams import parameter_start
 from ...components.logic import INITIAL
 from ...components.portgroups import expand_connection, port_owner
 from ...components.symbols import Equation, When, der, time
@@ -149,13 +150,17 @@ def _collect_declarations(comp: Component, flat: FlatModel) -> None:
             continue
         sym = getattr(comp, name)
         if isinstance(decl, Parameter):
-            value = comp.parameter_value(name)
+            try:    # found by initialization (fixed=False): its start is the guess
+                start = parameter_start(comp, name, decl)
+            except ValueError as err:
+                raise InvalidValue(f"{comp._describe()}: {err}") from None
+            value = comp.parameter_value(name) if start is None else start
             if value is None:
                 raise ModelError(f"parameter '{sym.name}' of {comp._describe()} has no value")
             flat.parameters.append(FlatParameter(sym.name, sym, value, decl.unit,
                                                  decl.description, comp.path,
                                                  type(comp).__name__, decl.min, decl.max,
-                                                 decl.type))
+                                                 decl.type, start is None))
         else:
             hint = comp.hint if isinstance(comp, Port) else ""
             flat.variables.append(FlatVariable(sym.name, sym, comp.variable_attributes(name),
@@ -351,9 +356,10 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     """
     resolved = _resolve_bindings(flat)
     # (a Boolean or Integer parameter stays tunable at 0: false, or a count of none)
+    # (nor is a parameter found by initialization: its value is a guess)
     zeros = {p.symbol: sp.Integer(0) for p in flat.parameters
              if p.symbol not in resolved and _is_zero(p.value) and not hasattr(p, "tunable")
-             and p.type is float}
+             and p.type is float and p.fixed}
     bound = {k: v.xreplace(zeros) for k, v in resolved.items()}
     bound.update(zeros)
     _check_bounds(flat, resolved)
@@ -437,6 +443,7 @@ def _check_bounds(flat: FlatModel, resolved: dict) -> None:
     read = set().union(*(e.free_symbols for e in resolved.values())) if resolved else ()
     leaf = {q.symbol: _as_sympy_number(q.value) for q in flat.parameters
             if q.symbol in read and q.symbol not in resolved}
+    free = {q.symbol for q in flat.parameters if not q.fixed}   # found by initialization
     for p in flat.parameters:
         if p.symbol in resolved:
             expr = resolved[p.symbol].xreplace(leaf)
@@ -449,6 +456,9 @@ def _check_bounds(flat: FlatModel, resolved: dict) -> None:
                 raise InvalidValue(f"{p.describe()} = {sp.sstr(p.value)} (= {value!r}) "
                                    "is not a number (NaN)")
             source = sp.sstr(p.value)
+            if resolved[p.symbol].free_symbols & free:   # it follows a value still unknown
+                flat.derived[p.name] = (source, None)
+                continue
             flat.derived[p.name] = (source, value)
             why = bound_violation(value, p.min, p.max)
             if why:
