@@ -36,11 +36,21 @@ class Symbol(sp.Symbol):
     of two of them (and a product with der() of one) built directly in sympy's canonical
     form."""
 
-    __slots__ = ()
+    __slots__ = ("_negative",)
 
     def __new__(cls, name, **assumptions):
         # always real, so that every one has the same assumptions (and sorts by name)
         return super().__new__(cls, name, **{**assumptions, "real": True})
+
+    def negative(self):
+        """``-self`` as sympy builds it (``Mul(-1, self)``), made once per symbol: the
+        same node is a term of every sum the symbol is subtracted in (its element's
+        equation, its connections', where an alias stands for it)."""
+        try:
+            return self._negative
+        except AttributeError:
+            out = self._negative = sp.Mul(S.NegativeOne, self, evaluate=False)
+            return out
 
     def __eq__(self, other):
         # sympy's equality asks for one type: a symbol of sympy's own class with the
@@ -74,7 +84,7 @@ class Symbol(sp.Symbol):
                 or not global_parameters.evaluate:
             return super().__sub__(other)
         # a symbol sorts before a product: -other, Mul(-1, other), is the second term
-        out = sp.Add(self, sp.Mul(S.NegativeOne, other, evaluate=False), evaluate=False)
+        out = sp.Add(self, other.negative(), evaluate=False)
         return _checked(out, "__sub__", self, other)
 
     def __mul__(self, other):

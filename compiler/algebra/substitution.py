@@ -25,7 +25,7 @@ import sympy as sp
 from sympy.calculus.accumulationbounds import AccumBounds
 from sympy.tensor.tensor import TensExpr
 
-from ...components.realsymbol import SYMBOLS
+from ...components.realsymbol import SYMBOLS, Symbol
 from ...components.symbols import has_atom_in
 from .dag import DEEP, xreplace
 
@@ -103,6 +103,8 @@ def negated(q) -> sp.Expr:
     per compile: the same node serves every sum it is a term of (a port's voltage is
     negated in its element's equation, in the connection's, and where an alias stands
     for it), so that look-ups of it find it by identity, not by comparing two copies."""
+    if type(q) is Symbol:
+        return q.negative()              # kept with the symbol
     out = _NEGATED.get(q)
     if out is None:
         out = _NEGATED[q] = _Mul(_MINUS, q, evaluate=False)
@@ -126,12 +128,18 @@ _FACT_SETS: dict = {}
 def _facts(q):
     """The assumptions of the symbol ``q`` as one shared object per distinct set, so
     that two symbols' are compared by identity (``assumptions0`` makes a new dict each
-    time it is read)."""
+    time it is read).  A model's symbols are all real (:class:`Symbol`)."""
+    if type(q) is Symbol:
+        return _REAL
     out = _FACTS.get(q)
     if out is None:
         items = frozenset(q.assumptions0.items())
         out = _FACTS[q] = _FACT_SETS.setdefault(items, items)
     return out
+
+
+_REAL = frozenset(Symbol("x").assumptions0.items())
+_FACT_SETS[_REAL] = _REAL
 
 
 def _signed_symbol(v):
