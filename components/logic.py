@@ -15,6 +15,7 @@ from sympy import S
 
 from . import symbols as _symbols
 from .printing import text
+from .realsymbol import SYMBOLS
 
 __all__ = ["as_condition", "value_type", "is_logical", "boolean_value", "pre", "edge",
            "change", "initial", "INITIAL", "integer"]
@@ -38,10 +39,10 @@ def _check_boolean_equation(lhs, rhs, given_lhs, given_rhs) -> None:
     """A condition is the value of a Boolean: the other side is a Boolean variable."""
     logical = given_lhs if _logical_side(given_lhs) else given_rhs
     other = rhs if logical is given_lhs else lhs
-    if type(other) is sp.Symbol and value_type(other) in (bool, None):
+    if type(other) in SYMBOLS and value_type(other) in (bool, None):
         return
     what = (f"{other.name} is a{'n Integer' if value_type(other) is int else ' Real'} "
-            "variable" if type(other) is sp.Symbol else f"{_text(other)} is not a variable")
+            "variable" if type(other) in SYMBOLS else f"{_text(other)} is not a variable")
     raise _invalid(f"ac.Eq({_text(given_lhs)}, {_text(given_rhs)}): {_text(logical)} is a "
                    f"relation or a logical value, not a value, and {what} "
                    "(ac.if_else(condition, a, b) chooses between values; a Boolean "
@@ -101,7 +102,7 @@ def _as_condition(e):
     logic = sp.logic.boolalg
     if isinstance(e, (sp.core.relational.Relational, logic.BooleanAtom)):
         return e
-    if type(e) is sp.Symbol or isinstance(e, _symbols.Pre):
+    if type(e) in SYMBOLS or isinstance(e, _symbols.Pre):
         typ = value_type(e.args[0] if isinstance(e, _symbols.Pre) else e)
         if typ in (bool, None):
             return sp.StrictGreaterThan(e, _HALF)
@@ -139,12 +140,12 @@ def pre(x):
 
 
 def _boolean_symbol(x) -> bool:
-    return type(x) is sp.Symbol and value_type(x) is bool
+    return type(x) in SYMBOLS and value_type(x) is bool
 
 
 def _discrete_symbol(x, what: str):
     x = _symbols.sympify_value(x)
-    if type(x) is not sp.Symbol:
+    if type(x) not in SYMBOLS:
         raise _invalid(f"{what}({_text(x)}) takes a Boolean or Integer variable (its value "
                        "before the event is kept), not an expression")
     return x

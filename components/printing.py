@@ -8,6 +8,8 @@ from sympy import S
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
+from .realsymbol import SYMBOLS
+
 __all__ = ["text"]
 
 
@@ -27,7 +29,7 @@ class _TextPrinter(StrPrinter):
     """
 
     def _print(self, expr, **kwargs) -> str:
-        if type(expr) is sp.Symbol:      # what the dispatch would find: _print_Symbol
+        if type(expr) in SYMBOLS:      # what the dispatch would find: _print_Symbol
             return expr.name
         return super()._print(expr, **kwargs)
 
@@ -56,7 +58,7 @@ class _TextPrinter(StrPrinter):
         a_str, b_str = [], []
         for factors, texts in ((num, a_str), (den, b_str)):
             for x in factors:
-                if type(x) is sp.Symbol:
+                if type(x) in SYMBOLS:
                     texts.append(x.name)
                     continue
                 if prec is None:
@@ -80,7 +82,7 @@ class _TextPrinter(StrPrinter):
                 sign, t = "-", t[1:]
             else:
                 sign = "+"
-            plain = type(term) is sp.Symbol or (term.is_Mul and prec <= PREC_ADD)
+            plain = type(term) in SYMBOLS or (term.is_Mul and prec <= PREC_ADD)
             if not plain and (precedence(term) < prec or term.is_Add):
                 out += [sign, f"({t})"]
             else:
@@ -119,9 +121,9 @@ def _lex_ordered_terms(args):
         powers = []
         if rest is not S.One:
             for f in (rest.args if rest.is_Mul else (rest,)):
-                if type(f) is sp.Symbol and f.is_commutative:
+                if type(f) in SYMBOLS and f.is_commutative:
                     powers.append((f, 1))
-                elif (f.is_Pow and type(f.base) is sp.Symbol and f.base.is_commutative
+                elif (f.is_Pow and type(f.base) in SYMBOLS and f.base.is_commutative
                       and f.exp.is_Integer):
                     powers.append((f.base, int(f.exp)))
                 else:
@@ -162,9 +164,9 @@ def _ordered_factors(expr):
         c, sign = -c, "-"
     named, add, fn = [], None, None
     for f in (e.args if e.is_Mul else (e,)):
-        if type(f) is sp.Symbol:
+        if type(f) in SYMBOLS:
             named.append((f.name, f))
-        elif f.is_Pow and type(f.base) is sp.Symbol and f.exp.is_Integer:
+        elif f.is_Pow and type(f.base) in SYMBOLS and f.exp.is_Integer:
             named.append((f.base.name, f))
         elif f.is_Add and add is None:
             add = f

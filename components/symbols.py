@@ -21,6 +21,7 @@ from sympy.core.parameters import global_parameters
 
 from .ifexpr import unfolded_condition
 from .printing import text
+from .realsymbol import SYMBOLS
 from ..errors import InvalidEquation
 
 __all__ = ["time", "der", "Eq", "Equation", "if_else", "sign", "no_event", "delay",
@@ -35,9 +36,10 @@ class der(sp.Function):
     """Time derivative: der(x) = dx/dt (of an array: the array of the derivatives)."""
 
     nargs = 1
+    time_derivative = True      # realsymbol.Symbol builds ``c*der(x)`` directly
 
     def __new__(cls, *args, **options):
-        if len(args) == 1 and type(args[0]) is sp.Symbol and cls is der and not options \
+        if len(args) == 1 and type(args[0]) in SYMBOLS and cls is der and not options \
                 and global_parameters.evaluate:
             # der(x) of a symbol, most of a model's der() calls: the object Function's
             # constructor builds (der has no eval, a symbol nothing to evalf), without
@@ -179,7 +181,7 @@ def _text(value) -> str:
 def _side(value, lhs, rhs) -> sp.Expr:
     """One side of an equation: a finite value; a condition (the value of a Boolean
     variable, ``ac.Eq(self.y, self.u > 1)``) is its value 1 or 0."""
-    if type(value) is sp.Symbol:          # a variable: a value, finite
+    if type(value) in SYMBOLS:          # a variable: a value, finite
         return value
     # Eq(0, ...), written for every balance, without sympify
     expr = S.Zero if type(value) is int and value == 0 else sympify_value(value)

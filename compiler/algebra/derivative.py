@@ -13,6 +13,7 @@ from functools import cmp_to_key, lru_cache
 
 import sympy as sp
 
+from ...components.realsymbol import SYMBOLS
 from .dag import DEEP, depth, postorder
 from .substitution import Fallback, assemble_sum
 
@@ -28,7 +29,7 @@ def partial(expr: sp.Expr, x: sp.Symbol) -> sp.Expr:
     """d expr / d x."""
     if x not in _symbols(expr):
         return sp.S.Zero
-    if expr is x or (type(expr) is sp.Symbol and expr == x):
+    if expr is x or (type(expr) in SYMBOLS and expr == x):
         return sp.S.One
     if depth(expr) > DEEP:
         return dag_partial(expr, x)    # the walk below recurses as deep as expr is
@@ -158,7 +159,7 @@ def simple_partials(expr, wanted) -> dict | None:
 
 
 def _simple_partials(expr, wanted) -> dict | None:
-    if type(expr) is sp.Symbol:
+    if type(expr) in SYMBOLS:
         return {x: sp.S.One for x in wanted}          # wanted is [expr]
     if type(expr) is not sp.Mul or len(expr.args) != 2:
         return None
@@ -166,10 +167,10 @@ def _simple_partials(expr, wanted) -> dict | None:
     if a is sp.S.NegativeOne and type(b) is sp.Add:
         signs = {}
         for t in b.args:
-            if type(t) is sp.Symbol:
+            if type(t) in SYMBOLS:
                 signs[t] = sp.S.NegativeOne           # d/dt of -(... + t ...)
             elif (type(t) is sp.Mul and len(t.args) == 2 and t.args[0] is sp.S.NegativeOne
-                  and type(t.args[1]) is sp.Symbol):
+                  and type(t.args[1]) in SYMBOLS):
                 signs[t.args[1]] = sp.S.One           # d/dt of -(... - t ...)
             else:
                 return None
@@ -272,7 +273,7 @@ def _negated(t):
         else:
             out = sp.Mul(k, *others, evaluate=False)
         return _checked(out, -t if _CHECK else None)
-    if type(t) is sp.Symbol:
+    if type(t) in SYMBOLS:
         return _checked(sp.Mul(sp.S.NegativeOne, t, evaluate=False),
                         -t if _CHECK else None)
     return -t
@@ -282,7 +283,7 @@ def _negated_sum_over(rest, c):
     """-(sum of rest) / c for a symbol c, as sympy builds it: the sum with every term
     negated (sympy distributes -1 over it), times c**-1, the two factors in sympy's
     order; sympy's own arithmetic where a term is not a plain product."""
-    if type(c) is not sp.Symbol or not c.is_commutative:
+    if type(c) not in SYMBOLS or not c.is_commutative:
         return -sp.Add(*rest, evaluate=False) / c
     negated = [_negated(t) for t in rest]
     if any(t.is_Add or t.is_Number for t in negated):
@@ -302,12 +303,12 @@ def _quotient(t, c):
     """t / c, as sympy builds it; for a symbol c and a product of a number and symbols
     other than c (``L.v / L.L``) directly: the factors and c**-1 in sympy's order,
     the number first (there is nothing to combine)."""
-    if type(c) is not sp.Symbol or not c.is_commutative:
+    if type(c) not in SYMBOLS or not c.is_commutative:
         return t / c
-    if type(t) is sp.Symbol:
+    if type(t) in SYMBOLS:
         k, factors = None, [t]
-    elif type(t) is sp.Mul and all(type(f) is sp.Symbol for f in t.args[1:]) \
-            and (type(t.args[0]) is sp.Symbol or t.args[0].is_Number):
+    elif type(t) is sp.Mul and all(type(f) in SYMBOLS for f in t.args[1:]) \
+            and (type(t.args[0]) in SYMBOLS or t.args[0].is_Number):
         k = t.args[0] if t.args[0].is_Number else None
         factors = list(t.args[1:] if k is not None else t.args)
     else:

@@ -25,15 +25,16 @@ import sympy as sp
 from sympy.calculus.accumulationbounds import AccumBounds
 from sympy.tensor.tensor import TensExpr
 
+from ...components.realsymbol import SYMBOLS, Symbol
 from ...components.symbols import has_atom_in
-from .dag import DEEP, depth, xreplace
+from .dag import DEEP, xreplace
 
 __all__ = ["fast_xreplace", "fast_difference", "has_undefined", "sort_args", "negated",
            "forget_negated",
            "assemble_sum", "Fallback"]
 
 _ONE, _ZERO, _MINUS = sp.S.One, sp.S.Zero, sp.S.NegativeOne
-_Symbol, _Add, _Mul = sp.Symbol, sp.Add, sp.Mul
+_Add, _Mul = sp.Add, sp.Mul
 _Rational = sp.Rational
 _CANONICAL = cmp_to_key(sp.Basic.compare)     # the order of a sum's or product's arguments
 _CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
@@ -47,10 +48,9 @@ def fast_xreplace(expr, mapping: dict):
     """``expr.xreplace(mapping)`` (the same expression), faster on sums and products."""
     if not mapping:
         return expr
-    if depth(expr) > DEEP:
-        return xreplace(expr, mapping)       # the fast path recurses as deep as expr is
     try:
-        out = _sub(expr, mapping)
+        # the fast path recurses as deep as expr is: below DEEP levels, or it falls back
+        out = _sub(expr, mapping, 0)
     except Fallback:
         return xreplace(expr, mapping)
     if _CHECK:
@@ -80,17 +80,19 @@ def _contains_key(e, mapping) -> bool:
     return False
 
 
-def _sub(e, mapping):
+def _sub(e, mapping, level=0):
     v = mapping.get(e)
     if v is not None:
         return v
     if e.is_Atom:
         return e
+    if level > DEEP:
+        raise Fallback          # xreplace walks deep expressions without recursion
     t = type(e)
     if t is _Add:
-        return _sum(e, mapping)
+        return _sum(e, mapping, level + 1)
     if t is _Mul:
-        return _product(e, mapping)
+        return _product(e, mapping, level + 1)
     if _contains_key(e, mapping):
         raise Fallback
     return e
@@ -101,6 +103,8 @@ def negated(q) -> sp.Expr:
     per compile: the same node serves every sum it is a term of (a port's voltage is
     negated in its element's equation, in the connection's, and where an alias stands
     for it), so that look-ups of it find it by identity, not by comparing two copies."""
+    if type(q) is Symbol:
+        return q.negative()              # kept with the symbol
     out = _NEGATED.get(q)
     if out is None:
         out = _NEGATED[q] = _Mul(_MINUS, q, evaluate=False)
@@ -124,7 +128,9 @@ _FACT_SETS: dict = {}
 def _facts(q):
     """The assumptions of the symbol ``q`` as one shared object per distinct set, so
     that two symbols' are compared by identity (``assumptions0`` makes a new dict each
-    time it is read)."""
+    time it is read).  A model's symbols are all real (:class:`Symbol`)."""
+    if type(q) is Symbol:
+        return _REAL
     out = _FACTS.get(q)
     if out is None:
         items = frozenset(q.assumptions0.items())
@@ -132,17 +138,21 @@ def _facts(q):
     return out
 
 
+_REAL = frozenset(Symbol("x").assumptions0.items())
+_FACT_SETS[_REAL] = _REAL
+
+
 def _signed_symbol(v):
     """(sign, symbol) of a value that is a commutative symbol or its negative; else None."""
-    if type(v) is _Symbol:
+    if type(v) in SYMBOLS:
         return (1, v) if v.is_commutative else None
     if type(v) is _Mul and len(v.args) == 2 and v.args[0] is _MINUS \
-            and type(v.args[1]) is _Symbol and v.args[1].is_commutative:
+            and type(v.args[1]) in SYMBOLS and v.args[1].is_commutative:
         return -1, v.args[1]
     return None
 
 
-def _product(e, mapping):
+def _product(e, mapping, level):
     """A product whose changed factors are +-symbols, 0 or rational numbers: the sign and
     the numbers into the coefficient, the factors re-sorted, 0 if a factor became 0; a new factor whose base another
     factor shares (x*x) falls back, as does a coefficient with a sum left to distribute
@@ -169,7 +179,7 @@ def _product(e, mapping):
         if f.is_Atom:
             factors.append(f)
             continue
-        g = _sub(f, mapping)
+        g = _sub(f, mapping, level)
         if g is _ZERO:
             zero = changed = True
             continue
@@ -212,7 +222,7 @@ def _product(e, mapping):
             raise Fallback
     if coeff is not None and any(f.is_Add for f in factors):
         raise Fallback
-    if coeff is _MINUS and len(factors) == 1 and type(factors[0]) is _Symbol:
+    if coeff is _MINUS and len(factors) == 1 and type(factors[0]) in SYMBOLS:
         return negated(factors[0])
     sort_args(factors)
     if coeff is not None:
@@ -222,13 +232,13 @@ def _product(e, mapping):
     return _Mul(*factors, evaluate=False)
 
 
-def _sum(e, mapping):
+def _sum(e, mapping, level):
     """A sum: each term substituted, terms with equal non-numeric parts combined (rational
     coefficients only), zeros dropped, sympy's order, the number first."""
     args = e.args
     new_args, changed = [], False
     for a in args:
-        b = _sub(a, mapping)
+        b = _sub(a, mapping, level)
         if b is not a:
             changed = True
         new_args.append(b)
@@ -264,7 +274,7 @@ def _unusual(t) -> bool:
             or (t.is_Pow and t.base.is_Number))
 
 
-_USUAL = {sp.Symbol, sp.Mul}     # term classes known not to be _unusual (Mul: its factors
+_USUAL = SYMBOLS | {sp.Mul}     # term classes known not to be _unusual (Mul: its factors
                                  # are checked where they are combined)
 
 
@@ -352,11 +362,11 @@ def _plain_keys(seq):
     keys, facts = [], None
     for t in seq:
         kind = type(t)
-        if kind is _Symbol:
+        if kind in SYMBOLS:
             key, q = (0, t.name), t
         elif kind is _Mul:
             args = t.args
-            if len(args) != 2 or args[0] is not _MINUS or type(args[1]) is not _Symbol:
+            if len(args) != 2 or args[0] is not _MINUS or type(args[1]) not in SYMBOLS:
                 return None
             q = args[1]
             key = (1, q.name)

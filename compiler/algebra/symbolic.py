@@ -19,6 +19,7 @@ from functools import lru_cache, partial as bound
 
 import sympy as sp
 
+from ...components.realsymbol import SYMBOLS
 from ...components.symbols import der, time
 from .dag import depth
 from .derivative import forget_partials, partial, symbol_nodes, terms_with
@@ -262,7 +263,7 @@ def _factor_kind(t, s, parameters: set) -> int | None:
     for f in t.args:
         if f is s:
             found = True
-        elif type(f) is sp.Symbol:
+        elif type(f) in SYMBOLS:
             if f == s:
                 return None         # an equal symbol of another object: sympy decides
             kind = max(kind, LINEAR_PARAM if f in parameters else LINEAR_VAR)
@@ -347,7 +348,7 @@ _MINUS = sp.S.NegativeOne
 
 def _plain_term(t) -> bool:
     """A symbol, or der() of a symbol."""
-    return type(t) is sp.Symbol or (type(t) is der and type(t.args[0]) is sp.Symbol)
+    return type(t) in SYMBOLS or (type(t) is der and type(t.args[0]) in SYMBOLS)
 
 
 def signed_terms(side, sign: int, coeffs: dict) -> bool:

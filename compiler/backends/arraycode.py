@@ -37,6 +37,7 @@ import sympy as sp
 from sympy.core.relational import Relational
 from sympy.logic.boolalg import ITE, And, BooleanFalse, BooleanTrue, Not, Or
 
+from ...components.realsymbol import SYMBOLS
 from .codegen import _negate
 from .emit import _FUNCS, Emitter
 from .lazycode import install_array_code
@@ -105,7 +106,7 @@ def _shape(e, refs, leafidx, leaves) -> str:
 
 
 def _expr_statement(target, e, refs) -> _Statement:
-    if type(e) is sp.Symbol:      # a copy of a value (most outputs of expand)
+    if type(e) in SYMBOLS:      # a copy of a value (most outputs of expand)
         where = refs.get(e)
         if where is None:
             raise _Unsupported(f"unknown symbol {e}")

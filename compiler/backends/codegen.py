@@ -31,6 +31,7 @@ import numpy as np
 import sympy as sp
 
 from ...components.ifexpr import IfExpr
+from ...components.realsymbol import SYMBOLS
 from ...components.symbols import no_event, time
 from ..algebra.dag import transform, tree_size, xreplace
 from ..algebra.derivative import partial as _partial
@@ -286,7 +287,7 @@ class Program:
 
     def _direct(self, e):
         refs = self.refs
-        if type(e) is sp.Symbol:        # an output that is a variable (expand)
+        if type(e) in SYMBOLS:        # an output that is a variable (expand)
             w = refs.get(e)
             return [w[1]] if w is not None and w[0] == "a" else []
         return [refs[q][1] for q in symbols_of(e) if refs.get(q, ("",))[0] == "a"]

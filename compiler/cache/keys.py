@@ -161,6 +161,7 @@ def _key_text():
     walked by recursion up to a depth of 100."""
     import sympy as sp
 
+    from ...components.realsymbol import SYMBOLS
     from ..algebra.symbolic import ExactText
 
     class KeyText(ExactText):
@@ -215,7 +216,7 @@ def _key_text():
             return out
 
         def _atom(self, node) -> str:
-            if type(node) is not sp.Symbol:
+            if type(node) not in SYMBOLS:
                 return super()._atom(node)
             key = tuple(sorted(node.assumptions0.items()))
             facts = self.facts.get(key)

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field, replace
 
 import sympy as sp
 
+from ...components.realsymbol import SYMBOLS
 from ...components.symbols import Assign, Reinit, When
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
@@ -170,7 +171,7 @@ def _signed(sign, expr):
     if sign == 1:
         return expr
     if sign == -1:
-        return negated(expr) if type(expr) is sp.Symbol else -expr
+        return negated(expr) if type(expr) in SYMBOLS else -expr
     return sign * expr
 
 
@@ -263,16 +264,16 @@ def _plain_alias(residual: sp.Expr, info):
     """The pattern of the residuals connections make, read off their arguments: ``x``
     (x = 0) and ``+-a +- b``; None for anything else (which takes the general path,
     with the same result for these)."""
-    if type(residual) is sp.Symbol:
+    if type(residual) in SYMBOLS:
         return ("const", residual, None, sp.S.Zero) if residual in info else None
     if not residual.is_Add or len(residual.args) != 2:
         return None
     signs = {}
     for t in residual.args:
-        if type(t) is sp.Symbol and t in info:
+        if type(t) in SYMBOLS and t in info:
             signs[t] = 1
         elif (t.is_Mul and len(t.args) == 2 and t.args[0] is sp.S.NegativeOne
-              and type(t.args[1]) is sp.Symbol and t.args[1] in info):
+              and type(t.args[1]) in SYMBOLS and t.args[1] in info):
             signs[t.args[1]] = -1
         else:
             return None

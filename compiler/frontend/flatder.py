@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from ...components.realsymbol import SYMBOLS
 from ...components.symbols import der, time
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace
@@ -80,7 +81,7 @@ def _all_ders(expr) -> list:
 def check_der_arguments(eq, var_syms: set) -> None:
     """der() of something that cannot vary (a number, a parameter) is always zero: the
     argument was meant to be a variable."""
-    if all(type(d.args[0]) is sp.Symbol and d.args[0] in var_syms
+    if all(type(d.args[0]) in SYMBOLS and d.args[0] in var_syms
            for d in _all_ders(eq.residual)):
         return      # der(x) of variables only (sorting the der() atoms is for the error)
     for d in sorted(eq.residual.atoms(der), key=sp.default_sort_key):

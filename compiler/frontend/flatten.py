@@ -25,6 +25,7 @@ from ...components.declarations import Parameter, bound_violation
 from ...components.expandable import drop_bus_members, resolve_buses
 from ...components.initparams import parameter_start
 from ...components.logic import INITIAL
+from ...components.realsymbol import SYMBOLS
 from ...components.portgroups import expand_connection, port_owner
 from ...components.symbols import Equation, When, der, time
 from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
@@ -180,7 +181,7 @@ def _flat_equation(eq: Equation, comp: Component, kind: str, with_der: set) -> F
         residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
         ders = has_der(residual)
     out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
-    if type(eq.lhs) is sp.Symbol:
+    if type(eq.lhs) in SYMBOLS:
         out.defines = eq.lhs
     if plain:
         out.plain = residual
@@ -273,13 +274,13 @@ def _node_equations(members: list, connections: list) -> list:
         for p, _ in members[1:]:
             b = getattr(p, name)
             diff = signed_sum({a: 1, b: -1}) if a != b else a - b
-            plain = a != b and type(a) is sp.Symbol and type(b) is sp.Symbol
+            plain = a != b and type(a) in SYMBOLS and type(b) in SYMBOLS
             eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect",
                                     plain=diff if plain else None))
     for name in first.through():
         signed = [(getattr(p, name), 1 if role == "inside" else -1) for p, role in members]
         coeffs = dict(signed)
-        plain = len(coeffs) == len(signed) and all(type(q) is sp.Symbol for q in coeffs)
+        plain = len(coeffs) == len(signed) and all(type(q) in SYMBOLS for q in coeffs)
         total = signed_sum(coeffs) if plain else sp.Add(*[c * q for q, c in signed])
         eqs.append(FlatEquation(total, total, where, "connect", "connect",
                                 plain=total if plain else None))

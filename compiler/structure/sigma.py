@@ -83,11 +83,15 @@ def signature_matrix(s: Structure, sparse: bool = False) -> tuple:
     base = base_variables(s)
     columns = sorted({base[v] for v in range(s.n_vars)})
     col = {b: j for j, b in enumerate(columns)}
+    column = [col[base[v]] for v in range(s.n_vars)]
+    order = [s.order(v) for v in range(s.n_vars)]      # once per variable, not per entry
     entries = {}
     for e, vs in enumerate(s.graph):
         for v in vs:
-            key = (e, col[base[v]])
-            entries[key] = max(entries.get(key, 0), s.order(v))
+            key = (e, column[v])
+            k = order[v]
+            if k > entries.get(key, -1):
+                entries[key] = k
     if sparse:
         return entries, columns
     sigma = np.full((s.n_eqs, len(columns)), -np.inf)

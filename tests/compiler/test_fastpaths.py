@@ -86,15 +86,42 @@ def test_partial_of_a_product_is_sympys(e):
     assert sp.srepr(d) == sp.srepr(sp.diff(e, x))
 
 
-def test_a_variable_symbol_is_the_symbol_sympy_makes():
-    """real_symbol(name) is sympy's own Symbol(name, real=True), made by sympy's public
-    constructor: the same object, hash, text and facts, and it pickles as itself."""
-    from acausal.components.realsymbol import real_symbol
-    a = real_symbol("R1.v")
-    assert type(a) is sp.Symbol and a is sp.Symbol("R1.v", real=True)
-    assert a.assumptions0 == sp.Symbol("R1.v", real=True).assumptions0
-    assert (a**2).is_nonnegative and a.is_positive is None and a.is_real
-    assert pickle.loads(pickle.dumps(a)) == a
+def test_a_variable_symbol_is_real_and_equal_to_sympys_symbol():
+    """real_symbol(name) is of acausal's own class, named Symbol: real, and equal to
+    sympy's Symbol(name, real=True) both ways, with one hash, text and order, so that a
+    user's own symbol finds it (==, dict keys, subs, xreplace, diff, solve); it pickles
+    as itself.  Its sums, differences and products with another of its class, and with
+    der() of one, are the expressions sympy's own arithmetic builds."""
+    from acausal.components.realsymbol import Symbol, real_symbol
+    from acausal.components.symbols import der
+    a, b, c = real_symbol("R1.v"), real_symbol("C1.i"), real_symbol("C1.C")
+    plain, other = sp.Symbol("R1.v", real=True), sp.Symbol("C1.i", real=True)
+    assert type(a) is Symbol and isinstance(a, sp.Symbol) and type(a).__name__ == "Symbol"
+    assert a == plain and plain == a and not a != plain and not plain != a
+    assert hash(a) == hash(plain) and {plain: 1}[a] == 1 and {a: 1}[plain] == 1
+    assert a != sp.Symbol("R1.v") and sp.Symbol("R1.v") != a       # not real: another
+    assert sp.srepr(a) == sp.srepr(plain) and str(a) == "R1.v"
+    assert sp.default_sort_key(a) == sp.default_sort_key(plain) and a.compare(plain) == 0
+    assert a.is_real and (a**2).is_nonnegative and a.is_positive is None
+    assert Symbol("x") is Symbol("x", real=True)          # always real: one per name
+    r = pickle.loads(pickle.dumps(a))
+    assert type(r) is Symbol and r == a
+    e = 3 * a + a * b + sp.sin(a)
+    assert e.subs(plain, 2) == 2 * b + sp.sin(2) + 6
+    assert e.subs({plain: 2, other: 3}) == sp.sin(2) + 12
+    assert e.xreplace({plain: 2}) == 2 * b + sp.sin(2) + 6
+    assert sp.diff(e, plain) == b + sp.cos(a) + 3 and plain in e.free_symbols
+    assert sp.solve(2 * a - 4, plain) == [2]
+    for x, y in ((a, b), (b, a), (c, b), (a, a)):
+        for op in ("__add__", "__sub__", "__mul__"):
+            built, ref = getattr(x, op)(y), getattr(sp.Expr, op)(x, y)
+            assert built == ref and sp.srepr(built) == sp.srepr(ref), (op, x, y)
+    d = der(b)
+    assert c * d == sp.Expr.__mul__(c, d) and sp.srepr(c * d) == sp.srepr(sp.Expr.__mul__(c, d))
+    # mixed with sympy's own symbols (time), sympy's order and arithmetic
+    t = sp.Symbol("time", real=True)
+    assert a - t == sp.Expr.__sub__(a, t) and sp.srepr(b + t) == sp.srepr(sp.Add(b, t))
+    assert a + plain == 2 * a and a - plain == 0
 
 
 def test_simple_partials_are_the_general_partials():
