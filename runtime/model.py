@@ -520,11 +520,11 @@ class CompiledModel(DAEProblem):
         """After an event: states kept, algebraic unknowns and every z' made consistent."""
         return reinitialize(self, t, z, zp, rtol=rtol, atol=atol)
 
-    def output_point(self, t, z, rtol):
+    def output_point(self, t, z, rtol, every=False):
         """Solver contract item 17: z at an output time between steps, its algebraic
         unknowns solved from the interpolated states where the error test leaves some
         out (:func:`.initial.consistent_output`); None where that fails."""
-        if not self.uncontrolled:
+        if not (self.uncontrolled or every):
             return z
         return consistent_output(self, t, z, rtol)
 
