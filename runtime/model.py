@@ -498,6 +498,9 @@ class CompiledModel(DAEProblem):
         discrete variables start from their start values; clocks that tick at t0 fire
         once the initial values are found (:mod:`.events`); with delays, the history
         before t0 agrees with the solution at t0."""
+        # a run's values at output times start from a factorization of its own: the
+        # same run gives bitwise the same result whatever ran before
+        self._output_lu = None
         self.discrete.reset_held()
         self.discrete.set_initial(True)
         if self.whens is not None:
