@@ -86,7 +86,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              backend: str = "auto", progress: bool | None = None,
              step_loop: str = "auto", check_units: str = "warn",
              nonfinite: str = "stop", outputs=None, store=None,
-             inputs: dict | None = None, error_test: str = "auto") -> Result:
+             inputs: dict | None = None, error_test: str = "all") -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -118,9 +118,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     function of time, a table ``(times, values)`` or a ``CombiTimeTable`` (its times
     are time events); every input must be given (``ac.MissingInput`` names those that
     are not), see :mod:`acausal.runtime.inputs`.
-    ``error_test``: what the integrator's local error test covers: "auto" (the states
-    alone in a model none of whose equations was differentiated, every unknown
-    otherwise), "all" or "states" (:mod:`acausal.solvers.bdf`; ``res.stats`` says).
+    ``error_test``: what the integrator's local error test covers: "all" (every unknown)
+    or "states" (the states alone, as the state-space form; :mod:`acausal.solvers.bdf`).
     """
     check_arguments(t_end, t_start, rtol, atol, n_points)
     t_start, t_end, rtol = _time("t_start", t_start), _time("t_end", t_end), float(rtol)
@@ -130,8 +129,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         raise InvalidArgument(f"simulate: max_order must be an integer from 1 to 5, "
                               f"got {max_order!r}")
     from .solvers.driver import NONFINITE
-    if error_test not in ("auto", "all", "states"):
-        raise InvalidArgument(f"simulate: error_test must be 'auto', 'all' or 'states', "
+    if error_test not in ("all", "states"):
+        raise InvalidArgument(f"simulate: error_test must be 'all' or 'states', "
                               f"got {error_test!r}")
     if nonfinite not in NONFINITE:
         raise InvalidArgument(f"simulate: nonfinite must be one of "
@@ -154,7 +153,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         keeping = Keeping.make(compiled, outputs, store)
         return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
                     raise_on_failure, progress, step_loop, nonfinite, keeping,
-                    None if error_test == "auto" else error_test)
+                    error_test)
     finally:
         if keeping is not None:
             keeping.abandon()          # a run that raised: the file is closed

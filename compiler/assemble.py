@@ -149,8 +149,6 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
         relations, initial, report=report,
         dynamic=_dynamic(reduction, caus) if reduction.dynamic else None,
         meta={"n_all": len(syms), "causal": caus.causal,
-              # an equation differentiated: the error test covers every unknown
-              "index_reduced": any(reduction.diff_counts),
               "assigned_names": [a.name for a, _ in assigned],
               "equation_names": EquationNames(system, caus.residual_eqs),
               "structural_zeros": sorted(zeros),

@@ -95,9 +95,6 @@ class CompiledModel(DAEProblem):
         self.nominal = np.asarray(mc.nominal, dtype=float)
         # derivatives solved as unknowns, without a nominal: judged on their own motion
         self.self_scaled = np.asarray(mc.meta.get("self_scaled", [False] * self.n), bool)
-        # what the integrator's error test covers (solver contract item 6): the states
-        # alone where no equation was differentiated, every unknown otherwise
-        self.error_test = "all" if mc.meta.get("index_reduced", True) else "states"
         self.start = np.asarray(mc.start, dtype=float)
         self.outputs = mc.outputs
         self.report = mc.report

@@ -22,9 +22,7 @@ What a problem provides (numbered, so integrators can cite it)
    ``compiler/structure/causalize.py``); the error and Newton tests leave them
    out (weight 0), judging them through the unknowns they determine.
    Optional ``error_test``: ``"all"`` (the default) or ``"states"``: what the local
-   error test covers (:mod:`acausal.solvers.bdf`); a compiled model says ``"states"``
-   where no equation was differentiated (an index-1 model: every algebraic unknown a
-   function of the states), ``"all"`` otherwise.
+   error test covers unless the caller says (:mod:`acausal.solvers.bdf`).
 7. ``names``: the user's name of each y_i (for messages).
 8. Events (optional, ``n_roots > 0``): ``roots(t, y, yp) -> ndarray(n_roots)`` are the
    zero-crossing functions; while integrating, the discrete state (modes, relations) is

@@ -56,8 +56,10 @@ states need, so a test on it held the steps at 1e-14 s, order 1.  The values bet
 steps and at crossings are then solved from the interpolated states (solver contract
 item 17, :mod:`acausal.solvers.crossings`).  The index-2 and index-3 variables of a DAE
 given with them (not index reduced) belong out of the test in any case (Brenan, Campbell
-& Petzold 1996, ch. 5; Hairer & Wanner 1996, ch. VII); the driver takes the problem's
-own choice (``problem.error_test``, contract item 6).
+& Petzold 1996, ch. 5; Hairer & Wanner 1996, ch. VII).  It is not the default: an
+algebraic unknown with a high gain on a state is then only as accurate as that gain
+times the state's tolerance (measured in ``benchmarks/README.md``).  The driver takes
+the caller's choice, else the problem's (``problem.error_test``, contract item 6).
 
 A problem that changes its formulation between steps without changing the meaning of y
 (dynamic state selection: another choice of which derivatives are linked) keeps the
