@@ -86,7 +86,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
              backend: str = "auto", progress: bool | None = None,
              step_loop: str = "auto", check_units: str = "warn",
              nonfinite: str = "stop", outputs=None, store=None,
-             inputs: dict | None = None) -> Result:
+             inputs: dict | None = None, error_test: str = "all") -> Result:
     """Simulate a model (a Component, or a CompiledModel) from t_start to t_end.
 
     ``rtol``/``atol``: error tolerances (atol scaled by each variable's nominal value;
@@ -118,6 +118,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
     function of time, a table ``(times, values)`` or a ``CombiTimeTable`` (its times
     are time events); every input must be given (``ac.MissingInput`` names those that
     are not), see :mod:`acausal.runtime.inputs`.
+    ``error_test``: what the integrator's local error test covers: "all" (every unknown)
+    or "states" (the states alone, as the state-space form; :mod:`acausal.solvers.bdf`).
     """
     check_arguments(t_end, t_start, rtol, atol, n_points)
     t_start, t_end, rtol = _time("t_start", t_start), _time("t_end", t_end), float(rtol)
@@ -127,6 +129,9 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         raise InvalidArgument(f"simulate: max_order must be an integer from 1 to 5, "
                               f"got {max_order!r}")
     from .solvers.driver import NONFINITE
+    if error_test not in ("all", "states"):
+        raise InvalidArgument(f"simulate: error_test must be 'all' or 'states', "
+                              f"got {error_test!r}")
     if nonfinite not in NONFINITE:
         raise InvalidArgument(f"simulate: nonfinite must be one of "
                               f"{', '.join(map(repr, NONFINITE))}, got {nonfinite!r}")
@@ -147,7 +152,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         from .results_store import Keeping
         keeping = Keeping.make(compiled, outputs, store)
         return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
-                    raise_on_failure, progress, step_loop, nonfinite, keeping)
+                    raise_on_failure, progress, step_loop, nonfinite, keeping,
+                    error_test)
     finally:
         if keeping is not None:
             keeping.abandon()          # a run that raised: the file is closed
@@ -156,7 +162,8 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
 
 
 def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
-         raise_on_failure, progress, step_loop, nonfinite="stop", keeping=None) -> Result:
+         raise_on_failure, progress, step_loop, nonfinite="stop", keeping=None,
+         error_test=None) -> Result:
     """One run of a compiled model at its current parameter values (``keeping``: what
     it keeps, :class:`acausal.results_store.Keeping`)."""
     if keeping is None:
@@ -201,7 +208,7 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         out = integrate(compiled, (t_start, t_end), y0, yp0, rtol=rtol, atol=atol,
                         t_eval=t_eval, max_step=max_step, max_order=int(max_order),
                         initialize=False, progress=bar, step_loop=step_loop,
-                        nonfinite=nonfinite, sink=keeping.sink)
+                        nonfinite=nonfinite, sink=keeping.sink, error_test=error_test)
     except SimulationError as err:
         partial = err.partial
         start = _singular_start(compiled, t_start)

@@ -43,6 +43,7 @@ import math
 import numpy as np
 
 from ..solvers.initialization import solve_with_fallback
+from ..solvers.newton import damped_newton
 from ..solvers.linalg import DENSE_MAX, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
@@ -342,7 +343,25 @@ def consistent_output(model, t: float, z: np.ndarray, rtol: float):
         trial = z.copy()
         if _chord(model, t, trial, alg, lin, rtol):
             return trial
-    return None
+    return _damped(model, t, z, rtol)
+
+
+def _damped(model, t, z, rtol):
+    """z with its algebraic unknowns found by damped Newton from the interpolated values,
+    where the chord iteration does not converge (a steep algebraic relation, whose
+    interpolant between two long steps is far from its value); None if that fails."""
+    alg, F, J = algebraic_system(model, t, z)
+    nominal = model.nominal[alg]
+    try:
+        found = damped_newton(F, J, z[alg].copy(), tol=0.5,
+                              weights=lambda za: 1.0 / (rtol * (np.abs(za) + nominal)))
+    except (SingularMatrixError, ArithmeticError):
+        return None
+    if not found.converged:
+        return None
+    z = z.copy()
+    z[alg] = found.x
+    return z
 
 
 def _output_factor(model, t, z, alg, rtol):

@@ -21,6 +21,8 @@ What a problem provides (numbered, so integrators can cite it)
    their own (derivatives solved as unknowns, variables kept for fill by
    ``compiler/structure/causalize.py``); the error and Newton tests leave them
    out (weight 0), judging them through the unknowns they determine.
+   Optional ``error_test``: ``"all"`` (the default) or ``"states"``: what the local
+   error test covers unless the caller says (:mod:`acausal.solvers.bdf`).
 7. ``names``: the user's name of each y_i (for messages).
 8. Events (optional, ``n_roots > 0``): ``roots(t, y, yp) -> ndarray(n_roots)`` are the
    zero-crossing functions; while integrating, the discrete state (modes, relations) is
@@ -87,10 +89,12 @@ What a problem provides (numbered, so integrators can cite it)
    with every output point (``SolverOutput.point_values``, one row per point): the
    delayed values, which results need after the history is gone.
 
-17. ``output_point(t, y, rtol) -> y | None`` (optional): y at a requested output time
-   that falls between steps, given its interpolated value; the problem may solve
-   components the error test does not bound between steps (item 6) from its
-   equations.  None: it could not, the interpolated value is kept and counted
+17. ``output_point(t, y, rtol, every=False) -> y | None`` (optional): y at a requested
+   output time that falls between steps, given its interpolated value; the problem may
+   solve components the error test does not bound between steps (item 6) from its
+   equations, and with ``every`` (the error test leaves algebraic components out:
+   ``error_test="states"``, or a recovery, :mod:`.recovery`) it solves every algebraic
+   one.  The driver also locates crossings on such values.  None: it could not, the interpolated value is kept and counted
    (``SolverStats.interpolated_outputs``).
 18. ``loop_model() -> LoopModel | None`` (optional): a model whose residual, Jacobian
    and zero-crossing functions are generated gives their layout (:class:`LoopModel`),
@@ -243,6 +247,7 @@ class SolverStats:
     relaxed_components: int = 0     # algebraic components the driver took out of the
                                     # error test to recover a step (solvers/recovery.py)
     forced_steps: int = 0           # steps accepted without the error test (the same)
+    error_test: str = ""            # what the error test covered: "all" or "states"
 
     def as_dict(self) -> dict:
         return dict(self.__dict__)

@@ -51,6 +51,19 @@ class EventHandling:
         self.sign_ref = np.ones_like(g0) if self.oriented else np.sign(g0)
         self.g_prev = g0
 
+    def _interpolated(self, t):
+        """y, y' at ``t`` inside the last step: the interpolant, its algebraic
+        unknowns solved from the interpolated states where the error test leaves them
+        out (their interpolant is not bounded: solver contract item 17), as a crossing
+        of a function of them is located on their values, not on their interpolant."""
+        s = self.solver
+        y, yp = s.interpolate(t)
+        if self.output_point is not None and s.self_scaled.any():
+            z = self.output_point(float(t), y, self.rtol, every=True)
+            if z is not None:
+                y = z
+        return y, yp
+
     def _ttol(self, t: float) -> float:
         return max(_ROOT_RTOL * max(abs(t), self.span), 4 * np.finfo(float).eps * abs(t))
 
@@ -82,7 +95,7 @@ class EventHandling:
             frac = np.where(crossed, -shi / np.maximum(alph * slo - shi, 1e-300), -1.0)
             tmid = thi - (thi - tlo) * frac.max()
             tmid = min(max(tmid, tlo + 0.5 * ttol), thi - 0.5 * ttol)
-            smid = self._signed_roots(tmid, *s.interpolate(tmid)) * ref
+            smid = self._signed_roots(tmid, *self._interpolated(tmid)) * ref
             sideprev = side
             if np.any(armed & (smid <= 0)):
                 thi, shi, side = tmid, smid, 1
@@ -94,7 +107,7 @@ class EventHandling:
     # ------------------------------------------------------------------ events
     def _state_event(self, t_e, crossed):
         s = self.solver
-        y, yp = s.interpolate(t_e)
+        y, yp = self._interpolated(t_e)
         t_prev = s.t_prev
         if self.commit is not None:          # the solution up to the event, old modes
             self.commit(t_prev, t_e, s.interpolate, rtol=self.rtol)

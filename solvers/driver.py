@@ -63,7 +63,8 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
               max_steps: int = 500000, initialize: bool = True,
               max_event_iterations: int = 20, max_order: int = 5,
               stald: bool = False, progress=None, step_loop: str = "auto",
-              nonfinite: str = "stop", sink=None) -> SolverOutput:
+              nonfinite: str = "stop", sink=None, error_test: str | None = None
+              ) -> SolverOutput:
     """Integrate the DAE ``problem`` over ``t_span`` with the variable-order BDF.
 
     Parameters
@@ -87,6 +88,10 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
         Initial step (None: IDA's heuristic).
     suppress_alg : bool
         Leave algebraic variables out of the local error test.
+    error_test : {"all", "states"} or None
+        What the local error test covers (:mod:`acausal.solvers.bdf`); None: the
+        problem's ``error_test`` (contract item 6), else "all".  ``stats.error_test``
+        says which ran.
     max_steps : int
         Limit on accepted steps.
     initialize : bool
@@ -142,7 +147,8 @@ def integrate(problem: DAEProblem, t_span, y0, yp0=None, *, rtol: float = 1e-6,
                max_event_iterations)
     run.nonfinite = nonfinite
     run.sink = sink
-    run.bdf_options = {"max_order": max_order, "stald": stald}
+    run.bdf_options = {"max_order": max_order, "stald": stald,
+                       "error_test": error_test or getattr(problem, "error_test", "all")}
     run.mode = choose_step_loop(problem, step_loop, stald)
     run.progress = progress
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -223,6 +229,7 @@ class _Run(EventHandling):
             self.solver = CompiledBDF(p, self.t0, y, yp, mode=self.mode, **options)
             self.stats.step_loop = "c"
             advance = self._advance_compiled
+        self.stats.error_test = self.solver.error_test
         tick = self.progress
         while self.solver.t < self.tf:
             stop = advance()
@@ -389,7 +396,8 @@ class _Run(EventHandling):
         """y at an output time between steps, as the problem completes it (item 17)."""
         if self.output_point is None:
             return y
-        z = self.output_point(float(t), y, self.rtol)
+        z = self.output_point(float(t), y, self.rtol,
+                              every=bool(self.solver.self_scaled.any()))
         if z is None:
             self.stats.interpolated_outputs += 1
             return y
