@@ -48,3 +48,17 @@ def test_a_case_is_the_same_whatever_ran_before():
     b, ref_b, _ = hybrid_case(3, 7)
     assert a.describe() == b.describe() and ref_a.events == ref_b.events
     assert HYBRID_CYCLE[7] == a.kind
+
+
+def test_the_harness_sees_a_wrong_model():
+    """The comparison is not vacuous: a rectifier whose model has another load than its
+    reference is classified wrong (and an unchanged one ok)."""
+    from dataclasses import replace
+
+    from .hybrid_circuits import _rectifier_model
+    from .hybrid_harness import run_hybrid
+    case, ref, _ = hybrid_case(0, 0)
+    assert run_hybrid(case, ref)["category"] == "ok"
+    other = dict(case.params, Rl=case.params["Rl"] * 1.01)
+    out = run_hybrid(replace(case, build=lambda: _rectifier_model(other)), ref)
+    assert out["category"] == "wrong", out
