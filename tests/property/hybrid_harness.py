@@ -19,7 +19,9 @@ what a wrong mode, event or equation produces (O(1)).  Points within 1e-6 of the
 span of a switching of the reference are not compared (a discontinuous signal there
 is the jump itself).  A signal's size is its amplitude in the reference, at least 1e-3
 of the largest signal of its kind (the leakage current Goff v of a blocking diode beside
-the load current).  The energy balance is integrated from the result by the
+the load current), and at least 100 ATOL / TOL (the speed of a mass stuck throughout is
+0 in the reference and round-off in acausal: the integrator controls nothing below its
+absolute tolerance).  The energy balance is integrated from the result by the
 trapezoidal rule on the integrator's own steps (which follow every transient) and 16016
 points between them (64064 where that misses) and either side of every switching of the
 reference, and ENERGY_TOL = 1e-3 of the largest of
@@ -81,7 +83,7 @@ def _sizes(case: HybridCase, want: dict) -> dict:
     peers: dict = {}
     for name, kind in case.signals.items():
         peers[kind] = max(peers.get(kind, 0.0), float(np.max(np.abs(want[name]))))
-    return {name: max(float(np.max(np.abs(want[name]))), 1e-3 * peers[kind], 1e-300)
+    return {name: max(float(np.max(np.abs(want[name]))), 1e-3 * peers[kind], 100 * ATOL / TOL)
             for name, kind in case.signals.items()}
 
 
