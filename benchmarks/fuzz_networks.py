@@ -142,6 +142,18 @@ def _single(args):
         print(f"outcome: {again.category}  {again.detail}")
 
 
+def _reporter(seed, results, t0, every):
+    """Collects each outcome, prints the ones not OK at once and the progress."""
+    def report(r):
+        results.append(r)
+        if r["category"] not in ("ok", "rejected"):
+            print(f"--seed {seed} --case {r['n']:<4d} [{r['strategy']}] {r['category']}: "
+                  f"{r['detail'][:240]}", flush=True)
+        if len(results) % every == 0:
+            print(f"... {len(results)} cases, {time.perf_counter() - t0:.0f} s", flush=True)
+    return report
+
+
 def _hybrid(args):
     from acausal.tests.property.hybrid_harness import (HYBRID_CATEGORIES, HYBRID_CYCLE,
                                                        HybridPool, evaluate)
@@ -151,15 +163,7 @@ def _hybrid(args):
             print(f"{key}: {value}")
         return 0
     results, t0 = [], time.perf_counter()
-
-    def report(r):
-        results.append(r)
-        if r["category"] not in ("ok", "rejected"):
-            print(f"--seed {args.seed} --case {r['n']:<4d} [{r['strategy']}] {r['category']}: "
-                  f"{r['detail'][:240]}", flush=True)
-        if len(results) % 100 == 0:
-            print(f"... {len(results)} cases, {time.perf_counter() - t0:.0f} s", flush=True)
-
+    report = _reporter(args.seed, results, t0, 100)
     with HybridPool(args.jobs, args.limit) as pool:
         pool.run(args.seed, range(args.cases), report)
     counts = Counter(r["category"] for r in results)
@@ -198,15 +202,7 @@ def main(argv=None):
         _single(args)
         return 0
     results, t0 = [], time.perf_counter()
-
-    def report(r):
-        results.append(r)
-        if r["category"] not in ("ok", "rejected"):
-            print(f"--seed {args.seed} --case {r['n']:<4d} [{r['strategy']}] {r['category']}: "
-                  f"{r['detail'][:240]}", flush=True)
-        if len(results) % 50 == 0:
-            print(f"... {len(results)} cases, {time.perf_counter() - t0:.0f} s", flush=True)
-
+    report = _reporter(args.seed, results, t0, 50)
     pool = _Pool(args.jobs, args.seed, args.limit)
     try:
         pool.run(range(args.cases), report)
