@@ -16,6 +16,14 @@ Usage::
     python benchmarks/fuzz_networks.py --cases 200 --jobs 2
     python benchmarks/fuzz_networks.py --case 17          # one case: netlist, model, outcome
     python benchmarks/fuzz_networks.py --case 17 --shrink # ... and the smallest that fails alike
+    python benchmarks/fuzz_networks.py --hybrid --n 1000 --seed 0   # hybrid models
+    python benchmarks/fuzz_networks.py --hybrid --case 17           # one, verbosely
+
+``--hybrid``: random hybrid and nonlinear models (ideal diodes and switches driven by
+time and by a capacitor voltage, Coulomb and Karnopp friction, limiters and dead zones
+in a loop, nonlinear conductors and springs, hydraulic orifices between volumes, inline
+expressions of random depth) against hand-written mode-by-mode references, each in a
+spawned worker under a wall-time cap; see ``tests/property/hybrid_harness.py``.
 """
 from __future__ import annotations
 
@@ -25,6 +33,8 @@ import sys
 import time
 import traceback
 from collections import Counter
+
+import numpy as np
 
 from acausal.tests.property.harness import CATEGORIES, make_case, run_case
 from acausal.tests.property.netlists import SeededChooser, to_source
@@ -132,28 +142,67 @@ def _single(args):
         print(f"outcome: {again.category}  {again.detail}")
 
 
+def _reporter(seed, results, t0, every):
+    """Collects each outcome, prints the ones not OK at once and the progress."""
+    def report(r):
+        results.append(r)
+        if r["category"] not in ("ok", "rejected"):
+            print(f"--seed {seed} --case {r['n']:<4d} [{r['strategy']}] {r['category']}: "
+                  f"{r['detail'][:240]}", flush=True)
+        if len(results) % every == 0:
+            print(f"... {len(results)} cases, {time.perf_counter() - t0:.0f} s", flush=True)
+    return report
+
+
+def _hybrid(args):
+    from acausal.tests.property.hybrid_harness import (HYBRID_CATEGORIES, HYBRID_CYCLE,
+                                                       HybridPool, evaluate)
+    if args.case is not None:
+        r = evaluate(args.seed, args.case)
+        for key, value in r.items():
+            print(f"{key}: {value}")
+        return 0
+    results, t0 = [], time.perf_counter()
+    report = _reporter(args.seed, results, t0, 100)
+    with HybridPool(args.jobs, args.limit) as pool:
+        pool.run(args.seed, range(args.cases), report)
+    counts = Counter(r["category"] for r in results)
+    print(f"\n{len(results)} hybrid models, seed {args.seed}, "
+          f"{time.perf_counter() - t0:.0f} s")
+    for cat in HYBRID_CATEGORIES:
+        print(f"  {cat:22s} {counts.get(cat, 0):5d}")
+    by = Counter((r["strategy"], r["category"]) for r in results)
+    print("\nby kind:")
+    for strat in dict.fromkeys(HYBRID_CYCLE):
+        print(f"  {strat:20s} " + ", ".join(f"{cat} {by[strat, cat]}"
+                                            for cat in HYBRID_CATEGORIES if by[strat, cat]))
+    errs = [r["error"] for r in results if r["category"] == "ok" and "error" in r]
+    if errs:
+        print(f"\nworst deviation of the ok ones (of the signal's size): median "
+              f"{np.median(errs):.2g}, max {np.max(errs):.2g}")
+    redrawn = sum(1 for r in results if r.get("redraws"))
+    print(f"drawn again because the reference chattered (a sliding mode): {redrawn}")
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--cases", type=int, default=1000)
+    ap.add_argument("--cases", "--n", type=int, default=1000)
+    ap.add_argument("--hybrid", action="store_true",
+                    help="random hybrid and nonlinear models instead of linear networks")
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--limit", type=float, default=60.0, help="seconds per case")
     ap.add_argument("--case", type=int, default=None, help="run this case alone, verbosely")
     ap.add_argument("--shrink", action="store_true", help="with --case: shrink a failure")
     args = ap.parse_args(argv)
+    if args.hybrid:
+        return _hybrid(args)
     if args.case is not None:
         _single(args)
         return 0
     results, t0 = [], time.perf_counter()
-
-    def report(r):
-        results.append(r)
-        if r["category"] not in ("ok", "rejected"):
-            print(f"--seed {args.seed} --case {r['n']:<4d} [{r['strategy']}] {r['category']}: "
-                  f"{r['detail'][:240]}", flush=True)
-        if len(results) % 50 == 0:
-            print(f"... {len(results)} cases, {time.perf_counter() - t0:.0f} s", flush=True)
-
+    report = _reporter(args.seed, results, t0, 50)
     pool = _Pool(args.jobs, args.seed, args.limit)
     try:
         pool.run(range(args.cases), report)

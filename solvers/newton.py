@@ -66,12 +66,21 @@ def _solve(J, b: np.ndarray, singular_ok: bool = False) -> np.ndarray:
         except SingularMatrixError:
             if not singular_ok or n > _LSTSQ_LIMIT:
                 raise
-            D = _row_scale(J)
             A = J.toarray() if issparse(J) else np.asarray(J)
+            _finite(A, b)
+            D = _row_scale(J)
             return np.linalg.lstsq(A * D[:, None], b * D, rcond=None)[0]
         return lin.solve(b)
     A = J.toarray() if issparse(J) else np.asarray(J)
+    _finite(A, b)
     return np.linalg.lstsq(A, b, rcond=None)[0]
+
+
+def _finite(A, b) -> None:
+    """A least-squares solve needs finite numbers: LAPACK's SVD does not converge on a
+    NaN (numpy's LinAlgError); a non-finite Jacobian or residual is a singular system."""
+    if not (np.all(np.isfinite(A)) and np.all(np.isfinite(b))):
+        raise SingularMatrixError("the Jacobian or the residual has non-finite entries")
 
 
 _LSTSQ_LIMIT = 4000      # a singular square Jacobian up to this size is solved by lstsq

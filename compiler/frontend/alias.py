@@ -20,6 +20,7 @@ import sympy as sp
 from ...components.realsymbol import SYMBOLS
 from ...components.symbols import Assign, Reinit, When
 from ..algebra.derivative import partial
+from ..algebra.exact import exact_value, parameter_values
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
 from ..algebra.symbolic import symbols_of
 from ..flatmodel import FlatEquation, FlatModel
@@ -151,7 +152,10 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
 
 def _check_fixed_constants(flat, find, constants) -> None:
     """A variable with a fixed start value that an equation fixes to another constant is a
-    contradiction (Modelica: an over-specified initial problem); say so by name."""
+    contradiction (Modelica: an over-specified initial problem); say so by name.  The
+    constant may be an expression of parameters (a capacitor across a constant source's
+    ``V``): it is judged at the parameters' values."""
+    values = None
     for v in flat.variables:
         if not v.attrs.fixed or v.attrs.start is None:
             continue
@@ -159,7 +163,14 @@ def _check_fixed_constants(flat, find, constants) -> None:
         if root not in constants:
             continue
         value = _signed(sign, constants[root])
-        if value.is_number and abs(float(value) - v.attrs.start) > 1e-12 * (1 + abs(v.attrs.start)):
+        if not value.is_number:
+            if values is None:
+                values = parameter_values(flat.parameters)
+            exact = exact_value(value, values)
+            if exact is None:
+                continue
+            value = sp.Float(float(exact))
+        if abs(float(value) - v.attrs.start) > 1e-12 * (1 + abs(v.attrs.start)):
             raise ModelError(f"'{v.name}' in {v.where} has fixed=True with start = "
                              f"{v.attrs.start}, but its equations make it the constant "
                              f"{float(value):g}: the initial problem is over-specified")

@@ -108,3 +108,30 @@ def test_aliases_with_different_fixed_starts_are_refused():
     with pytest.raises(ac.InitializationFailed,
                        match=r"over-specified and inconsistent.*C1\.v = 0\.0.*C2\.v = 1\.0"):
         ac.simulate(TwoCapacitorsInParallel(C2={"v": {"start": 1.0, "fixed": True}}), 0.1)
+
+
+class CapacitorAcrossConstantSource(ac.Component):
+    """A capacitor across a constant 1 V source (and a resistor): its voltage is the
+    source's parameter V, a constant that alias elimination substitutes."""
+
+    def __init__(self, v_start):
+        super().__init__()
+        from acausal.library.electrical import ConstantVoltage
+        self.src = ConstantVoltage(V=1.0)
+        self.C = Capacitor(C=1e-3, v={"start": v_start, "fixed": True})
+        self.R = Resistor(R=10.0)
+        self.gnd = Ground()
+
+    def equations(self):
+        return [ac.connect(self.src.p, self.C.p, self.R.p),
+                ac.connect(self.src.n, self.C.n, self.R.n, self.gnd.p)]
+
+
+def test_fixed_start_contradicting_a_parameter_constant_is_refused():
+    # C.v = src.V = 1 by the equations; C.v(0) = -0.1 fixed contradicts it: refused
+    # naming the variable, not dropped without a word
+    with pytest.raises(ac.ModelError, match=r"'C\.v'.*start = -0\.1.*constant 1"):
+        ac.compile(CapacitorAcrossConstantSource(-0.1))
+    # the same value is consistent: it runs, at the source's voltage
+    res = ac.simulate(ac.compile(CapacitorAcrossConstantSource(1.0)), t_end=0.1)
+    assert res.success and np.all(res["C.v"] == 1.0)

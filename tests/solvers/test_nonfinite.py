@@ -135,3 +135,32 @@ def test_outputs_that_need_no_check_cost_nothing():
     compiled = ac.compile(MotorDrive())
     assert compiled.meta["output_checks"] == []
     assert not compiled.check_point.every_point
+
+
+class NoRealSolution(ac.Component):
+    """x1 = sin(t) makes der(x1) = cos(t) a constraint on x2 alone, 1 = -c (a +
+    exp(-x2^2)) at t = 0, which no real x2 satisfies (exp(-x2^2) would be negative):
+    Newton's iterates run off until the Jacobian is no longer finite."""
+
+    x1 = ac.Variable(start=-0.767, fixed=True)
+    x2 = ac.Variable(start=-0.254)
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x1), -2.131 * self.x1
+                      - 1.629 * (0.299 + ac.exp(-self.x2**2)) / 2),
+                ac.Eq(self.x1, ac.sin(ac.time))]
+
+
+def test_an_initial_problem_without_solution_is_refused_in_words():
+    # before: numpy's LinAlgError ("SVD did not converge") from a least-squares step on
+    # a Jacobian with NaN entries
+    with pytest.raises(ac.InitializationFailed, match="x2"):
+        ac.simulate(ac.compile(NoRealSolution()), t_end=1.0)
+
+
+def test_a_least_squares_step_on_non_finite_numbers_is_a_singular_system():
+    from acausal.solvers.linalg import SingularMatrixError
+    from acausal.solvers.newton import _solve
+    J = np.array([[1.0, np.nan], [0.0, 0.0]])
+    with pytest.raises(SingularMatrixError, match="non-finite"):
+        _solve(J, np.array([1.0, 0.0]), singular_ok=True)
