@@ -50,11 +50,22 @@ _COMPILER_PACKAGES = ("compiler", "components", "ports", "library", "native")
 _COMPILER_FILES = ("__init__.py", "errors.py", "functions.py")
 
 
+_TAKEN = []        # the fingerprint, once taken in this process
+
+
 def fingerprint() -> str:
     """The compiler's identity: the sources that determine a ModelCode (the compiler,
     the components, ports and model library, the model functions) and the versions of
-    what it runs on.  Each call looks at the files again (a stat each; a changed file is
-    read again), so an edit made while a process runs is seen too."""
+    what it runs on.  Taken once a process, at its first compile: it names the code this
+    process runs, which an edit of the sources made while it runs does not change (with
+    the files read again, such a process stored what its old code compiled under the
+    new code's name, and a fresh process then loaded it)."""
+    if not _TAKEN:
+        _TAKEN.append(_sources_fingerprint())
+    return _TAKEN[0]
+
+
+def _sources_fingerprint() -> str:
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     h = _Hasher("acausal", _FORMAT, sys.version, np.__version__, _sympy_version())
     files = [os.path.join(root, f) for f in _COMPILER_FILES

@@ -290,3 +290,14 @@ def test_a_malformed_cache_size_is_an_error(monkeypatch, text):
     monkeypatch.setenv("ACAUSAL_CACHE_SIZE", text)
     with pytest.raises(ac.CacheError, match="ACAUSAL_CACHE_SIZE"):
         ac.compile(RC())
+
+
+def test_the_compiler_fingerprint_names_the_code_this_process_runs(monkeypatch):
+    # a source of the compiler edited while a process runs does not change what that
+    # process compiles with, so it must not change the name its entries are stored under
+    # (a fresh process, running the edited code, would load the old code's entries)
+    taken = cachekeys.fingerprint()
+    monkeypatch.setattr(cachekeys, "_file_hash", lambda path: "edited")
+    assert cachekeys.fingerprint() == taken
+    # what an edited source gives a fresh process is another name
+    assert cachekeys._sources_fingerprint() != taken
