@@ -21,7 +21,7 @@ from ...components.realsymbol import SYMBOLS
 from ...components.symbols import Assign, Reinit, When
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
-from ..algebra.symbolic import symbols_of
+from ..algebra.symbolic import equation_symbols, symbols_of
 from ..flatmodel import FlatEquation, FlatModel
 from ..structure.graph import STATE_SELECT
 from ...errors import InvalidEquation, ModelError
@@ -91,7 +91,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     by_var = [None] * len(order)     # variable number -> the equations that read it
 
     def enter(i):
-        for q in symbols_of(eqs[i].residual):
+        for q in equation_symbols(eqs[i]):
             k = order.get(q)
             if k is not None:
                 readers = by_var[k]
@@ -119,10 +119,11 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         for j in touched:
             if not alive[j]:
                 continue
-            r = eqs[j].residual
-            local = _substitutions_for(symbols_of(r), order, syms, find_k, constants)
+            local = _substitutions_for(equation_symbols(eqs[j]), order, syms, find_k,
+                                       constants)
             if local:
-                eqs[j] = _with_residual(eqs[j], fast_xreplace(r, local))
+                eqs[j] = (_with_terms(eqs[j], local) or
+                          _with_residual(eqs[j], fast_xreplace(eqs[j].residual, local)))
                 enter(j)
                 queue.add(j)
     kept = [eq for eq, a in zip(eqs, alive) if a]
@@ -200,11 +201,42 @@ def _with_residual(eq, residual):
     return out
 
 
+def _with_terms(eq, subs):
+    """A sum whose residual is not made yet (``FlatEquation.unmade``) with ``subs`` (each
+    a +-symbol) applied to its terms, its residual still not made; None where ``subs``
+    gives anything else or two terms of one symbol (the residual is made instead)."""
+    terms = eq.unmade
+    if terms is None:
+        return None
+    out = {}
+    for q, c in terms.items():
+        by = subs.get(q)
+        if by is not None:
+            if type(by) in SYMBOLS:
+                q = by
+            elif (by.is_Mul and len(by.args) == 2 and by.args[0] is sp.S.NegativeOne
+                  and type(by.args[1]) in SYMBOLS):
+                q, c = by.args[1], -c
+            else:
+                return None
+        if q in out:
+            return None
+        out[q] = c
+    made = object.__new__(type(eq))
+    made.__dict__.update(eq.__dict__)
+    made.terms = out
+    return made
+
+
 def _classify(eq, order, find_k, rank, up, sign_of, constants, params=frozenset()):
     """Record eq in the union-find (on variable numbers) if it is trivial.  None when it
     is kept; when it was removed, the numbers of the representatives whose resolution
     it changed (a set that now has a new representative, or a constant value)."""
-    pattern = _alias_pattern(eq.residual, order, params)
+    terms = eq.unmade
+    pattern = _alias_pattern(eq.residual, order, params) if terms is None else \
+        _terms_alias(terms, order)
+    if pattern is False:                      # a sum of other terms: as made
+        pattern = _alias_pattern(eq.residual, order, params)
     if pattern is None:
         return None
     kind, a, b, k = pattern
@@ -258,6 +290,18 @@ def _alias_pattern(residual: sp.Expr, info, params: frozenset = frozenset()):
     if ca in (1, -1) and cb in (1, -1):
         return "alias", a, b, -cb / ca
     return None
+
+
+def _terms_alias(terms, info):
+    """:func:`_plain_alias` of the sum of ``terms`` {q: +-1} (not made yet); False for a
+    sum it does not read (which is made and takes the general path)."""
+    if len(terms) > 2 or not all(type(q) in SYMBOLS and q in info for q in terms):
+        return False
+    if len(terms) == 1:
+        (q,) = terms
+        return "const", q, None, sp.S.Zero
+    a, b = sorted(terms, key=lambda s: s.name)
+    return "alias", a, b, -terms[b] * terms[a]
 
 
 def _plain_alias(residual: sp.Expr, info):
