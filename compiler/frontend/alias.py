@@ -293,10 +293,13 @@ def _alias_pattern(residual: sp.Expr, info, params: frozenset = frozenset()):
 
 
 def _terms_alias(terms, info):
-    """:func:`_plain_alias` of the sum of ``terms`` {q: +-1} (not made yet); False for a
-    sum it does not read (which is made and takes the general path)."""
-    if len(terms) > 2 or not all(type(q) in SYMBOLS and q in info for q in terms):
+    """:func:`_alias_pattern` of the sum of ``terms`` {q: +-1} (not made yet) where they
+    are all variables; False for another sum (which is made and takes the general
+    path)."""
+    if not all(type(q) in SYMBOLS and q in info for q in terms):
         return False
+    if len(terms) > 2:
+        return None               # three variables or more: no alias
     if len(terms) == 1:
         (q,) = terms
         return "const", q, None, sp.S.Zero
@@ -332,6 +335,9 @@ def _rebuild(flat, kept, subs, table, find, constants, resolved):
     derivatives = _derivatives_after_aliases(flat, find, constants, subs)
     equations = []
     for eq in kept:
+        terms = eq.unmade                    # a sum not made yet: made substituted
+        if terms is not None and not subs.keys().isdisjoint(terms):
+            eq = _with_terms(eq, subs) or eq
         r = eq.residual
         if any(q in subs for q in symbols_of(r)):
             r = fast_xreplace(r, subs)
