@@ -21,7 +21,7 @@ from ...components.realsymbol import SYMBOLS
 from ...components.symbols import Assign, Reinit, When
 from ..algebra.derivative import partial
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
-from ..algebra.symbolic import equation_symbols, symbols_of
+from ..algebra.symbolic import equation_symbols, signed_terms, symbols_of
 from ..flatmodel import FlatEquation, FlatModel
 from ..structure.graph import STATE_SELECT
 from ...errors import InvalidEquation, ModelError
@@ -211,17 +211,12 @@ def _with_terms(eq, subs):
     out = {}
     for q, c in terms.items():
         by = subs.get(q)
-        if by is not None:
-            if type(by) in SYMBOLS:
-                q = by
-            elif (by.is_Mul and len(by.args) == 2 and by.args[0] is sp.S.NegativeOne
-                  and type(by.args[1]) in SYMBOLS):
-                q, c = by.args[1], -c
-            else:
+        if by is None:
+            if q in out:
                 return None
-        if q in out:
+            out[q] = c
+        elif by is sp.S.Zero or not signed_terms(by, c, out):
             return None
-        out[q] = c
     made = object.__new__(type(eq))
     made.__dict__.update(eq.__dict__)
     made.terms = out
