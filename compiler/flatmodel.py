@@ -58,8 +58,8 @@ class FlatParameter(_Located):
 @dataclass
 class FlatEquation(_Located):
     residual: sp.Expr
-    source: object            # the text; or the Equation, or the sum (printed "sum = 0"),
-                              # it is printed from on demand
+    source: object            # the text; or the Equation, or the sum (printed "sum = 0")
+                              # or its terms {q: +-1}, it is printed from on demand
     component: str
     component_class: str
     kind: str = "equation"       # equation | connect | unconnected | initial
@@ -71,17 +71,53 @@ class FlatEquation(_Located):
     # the variable alone on the left of ``ac.Eq`` as written (a Boolean or Integer
     # variable's equation gives its value: compiler/sampled.py), else None
     defines: object = field(default=None, repr=False, compare=False)
+    # a sum of +-symbols and +-der(symbol) as its terms {q: +-1}: ``residual`` (given as
+    # None) is made from them when first read (most of them are aliases, which alias
+    # elimination reads as terms and drops); see ``unmade``
+    terms: object = field(default=None, repr=False, compare=False)
+
+    @property
+    def unmade(self):
+        """The terms {q: +-1} of a sum whose residual is not made yet, else None: a pass
+        that reads only its symbols or its terms' units reads these instead."""
+        return self.terms if self.__dict__["residual"] is None else None
+
+    def is_plain(self) -> bool:
+        """A sum of +-symbols and +-der(symbol) as flattened, unchanged since (it holds no
+        function of another kind: floor(), delay(), pre())."""
+        r = self.__dict__["residual"]
+        return self.terms is not None if r is None else self.plain is r
 
     @property
     def text(self) -> str:
         """The equation as written (printed lazily: printing is slow on large models)."""
         if not isinstance(self.source, str):
             src = self.source
+            if isinstance(src, dict):          # the terms of a sum {q: +-1}
+                from .algebra.symbolic import signed_sum
+                src = signed_sum(src)
             self.source = src.text if isinstance(src, Equation) else f"{text(src)} = 0"
         return self.source
 
     def describe(self) -> str:
         return f"{self.text}   [{self.kind} in {self.where}]"
+
+
+def _residual(eq):
+    r = eq.__dict__["residual"]
+    if r is None and eq.terms is not None:
+        from .algebra.symbolic import signed_sum
+        r = eq.__dict__["residual"] = eq.__dict__["plain"] = signed_sum(eq.terms)
+    return r
+
+
+def _set_residual(eq, residual):
+    eq.__dict__["residual"] = residual
+
+
+# a property over the dataclass field (whose __init__, comparison and repr go through it)
+FlatEquation.residual = property(_residual, _set_residual,
+                                 doc="the equation as ``residual = 0`` (sympy)")
 
 
 @dataclass

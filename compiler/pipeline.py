@@ -23,6 +23,7 @@ from __future__ import annotations
 import gc
 import time as _time
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Callable
 
 from .. import native
@@ -233,9 +234,10 @@ def _codegen(c: Compilation) -> None:
 
 
 def _index_as_written(c: Compilation) -> None:
-    # for the report only; read last, from the flat model as the front passes left it
-    # (the balance pass has found the system regular)
-    c.report.sigma = as_written(c.flat, checked=True)
+    # for the report only, computed when it is first read (most reports never are): from
+    # the flat model as the front passes left it (the balance pass has found the system
+    # regular)
+    c.report.written_by(partial(as_written, c.flat, checked=True))
 
 
 def _report(c: Compilation) -> None:
@@ -271,7 +273,8 @@ PASSES = (
     Pass("state_selection", _state_selection, "dummy derivatives"),
     Pass("assemble", _assemble, "BLT and tearing: what the solver vector holds"),
     Pass("codegen", _codegen, "residual, Jacobian, outputs and events as code"),
-    Pass("index_as_written", _index_as_written, "the index of the equations as written"),
+    Pass("index_as_written", _index_as_written,
+         "the index of the equations as written (computed when the report is read)"),
     Pass("report", _report, "what the compiler did, in the user's names"),
     Pass("c_backend", _c_backend, "the generated C compiled and loaded, or numpy"),
     Pass("cache_store", _cache_store, "the compiled model kept in the compile cache"),

@@ -8,6 +8,13 @@ A pickled report (a saved or cached model) keeps everything it prints, converts 
 draws, as plain data: the alias table as an :class:`AliasSummary`, the conversion as
 its dict; the compiler's intermediate ``reduction`` (integer structures, sympy
 equations) is not kept.  Unpickling it needs no sympy.
+
+Two parts are made when first read, not by the compile: the texts of the equations
+(``equations``) and the index of the equations as written (``sigma`` and
+``differential_index``: Pantelides and the Sigma-method on the whole flat model, a
+tenth of a large model's build).  Pickling a report makes both (a cached model's report
+is plain data); computing the index later from a pickle would need the flat model's
+incidence and the text of each of its equations, which cost more to make than the index.
 """
 from __future__ import annotations
 
@@ -74,6 +81,7 @@ class IndexReport:
 
     def __getstate__(self):
         self.equations                 # noqa: B018  (prints the texts not printed yet)
+        self.sigma                     # noqa: B018  (the index as written, if not yet)
         state = dict(self.__dict__)
         state["aliases"] = AliasSummary.of(self.aliases)
         state["reduction"] = None
@@ -90,19 +98,20 @@ class IndexReport:
         s = reduction.structure
         names = [sym.name for sym in system.symbols]
         self.index_after_alias = reduction.index
-        self.differential_index = self.sigma.get("index_pantelides", reduction.index)
         conv = self.conversion
+        after = None
         if conv is not None and conv.changed:
             # the structural index of the equations as written is not their index: the
             # converted system's is (Pantelides on it, cross-checked by Sigma below)
-            self.differential_index = reduction.index
-            self.sigma["hidden"] = True
-            self.sigma["after_conversion"] = {
-                "index_sigma": conv.sigma.index, "dof": conv.sigma.dof,
-                "c": conv.sigma.c,
-                "agrees": conv.sigma.index == reduction.index
-                and list(conv.sigma.c) == list(reduction.diff_counts)}
+            after = {"index_sigma": conv.sigma.index, "dof": conv.sigma.dof,
+                     "c": conv.sigma.c,
+                     "agrees": conv.sigma.index == reduction.index
+                     and list(conv.sigma.c) == list(reduction.diff_counts)}
             self.notes += conv.notes()
+        if "_as_written" in self.__dict__:
+            self.__dict__["_as_written_after"] = (reduction.index, after)
+        else:
+            _index_from(self, self.sigma, reduction.index, after)
         if conv is not None and conv.numeric_blocks:
             self.notes.append(
                 f"{len(conv.numeric_blocks)} block(s) of the Sigma-method's system Jacobian "
@@ -333,6 +342,52 @@ IndexReport.equations = property(_rows_with_texts, _set_rows,
                                  doc="per equation of the reduced system: index, text, "
                                      "label, component, kind, order, derivative_of, "
                                      "differentiated")
+
+
+def _settle(report) -> None:
+    """The index as written, computed on the first read of ``sigma`` or
+    ``differential_index`` from what :meth:`IndexReport.written_by` left (the compile
+    does not compute it: most reports are never read)."""
+    compute = report.__dict__.pop("_as_written", None)
+    if compute is None:
+        return
+    after = report.__dict__.pop("_as_written_after", None)
+    report.__dict__["sigma"] = sigma = compute()
+    if after is not None:                       # IndexReport.fill ran
+        _index_from(report, sigma, *after)
+
+
+def _index_from(report, sigma, index_after_alias, after) -> None:
+    """The differential index the report gives: that of the equations as written, unless
+    the conversion found it hidden (``after``: the converted system's cross-check)."""
+    report.__dict__["differential_index"] = sigma.get("index_pantelides", index_after_alias)
+    if after is not None:
+        report.__dict__["differential_index"] = index_after_alias
+        sigma["hidden"] = True
+        sigma["after_conversion"] = after
+
+
+def _settled(name):
+    def get(report):
+        _settle(report)
+        return report.__dict__[name]
+
+    def put(report, value):
+        _settle(report)
+        report.__dict__[name] = value
+    return property(get, put)
+
+
+def _written_by(self, compute) -> None:
+    """``compute()`` (no arguments) gives :func:`acausal.compiler.index.as_written`'s
+    dict; it is called when the report is first read."""
+    self.__dict__.pop("_as_written_after", None)
+    self.__dict__["_as_written"] = compute
+
+
+IndexReport.written_by = _written_by
+IndexReport.sigma = _settled("sigma")
+IndexReport.differential_index = _settled("differential_index")
 
 
 class EquationNames(Sequence):

@@ -314,6 +314,21 @@ def symbols_of(expr: sp.Basic) -> frozenset:
     return frozenset(out)
 
 
+def equation_symbols(eq) -> frozenset:
+    """``symbols_of(eq.residual)`` for a FlatEquation, read off its terms while its
+    residual is not made (``FlatEquation.unmade``)."""
+    terms = eq.unmade
+    if terms is None:
+        return symbols_of(eq.residual)
+    out = set()
+    for q in terms:
+        if type(q) in SYMBOLS:
+            out.add(q)
+        else:                          # der(x)
+            out |= symbols_of(q)
+    return frozenset(out)
+
+
 # nodes that bind symbols of their own: they answer for themselves
 _BINDING = (sp.Lambda, sp.Integral, sp.Derivative, sp.Subs, sp.Sum, sp.Product)
 

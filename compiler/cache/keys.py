@@ -118,6 +118,8 @@ def _flat_key(flat, backend: str) -> str:
         src = e.source
         if isinstance(src, str):
             return src
+        if isinstance(src, dict):   # a sum's terms: hashed below, as made
+            return ""
         if isinstance(src, Equation):
             return f"{ex(src.lhs)} = {ex(src.rhs)}"
         return ex(src)
@@ -146,7 +148,9 @@ def _flat_key(flat, backend: str) -> str:
             # derivatives hashed here, so its exact text says nothing more; a residual
             # made otherwise (a connection set's sum, an equation read back from its
             # text) is hashed itself
-            made = "" if isinstance(e.source, Equation) else ex(e.residual)
+            made = "" if isinstance(e.source, Equation) else ex(e.residual) \
+                if e.unmade is None else "+-(" + ",".join(
+                    ex(q) + ("+" if c == 1 else "-") for q, c in e.unmade.items()) + ")"
             # a connection set's equations are each located by all its ports: a long
             # text, written once (a ground of 1000 capacitors: 1001 equations, 10 kB each)
             where = e.component if len(e.component) < 64 else ex.ref(e.component)

@@ -22,7 +22,7 @@ from ...components.symbols import Assign, Reinit, When
 from ..algebra.derivative import partial
 from ..algebra.exact import exact_value, parameter_values
 from ..algebra.substitution import fast_xreplace, has_undefined, negated
-from ..algebra.symbolic import symbols_of
+from ..algebra.symbolic import equation_symbols, signed_terms, symbols_of
 from ..flatmodel import FlatEquation, FlatModel
 from ..structure.graph import STATE_SELECT
 from ...errors import InvalidEquation, ModelError
@@ -92,7 +92,7 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
     by_var = [None] * len(order)     # variable number -> the equations that read it
 
     def enter(i):
-        for q in symbols_of(eqs[i].residual):
+        for q in equation_symbols(eqs[i]):
             k = order.get(q)
             if k is not None:
                 readers = by_var[k]
@@ -120,10 +120,11 @@ def eliminate_aliases(flat: FlatModel) -> tuple[FlatModel, AliasTable]:
         for j in touched:
             if not alive[j]:
                 continue
-            r = eqs[j].residual
-            local = _substitutions_for(symbols_of(r), order, syms, find_k, constants)
+            local = _substitutions_for(equation_symbols(eqs[j]), order, syms, find_k,
+                                       constants)
             if local:
-                eqs[j] = _with_residual(eqs[j], fast_xreplace(r, local))
+                eqs[j] = (_with_terms(eqs[j], local) or
+                          _with_residual(eqs[j], fast_xreplace(eqs[j].residual, local)))
                 enter(j)
                 queue.add(j)
     kept = [eq for eq, a in zip(eqs, alive) if a]
@@ -211,11 +212,37 @@ def _with_residual(eq, residual):
     return out
 
 
+def _with_terms(eq, subs):
+    """A sum whose residual is not made yet (``FlatEquation.unmade``) with ``subs`` (each
+    a +-symbol) applied to its terms, its residual still not made; None where ``subs``
+    gives anything else or two terms of one symbol (the residual is made instead)."""
+    terms = eq.unmade
+    if terms is None:
+        return None
+    out = {}
+    for q, c in terms.items():
+        by = subs.get(q)
+        if by is None:
+            if q in out:
+                return None
+            out[q] = c
+        elif by is sp.S.Zero or not signed_terms(by, c, out):
+            return None
+    made = object.__new__(type(eq))
+    made.__dict__.update(eq.__dict__)
+    made.terms = out
+    return made
+
+
 def _classify(eq, order, find_k, rank, up, sign_of, constants, params=frozenset()):
     """Record eq in the union-find (on variable numbers) if it is trivial.  None when it
     is kept; when it was removed, the numbers of the representatives whose resolution
     it changed (a set that now has a new representative, or a constant value)."""
-    pattern = _alias_pattern(eq.residual, order, params)
+    terms = eq.unmade
+    pattern = _alias_pattern(eq.residual, order, params) if terms is None else \
+        _terms_alias(terms, order)
+    if pattern is False:                      # a sum of other terms: as made
+        pattern = _alias_pattern(eq.residual, order, params)
     if pattern is None:
         return None
     kind, a, b, k = pattern
@@ -271,6 +298,21 @@ def _alias_pattern(residual: sp.Expr, info, params: frozenset = frozenset()):
     return None
 
 
+def _terms_alias(terms, info):
+    """:func:`_alias_pattern` of the sum of ``terms`` {q: +-1} (not made yet) where they
+    are all variables; False for another sum (which is made and takes the general
+    path)."""
+    if not all(type(q) in SYMBOLS and q in info for q in terms):
+        return False
+    if len(terms) > 2:
+        return None               # three variables or more: no alias
+    if len(terms) == 1:
+        (q,) = terms
+        return "const", q, None, sp.S.Zero
+    a, b = sorted(terms, key=lambda s: s.name)
+    return "alias", a, b, -terms[b] * terms[a]
+
+
 def _plain_alias(residual: sp.Expr, info):
     """The pattern of the residuals connections make, read off their arguments: ``x``
     (x = 0) and ``+-a +- b``; None for anything else (which takes the general path,
@@ -299,6 +341,9 @@ def _rebuild(flat, kept, subs, table, find, constants, resolved):
     derivatives = _derivatives_after_aliases(flat, find, constants, subs)
     equations = []
     for eq in kept:
+        terms = eq.unmade                    # a sum not made yet: made substituted
+        if terms is not None and not subs.keys().isdisjoint(terms):
+            eq = _with_terms(eq, subs) or eq
         r = eq.residual
         if any(q in subs for q in symbols_of(r)):
             r = fast_xreplace(r, subs)

@@ -62,7 +62,7 @@ def extract_delays(flat) -> list:
         return e
 
     for eq in flat.equations + flat.initial_equations:
-        if eq.plain is not eq.residual and _has_delay(eq.residual):   # (FlatEquation.plain)
+        if not eq.is_plain() and _has_delay(eq.residual):   # (FlatEquation.plain)
             eq.residual = replace(eq.residual, _where(eq))
     for w in flat.whens:
         where = f"{w.origin or '(model)'} ({w.origin_class})"

@@ -80,7 +80,7 @@ def freeze_integer_functions(flat) -> list:
         return e.xreplace({d: q for q, d in quiet.items()}) if quiet else e
 
     for eq in flat.equations + flat.initial_equations:
-        if eq.plain is not eq.residual:      # a sum of +-symbols holds no floor()
+        if not eq.is_plain():      # a sum of +-symbols holds no floor()
             eq.residual = freeze(eq.residual)
     for w in flat.whens:
         w.condition = freeze(w.condition)

@@ -32,7 +32,7 @@ from ..algebra.substitution import fast_difference, fast_xreplace, has_undefined
 from .flatarrays import collect_array
 from .inputs import find_inputs
 from .flatder import check_der_arguments, expand_derivatives, has_der
-from ..algebra.symbolic import signed_sum, signed_terms, symbols_of
+from ..algebra.symbolic import equation_symbols, signed_sum, signed_terms, symbols_of
 from .usercode import failed_reading
 from ..flatmodel import FlatEquation, FlatModel, FlatParameter, FlatVariable
 from ...errors import (InvalidConnection, InvalidEquation, InvalidValue, ModelError,
@@ -174,17 +174,16 @@ def _flat_equation(eq: Equation, comp: Component, kind: str, with_der: set) -> F
     eq.origin, eq.origin_class = comp.path, type(comp).__name__
     coeffs = {}
     plain = signed_terms(eq.lhs, 1, coeffs) and signed_terms(eq.rhs, -1, coeffs) and coeffs
-    if plain:
-        residual = signed_sum(coeffs)
+    if plain:           # the residual is made from the terms when read (FlatEquation)
+        residual = None
         ders = any(type(q) is der for q in coeffs)
     else:
         residual = fast_difference(eq.lhs, eq.rhs)     # eq.residual, built directly
         ders = has_der(residual)
-    out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label)
+    out = FlatEquation(residual, eq, comp.path, type(comp).__name__, kind, eq.label,
+                       terms=coeffs if plain else None)
     if type(eq.lhs) in SYMBOLS:
         out.defines = eq.lhs
-    if plain:
-        out.plain = residual
     if ders:
         with_der.add(id(out))
     return out
@@ -273,17 +272,19 @@ def _node_equations(members: list, connections: list) -> list:
         a = getattr(first, name)
         for p, _ in members[1:]:
             b = getattr(p, name)
-            diff = signed_sum({a: 1, b: -1}) if a != b else a - b
             plain = a != b and type(a) in SYMBOLS and type(b) in SYMBOLS
-            eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect", "connect",
-                                    plain=diff if plain else None))
+            diff = None if plain else signed_sum({a: 1, b: -1}) if a != b else a - b
+            eqs.append(FlatEquation(diff, f"{a.name} = {b.name}", where, "connect",
+                                    "connect", terms={a: 1, b: -1} if plain else None))
     for name in first.through():
         signed = [(getattr(p, name), 1 if role == "inside" else -1) for p, role in members]
         coeffs = dict(signed)
         plain = len(coeffs) == len(signed) and all(type(q) in SYMBOLS for q in coeffs)
-        total = signed_sum(coeffs) if plain else sp.Add(*[c * q for q, c in signed])
-        eqs.append(FlatEquation(total, total, where, "connect", "connect",
-                                plain=total if plain else None))
+        if plain:       # printed from its residual, made when read (FlatEquation)
+            eqs.append(FlatEquation(None, coeffs, where, "connect", "connect", terms=coeffs))
+            continue
+        total = sp.Add(*[c * q for q, c in signed])
+        eqs.append(FlatEquation(total, total, where, "connect", "connect"))
     return eqs
 
 
@@ -301,7 +302,7 @@ def _check_symbols(flat: FlatModel, with_der: set) -> None:
     for eq in flat.equations + flat.initial_equations:
         if eq.kind not in ("equation", "initial"):
             continue   # connection equations are built from the model's own ports
-        free = symbols_of(eq.residual)
+        free = equation_symbols(eq)
         if not free <= allowed:
             _check_known(free - allowed, f"equation '{eq.text}' in {eq.where}")
         if id(eq) in with_der:
@@ -368,7 +369,7 @@ def _substitute_parameter_expressions(flat: FlatModel) -> None:
     if not bound:
         return
     for eq in flat.equations + flat.initial_equations:
-        used = symbols_of(eq.residual) & bound.keys()
+        used = equation_symbols(eq) & bound.keys()
         if used:
             eq.residual = fast_xreplace(eq.residual, bound)
             if has_undefined(eq.residual):

@@ -52,7 +52,7 @@ def outline_expressions(flat) -> int:
     from ...components.symbols import time
     from .flatten import FlatEquation, FlatVariable
     big = [k for k, eq in enumerate(flat.equations)
-           if eq.plain is None and not eq.residual.is_Atom
+           if eq.terms is None and not eq.residual.is_Atom
            and tree_size(eq.residual) >= OUTLINE_FROM]
     if not big:
         return 0

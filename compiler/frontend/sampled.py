@@ -226,7 +226,7 @@ def _substitute(flat, helds) -> None:
     to_pre = {pre(h.variable): h.pre for h in helds}
     to_held = {h.variable: h.symbol for h in helds}
     for eq in flat.equations + flat.initial_equations:
-        if eq.residual.has(pre):
+        if not eq.is_plain() and eq.residual.has(pre):      # (a plain sum holds no pre())
             eq.residual = eq.residual.xreplace(to_pre)
     for w in flat.whens:
         if w.condition.has(pre):

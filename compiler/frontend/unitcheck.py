@@ -132,8 +132,22 @@ def _check_equation(eq, walker) -> None:
     src = eq.source
     if isinstance(src, Equation):
         walker.same([src.lhs, src.rhs], "the sides differ")
-    else:
+    elif eq.unmade is None or not _one_dimension(eq.unmade, walker):
         walker.dim(eq.residual)
+
+
+def _one_dimension(terms, walker) -> bool:
+    """Whether the terms {q: +-1} of a sum not made yet have one dimension, where they are
+    known (then the sum would pass; else it is made, and walked for the message)."""
+    found = None
+    for q in terms:
+        d = walker.dim(q)
+        if _known(d):
+            if found is None:
+                found = d
+            elif d != found:
+                return False
+    return True
 
 
 def _message(eq, m: _Mismatch) -> str:

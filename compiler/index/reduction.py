@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import partial
 
-from ..algebra.symbolic import symbols_of
+from ..algebra.symbolic import equation_symbols
 from ..structure.graph import UNASSIGNED, Names, Structure
 from ..structure.matching import base_variables
 from ..structure.pantelides import pantelides
@@ -175,7 +175,7 @@ def _flat_structure(flat) -> Structure:
         add(v.symbol)
     for x, dx in list(flat.derivatives.items()):
         var_to_diff[add(x)] = add(dx)
-    graph = [sorted(index[q] for q in symbols_of(e.residual) if q in index)
+    graph = [sorted(index[q] for q in equation_symbols(e) if q in index)
              for e in flat.equations]
     return Structure(graph=graph, var_to_diff=var_to_diff,
                      eq_to_diff=[UNASSIGNED] * len(graph),
