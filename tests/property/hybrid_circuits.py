@@ -281,6 +281,10 @@ def ill_posed_circuit(ch) -> HybridCase:
 
 def ill_posed_loop(ch) -> HybridCase:
     p = _draw_rectifier(ch)
+    # without the branch switched by the capacitor's voltage, which may slide (and stop
+    # the run, rightly, naming its relation) before the loop closes
+    for key in ("level", "R3", "C2", "share"):
+        p.pop(key, None)
     defect = p["defect"] = ch.choice(["diode loop", "switch loop"])
     t_end = p["periods"] / p["f"]
     if defect == "diode loop":
