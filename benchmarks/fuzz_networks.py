@@ -156,7 +156,8 @@ def _reporter(seed, results, t0, every):
 
 def _hybrid(args):
     from acausal.tests.property.hybrid_harness import (HYBRID_CATEGORIES, HYBRID_CYCLE,
-                                                       HybridPool, evaluate)
+                                                       SLIDING_CATEGORIES, HybridPool,
+                                                       evaluate)
     if args.case is not None:
         r = evaluate(args.seed, args.case)
         for key, value in r.items():
@@ -182,6 +183,16 @@ def _hybrid(args):
               f"{np.median(errs):.2g}, max {np.max(errs):.2g}")
     redrawn = sum(1 for r in results if r.get("redraws"))
     print(f"drawn again because the reference chattered (a sliding mode): {redrawn}")
+    sliding = [(r["strategy"], s) for r in results for s in r.get("sliding", ())]
+    by_s = Counter((strat, s["category"]) for strat, s in sliding)
+    print(f"\nthe {len(sliding)} chattering draws, run in acausal:")
+    for cat in SLIDING_CATEGORIES:
+        print(f"  {cat:22s} {sum(by_s[k, cat] for k in dict.fromkeys(HYBRID_CYCLE)):5d}  "
+              + ", ".join(f"{k} {by_s[k, cat]}" for k in dict.fromkeys(HYBRID_CYCLE)
+                          if by_s[k, cat]))
+    for strat, s in sliding:
+        if s["category"] not in ("refused, named", "ran (not judged)"):
+            print(f"  [{strat}] {s['category']}: {s['detail'][:200]}\n      {s['describe']}")
     return 0
 
 

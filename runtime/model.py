@@ -407,6 +407,11 @@ class CompiledModel(DAEProblem):
     def roots(self, t, z, zp):
         return self.discrete.oriented(t, z, self._params())
 
+    def root_label(self, k: int) -> str:
+        """The relation (or the floor/integer item: two roots each) behind root k."""
+        n_rel = self.discrete.n_rel
+        return self.discrete.describe(k if k < n_rel else n_rel + (k - n_rel) // 2)
+
     def tolerances(self, rtol, atol) -> None:
         """Solver contract item 18: the run's tolerances (the relations' hysteresis
         against chattering is bounded by atol, :mod:`.modes`)."""

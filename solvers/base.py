@@ -132,7 +132,7 @@ import numpy as np
 from ..errors import InitializationFailed, SimulationError
 
 
-__all__ = ["DAEProblem", "EventAction", "LoopModel", "SolverStats", "SolverOutput",
+__all__ = ["DAEProblem", "EventAction", "root_label", "LoopModel", "SolverStats", "SolverOutput",
            "SimulationError", "InitializationFailed"]
 
 
@@ -283,6 +283,17 @@ def equation_label(problem: DAEProblem, i: int) -> str:
     if names is not None and 0 <= i < len(names):
         return str(names[i])
     return f"residual {i}"
+
+
+def root_label(problem: DAEProblem, k: int) -> str:
+    """The user's words for root function ``k`` (``problem.root_label(k)`` if present)."""
+    label = getattr(problem, "root_label", None)
+    if label is not None:
+        try:
+            return str(label(k))
+        except (IndexError, ValueError):
+            pass
+    return f"root function {k}"
 
 
 def numerical_jacobian(problem: DAEProblem, t, y, yp, cj):

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .base import EventAction, InitializationFailed
+from .base import EventAction, InitializationFailed, root_label
 from .initialization import reinitialize
 
 __all__ = ["EventHandling"]
@@ -127,6 +127,7 @@ class EventHandling:
         if changed:
             # only events that change something can chatter
             self.state_event_times.append(t_e)
+            self.state_event_roots.append(np.flatnonzero(crossed).tolist())
             self._check_zeno(t_e)
         entry = {"time": t_e, "kind": "state", "crossed": np.flatnonzero(crossed).tolist(),
                  "before": before}
@@ -197,6 +198,19 @@ class EventHandling:
             raise self._error(f"re-initialization after the event at t={t:.10g} "
                               f"failed: {exc}", t, exc.variables) from None
 
+    def _chattering_relations(self, n_events: int) -> str:
+        """The relations that crossed in the last ``n_events`` state events, the most
+        frequent first (at most three), in the model's words."""
+        counts: dict = {}
+        for roots in self.state_event_roots[-n_events:]:
+            for k in roots:
+                counts[k] = counts.get(k, 0) + 1
+        if not counts:
+            return ""
+        ranked = sorted(counts, key=lambda k: (-counts[k], k))[:3]
+        return "; relations switching: " + "; ".join(
+            f"{root_label(self.problem, k)} ({counts[k]} times)" for k in ranked)
+
     def _check_zeno(self, t_e) -> None:
         """Stop on chattering: a burst of events, or a geometric accumulation."""
         times = self.state_event_times
@@ -204,7 +218,8 @@ class EventHandling:
                 times[-1] - times[-_BURST_EVENTS] <= _BURST_WINDOW * self.span:
             raise self._error(
                 f"chattering: {_BURST_EVENTS} state events within "
-                f"{times[-1] - times[-_BURST_EVENTS]:.3g} s at t={t_e:.10g}; the model "
+                f"{times[-1] - times[-_BURST_EVENTS]:.3g} s at t={t_e:.10g}"
+                f"{self._chattering_relations(_BURST_EVENTS)}; the model "
                 f"switches back and forth (a sliding mode); add hysteresis or a "
                 f"sliding-mode formulation", t_e, ())
         m = _ZENO_INTERVALS
@@ -222,5 +237,6 @@ class EventHandling:
             raise self._error(
                 f"chattering (Zeno behaviour): the last {m + 1} state events are "
                 f"spaced ever closer (ratio {ratio:.3f}) and accumulate at "
-                f"t≈{t_acc:.6g}, before t_end={self.tf:.6g}; the model needs a "
+                f"t≈{t_acc:.6g}, before t_end={self.tf:.6g}"
+                f"{self._chattering_relations(m + 1)}; the model needs a "
                 f"regularization there (e.g. a resting mode or hysteresis)", t_e, ())

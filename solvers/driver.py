@@ -183,7 +183,7 @@ class _Run(EventHandling):
         self.i_eval = 0
         self.stats = SolverStats()
         self.ts, self.ys, self.yps, self.event_times = [], [], [], []
-        self.state_event_times = []
+        self.state_event_times, self.state_event_roots = [], []
         self.event_log = []
         self.progress = None
         te = sorted({float(x) for x in getattr(problem, "time_events", ()) or ()})

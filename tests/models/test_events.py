@@ -48,6 +48,25 @@ def test_bouncing_ball_chattering_is_detected_and_partial_result_returned():
     assert accumulation - 0.5 < res.t[-1] < accumulation
 
 
+def test_a_sliding_mode_is_refused_naming_its_relation():
+    """der(x) = -1 above x = 0.5 and +1 below: both sides push x onto 0.5 (a sliding
+    mode, reached at t = 0.5 from x(0) = 1).  The run stops there, and the message
+    names the relation that switches, in the model's words."""
+    class Relay(ac.Component):
+        x = ac.Variable(start=1.0, fixed=True)
+
+        def equations(self):
+            return [ac.Eq(ac.der(self.x), ac.if_else(self.x > 0.5, -1.0, 1.0))]
+
+    class Loop(ac.Component):
+        relay = Relay()
+
+    with pytest.warns(RuntimeWarning, match="chattering"):
+        res = ac.simulate(Loop(), t_end=2.0, rtol=1e-8, atol=1e-10)
+    assert not res.success and abs(res.t[-1] - 0.5) < 1e-6
+    assert "relations switching: relay.x > 0.5" in res.message
+
+
 def test_reinit_of_a_non_state_is_an_error_naming_it():
     class Bad(ac.Component):
         x = ac.Variable(start=0.0, fixed=True)

@@ -11,7 +11,12 @@ hand-written reference (hybrid_reference.py).
   by laminar or turbulent (regularized) orifices; no source, so the stored energy plus
   the energy dissipated stays the initial energy.
 * ill-posed: the rectifier with a second voltage source in parallel with the first, or
-  with its capacitor's fixed start contradicting a voltage source across it.
+  with its capacitor's fixed start contradicting a voltage source across it; or (``loop``)
+  with a second, constant voltage source joined to the first through an ideal diode or
+  two ideal closing switches in series, each with Ron = 0: once the diode conducts (the
+  sine passes the second source's voltage plus the knee within the first period) or both
+  switches have closed (at times within the run), the loop of sources has no resistance,
+  its current is undetermined and the voltages contradict each other.
 
 The diode and the switches are piecewise linear (closed: a resistance, open: a
 conductance), so each mode of a circuit is linear in the node potentials: the reference
@@ -32,7 +37,7 @@ from acausal.library.hydraulics.interfaces import F_tr
 
 from .hybrid_reference import HybridCase, integrate_modes
 
-__all__ = ["CubicConductor", "rectifier", "orifices", "ill_posed_circuit"]
+__all__ = ["CubicConductor", "rectifier", "orifices", "ill_posed_circuit", "ill_posed_loop"]
 
 
 class CubicConductor(OnePort):
@@ -109,6 +114,18 @@ def _rectifier_model(p, defect=None):
                 self.src2 = el.ConstantVoltage(V=p["A"] / 2)
             if defect == "source across the capacitor":
                 self.src2 = el.ConstantVoltage(V=p["vC0"] + 1.0)
+            if defect in ("diode loop", "switch loop"):
+                self.src2 = el.ConstantVoltage(V=p["V2"])
+            if defect == "diode loop":
+                self.D2 = el.IdealDiode(Ron=0.0, Goff=p["Goff"], Vknee=p["Vknee"])
+            if defect == "switch loop":
+                for k in (1, 2):
+                    # open at the start: ``off`` starts true (its default start, false,
+                    # is read by the relation in ``off`` before its equation has set it)
+                    setattr(self, f"sw{k}", el.IdealClosingSwitch(
+                        booleanControl=False, Ron=0.0, Goff=p["Goff"],
+                        off={"start": True}))
+                    setattr(self, f"ctl{k}", Step(height=1.0, startTime=p[f"t{k}"]))
 
         def equations(self):
             g, n3 = self.gnd.p, (self.Rp.p if has("L") else self.R1.n)
@@ -133,6 +150,14 @@ def _rectifier_model(p, defect=None):
                 eqs += [ac.connect(self.src2.p, self.src.p), ac.connect(self.src2.n, g)]
             if defect == "source across the capacitor":
                 eqs += [ac.connect(self.src2.p, self.C.p), ac.connect(self.src2.n, g)]
+            if defect == "diode loop":
+                eqs += [ac.connect(self.src.p, self.D2.p), ac.connect(self.D2.n, self.src2.p),
+                        ac.connect(self.src2.n, g)]
+            if defect == "switch loop":
+                eqs += [ac.connect(self.src.p, self.sw1.p), ac.connect(self.sw1.n, self.sw2.p),
+                        ac.connect(self.sw2.n, self.src2.p), ac.connect(self.src2.n, g),
+                        ac.connect(self.ctl1.y, self.sw1.control),
+                        ac.connect(self.ctl2.y, self.sw2.control)]
             return eqs
     return Rectifier()
 
@@ -252,6 +277,28 @@ def ill_posed_circuit(ch) -> HybridCase:
     return HybridCase("ill-posed circuit", p, p["periods"] / p["f"],
                       lambda: _rectifier_model(p, defect), expect="ill-posed",
                       culprits=culprits)
+
+
+def ill_posed_loop(ch) -> HybridCase:
+    p = _draw_rectifier(ch)
+    # without the branch switched by the capacitor's voltage, which may slide (and stop
+    # the run, rightly, naming its relation) before the loop closes
+    for key in ("level", "R3", "C2", "share"):
+        p.pop(key, None)
+    defect = p["defect"] = ch.choice(["diode loop", "switch loop"])
+    t_end = p["periods"] / p["f"]
+    if defect == "diode loop":
+        # the diode conducts once src.v - V2 > Vknee, which the sine reaches in a period
+        p["V2"] = round(p["offset"] + p["A"] * ch.uniform(-0.8, 0.8) - p["Vknee"], 4)
+        culprits = ("D2",)
+    else:
+        # the switches may close at the same instant
+        p["t1"] = round(ch.uniform(0.1, 0.9) * t_end, 6)
+        p["t2"] = p["t1"] if ch.boolean(0.3) else round(ch.uniform(0.1, 0.9) * t_end, 6)
+        p["V2"] = round(p["A"] * ch.uniform(-1.0, 1.0), 4)
+        culprits = ("sw1", "sw2")
+    return HybridCase("ill-posed loop", p, t_end, lambda: _rectifier_model(p, defect),
+                      expect="ill-posed", culprits=culprits)
 
 
 # ------------------------------------------------------------------ hydraulics

@@ -8,7 +8,15 @@ energy balance of a passive model misses by more than ENERGY_TOL of its energy s
 ``rejected`` / ``rejected, no culprit`` (an ill-posed model refused with a typed error,
 naming a culprit or not); ``false rejection`` (a well-posed model refused, or simulated
 without success); ``missed`` (an ill-posed model that ran); ``internal error`` (any
-exception that is not a typed acausal error); ``hang`` (over the wall-time cap).
+exception that is not a typed acausal error); ``hang`` (over the wall-time cap).  An
+ill-posed model whose singularity only a mode reached at run time has (a loop of
+voltage sources closed through a diode or switches with Ron = 0) is refused when its
+run stops with a message naming the culprit.
+
+A draw whose reference chatters (a sliding mode, or a grazing the reference cannot
+follow) is drawn again, and also run in acausal (``run_sliding``): ``refused, named``
+(stopped with a typed error or a message naming a relation of the model), ``refused,
+not named``, ``ran (not judged)``, ``internal error``.
 
 Tolerance.  acausal runs at rtol 1e-8, atol 1e-12 and is compared at 1001 points.  Its
 error per step is controlled at about 1e-8; events are located to about the same
@@ -43,30 +51,39 @@ from typing import Optional
 
 import numpy as np
 
-from .hybrid_circuits import ill_posed_circuit, orifices, rectifier
+from .hybrid_circuits import ill_posed_circuit, ill_posed_loop, orifices, rectifier
 from .hybrid_reference import Chattering, HybridCase
-from .hybrid_systems import friction, ill_posed_inline, inline, loop
+from .hybrid_systems import friction, ill_posed_inline, inline, loop, rotational_friction
 from .harness import _first_line, _names_culprit, _typed_errors, _where
 from .netlists import SeededChooser
 
-__all__ = ["HYBRID_CYCLE", "HYBRID_CATEGORIES", "hybrid_case", "run_hybrid", "HybridPool",
+__all__ = ["HYBRID_CYCLE", "HYBRID_CATEGORIES", "SLIDING_CATEGORIES", "hybrid_case",
+           "run_hybrid", "run_sliding", "HybridPool",
            "TOL", "ENERGY_TOL"]
 
 RTOL, ATOL = 1e-8, 1e-12
 TIGHT = (1e-10, 1e-13)
 TOL, ENERGY_TOL, N_POINTS = 1e-4, 1e-3, 1001
-DRAWS = {"rectifier": rectifier, "friction": friction, "loop": loop, "orifices": orifices,
+DRAWS = {"rectifier": rectifier, "friction": friction,
+         "rotational friction": rotational_friction, "loop": loop, "orifices": orifices,
          "inline": inline, "ill-posed circuit": ill_posed_circuit,
-         "ill-posed inline": ill_posed_inline}
-HYBRID_CYCLE = (["rectifier"] * 5 + ["friction"] * 4 + ["loop"] * 3 + ["orifices"] * 2
-                + ["inline"] * 4 + ["ill-posed circuit", "ill-posed inline"])
+         "ill-posed loop": ill_posed_loop, "ill-posed inline": ill_posed_inline}
+HYBRID_CYCLE = (["rectifier"] * 5 + ["friction"] * 2 + ["rotational friction"] * 2
+                + ["loop"] * 3 + ["orifices"] * 2 + ["inline"] * 3
+                + ["ill-posed circuit", "ill-posed loop", "ill-posed inline"])
 HYBRID_CATEGORIES = ("ok", "wrong", "rejected", "rejected, no culprit", "false rejection",
                      "missed", "internal error", "hang", "generator error")
+# what acausal does with a draw whose reference chatters (a sliding mode, a grazing):
+# refused naming the relation (a typed error, or a run stopped with a message naming
+# it), refused without naming it, run to the end (not judged: no reference), or failed
+SLIDING_CATEGORIES = ("refused, named", "refused, not named", "ran (not judged)",
+                      "internal error")
 
 
-def hybrid_case(seed: int, n: int):
+def hybrid_case(seed: int, n: int, chattered: Optional[list] = None):
     """Case n of the seed: (case, reference solution or None, redraws).  A draw whose
-    reference chatters (a sliding mode) is drawn again from the next sub-seed."""
+    reference chatters (a sliding mode) is drawn again from the next sub-seed; the
+    chattering draws are appended to ``chattered`` (with the reference's message)."""
     strategy = HYBRID_CYCLE[n % len(HYBRID_CYCLE)]
     for attempt in range(20):
         case = DRAWS[strategy](SeededChooser(f"hybrid:{seed}:{n}:{attempt}"))
@@ -74,9 +91,36 @@ def hybrid_case(seed: int, n: int):
             return case, None, attempt
         try:
             return case, case.reference(), attempt
-        except Chattering:
+        except Chattering as why:
+            if chattered is not None:
+                chattered.append((case, str(why)))
             continue
     raise RuntimeError(f"20 draws of {strategy} chatter")
+
+
+def run_sliding(case: HybridCase) -> dict:
+    """What acausal does with a draw whose reference chatters: it must stop there with
+    a typed error, or a message, naming a relation of the model (a component's path)."""
+    import acausal as ac
+    typed = _typed_errors()
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            compiled = ac.compile(case.build())
+        res = _simulate(compiled, case, None, RTOL, ATOL)
+    except typed as err:
+        message = str(err)
+    except Exception as err:                # noqa: BLE001  (classifying is the point)
+        return dict(category="internal error", detail=_first_line(err) + _where(err))
+    else:
+        if res.success:
+            return dict(category="ran (not judged)", detail="")
+        message = res.message
+    model = case.build()                    # its components are the relations' owners
+    names = [k for k, v in vars(model).items() if isinstance(v, ac.Component)]
+    named = _names_culprit(message, names)
+    return dict(category="refused, named" if named else "refused, not named",
+                detail=message[:200])
 
 
 def _sizes(case: HybridCase, want: dict) -> dict:
@@ -174,7 +218,12 @@ def run_hybrid(case: HybridCase, ref) -> dict:
         out.update(category="internal error", detail=_first_line(err) + _where(err))
         return out
     if ill:
-        out.update(category="missed", detail=f"success={res.success}: {res.message}"[:300])
+        # a singularity that only a mode reached at run time has (a loop of sources
+        # closed through Ron = 0) stops the run; a message naming the culprit refuses it
+        if not res.success and _names_culprit(res.message, case.culprits):
+            out.update(category="rejected", detail="stopped: " + res.message[:120])
+        else:
+            out.update(category="missed", detail=f"success={res.success}: {res.message}"[:300])
         return out
     if not res.success:
         out.update(category="false rejection", detail=f"simulation failed: {res.message}"[:300])
@@ -210,12 +259,15 @@ def evaluate(seed: int, n: int) -> dict:
     """Draw case n of the seed and run it (what a worker does)."""
     strategy = HYBRID_CYCLE[n % len(HYBRID_CYCLE)]
     base = dict(n=n, strategy=strategy)
+    chattered: list = []
     try:
-        case, ref, redraws = hybrid_case(seed, n)
+        case, ref, redraws = hybrid_case(seed, n, chattered)
     except Exception:                       # noqa: BLE001  (a defect of the generator)
         return dict(base, category="generator error", detail=traceback.format_exc(limit=3)[-400:])
+    sliding = [dict(run_sliding(c), reference=why[:120], describe=c.describe()[:300])
+               for c, why in chattered]
     out = run_hybrid(case, ref)
-    return dict(base, describe=case.describe(), redraws=redraws, **out)
+    return dict(base, describe=case.describe(), redraws=redraws, sliding=sliding, **out)
 
 
 def _worker(conn):
@@ -260,7 +312,7 @@ class HybridPool:
                     try:
                         report(slot["conn"].recv())
                     except EOFError:        # the worker died (a crash of the interpreter)
-                        report(dict(n=slot["job"], strategy=HYBRID_CYCLE[slot["job"] % 20],
+                        report(dict(n=slot["job"], strategy=HYBRID_CYCLE[slot["job"] % len(HYBRID_CYCLE)],
                                     category="internal error", detail="the worker process died"))
                         self._replace(i)
                     slot["job"] = None

@@ -5,7 +5,9 @@ fuzzer, each with its hand-written reference (hybrid_reference.py).
   (``translational.SupportFriction``, a table f = F_c + F_v v, stiction ``peak``) or
   Karnopp's friction with its band |v| < dv (``friction.translational.KarnoppFriction``),
   a linear or cubic spring (f = c1 x + c3 x^3), optionally a damper, driven by a sine
-  force with a bias.
+  force with a bias.  ``rotational_friction``: the same on an inertia, with
+  ``rotational.BearingFriction`` (a torque table, stiction ``peak``) or
+  ``friction.rotational.KarnoppFriction``, a torsion spring, a damper and a sine torque.
 * ``loop``: a feedback loop r - y -> gain -> Limiter or DeadZone (Blocks.Nonlinear) ->
   FirstOrder or SecondOrder plant -> y, the reference a sine with an offset.
 * ``inline``: two states, der(x_i) = -l_i x_i + c_i T_i(x1, x2, time) with T_i a random
@@ -22,12 +24,15 @@ import numpy as np
 
 import acausal as ac
 from acausal.library import blocks
+from acausal.library import rotational as rot
 from acausal.library import translational as tr
+from acausal.library.friction import rotational as rot_friction
 from acausal.library.friction.translational import KarnoppFriction
 
 from .hybrid_reference import HybridCase, integrate_modes
 
-__all__ = ["CubicSpring", "friction", "loop", "inline", "ill_posed_inline"]
+__all__ = ["CubicSpring", "CubicTorsionSpring", "friction", "rotational_friction", "loop",
+           "inline", "ill_posed_inline"]
 
 
 class CubicSpring(tr.PartialCompliant):
@@ -41,12 +46,30 @@ class CubicSpring(tr.PartialCompliant):
                                + self.c3 * self.s_rel**3)]
 
 
+class CubicTorsionSpring(rot.PartialCompliant):
+    """A hardening torsion spring:  tau = c1 phi_rel + c3 phi_rel^3."""
+
+    c1 = ac.Parameter(1.0, unit="N.m/rad", description="linear stiffness")
+    c3 = ac.Parameter(0.0, unit="N.m/rad3", description="cubic stiffness")
+
+    def equations(self):
+        return [ac.Eq(self.tau, self.c1 * self.phi_rel
+                               + self.c3 * self.phi_rel**3)]
+
+
 def _lu(ch, lo, hi):
     return float(f"{10 ** ch.uniform(math.log10(lo), math.log10(hi)):.4g}")
 
 
 # ------------------------------------------------------------------ friction
-def friction(ch) -> HybridCase:
+def rotational_friction(ch) -> HybridCase:
+    """The friction kind on an inertia: ``BearingFriction`` (a torque table, stiction
+    ``peak``) or the rotational ``KarnoppFriction``, a torsion spring, a damper and a
+    sine torque; the same hand-written reference with J, phi, w, tau for m, s, v, f."""
+    return friction(ch, rotational=True)
+
+
+def friction(ch, rotational=False) -> HybridCase:
     f = _lu(ch, 0.2, 5.0)
     w = 2 * math.pi * f
     m = _lu(ch, 0.1, 10.0)
@@ -129,44 +152,96 @@ def friction(ch) -> HybridCase:
         mode0 = 0 if p["law"] == "karnopp" or abs(Fa0) <= Fs else (1 if Fa0 > 0 else -1)
 
     def model():
-        class FrictionMass(ac.Component):
-            def __init__(self):
-                super().__init__()
-                self.fixed = tr.Fixed()
-                self.mass = tr.Mass(m=m, s={"start": p["s0"], "fixed": True},
-                                    v={"start": p["v0"], "fixed": True})
-                if p["law"] == "support":
-                    self.fric = tr.SupportFriction(f_pos=((0.0, p["Fc"]), (1.0, p["Fc"] + p["Fv"])),
-                                                   peak=p["peak"])
-                else:
-                    self.fric = KarnoppFriction(F_c=p["Fc"], F_s=p["Fs"], v_s=p["vs"],
-                                                F_v=p["Fv"], dv=p["dv"])
-                self.spring = CubicSpring(c1=p["c1"], c3=p["c3"])
-                self.damper = tr.Damper(d=p["d"])
-                self.force = tr.Force()
-                self.sine = blocks.Sine(amplitude=F0, f=f, phase=p["phase"], offset=p["bias"])
+        return (_friction_inertia if rotational else _friction_mass)(p)
 
-            def equations(self):
-                eqs = [ac.connect(self.sine.y, self.force.f),
-                       ac.connect(self.force.flange, self.mass.flange_a),
-                       ac.connect(self.fixed.flange, self.spring.flange_a, self.damper.flange_a),
-                       ac.connect(self.mass.flange_b, self.spring.flange_b, self.damper.flange_b)]
-                if p["law"] == "support":
-                    eqs.append(ac.connect(self.fric.flange_a, self.mass.flange_b))
-                else:
-                    eqs += [ac.connect(self.fric.flange_a, self.fixed.flange),
-                            ac.connect(self.fric.flange_b, self.mass.flange_b)]
-                return eqs
-        return FrictionMass()
+    body, (s_, v_, f_) = ("inertia", ("phi", "w", "tau")) if rotational else ("mass", ("s", "v", "f"))
+    names = {"mass.s": f"{body}.{s_}", "mass.v": f"{body}.{v_}", "fric.f": f"fric.{f_}"}
 
     def energy(get):
-        x, v = get("mass.s"), get("mass.v")
+        x, v = get(names["mass.s"]), get(names["mass.v"])
         stored = m * v ** 2 / 2 + p["c1"] * x ** 2 / 2 + p["c3"] * x ** 4 / 4
-        return get("sine.y") * v, stored, get("fric.f") * v + p["d"] * v ** 2
+        return get("sine.y") * v, stored, get(names["fric.f"]) * v + p["d"] * v ** 2
 
-    ref = lambda: integrate_modes(rhs, guards, switch, outputs, y0, mode0, t_end)  # noqa: E731
-    signals = {"mass.s": "m", "mass.v": "m/s", "fric.f": "N"}
-    return HybridCase("friction", p, t_end, model, ref, signals, energy)
+    def named_outputs(t, y, mode):
+        return {names[k]: val for k, val in outputs(t, y, mode).items()}
+
+    ref = lambda: integrate_modes(rhs, guards, switch, named_outputs, y0, mode0,  # noqa: E731
+                                  t_end)
+    units = ("rad", "rad/s", "N.m") if rotational else ("m", "m/s", "N")
+    signals = dict(zip(names.values(), units))
+    return HybridCase("rotational friction" if rotational else "friction", p, t_end, model,
+                      ref, signals, energy)
+
+
+def _friction_mass(p):
+    class FrictionMass(ac.Component):
+        def __init__(self):
+            super().__init__()
+            self.fixed = tr.Fixed()
+            self.mass = tr.Mass(m=p["m"], s={"start": p["s0"], "fixed": True},
+                                v={"start": p["v0"], "fixed": True})
+            if p["law"] == "support":
+                self.fric = tr.SupportFriction(f_pos=((0.0, p["Fc"]), (1.0, p["Fc"] + p["Fv"])),
+                                               peak=p["peak"])
+            else:
+                self.fric = KarnoppFriction(F_c=p["Fc"], F_s=p["Fs"], v_s=p["vs"],
+                                            F_v=p["Fv"], dv=p["dv"])
+            self.spring = CubicSpring(c1=p["c1"], c3=p["c3"])
+            self.damper = tr.Damper(d=p["d"])
+            self.force = tr.Force()
+            self.sine = blocks.Sine(amplitude=p["F0"], f=p["f"], phase=p["phase"],
+                                    offset=p["bias"])
+
+        def equations(self):
+            eqs = [ac.connect(self.sine.y, self.force.f),
+                   ac.connect(self.force.flange, self.mass.flange_a),
+                   ac.connect(self.fixed.flange, self.spring.flange_a, self.damper.flange_a),
+                   ac.connect(self.mass.flange_b, self.spring.flange_b, self.damper.flange_b)]
+            if p["law"] == "support":
+                eqs.append(ac.connect(self.fric.flange_a, self.mass.flange_b))
+            else:
+                eqs += [ac.connect(self.fric.flange_a, self.fixed.flange),
+                        ac.connect(self.fric.flange_b, self.mass.flange_b)]
+            return eqs
+    return FrictionMass()
+
+
+def _friction_inertia(p):
+    """The rotational twin: BearingFriction's housing is the ``support`` on the fixed
+    flange, its shaft the inertia's flange_b."""
+    class FrictionInertia(ac.Component):
+        def __init__(self):
+            super().__init__()
+            self.fixed = rot.Fixed()
+            self.inertia = rot.Inertia(J=p["m"], phi={"start": p["s0"], "fixed": True},
+                                       w={"start": p["v0"], "fixed": True})
+            if p["law"] == "support":
+                self.fric = rot.BearingFriction(
+                    tau_pos=((0.0, p["Fc"]), (1.0, p["Fc"] + p["Fv"])), peak=p["peak"],
+                    useSupport=True)
+            else:
+                self.fric = rot_friction.KarnoppFriction(F_c=p["Fc"], F_s=p["Fs"], v_s=p["vs"],
+                                                         F_v=p["Fv"], dv=p["dv"])
+            self.spring = CubicTorsionSpring(c1=p["c1"], c3=p["c3"])
+            self.damper = rot.Damper(d=p["d"])
+            self.torque = rot.Torque()
+            self.sine = blocks.Sine(amplitude=p["F0"], f=p["f"], phase=p["phase"],
+                                    offset=p["bias"])
+
+        def equations(self):
+            eqs = [ac.connect(self.sine.y, self.torque.tau),
+                   ac.connect(self.torque.flange, self.inertia.flange_a),
+                   ac.connect(self.fixed.flange, self.spring.flange_a, self.damper.flange_a),
+                   ac.connect(self.inertia.flange_b, self.spring.flange_b,
+                              self.damper.flange_b)]
+            if p["law"] == "support":
+                eqs += [ac.connect(self.fric.flange_a, self.inertia.flange_b),
+                        ac.connect(self.fric.support, self.fixed.flange)]
+            else:
+                eqs += [ac.connect(self.fric.flange_a, self.fixed.flange),
+                        ac.connect(self.fric.flange_b, self.inertia.flange_b)]
+            return eqs
+    return FrictionInertia()
 
 
 # ------------------------------------------------------------------ loop
