@@ -110,6 +110,7 @@ def initialize(model, t0: float):
     z = model.start.copy()
     reset_free(model)            # parameters found by initialization: from their starts
     _fresh_start(model, t0, z)
+    z = _discrete_at_start(model, t0, z)
     if model.dynamic is not None:
         model.dynamic.switches = []
         model.reselect_states(t0, z, hysteresis=1.0)
@@ -155,6 +156,23 @@ def _fresh_start(model, t0, z) -> None:
         if model.dummies != static:
             model.dummies = static
             model._update_links()
+
+
+def _discrete_at_start(model, t0, z):
+    """The Boolean and Integer equations evaluated at the start values, and the relations
+    that read them taken again, in rounds: the first solve then sees the discrete state
+    the start values give (a switch whose control holds it open starts open; with the
+    Boolean's own start value it would start closed, and with Ron = 0 between two
+    sources the first solve would be singular)."""
+    whens = model.whens
+    if whens is None or not whens.has_equations:
+        return z
+    for _ in range(_MODE_ITERATIONS):
+        z, moved = whens.update_equations(model, t0, z, model.p)
+        if not moved:
+            break
+        model.init_modes(t0, z)
+    return z
 
 
 def _finite_derivatives(model, t0, zp) -> None:

@@ -10,7 +10,7 @@ from scipy.integrate import solve_ivp
 
 import acausal as ac
 from acausal.library import electrical as el
-from acausal.library.blocks import BooleanConstant, BooleanPulse, BooleanStep
+from acausal.library.blocks import BooleanConstant, BooleanPulse, BooleanStep, Step
 from acausal.library.electrical.examples.msl.utilities import SwitchedCapacitor
 
 U, F, VKNEE, R_LOAD, RON, GOFF = 10.0, 1.0, 1.0, 1.0, 1e-5, 1e-5
@@ -295,3 +295,33 @@ def test_switched_capacitor_moves_a_charge_c_v_each_period(R):
     # Ron = 1e-5 Ohm: the charge settles within nanoseconds
     assert np.max(np.abs(res["Cbig.v"] - exact)) < 1e-8
     assert res.compiled.derived_parameters["sc.C"] == pytest.approx(C, rel=1e-12)
+
+
+class _SourcesThroughAnOpenSwitch(ac.Component):
+    """5 V and 2 V sources joined by a closing switch with Ron = 0, held open by its
+    control (a step at t = 1 s): open, it carries Goff times the 3 V across it."""
+
+    V1 = el.ConstantVoltage(V=5.0)
+    V2 = el.ConstantVoltage(V=2.0)
+    sw = el.IdealClosingSwitch(booleanControl=False, Ron=0.0, Goff=1e-5)
+    ground = el.Ground()
+    step = Step(startTime=1.0)
+
+    def equations(self):
+        c = ac.connect
+        return [c(self.V1.p, self.sw.p), c(self.sw.n, self.V2.p),
+                c(self.V1.n, self.ground.p), c(self.V2.n, self.ground.p),
+                c(self.step.y, self.sw.control)]
+
+
+def test_a_switch_its_control_holds_open_starts_open():
+    # the discrete state at the start values: the switch's Boolean 'off' is its equation
+    # (not control) there, not its own start value (false: closed), which with Ron = 0
+    # would short the two sources in the first solve
+    res = ac.simulate(_SourcesThroughAnOpenSwitch(), t_end=0.5)
+    assert res.success, res.message
+    assert np.all(res["sw.off"] == 1)
+    assert np.allclose(res["sw.i"], 1e-5 * 3.0, rtol=1e-9, atol=0)
+    # when it closes, the loop of two sources is refused, naming the switch
+    res = ac.simulate(_SourcesThroughAnOpenSwitch(), t_end=2.0)
+    assert not res.success and "sw.s" in res.message and 0.99 < res.t[-1] <= 1.0 + 1e-9
