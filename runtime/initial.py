@@ -16,7 +16,8 @@ parameters found by initialization (``Parameter(fixed=False)``) are unknowns too
 with a condition of its own, and are written into p (:mod:`.initparams`).
 
 Relations take part as in Modelica's initialization: they first take their values at
-the start values (repeatedly, as one relation may read another's value), the system is
+the start values (repeatedly, as one relation may read another's value, and with the
+Boolean and Integer equations evaluated there, which relations read too), the system is
 solved with the relations frozen, then every relation takes the value it has at the
 solution (the side the dynamics choose where it sits at zero; one at zero that its rate
 does not move keeps its value: a stuck friction element's speed, solved to 1e-31, says
