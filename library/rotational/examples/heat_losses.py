@@ -12,11 +12,11 @@ MAP-LIB's reference result of this example is not in the copy this library is ch
 against (v4.0.0: the CSV is absent; v3.2.3, the same model, keeps only a Git LFS pointer
 to its result file), so it is not among the examples under ``examples.msl``; its test
 (``tests/library/test_mech_heat_ports.py``) checks it against the energy balance of the
-whole train.  It does not run yet: at t0 the lossy gear, the clutch, the one-way clutch
-and the brake are all stuck on motions that they over-determine together (four lock
-constraints on three inertias), so the split of the torques between them is
-indeterminate and the initialization stops, singular in clutch.sa (as
-LossyGearDemo2's two friction elements locked on one motion).
+whole train.  At t0 the lossy gear, the clutch, the one-way clutch and the brake are all
+stuck on motions that they over-determine together (four lock constraints on three
+inertias): the split of the torques between them is indeterminate, and the
+initialization and the integrator take the minimum-norm solution of the consistent
+singular system (:mod:`acausal.runtime.indeterminate`), as in LossyGearDemo2.
 """
 import acausal as ac
 from acausal.library.blocks import Constant, Sine
