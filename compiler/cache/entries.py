@@ -34,7 +34,9 @@ over the backend (and C compiler) and the :func:`fingerprint` of the compiler:
 
 The fingerprint hashes the sources that determine a ModelCode (compiler, components,
 ports, the model library, the model functions) and the versions of Python, numpy and
-sympy (sympy's release file, found without importing it).
+sympy (sympy's release file, found without importing it).  It is taken once a process, at
+its first compile, so that it names the code the process runs: a source edited while the
+process runs changes the name only for processes started after the edit.
 
 Writes are atomic (temporary file, then ``os.replace``): processes compiling at once each
 find a whole entry or none.  Every entry, side file and index is sealed with the SHA-256
