@@ -272,7 +272,7 @@ class Result:
 
     @staticmethod
     def _missing(name, known) -> str:
-        from .components.validation import suggestion
+        from .words import suggestion
         from .words import listed
         hint = suggestion(str(name), _nearby(str(name), known))
         leaf = str(name).split(".")[-1]

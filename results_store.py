@@ -295,7 +295,7 @@ class Keeping:
 def _resolve(compiled, name) -> list:
     """The output names ``name`` stands for: itself, a signal port's value, or the
     elements of an array; InvalidArgument (with "did you mean") otherwise."""
-    from .components.validation import suggestion
+    from .words import suggestion
     from .errors import InvalidArgument
     from .result import _array_elements
     outputs = compiled.outputs

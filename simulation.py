@@ -447,7 +447,7 @@ def _absolute_tolerance(compiled, atol, rtol):
         if name in index:
             out[index[name]] = x
             continue
-        from .components.validation import suggestion
+        from .words import suggestion
         if name in compiled.outputs:
             raise InvalidArgument(
                 f"simulate: atol[{name!r}]: {name} is computed from the unknowns the "

@@ -99,7 +99,7 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
     names = sorted(compiled.outputs) if names is None else list(names)
     missing = [n for n in names if n not in compiled.outputs]
     if missing:
-        from .components.validation import suggestion
+        from .words import suggestion
         raise KeyError(f"ensemble: no variable {missing[0]!r} in the model"
                        f"{suggestion(missing[0], compiled.outputs)}"
                        + (f" (and {len(missing) - 1} more)" if len(missing) > 1 else ""))

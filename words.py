@@ -8,9 +8,10 @@ its first few and "and N more".  The whole texts stay in the data (``Event.relat
 """
 from __future__ import annotations
 
+import difflib
 import re
 
-__all__ = ["shortened", "listed", "zero_causes", "TEXT", "ITEMS"]
+__all__ = ["shortened", "listed", "suggestion", "zero_causes", "TEXT", "ITEMS"]
 
 TEXT = 160          # characters of one equation or relation in a message
 ITEMS = 8           # names of a list in a message
@@ -27,6 +28,16 @@ def listed(items, n: int = ITEMS, limit: int = TEXT) -> str:
     items = [shortened(x, limit) for x in items]
     head = ", ".join(items[:n])
     return head + (f" and {len(items) - n} more" if len(items) > n else "")
+
+
+def suggestion(name: str, known) -> str:
+    """`` (did you mean 'R'?)`` for the closest known name, or ''."""
+    close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.5)
+    if not close:
+        lowered = {k.lower(): k for k in known}
+        if name.lower() in lowered:
+            close = [lowered[name.lower()]]
+    return f" (did you mean '{close[0]}'?)" if close else ""
 
 
 def zero_causes(zeros, components, flat=None) -> str:

@@ -38,8 +38,8 @@ from dataclasses import fields, replace
 
 import numpy as np
 
-from .declarations import (VariableAttributes, bound_violation, check_parameter_value,
-                           real_number)
+from .attributes import VariableAttributes
+from .values import bound_violation, check_parameter_value, real_number, ref
 from ..errors import InvalidEquation, InvalidIndex, InvalidValue, ModelError
 
 __all__ = ["InvalidIndex", "SymbolArray", "ArrayAttributes", "declared_shape", "shape_of",
@@ -315,7 +315,6 @@ def parameter_array(comp, name: str, decl) -> np.ndarray:
     sympy expressions of parameters, a ``ref`` resolved to the enclosing array)."""
     shape = shape_of(decl, comp, name)
     value = comp._param_values.get(name, decl.value)
-    from .declarations import ref
     if isinstance(value, ref):
         value = comp._referenced(name, value)
     elif callable(value) and not hasattr(value, "free_symbols") \

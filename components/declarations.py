@@ -5,121 +5,33 @@ sympy Symbol, named by the dotted path (``motor.R.R``), so equations read like t
 ``self.v - self.R*self.i``.  Values (parameter values, start values) live on the
 instance and can be modified when a component is instantiated.
 
-Values are checked, never coerced (Modelica's type rules for a ``Real``, section 4.8 of
-the specification): a real number is an ``int``, ``float``, numpy integer or floating
-scalar, ``Fraction``, ``Decimal`` or sympy number whose value is real.  A ``bool`` is
-not a real number (``Resistor(R=True)`` is rejected: write ``1.0`` if one is meant);
-neither is a string, a list, a complex number or NaN.  The checks here raise
-``ValueError`` describing the value; the component that holds the declaration turns
-that into a ``ModelError`` naming the component path and the declaration.
+Values are checked, never coerced (:mod:`acausal.components.values`: a ``bool`` is not
+a real number, nor is a string, a list, a complex number or NaN); a variable's
+attributes are Modelica's (:mod:`acausal.components.attributes`); an array declaration's
+elements are checked one by one (:mod:`acausal.components.arrays`).
 """
 from __future__ import annotations
 
 import contextvars
-import math
 import numbers
-import sys
-from dataclasses import dataclass, fields, replace
-from decimal import Decimal
+from dataclasses import fields
 
 import numpy as np
 
-from .valuetypes import TYPE_NAMES, checked_discrete, typed_value, value_type_checked
-from ..errors import InvalidValue
+from .arrays import ArrayAttributes, check_array_declaration, declared_shape, symbol_array
+from .attributes import VariableAttributes
+from .initparams import check_free_declaration, parameter_attributes
+from .values import (TYPE_NAMES, bound_violation, check_parameter_value,
+                     check_structural_value, is_symbolic, real_number, ref, typed_value,
+                     value_type_checked)
 
 # The root of the model being flattened, set by components.component.compiling
 COMPILING = contextvars.ContextVar("acausal_compiling", default=None)
 
+# the value checks and the attributes (modules of their own) are public names here too
 __all__ = ["Parameter", "Variable", "Across", "Through", "Signal", "VariableAttributes", "ref",
            "real_number", "check_parameter_value", "check_structural_value",
            "bound_violation", "is_symbolic", "typed_value", "TYPE_NAMES"]
-
-_STATE_SELECT = ("never", "avoid", "default", "prefer", "always")
-
-def is_symbolic(value) -> bool:
-    """True if ``value`` is a sympy object.  Declarations are checked when a class is
-    created, before any model builds a symbol; sympy is imported only by the first symbol
-    or equation, and until then no value can be a sympy object."""
-    sympy = sys.modules.get("sympy")
-    return sympy is not None and isinstance(value, sympy.Basic)
-
-
-def real_number(value, what: str) -> float:
-    """``value`` as a float if it is a real number (see the module docstring), else a
-    ``ValueError`` that starts with ``what = value``.  Infinite values pass; NaN does not."""
-    if isinstance(value, (bool, np.bool_)):
-        raise ValueError(f"{what} = {value!r} is a bool, not a real number")
-    if is_symbolic(value):
-        if not value.is_number:
-            raise ValueError(f"{what} = {value} is an expression, not a real number")
-    elif not isinstance(value, (numbers.Real, Decimal)):
-        raise ValueError(f"{what} = {value!r} is not a real number "
-                         f"(it is a {type(value).__name__})")
-    try:
-        x = float(value)
-    except (TypeError, ValueError, OverflowError):
-        # sympy's I, zoo and other numbers without a real value end here
-        raise ValueError(f"{what} = {value} is not a real number") from None
-    if math.isnan(x):
-        raise ValueError(f"{what} = {value!r} is not a number (NaN)")
-    return x
-
-
-def check_parameter_value(value, what: str, typ=float) -> None:
-    """A parameter value is a real number (of a Boolean parameter True or False, of an
-    Integer parameter a whole number), ``ref``, function of the component or sympy
-    expression of other parameters (whose symbols flattening checks); else ValueError."""
-    if value is None or isinstance(value, ref):
-        return
-    if typ is not float and not is_symbolic(value) and (
-            not callable(value) or isinstance(value, (numbers.Number, np.generic))):
-        typed_value(value, typ, what)
-        return
-    if isinstance(value, (np.ndarray, list, tuple)):
-        raise ValueError(f"{what} = {value!r} is not a real number (it is a "
-                         f"{type(value).__name__}): the parameter is declared a scalar (an "
-                         "array value or shape= declares an array)")
-    if is_symbolic(value):
-        from sympy import Expr    # already loaded: value is a sympy object
-        if not isinstance(value, Expr):
-            raise ValueError(f"{what} = {value} is a relation or a logical value, "
-                             "not a real number")
-        if value.is_number:
-            real_number(value, what)
-        return
-    if callable(value) and not isinstance(value, (numbers.Number, Decimal, np.generic)):
-        return
-    real_number(value, what)
-
-
-def check_structural_value(value, what: str, lo=None, hi=None, choices=None) -> None:
-    """A structural parameter's value is a number or a bool, or a list or tuple of them
-    (numbers within [lo, hi]), or one of its ``choices`` (strings, an enumeration: the
-    MSL's ``initType``); else ValueError."""
-    if choices is not None:
-        if value not in choices:
-            raise ValueError(f"{what} = {value!r} is not one of {', '.join(map(repr, choices))}")
-        return
-    items = value if isinstance(value, (list, tuple)) else [value]
-    for item in items:
-        if isinstance(item, (bool, np.bool_)):
-            continue
-        if isinstance(item, (list, tuple)):
-            check_structural_value(item, what, lo, hi)
-            continue
-        x = real_number(item, what)
-        why = bound_violation(x, lo, hi)
-        if why:
-            raise ValueError(f"{what} = {item!r} {why}")
-
-
-def bound_violation(value: float, lo, hi) -> str | None:
-    """Why ``value`` lies outside [lo, hi] (either may be None), or None."""
-    if lo is not None and value < lo:
-        return f"is below its minimum {lo!r}"
-    if hi is not None and value > hi:
-        return f"is above its maximum {hi!r}"
-    return None
 
 
 def _is_real(value) -> bool:
@@ -128,84 +40,6 @@ def _is_real(value) -> bool:
         return True
     except ValueError:
         return False
-
-
-def _finite(value, what: str) -> float:
-    x = real_number(value, what)
-    if math.isinf(x):
-        raise ValueError(f"{what} = {value!r} is not finite")
-    return x
-
-
-@dataclass
-class VariableAttributes:
-    """Modelica's attributes of a Real variable."""
-
-    start: float | None = None
-    fixed: bool | None = None
-    unit: str = ""
-    nominal: float | None = None
-    min: float | None = None
-    max: float | None = None
-    state_select: str = "default"
-    description: str = ""
-    discrete: bool = False   # changes only in when-clauses (Modelica's ``discrete`` prefix)
-    type: type = float       # float (Real), bool (Boolean) or int (Integer)
-    steady: bool = False     # der(v) = 0 at the start (an initial equation: steady state)
-
-    def modified(self, mod) -> "VariableAttributes":
-        """A checked copy with a modification applied: a number sets start, a dict any
-        attribute.  Raises ValueError (bad value) or TypeError (unknown attribute)."""
-        if isinstance(mod, dict):
-            unknown = set(mod) - {f.name for f in fields(self)}
-            if unknown:
-                raise TypeError(f"unknown variable attribute(s) {sorted(unknown)}; "
-                                f"allowed: {sorted(f.name for f in fields(self))}")
-            return replace(self, **mod).checked()
-        if isinstance(mod, (str, list, tuple, set)) or mod is None:
-            raise ValueError(f"a modification of a variable is a number (its start value) "
-                             f"or a dict of its attributes, not {mod!r}")
-        return replace(self, start=mod).checked()
-
-    def checked(self) -> "VariableAttributes":
-        """A copy with numbers as floats, or ValueError naming the bad attribute.
-
-        start is finite; fixed is True, False or None; nominal is finite and positive
-        (it scales error weights); min <= max; start lies in [min, max]."""
-        typ = value_type_checked(self.type)
-        if typ is not float:
-            return checked_discrete(self, typ)
-        start = None if self.start is None else _finite(self.start, "start")
-        nominal = None if self.nominal is None else _finite(self.nominal, "nominal")
-        if nominal is not None and nominal <= 0:
-            raise ValueError(f"nominal = {self.nominal!r} must be positive "
-                             "(it is the variable's typical magnitude)")
-        lo = None if self.min is None else real_number(self.min, "min")
-        hi = None if self.max is None else real_number(self.max, "max")
-        if lo is not None and hi is not None and lo > hi:
-            raise ValueError(f"min = {self.min!r} is greater than max = {self.max!r}")
-        if start is not None and ((lo is not None and start < lo)
-                                  or (hi is not None and start > hi)):
-            raise ValueError(f"start = {self.start!r} lies outside "
-                             f"[min, max] = [{self.min!r}, {self.max!r}]")
-        fixed = self.fixed
-        if fixed is not None:
-            if not isinstance(fixed, (bool, np.bool_)):
-                raise ValueError(f"fixed = {fixed!r} must be True or False")
-            fixed = bool(fixed)
-        for name in ("unit", "description"):
-            if not isinstance(getattr(self, name), str):
-                raise ValueError(f"{name} = {getattr(self, name)!r} must be a string")
-        if not isinstance(self.discrete, (bool, np.bool_)):
-            raise ValueError(f"discrete = {self.discrete!r} must be True or False")
-        if not isinstance(self.steady, (bool, np.bool_)):
-            raise ValueError(f"steady = {self.steady!r} must be True or False")
-        _check_state_select(self.state_select)
-        return replace(self, start=start, fixed=fixed, nominal=nominal, min=lo, max=hi)
-
-def _check_state_select(value):
-    if not isinstance(value, str) or value not in _STATE_SELECT:
-        raise ValueError(f"state_select must be one of {_STATE_SELECT}, not {value!r}")
 
 
 class _Declaration:
@@ -222,7 +56,6 @@ class _Declaration:
         if instance is None:
             return self
         if self.shape is not None:
-            from .arrays import symbol_array
             return symbol_array(instance, self.name, self)
         # the symbol made before, read here (every equation reads several): the
         # component makes it, and says what is wrong when none can be read
@@ -235,7 +68,6 @@ class _Declaration:
 
 
 def _declared_shape(shape):
-    from .arrays import declared_shape
     return None if shape is None else declared_shape(shape)
 
 
@@ -315,12 +147,10 @@ class Parameter(_Declaration):
         itself, or for a dict of attributes (``fixed``, ``start``) the value it had."""
         if not isinstance(mod, dict):
             return mod
-        from .initparams import parameter_attributes
         return parameter_attributes(comp, name, mod, self)
 
     def check(self) -> None:
         """ValueError unless the declaration is consistent (checked once per class)."""
-        from .initparams import check_free_declaration
         check_free_declaration(self)
         if self.structural:
             check_structural_value(self.value, "default value", self.min, self.max,
@@ -331,7 +161,6 @@ class Parameter(_Declaration):
             raise ValueError(f"a {TYPE_NAMES[self.type]} parameter is a scalar (arrays of "
                              "them are not supported)")
         if self.shape is not None:
-            from .arrays import check_array_declaration
             check_array_declaration(self)    # value, min and max element by element
         else:
             self._check_scalar()
@@ -386,7 +215,7 @@ class Variable(_Declaration):
             raise ValueError("Boolean and Integer variables are scalars (arrays of them "
                              "are not supported)")
         if self.shape is not None:
-            from .arrays import ArrayAttributes as attributes   # per-element attributes
+            attributes = ArrayAttributes     # per-element attributes
         else:
             attributes = VariableAttributes
         self.attributes = attributes(
@@ -428,23 +257,6 @@ class Signal(Variable):
     """The value of a causal signal port (RealInput / RealOutput)."""
 
     kind = "signal"
-
-
-class ref:
-    """A parameter binding to the enclosing component's parameter.
-
-    ``Ra = Resistor(R=ac.ref("R"))`` inside a DCMotor is Modelica's ``Resistor Ra(R=R)``:
-    the resistor's R is the motor's R, whatever value the motor is given.
-    """
-
-    def __init__(self, name: str):
-        if not isinstance(name, str) or not name.isidentifier():
-            raise InvalidValue(f"ref() takes the name of a parameter of the enclosing "
-                               f"component, not {name!r}")
-        self.name = name
-
-    def __repr__(self):
-        return f"ref({self.name!r})"
 
 
 # -- what help(), inspect.signature and repr show of a component class -----------------------

@@ -12,8 +12,10 @@ says what a component's parameter is when the model is flattened.
 """
 from __future__ import annotations
 
-from .declarations import real_number
+from .units import convert_value
+from .values import real_number
 from ..errors import InvalidValue
+from ..words import suggestion
 
 __all__ = ["parameter_attributes", "parameter_start", "check_free_declaration",
            "attribute_values"]
@@ -38,7 +40,6 @@ def attribute_values(decl, key: str, mod: dict, where: str) -> dict:
     """A dict modification of parameter ``key`` checked where the instance is made: its
     attributes among ``fixed`` and ``start`` (a start with a unit converted); raises
     InvalidValue naming ``where``."""
-    from .validation import suggestion
     out = dict(mod)
     for attr in mod:
         if attr not in _ATTRIBUTES:
@@ -47,7 +48,6 @@ def attribute_values(decl, key: str, mod: dict, where: str) -> dict:
                                f"modified by its value or by a dict of {list(_ATTRIBUTES)})")
     try:
         if isinstance(mod.get("start"), str):
-            from .units import convert_value
             out["start"] = convert_value(mod["start"], decl.unit, f"parameter {key}: start")
         parameter_attributes(_Probe(), key, out, decl)
     except ValueError as err:

@@ -15,25 +15,15 @@ expression) is checked by flattening, where the values it uses are known.
 """
 from __future__ import annotations
 
-import difflib
 import math
 
 from .component import _constructor_arguments, _declarations, _structurals
 from .declarations import (Parameter, Variable, bound_violation, check_parameter_value,
                            is_symbolic)
 from ..errors import InvalidValue, NotInModel
+from ..words import suggestion
 
 __all__ = ["validate_modifications", "suggestion"]
-
-
-def suggestion(name: str, known) -> str:
-    """`` (did you mean 'R'?)`` for the closest known name, or ''."""
-    close = difflib.get_close_matches(name, list(known), n=1, cutoff=0.5)
-    if not close:
-        lowered = {k.lower(): k for k in known}
-        if name.lower() in lowered:
-            close = [lowered[name.lower()]]
-    return f" (did you mean '{close[0]}'?)" if close else ""
 
 
 def validate_modifications(comp, mods: dict, where: str) -> dict:

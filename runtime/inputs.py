@@ -146,7 +146,7 @@ class InputDrivers:
         specs = dict(specs or {})
         unknown = [n for n in specs if n not in self.names]
         if unknown:
-            from ..components.validation import suggestion
+            from ..words import suggestion
             raise NotInModel(f"simulate(inputs=...): the model has no input '{unknown[0]}'"
                              f"{suggestion(unknown[0], self.names)} (its inputs: "
                              f"{', '.join(self.names)})")

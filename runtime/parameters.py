@@ -9,7 +9,7 @@ import numpy as np
 
 from ..components.arrays import array_of_name
 from ..components.declarations import typed_value
-from ..components.validation import suggestion
+from ..words import suggestion
 from ..errors import InvalidValue, NotInModel
 from ..words import listed
 from .initparams import not_tunable
