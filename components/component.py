@@ -40,6 +40,10 @@ from .conditional import Conditional, check_conditionals, make_conditionals
 from .declarations import (COMPILING, Parameter, Variable, check_parameter_value,
                            check_structural_value, declaration_doc, is_symbolic,
                            parameter_signature, ref, shown_value)
+from .declared import class_declarations, class_structurals, constructor_arguments
+from .arrays import check_array_value, parameter_array, shape_of
+from .equationlist import Connection
+from .validation import validate_modifications
 from ..errors import (InvalidConnection, InvalidEquation, InvalidHierarchy, InvalidValue,
                       ModelError, NotInModel)
 
@@ -99,7 +103,6 @@ class _ComponentType(type):
         obj = super().__call__(*args, **kwargs)
         mods = getattr(obj, "_mods", None)
         if mods:
-            from .validation import validate_modifications
             object.__setattr__(obj, "_mods", validate_modifications(obj, mods, cls.__name__))
         return obj
 
@@ -109,7 +112,7 @@ class Component(metaclass=_ComponentType):
 
     def __init__(self, **modifications):
         structural = {}
-        for name, decl in _structurals(type(self)).items():
+        for name, decl in class_structurals(type(self)).items():
             if name in modifications:
                 value = copy.deepcopy(modifications.pop(name))
                 if hasattr(value, "tolist"):        # a numpy array of coefficients
@@ -152,6 +155,9 @@ class Component(metaclass=_ComponentType):
                     decl.check()
                 except ValueError as err:
                     raise InvalidValue(f"{cls.__name__}.{name}: {err}") from None
+            elif isinstance(decl, Conditional) and not isinstance(decl.component, Component):
+                raise InvalidValue(f"{cls.__name__}.{name}: ac.Conditional() takes a port or "
+                                   f"component, got {decl.component!r}")
         check_conditionals(cls)
         inheritance.prepare_class(cls)
         _describe_class(cls)
@@ -161,15 +167,15 @@ class Component(metaclass=_ComponentType):
         if value is self or (_is_component_list(value) and any(v is self for v in value)):
             raise InvalidHierarchy(f"{type(self).__name__}.{name}: a component cannot "
                                    "contain itself")
-        if name in _structurals(type(self)):
+        if name in class_structurals(type(self)):
             raise InvalidValue(f"{type(self).__name__}.{name} is a structural parameter; set "
                                f"it when the component is made, {type(self).__name__}"
                                f"({name}=...)")
-        if isinstance(_declarations(type(self)).get(name), (Parameter, Variable)):
+        if isinstance(class_declarations(type(self)).get(name), (Parameter, Variable)):
             # the assignment would hide the declaration: the equations would use the
             # value while the model still declares the parameter or variable
             raise InvalidValue(f"{type(self).__name__}.{name} is a declared "
-                               f"{type(_declarations(type(self))[name]).__name__.lower()}; "
+                               f"{type(class_declarations(type(self))[name]).__name__.lower()}; "
                                f"set it by modification, {type(self).__name__}({name}=...), "
                                f"not by assigning self.{name}")
         if isinstance(value, Component):
@@ -224,7 +230,7 @@ class Component(metaclass=_ComponentType):
         object.__setattr__(self, "_parent", parent)
         object.__setattr__(self, "_root", root)
         self._symbols.clear()
-        decls = _declarations(type(self))
+        decls = class_declarations(type(self))
         for key, mod in self._mods.items():
             self._apply_modification(key, mod, decls)
 
@@ -239,7 +245,6 @@ class Component(metaclass=_ComponentType):
             try:    # a dict gives attributes: {"fixed": False, "start": 100} (initparams)
                 mod = decls[key].attributes_modified(self, key, mod)
                 if decls[key].shape is not None:
-                    from .arrays import check_array_value, shape_of
                     check_array_value(mod, shape_of(decls[key], self, key),
                                       f"parameter {key}")
                 else:
@@ -255,7 +260,7 @@ class Component(metaclass=_ComponentType):
                 self._var_attrs[key] = base.modified(mod)
             except (TypeError, ValueError) as err:
                 raise InvalidValue(f"{self._describe()}: variable '{key}': {err}") from None
-        elif key in _constructor_arguments(type(self)):
+        elif key in constructor_arguments(type(self)):
             # a structural argument (a port that exists or not, a number of cells) shapes
             # the instance when it is created; a modification comes too late for that
             kind = type(self).__name__
@@ -286,7 +291,7 @@ class Component(metaclass=_ComponentType):
             from .realsymbol import real_symbol
             sym = real_symbol(full)
             self._symbols[name] = sym
-            typ = getattr(_declarations(type(self)).get(name), "type", float)
+            typ = getattr(class_declarations(type(self)).get(name), "type", float)
             if typ is not float and self._root is not None:
                 self._root._value_types[sym] = typ
         return sym
@@ -296,13 +301,12 @@ class Component(metaclass=_ComponentType):
         """The value of parameter ``name``: a number, or a sympy expression of other
         parameters (a ``ref`` or a function of the component, evaluated here); of an
         array parameter, an array of them."""
-        if _declarations(type(self))[name].shape is not None:
-            from .arrays import parameter_array
-            return parameter_array(self, name, _declarations(type(self))[name])
+        if class_declarations(type(self))[name].shape is not None:
+            return parameter_array(self, name, class_declarations(type(self))[name])
         if name in self._param_values:
             value = self._param_values[name]
         else:
-            value = _declarations(type(self))[name].value
+            value = class_declarations(type(self))[name].value
         if isinstance(value, ref):
             return self._referenced(name, value)
         if callable(value) and not is_symbolic(value):
@@ -320,7 +324,7 @@ class Component(metaclass=_ComponentType):
                 return self._referenced(name, value)
         try:
             check_parameter_value(value, f"parameter {name}",
-                                  _declarations(type(self))[name].type)
+                                  class_declarations(type(self))[name].type)
         except ValueError as err:
             raise InvalidValue(f"{self._describe()}: {err}") from None
         return value
@@ -340,11 +344,11 @@ class Component(metaclass=_ComponentType):
         return getattr(parent, value.name)
 
     def variable_attributes(self, name: str):
-        return self._var_attrs.get(name, _declarations(type(self))[name].attributes)
+        return self._var_attrs.get(name, class_declarations(type(self))[name].attributes)
 
     def declarations(self) -> dict:
         """Parameters and variables declared by this component's class, in order."""
-        return _declarations(type(self))
+        return class_declarations(type(self))
 
     def equations(self) -> Iterable:
         """The equations and connections this class adds (override); the base classes'
@@ -364,7 +368,7 @@ class Component(metaclass=_ComponentType):
             return f"<{type(self).__name__} {where}>"
         given = {**getattr(self, "_mods", {}), **getattr(self, "_param_values", {})}
         shown = [f"{name}={getattr(self, '_structural', {}).get(name, decl.value)!r}"
-                 for name, decl in _structurals(type(self)).items()]
+                 for name, decl in class_structurals(type(self)).items()]
         for name, decl in self.declarations().items():
             if isinstance(decl, Parameter):
                 value = given.get(name, decl.value)
@@ -394,19 +398,6 @@ class Port(Component):
         return [n for n, d in self.declarations().items() if getattr(d, "kind", "") == "through"]
 
 
-class Connection:
-    """connect(a, b, ...): the ports form one node (across equal, through sum to zero)."""
-
-    __slots__ = ("ports", "owner")
-
-    def __init__(self, ports):
-        self.ports = tuple(ports)
-        self.owner = None
-
-    def __repr__(self):
-        return "connect(" + ", ".join(p.path or repr(p) for p in self.ports) + ")"
-
-
 def connect(a: Port, b: Port, *more: Port) -> Connection:
     """Connect ports of the same type: ``ac.connect(self.R1.n, self.C1.p)``.
 
@@ -414,9 +405,9 @@ def connect(a: Port, b: Port, *more: Port) -> Connection:
     connects member by member: the result is then a list of connections, one per
     member."""
     ports = (a, b) + more
-    if any(getattr(p, "_bus_end", False) for p in ports):
-        from .expandable import check_connection      # through a bus: typed when flattened
-        check_connection(ports)
+    bus = next((p for p in ports if getattr(p, "_bus_end", False)), None)
+    if bus is not None:          # through a bus: the bus checks it, typed when flattened
+        bus.check_bus_connection(ports)
         return Connection(ports)
     for p in ports:
         if isinstance(p, Component) and not isinstance(p, Port):
@@ -481,8 +472,6 @@ def _connection_type(self):
 Port.connection_type = _connection_type
 
 _CHILD_CACHE: dict = {}
-_DECL_CACHE: dict = {}
-_STRUCTURAL_CACHE: dict = {}
 
 
 def _class_children(cls) -> dict:
@@ -495,42 +484,6 @@ def _class_children(cls) -> dict:
                     out[name] = value
         _CHILD_CACHE[cls] = out
     return _CHILD_CACHE[cls]
-
-
-def _constructor_arguments(cls) -> set:
-    """The named arguments of ``cls.__init__`` beyond the modifications."""
-    import inspect
-    try:
-        params = inspect.signature(cls.__init__).parameters.values()
-    except (TypeError, ValueError):
-        return set()
-    return {p.name for p in params if p.name != "self"
-            and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)}
-
-
-def _declarations(cls) -> dict:
-    """Parameters and variables of the model over the MRO (not structural parameters,
-    which shape the model and are no part of it)."""
-    if cls not in _DECL_CACHE:
-        out, structural = {}, {}
-        for klass in reversed(cls.__mro__):
-            for name, value in vars(klass).items():
-                if isinstance(value, Parameter) and value.structural:
-                    structural[name] = value
-                    out.pop(name, None)
-                elif isinstance(value, (Parameter, Variable)):
-                    out[name] = value
-                    structural.pop(name, None)
-        _DECL_CACHE[cls] = out
-        _STRUCTURAL_CACHE[cls] = structural
-    return _DECL_CACHE[cls]
-
-
-def _structurals(cls) -> dict:
-    """The structural parameters of ``cls`` over the MRO."""
-    if cls not in _STRUCTURAL_CACHE:
-        _declarations(cls)
-    return _STRUCTURAL_CACHE[cls]
 
 
 def _hierarchy_error(comp, where: str, above, first: str) -> InvalidHierarchy:
@@ -563,37 +516,3 @@ def _foreign_error(comp, name: str, root) -> NotInModel:
 def _is_component_list(value) -> bool:
     return (isinstance(value, (list, tuple)) and len(value) > 0
             and all(isinstance(v, Component) for v in value))
-
-
-_PLAIN_ITEMS = set()     # Equation, Connection and When (filled on first use)
-
-
-def flatten_equation_list(items) -> list:
-    """Equations may be returned as nested lists or generators; make one flat list."""
-    if not _PLAIN_ITEMS:
-        from .symbols import Equation, When   # sympy: only models with equations need it
-        _PLAIN_ITEMS.update((Equation, Connection, When))
-    if type(items) is list and all(type(i) in _PLAIN_ITEMS for i in items):
-        return list(items)       # the common case: a list of equations, already flat
-    kinds = tuple(_PLAIN_ITEMS)
-    if isinstance(items, kinds) or not (items is None or isinstance(items, (list, tuple))
-                                        or hasattr(items, "__iter__")):
-        from ..words import shortened
-        raise InvalidEquation(f"returned {shortened(repr(items), 100)} "
-                              f"({type(items).__name__}), not a list of equations: return "
-                              "a list, e.g. [ac.Eq(lhs, rhs)]")
-    out = []
-    stack = [iter(items if items is not None else [])]
-    while stack:
-        try:
-            item = next(stack[-1])
-        except StopIteration:
-            stack.pop()
-            continue
-        if isinstance(item, kinds):
-            out.append(item)
-        elif isinstance(item, (list, tuple)) or hasattr(item, "__next__"):
-            stack.append(iter(item))
-        else:
-            out.append(item)
-    return out

@@ -21,6 +21,8 @@ equations give the internal default in its place (a fixed support, a device temp
 port is an error that names the flag and how to set it.
 """
 from __future__ import annotations
+
+from .declared import class_structurals
 from ..errors import AbsentComponent, InvalidValue
 
 
@@ -42,12 +44,10 @@ class Conditional:
     """``name = ac.Conditional(component, "flag")``: ``component`` (a port, usually) is
     made for an instance whose structural Boolean parameter ``flag`` is True (``when=
     False``: is False, as the MSL's ``Fixed fixed if not useSupport``); see the module
-    docstring."""
+    docstring.  That ``component`` is a component is checked with the class that
+    declares it (``Component.__init_subclass__``)."""
 
     def __init__(self, component, flag: str, when: bool = True):
-        from .component import Component
-        if not isinstance(component, Component):
-            raise InvalidValue(f"Conditional() takes a port or component, got {component!r}")
         if not isinstance(flag, str) or not flag.isidentifier():
             raise InvalidValue(f"Conditional(): the flag is the name of a structural "
                                f"Boolean parameter, not {flag!r}")
@@ -73,8 +73,7 @@ class Conditional:
 
     def check(self, cls) -> None:
         """ValueError unless ``flag`` is a structural Boolean parameter of ``cls``."""
-        from .component import _structurals
-        decl = _structurals(cls).get(self.flag)
+        decl = class_structurals(cls).get(self.flag)
         if decl is None or not isinstance(decl.value, bool):
             raise ValueError(f"Conditional(..., {self.flag!r}): {self.flag} must be a "
                              f"structural Boolean parameter of {cls.__name__}, "
@@ -98,9 +97,8 @@ def class_conditionals(cls) -> dict:
 def make_conditionals(comp, structural: dict) -> None:
     """Make the conditional components of a new instance whose flags say so
     (``structural``: the structural parameters it was given)."""
-    from .component import _structurals
     for name, cond in class_conditionals(type(comp)).items():
-        use = structural.get(cond.flag, _structurals(type(comp))[cond.flag].value)
+        use = structural.get(cond.flag, class_structurals(type(comp))[cond.flag].value)
         if not isinstance(use, bool):
             raise InvalidValue(f"{type(comp).__name__}: {cond.flag} must be True or "
                                f"False, not {use!r}")

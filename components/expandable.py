@@ -40,7 +40,11 @@ member ports, and replaces the connections through buses by one connection per s
 """
 from __future__ import annotations
 
-from .component import Connection, InvalidConnection, Port
+from .component import Component, Port
+from .declarations import Parameter, Signal, Variable
+from .equationlist import Connection
+from ..errors import InvalidConnection, InvalidEquation, InvalidValue
+from ..ports.base import SignalPort
 
 __all__ = ["ExpandableConnector", "BusMember", "is_bus_end", "drop_bus_members",
            "resolve_buses"]
@@ -53,9 +57,12 @@ class ExpandableConnector(Port):
     hint = "a signal on a bus is read but never set"
     _bus_end = True
 
+    @staticmethod
+    def check_bus_connection(ports) -> None:
+        """What ``ac.connect`` checks of a connection through a bus: :func:`check_connection`."""
+        check_connection(ports)
+
     def __init_subclass__(cls, **kwargs):
-        from .declarations import Parameter, Variable
-        from .component import Component, InvalidValue
         potential = dict(getattr(cls, "_potential", {}))
         for name, decl in list(vars(cls).items()):
             if isinstance(decl, Parameter):
@@ -100,6 +107,7 @@ class BusMember:
     connected (module docstring, rule 2).  Flattening makes it a port (``port``)."""
 
     _bus_end = True
+    check_bus_connection = staticmethod(ExpandableConnector.check_bus_connection)
 
     def __init__(self, owner, name: str, declared=None):
         self.owner = owner          # the bus, or the BusMember of a declared nested bus
@@ -142,7 +150,6 @@ class BusMember:
         return self._slots[name]
 
     def _sympy_(self):
-        from .component import InvalidEquation
         raise InvalidEquation(f"the bus member '{self.path}' is read in an equation; a bus "
                               "member may only be connected: connect it to an input of a "
                               "block and read that")
@@ -372,7 +379,6 @@ def _check_declared(member: BusMember, what: str, ok: bool) -> None:
 
 
 def _declared_text(decl) -> str:
-    from .declarations import Variable
     if isinstance(decl, Variable):
         return {float: "a Real signal", bool: "a Boolean signal",
                 int: "an Integer signal"}[decl.type]
@@ -397,7 +403,6 @@ def _make_bus(member: BusMember, cls, made, root) -> None:
 def _make_signal(member: BusMember, example, made, root):
     if member.port is not None:
         return member.port
-    from .declarations import Variable
     typ = example.declarations()["signal"].type
     _check_declared(member, f"a {type(example).__name__}",
                     isinstance(member.declared, Variable) and member.declared.type is typ)
@@ -423,8 +428,6 @@ _SIGNAL_CLASSES: dict = {}
 def bus_signal_class(typ):
     """The port class of a member of a bus carrying a signal of value type ``typ``."""
     if typ not in _SIGNAL_CLASSES:
-        from ..ports.base import SignalPort
-        from .declarations import Signal
         label = {float: "Real", bool: "Boolean", int: "Integer"}[typ]
         cls = type(f"{label}BusSignal", (SignalPort,), {
             "__doc__": f"A {label} signal on a bus (a member of an expandable connector).",

@@ -36,6 +36,8 @@ from __future__ import annotations
 import contextvars
 import functools
 import types
+
+from .equationlist import flatten_equation_list
 from ..errors import InvalidInheritance
 
 
@@ -152,7 +154,6 @@ def collect(comp, name: str, known: dict | None = None) -> list:
     that error).  Generators are run here, while the super() guard is active.
     ``known``: :func:`own_methods` by (class, name), kept by the caller while the
     classes do not change (one flattening)."""
-    from .component import flatten_equation_list
     out = []
     cls = type(comp)
     if known is None:

@@ -18,6 +18,8 @@ adds the initial equation der(w) = 0.
 """
 from __future__ import annotations
 
+from .declarations import Parameter
+
 __all__ = ["Init"]
 
 
@@ -33,7 +35,6 @@ class Init:
     @staticmethod
     def parameter(default: str = "NoInit", description: str = "type of initialization"):
         """The block's ``initType``: a structural parameter, one of :attr:`CHOICES`."""
-        from .declarations import Parameter
         return Parameter(default, choices=Init.CHOICES, description=description)
 
     @staticmethod
@@ -43,7 +44,7 @@ class Init:
         start at ``x_start`` (InitialState) and whose ``output`` starts at ``y_start``
         (InitialOutput; ``free_at_output``: the states then held at der(x) = 0, by
         default all of them but the first, as the MSL's transfer functions write it)."""
-        from .symbols import Eq, der
+        from .symbols import Eq, der    # sympy: when a block's equations are written
         states = list(states)
         if init == Init.NoInit:
             return []

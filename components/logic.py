@@ -13,20 +13,13 @@ import numpy as np
 import sympy as sp
 from sympy import S
 
-from . import symbols as _symbols
+from .declarations import COMPILING
+from .operators import Pre, Sample, _invalid, _text, sympify_value
 from .printing import text
 from .realsymbol import SYMBOLS
 
 __all__ = ["as_condition", "value_type", "is_logical", "boolean_value", "pre", "edge",
            "change", "initial", "INITIAL", "integer"]
-
-
-def _invalid(message: str):
-    return _symbols._invalid(message)
-
-
-def _text(value) -> str:
-    return _symbols._text(value)
 
 
 def _logical_side(value) -> bool:
@@ -63,7 +56,6 @@ def value_type(expr):
     """The value type (float, bool or int) of a variable or parameter symbol of the
     model being compiled; float for anything else, None outside a compile (where the
     types are not known)."""
-    from .declarations import COMPILING
     types = getattr(COMPILING.get(), "_value_types", None)
     if types is None:
         return None
@@ -78,7 +70,7 @@ def is_logical(value) -> bool:
     if isinstance(value, (sp.core.relational.Relational, sp.logic.boolalg.BooleanAtom)):
         return True
     return isinstance(value, sp.logic.boolalg.BooleanFunction) and not isinstance(
-        value, _symbols.Sample)
+        value, Sample)
 
 
 def as_condition(value):
@@ -102,8 +94,8 @@ def _as_condition(e):
     logic = sp.logic.boolalg
     if isinstance(e, (sp.core.relational.Relational, logic.BooleanAtom)):
         return e
-    if type(e) in SYMBOLS or isinstance(e, _symbols.Pre):
-        typ = value_type(e.args[0] if isinstance(e, _symbols.Pre) else e)
+    if type(e) in SYMBOLS or isinstance(e, Pre):
+        typ = value_type(e.args[0] if isinstance(e, Pre) else e)
         if typ in (bool, None):
             return sp.StrictGreaterThan(e, _HALF)
         name = text(e)
@@ -135,7 +127,7 @@ def pre(x):
     """``pre(x)``: the value of x just before the event (Modelica's ``pre``; see
     :class:`acausal.components.symbols.Pre`).  Of a Boolean it is a condition (``~ac.pre(self.y) & self.u``), of
     anything else a value."""
-    value = _symbols.Pre(_symbols.sympify_value(x))
+    value = Pre(sympify_value(x))
     return as_condition(value) if _boolean_symbol(value.args[0]) else value
 
 
@@ -144,7 +136,7 @@ def _boolean_symbol(x) -> bool:
 
 
 def _discrete_symbol(x, what: str):
-    x = _symbols.sympify_value(x)
+    x = sympify_value(x)
     if type(x) not in SYMBOLS:
         raise _invalid(f"{what}({_text(x)}) takes a Boolean or Integer variable (its value "
                        "before the event is kept), not an expression")
@@ -155,14 +147,14 @@ def edge(b):
     """``edge(b)``: b became true at this event, ``b and not pre(b)`` (Modelica's
     ``edge``; b a Boolean variable)."""
     x = _discrete_symbol(b, "edge")
-    return as_condition(x) & ~as_condition(_symbols.Pre(x))
+    return as_condition(x) & ~as_condition(Pre(x))
 
 
 def change(v):
     """``change(v)``: v changed at this event, ``v <> pre(v)`` (Modelica's ``change``; v
     a Boolean or Integer variable)."""
     x = _discrete_symbol(v, "change")
-    return sp.Ne(x, _symbols.Pre(x))
+    return sp.Ne(x, Pre(x))
 
 
 # true while the initial values are found (Modelica's initial()); the runtime holds it
@@ -172,7 +164,6 @@ INITIAL = sp.Symbol("initial()", real=True)
 def initial():
     """``initial()``: true at the initialization (a when-clause with it fires once the
     initial values are found), false afterwards (Modelica's ``initial()``)."""
-    from .declarations import COMPILING
     root = COMPILING.get()
     if root is not None:
         object.__setattr__(root, "_uses_initial", True)   # m keeps its value
@@ -182,4 +173,4 @@ def initial():
 def integer(x):
     """``integer(x)``: the largest whole number not above x (Modelica's ``integer``,
     floor): a value that changes at events, where x crosses a whole number."""
-    return sp.floor(_symbols.sympify_value(x))
+    return sp.floor(sympify_value(x))

@@ -8,6 +8,7 @@ from sympy import S
 from sympy.printing.precedence import PRECEDENCE, precedence
 from sympy.printing.str import StrPrinter
 
+from .longtext import shortened
 from .realsymbol import SYMBOLS
 
 __all__ = ["text"]
@@ -199,6 +200,5 @@ _PRINTER = _TextPrinter()
 def text(expr) -> str:
     """``sympy.sstr(expr)``, the same text, faster on the sums models are made of (an
     expression too long to read is shortened: components/longtext.py)."""
-    from .longtext import shortened
     short = shortened(expr, _PRINTER)
     return _PRINTER.doprint(expr) if short is None else short

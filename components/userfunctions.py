@@ -55,6 +55,9 @@ import inspect
 
 import numpy as np
 
+from .values import is_symbolic
+from ..errors import InvalidValue, ModelError
+
 __all__ = ["function", "Function", "inline_functions", "has_calls", "time_derivative",
            "structural_symbols", "calls_outside"]
 
@@ -65,12 +68,10 @@ def _sympy():
 
 
 def _invalid(message: str):
-    from .component import InvalidValue
     return InvalidValue(message)
 
 
 def _symbolic(value) -> bool:
-    from .declarations import is_symbolic
     if isinstance(value, np.ndarray):
         return any(is_symbolic(v) for v in value.flat)
     if isinstance(value, (list, tuple)):
@@ -166,7 +167,7 @@ class Function:
                            f"({', '.join(self.inputs)}), got {len(args)}")
         if not _symbolic(args):
             return self.body(*args)
-        from .symbols import sympify_value
+        from .operators import sympify_value     # sympy: a call with symbols only
         layout = tuple(_layout(a) for a in args)
         flat = [sympify_value(v) for a, s in zip(args, layout) for v in _flat(a, s)]
         return self._node(layout)(*flat)
@@ -353,7 +354,6 @@ def _call_derivative(call, plain):
     if f.derivative is None:
         if all(sp.sympify(v) == 0 for d in ders for v in _flat(d, _layout(d))):
             return sp.S.Zero
-        from .component import ModelError
         raise ModelError(
             f"{f.name}({', '.join(map(str, call.args))}) must be differentiated (index "
             "reduction differentiates its equation), but ac.function "

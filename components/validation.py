@@ -17,9 +17,11 @@ from __future__ import annotations
 
 import math
 
-from .component import _constructor_arguments, _declarations, _structurals
-from .declarations import (Parameter, Variable, bound_violation, check_parameter_value,
-                           is_symbolic)
+from .declarations import Parameter, Signal, Variable
+from .declared import class_declarations, class_structurals, constructor_arguments
+from .initparams import attribute_values
+from .units import convert_value, has_unit
+from .values import bound_violation, check_parameter_value, is_symbolic
 from ..errors import InvalidValue, NotInModel
 from ..words import suggestion
 
@@ -30,7 +32,7 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
     """``mods`` checked against ``comp``'s declarations and sub-components, with values
     given with units converted; raises NotInModel or InvalidValue naming ``where``
     (``Resistor`` or ``'R1' (Resistor)``) and the declaration."""
-    decls = _declarations(type(comp))
+    decls = class_declarations(type(comp))
     children = comp._children
     out = {}
     for key, mod in mods.items():
@@ -58,14 +60,14 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
             except (TypeError, ValueError) as err:
                 raise InvalidValue(f"{where}: variable '{key}': {err}") from None
             out[key] = mod
-        elif key in _constructor_arguments(type(comp)):
+        elif key in constructor_arguments(type(comp)):
             # a structural argument (a port that exists or not) shapes the instance when
             # it is created; a modification comes too late for that
             kind = type(comp).__name__
             raise InvalidValue(f"{where}: '{key}' is an argument of the constructor, not a "
                                f"parameter; give it where the component is created: "
                                f"{kind}({key}={mod!r})")
-        elif key in _structurals(type(comp)):
+        elif key in class_structurals(type(comp)):
             raise InvalidValue(f"{where}: '{key}' is a structural parameter, fixed when the "
                                f"component is made: write {type(comp).__name__}({key}=...) "
                                "where it is declared")
@@ -77,11 +79,12 @@ def validate_modifications(comp, mods: dict, where: str) -> dict:
 
 
 def _is_signal_port(comp) -> bool:
-    """A port that carries one signal (RealInput, BooleanOutput, ...): a modification of
-    it that is a number or a dict of attributes is its signal's (``FirstOrder(y=1.0)``
-    starts y at 1, as results name the signal by its port)."""
-    from .component import Port
-    return isinstance(comp, Port) and list(_declarations(type(comp))) == ["signal"]
+    """A port that carries one signal (RealInput, BooleanOutput, ...: its one declaration
+    a ``Signal``): a modification of it that is a number or a dict of attributes is its
+    signal's (``FirstOrder(y=1.0)`` starts y at 1, as results name the signal by its
+    port)."""
+    decls = class_declarations(type(comp))
+    return list(decls) == ["signal"] and isinstance(decls["signal"], Signal)
 
 
 def _child_path(where: str, key: str) -> str:
@@ -93,14 +96,12 @@ def _child_path(where: str, key: str) -> str:
 def _parameter_value(decl: Parameter, key: str, value, where: str):
     what = f"parameter {key}"
     if isinstance(value, dict):     # attributes: {"fixed": False, "start": 100}
-        from .initparams import attribute_values
         return attribute_values(decl, key, value, where)
     if decl.shape is not None:
         # an array parameter: its shape may be the instance's (shape="n"), so its value
         # is checked element by element where it is applied (components.arrays)
         return value
     if isinstance(value, str) and _has_unit(value):
-        from .units import convert_value
         try:
             value = convert_value(value, decl.unit, what)
         except ValueError as err:
@@ -122,7 +123,6 @@ _WITH_UNIT = ("start", "nominal", "min", "max")
 def _has_unit(value) -> bool:
     if not isinstance(value, str):
         return False
-    from .units import has_unit
     return has_unit(value)
 
 
@@ -134,7 +134,6 @@ def _variable_values(decl: Variable, key: str, mod, where: str):
     def converted(value, attr):
         if not _has_unit(value):
             return value          # a number, or what the attribute check rejects
-        from .units import convert_value
         try:
             return convert_value(value, unit, attr, key)
         except ValueError as err:

@@ -50,5 +50,5 @@ def _v(o):
 
 def _logical(o):
     """A signal or value as a condition (a Boolean's symbol as ``y > 1/2``)."""
-    from ..components.logic import as_condition
+    from ..components.logic import as_condition   # sympy: first at a condition
     return as_condition(_v(o))
