@@ -26,11 +26,13 @@ import itertools
 import os
 import pickle
 import threading
-import warnings
 
 import numpy as np
 
 from .errors import InvalidArgument
+from . import simulation
+from .sweepworkers import failed, run_on_processes, run_one
+from .words import suggestion
 
 __all__ = ["sweep", "ensemble"]
 
@@ -73,21 +75,21 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
              executor=None, names=None, progress: bool | None = None,
              max_workers: int | None = None, retries: int = 0, **simulate_kwargs):
     """Simulate ``model`` once per parameter dict in ``runs``; see the module docstring."""
-    from .simulation import _output_times, _time, check_arguments, compile
     runs = [dict(r) for r in runs]
     if not runs:
         raise InvalidArgument("ensemble: no runs")
     if t_eval is None and n_points is None:
         raise InvalidArgument("ensemble: give t_eval or n_points (the common output grid)")
-    t_start = _time("t_start", simulate_kwargs.pop("t_start", 0.0))
-    times = _output_times(t_eval, n_points, t_start, _time("t_end", t_end))
+    t_start = simulation._time("t_start", simulate_kwargs.pop("t_start", 0.0))
+    times = simulation._output_times(t_eval, n_points, t_start,
+                                     simulation._time("t_end", t_end))
     for key in ("parameters", "raise_on_failure", "n_points", "t_eval", "store"):
         if key in simulate_kwargs:
             raise InvalidArgument(f"ensemble: {key} is set per run, not as a keyword")
     # a mistake in the call is said now, not by every run
-    check_arguments(t_end, t_start, simulate_kwargs.get("rtol", 1e-6),
-                    simulate_kwargs.get("atol"))
-    compiled = compile(model, simulate_kwargs.pop("backend", "auto"))
+    simulation.check_arguments(t_end, t_start, simulate_kwargs.get("rtol", 1e-6),
+                               simulate_kwargs.get("atol"))
+    compiled = simulation.compile(model, simulate_kwargs.pop("backend", "auto"))
     # a top-level input is swept as a parameter is: a number per run (or, in an
     # ensemble, a function of time or a table), given with the run's other inputs
     # (a parameter found by initialization, fixed=False, is not tunable: refused now)
@@ -99,7 +101,6 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
     names = sorted(compiled.outputs) if names is None else list(names)
     missing = [n for n in names if n not in compiled.outputs]
     if missing:
-        from .words import suggestion
         raise KeyError(f"ensemble: no variable {missing[0]!r} in the model"
                        f"{suggestion(missing[0], compiled.outputs)}"
                        + (f" (and {len(missing) - 1} more)" if len(missing) > 1 else ""))
@@ -109,51 +110,9 @@ def ensemble(model, runs, *, t_end: float, t_eval=None, n_points: int | None = N
     return _dataset(compiled, runs, times, names, outcomes)
 
 
-# -- one run, anywhere ----------------------------------------------------------------------
-def _run_one(compiled, base, values, job):
-    """(values on the grid (NaN where not reached), success, message, steps); a job with
-    a ``task`` (a module-level function, so that it pickles) runs that instead:
-    ``task(compiled, values, job)`` with the model at its base parameters."""
-    from .simulation import simulate
-    compiled.p[:] = base
-    given = set(compiled.input_names)
-    if given & set(values):
-        inputs = {**job["kwargs"].get("inputs", {}), **{k: v for k, v in values.items()
-                                                        if k in given}}
-        values = {k: v for k, v in values.items() if k not in given}
-        job = {**job, "kwargs": {**job["kwargs"], "inputs": inputs}}
-    if job.get("task") is not None:
-        try:
-            return job["task"](compiled, values, job)
-        finally:
-            compiled.p[:] = base
-    grid = job["t_eval"]
-    out = np.full((len(job["names"]), len(grid)), np.nan)
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")     # a failure is reported in the Dataset
-            res = simulate(compiled, job["t_end"], t_start=job["t_start"], t_eval=grid,
-                           parameters=values, progress=False, **job["kwargs"])
-    except Exception as err:  # noqa: BLE001 - any failure of one run is that run's result
-        return out, False, f"{type(err).__name__}: {err}", 0
-    finally:
-        compiled.p[:] = base
-    k = len(res.t)              # output at t_eval: a failed run's points are the first k
-    res._prefetch(job["names"])
-    for i, n in enumerate(job["names"]):
-        out[i, :k] = res[n]
-    return out, bool(res.success), str(res.message), int(res.stats.get("steps", 0))
-
-
-def _failed(job, reason):
-    """The outcome of a run that did not run (its worker died): NaN, and the reason."""
-    if job.get("task") is not None:
-        return None, False, reason, 0
-    return np.full((len(job["names"]), len(job["t_eval"])), np.nan), False, reason, 0
-
-
+# -- one run, anywhere (sweepworkers.run_one) -----------------------------------------------
 def _run_chunk(compiled, base, chunk, job):
-    return [(index, *_run_one(compiled, base, values, job)) for index, values in chunk]
+    return [(index, *run_one(compiled, base, values, job)) for index, values in chunk]
 
 
 _WORKER = {}     # on a dask worker: the models it was given, by key
@@ -198,7 +157,6 @@ def _execute(compiled, runs, job, executor, progress, max_workers, retries=0) ->
         elif _is_dask(executor):
             results = _on_dask(executor, compiled, base, indexed, job, bar, retries)
         elif executor == "processes":
-            from .sweepworkers import run_on_processes
             workers = int(max_workers or os.cpu_count() or 1)
             results = run_on_processes(_blob(compiled), base, job, indexed, workers,
                                        int(retries), bar.update)
@@ -287,7 +245,7 @@ def _gather(submit, chunks, completed, job, bar, retries, refresh=None) -> list:
             results += part or []
             bar.update(len(part or []))
     for item, reason in lost:
-        results.append((item[0], *_failed(job, reason)))
+        results.append((item[0], *failed(job, reason)))
         bar.update(1)
     return results
 

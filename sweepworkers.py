@@ -32,14 +32,62 @@ import subprocess
 import sys
 import tempfile
 import time
+import warnings
 from multiprocessing.connection import Connection, wait
 
-__all__ = ["run_on_processes", "serve"]
+import numpy as np
+
+from .simulation import simulate
+
+__all__ = ["run_on_processes", "serve", "run_one", "failed"]
 
 _STOP_GRACE = 5.0          # s a worker has to end after it is told to, before it is killed
 _PACKAGE = __name__.rsplit(".", 1)[0]
 
 
+# -- one run, anywhere: here, on a local worker process, a pool's or a dask worker -------------
+def run_one(compiled, base, values, job):
+    """(values on the grid (NaN where not reached), success, message, steps); a job with
+    a ``task`` (a module-level function, so that it pickles) runs that instead:
+    ``task(compiled, values, job)`` with the model at its base parameters."""
+    compiled.p[:] = base
+    given = set(compiled.input_names)
+    if given & set(values):
+        inputs = {**job["kwargs"].get("inputs", {}), **{k: v for k, v in values.items()
+                                                        if k in given}}
+        values = {k: v for k, v in values.items() if k not in given}
+        job = {**job, "kwargs": {**job["kwargs"], "inputs": inputs}}
+    if job.get("task") is not None:
+        try:
+            return job["task"](compiled, values, job)
+        finally:
+            compiled.p[:] = base
+    grid = job["t_eval"]
+    out = np.full((len(job["names"]), len(grid)), np.nan)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")     # a failure is reported in the Dataset
+            res = simulate(compiled, job["t_end"], t_start=job["t_start"], t_eval=grid,
+                           parameters=values, progress=False, **job["kwargs"])
+    except Exception as err:  # noqa: BLE001 - any failure of one run is that run's result
+        return out, False, f"{type(err).__name__}: {err}", 0
+    finally:
+        compiled.p[:] = base
+    k = len(res.t)              # output at t_eval: a failed run's points are the first k
+    res._prefetch(job["names"])
+    for i, n in enumerate(job["names"]):
+        out[i, :k] = res[n]
+    return out, bool(res.success), str(res.message), int(res.stats.get("steps", 0))
+
+
+def failed(job, reason):
+    """The outcome of a run that did not run (its worker died): NaN, and the reason."""
+    if job.get("task") is not None:
+        return None, False, reason, 0
+    return np.full((len(job["names"]), len(job["t_eval"])), np.nan), False, reason, 0
+
+
+# -- the local worker processes ---------------------------------------------------------------
 class _Worker:
     """One worker process, its two pipes and a file for what it writes to stderr;
     ``task``: the run it is running, or None."""
@@ -127,7 +175,6 @@ def run_on_processes(blob: bytes, base, job: dict, indexed: list, workers: int,
     ``blob`` (the pickled model), ``base`` (its parameter values) and ``job`` once;
     returns [(index, *outcome)].  ``on_done(n)`` is called as outcomes arrive (a
     progress bar)."""
-    from .sweeps import _failed
     start = pickle.dumps((blob, base, job), protocol=pickle.HIGHEST_PROTOCOL)
     pending = list(reversed(indexed))
     attempts = {index: 0 for index, _ in indexed}
@@ -177,7 +224,7 @@ def run_on_processes(blob: bytes, base, job: dict, indexed: list, workers: int,
                     else:
                         tried = f" (in {attempts[index]} attempts)" \
                             if attempts[index] > 1 else ""
-                        results.append((index, *_failed(job, f"WorkerDied: {w.why()}"
+                        results.append((index, *failed(job, f"WorkerDied: {w.why()}"
                                                              f"{tried}")))
                         on_done(1)
                 if pending:
@@ -193,7 +240,6 @@ def run_on_processes(blob: bytes, base, job: dict, indexed: list, workers: int,
 
 def serve(r_task: int, w_out: int) -> None:
     """The body of a worker process: the model and job, then runs until told to stop."""
-    from .sweeps import _failed, _run_one
     tasks = Connection(r_task, writable=False)
     out = Connection(w_out, readable=False)
     blob, base, job = pickle.loads(tasks.recv_bytes())
@@ -210,7 +256,7 @@ def serve(r_task: int, w_out: int) -> None:
             os._exit(0)
         index, values = task
         try:
-            outcome = _run_one(compiled, base, values, job)
+            outcome = run_one(compiled, base, values, job)
         except Exception as exc:  # noqa: BLE001 - a task's own error is its run's result
-            outcome = _failed(job, f"{type(exc).__name__}: {exc}")
+            outcome = failed(job, f"{type(exc).__name__}: {exc}")
         out.send((index, outcome))

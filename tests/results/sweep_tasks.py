@@ -3,7 +3,7 @@ import them: a run that kills its own worker process."""
 import os
 import signal
 
-from acausal import sweeps
+from acausal import sweepworkers
 
 
 def kill_at(compiled, values, job):
@@ -17,4 +17,4 @@ def kill_at(compiled, values, job):
             if marker is not None:
                 open(marker, "w").close()
             os.kill(os.getpid(), signal.SIGKILL)
-    return sweeps._run_one(compiled, compiled.p.copy(), values, dict(job, task=None))
+    return sweepworkers.run_one(compiled, compiled.p.copy(), values, dict(job, task=None))
