@@ -15,7 +15,7 @@ frame_a of a joint must face the World; and a free body needs an explicit FreeMo
 joint (the MSL's body states, made a component).
 
 Bodies find the World as Modelica finds ``inner World world``: the nearest enclosing
-component that has a World among its sub-components (``interfaces.world_of``), and read
+component that has a World among its sub-components (``world.world_of``), and read
 its gravity field (uniform, point or user-defined) at their centre of mass.
 """
 from ... import _lazy_exports

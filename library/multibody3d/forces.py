@@ -14,7 +14,8 @@ from acausal.ports import RealInput, TranslationalFlange
 from acausal.ports.spatial import Frame
 
 from .frames import force, orientation, position, resolve1, resolve2, torque
-from .interfaces import PartialTwoFrames, equal, world_of
+from .interfaces import PartialTwoFrames, equal
+from .world import world_of
 
 __all__ = ["LineForceBase", "PartialLineForce", "Spring", "Damper", "SpringDamperParallel",
            "SpringDamperSeries",

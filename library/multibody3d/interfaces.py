@@ -5,9 +5,9 @@ connector, ``acausal.ports.spatial``): the World, and every joint and rigid part
 frame_b from its frame_a (``propagate``).  Bodies, force elements and sensors only read
 it.
 
-The World is found as Modelica finds an ``inner`` declaration (``world_of``): the
-nearest enclosing component that has a World among its sub-components.  Bodies read the
-gravity field there (``World.gravityAcceleration``), at their own centre of mass.
+The World is found as Modelica finds an ``inner`` declaration (``world.world_of``):
+the nearest enclosing component that has a World among its sub-components.  Bodies read
+the gravity field there (``World.gravityAcceleration``), at their own centre of mass.
 """
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ from acausal.ports.spatial import Frame
 from .frames import orientation, unit
 
 __all__ = ["PartialOneFrame_a", "PartialTwoFrames", "PartialRigidTwoFrames", "propagate",
-           "equal", "direction", "world_of", "vector_of"]
+           "equal", "direction", "vector_of"]
 
 
 def equal(lhs, rhs) -> list:
@@ -64,22 +64,6 @@ def propagate(frame_a, frame_b, R_rel=None) -> list:
     R_a = orientation(frame_a)
     R_b = R_a if R_rel is None else R_rel * R_a
     return equal(orientation(frame_b), R_b)
-
-
-def world_of(component):
-    """The World that ``component`` sees (MSL ``outer World world``): the first World
-    among the sub-components of its enclosing components, the nearest first.
-    ``NotInModel`` if there is none."""
-    from .world import World
-    node = component._parent
-    while node is not None:
-        for child in node.children().values():
-            if isinstance(child, World):
-                return child
-        node = node._parent
-    raise ac.NotInModel(f"{component._describe()} needs the gravity field of a World, and "
-                        "no enclosing component has a World among its sub-components (the "
-                        "MSL's 'inner World world'): add one, world = World()")
 
 
 class PartialOneFrame_a(ac.Component):

@@ -17,7 +17,8 @@ from acausal.ports.spatial import Frame
 from .frames import (angular_velocity2, force, orientation, planar_rotation, position,
                      resolve1, resolve2, torque)
 from .interfaces import (PartialOneFrame_a, PartialRigidTwoFrames, direction, equal,
-                         propagate, vector_of, world_of)
+                         propagate, vector_of)
+from .world import world_of
 from .world import World
 
 __all__ = ["World", "Fixed", "FixedTranslation", "FixedRotation", "Body", "BodyShape",

@@ -1,7 +1,7 @@
 """The World: the inertial frame and the gravity field (Modelica.Mechanics.MultiBody.World
 with Forces.Internal.standardGravityAcceleration).
 
-Bodies find the World as Modelica finds ``inner World world`` (``interfaces.world_of``)
+Bodies find the World as Modelica finds ``inner World world`` (:func:`world_of`)
 and evaluate its field at their centre of mass, g_0 = gravityAcceleration(r_CM,0):
 
 * ``gravityType="UniformGravity"`` (default): g_0 = g n/|n|;
@@ -24,7 +24,7 @@ from acausal.ports.spatial import Frame
 from .frames import orientation, position
 from .interfaces import direction, equal
 
-__all__ = ["World", "GRAVITY_TYPES"]
+__all__ = ["World", "GRAVITY_TYPES", "world_of"]
 
 GRAVITY_TYPES = ("NoGravity", "UniformGravity", "PointGravity")
 
@@ -88,3 +88,18 @@ class World(ac.Component):
         f = self.frame_b
         return [*equal(position(f), sp.zeros(3, 1)),
                 *equal(orientation(f), sp.eye(3))]
+
+
+def world_of(component):
+    """The World that ``component`` sees (MSL ``outer World world``): the first World
+    among the sub-components of its enclosing components, the nearest first.
+    ``NotInModel`` if there is none."""
+    node = component._parent
+    while node is not None:
+        for child in node.children().values():
+            if isinstance(child, World):
+                return child
+        node = node._parent
+    raise ac.NotInModel(f"{component._describe()} needs the gravity field of a World, and "
+                        "no enclosing component has a World among its sub-components (the "
+                        "MSL's 'inner World world'): add one, world = World()")
