@@ -3,7 +3,7 @@
 A result is read by name (``res["C1.v"]``), exported to the data tools of the Python
 ecosystem (:meth:`Result.to_pandas`, :meth:`Result.to_xarray`, :meth:`Result.to_csv`),
 to the result file of Dymola and OpenModelica (:meth:`Result.to_mat`), saved and loaded
-(:meth:`Result.save`, :func:`acausal.load_result`, both in :mod:`acausal.results_io`),
+(:meth:`Result.save`, :func:`acausal.load_result`: :mod:`acausal.results_io`),
 and plotted with units (:meth:`Result.plot`).  Its events are :class:`Event` records.
 """
 from __future__ import annotations
@@ -11,6 +11,11 @@ from __future__ import annotations
 import csv
 
 import numpy as np
+
+from .components.arrays import array_of_name
+from .result_export import plot_result, save_result, write_mat
+from .runtime.outputs import evaluate, expand_points, pointwise
+from .words import listed, shortened, suggestion
 
 __all__ = ["Result", "Event"]
 
@@ -62,7 +67,6 @@ class Event(float):
     def __repr__(self):
         """One line of bounded length: each relation's text shortened, at most a few
         changes (the whole texts are in ``relations`` and ``changes``)."""
-        from .words import shortened
         what = [f"{shortened(t, 100)}: {_fmt(a)} -> {_fmt(b)}" for t, a, b in self.changes]
         what += [f"reinit({v}): {_fmt(a)} -> {_fmt(b)}" for v, a, b in self.reinits]
         more = f"; and {len(what) - 4} more" if len(what) > 4 else ""
@@ -86,7 +90,6 @@ def _component_of(text: str) -> str:
 
 def _array_elements(name: str, known):
     """(shape, element names) of the array variable ``name`` or ``der(name)``, or None."""
-    from .components.arrays import array_of_name
     if name.startswith("der(") and name.endswith(")"):
         found = array_of_name(name[4:-1], {n[4:-1] for n in known
                                            if n.startswith("der(") and n.endswith(")")})
@@ -232,7 +235,6 @@ class Result:
         if missing:
             if self._y is None and not self._vectorized():
                 # no modes recorded for the points: each point settles its own, as before
-                from .runtime.outputs import expand_points
                 self._y = expand_points(self.compiled, self.t, self._z, self.parameters,
                                         self._discrete, self._discrete_index,
                                         self._delayed)
@@ -245,7 +247,6 @@ class Result:
     def _vectorized(self) -> bool:
         c = self.compiled
         if c.code.expand is not None:
-            from .runtime.outputs import pointwise
             if pointwise(c, len(self.t)):
                 return False
         known = len(self._discrete_index) == len(self.t) and bool(self._discrete)
@@ -257,7 +258,6 @@ class Result:
 
     def _evaluate(self, cols) -> list:
         """:meth:`_columns` computed (:func:`acausal.runtime.outputs.evaluate`)."""
-        from .runtime.outputs import evaluate
         return evaluate(self.compiled, cols, self.t, self._z, self.parameters,
                         self._discrete, self._discrete_index, self._delayed)
 
@@ -272,8 +272,6 @@ class Result:
 
     @staticmethod
     def _missing(name, known) -> str:
-        from .words import suggestion
-        from .words import listed
         hint = suggestion(str(name), _nearby(str(name), known))
         leaf = str(name).split(".")[-1]
         close = [n for n in known if leaf and n.split(".")[-1] == leaf]
@@ -354,14 +352,12 @@ class Result:
 
     def to_mat(self, path, names=None) -> None:
         """The Dymola/OpenModelica result file (MATLAB v4, "binTrans" format 1.1);
-        see :func:`acausal.results_io.write_mat`."""
-        from .results_io import write_mat
+        see :mod:`acausal.results_io`."""
         write_mat(self, path, names)
 
     def save(self, path) -> None:
         """Everything needed to use the result later without the model (HDF5, the ``io``
         extra); read it back with ``acausal.load_result(path)``."""
-        from .results_io import save_result
         save_result(self, path)
 
     # -- plot ---------------------------------------------------------------------------
@@ -372,7 +368,6 @@ class Result:
         the unit; each further unit gets a twin axis on the right (``subplots=True``: one
         subplot per unit instead).  ``events``: mark the events with vertical lines.
         Returns the axes (a list when there is more than one)."""
-        from .results_io import plot_result
         return plot_result(self, list(names) or self.states, ax=ax, path=path,
                            events=events, subplots=subplots)
 

@@ -27,19 +27,30 @@
   Integer is loaded as a bool or int array), states, parameters, events, stats,
   success and message; a loaded result needs no model.
 * :func:`plot_result`: one y-axis per unit, labelled with it, events marked.
+* :class:`Keeping`: what a run keeps (``simulate``'s ``outputs=`` and ``store=``) and the
+  result it gives.
+
+The writers and the plot (:mod:`acausal.result_export`, what the methods of
+:class:`~acausal.Result` call) and the streamed HDF5 file (:mod:`acausal.results_store`)
+are modules of their own; this one reads the files back into results.
 """
 from __future__ import annotations
 
 import json
+import os
 
 import numpy as np
 
-from .result import Event, Result
+from .components.arrays import element_index, elements, shape_of
+from .components.declarations import Parameter
+from .errors import InvalidArgument
+from .result import Event, Result, _array_elements
+from .result_export import FORMAT, _h5py, plot_result, save_result, write_mat
+from .results_store import ResultWriter, read
+from .words import suggestion
 
-__all__ = ["declared_attributes", "write_mat", "save_result", "load_result", "plot_result"]
-
-_FORMAT = "acausal-result"
-_VERSION = 1
+__all__ = ["declared_attributes", "write_mat", "save_result", "load_result", "plot_result",
+           "Keeping"]
 
 
 # -- units and descriptions -------------------------------------------------------------
@@ -49,7 +60,6 @@ def declared_attributes(model) -> tuple[dict, dict]:
     are made here from the tree (as the compiler names them), so the tree need not have
     been bound by a compile in this process."""
     units, descriptions = {}, {}
-    from .components.declarations import Parameter
     stack = [("", model)]
     while stack:
         path, comp = stack.pop()
@@ -63,140 +73,13 @@ def declared_attributes(model) -> tuple[dict, dict]:
                 attrs = comp.variable_attributes(name)
                 units[full], descriptions[full] = attrs.unit, attrs.description
             if decl.shape is not None:      # the elements of an array: q[0], M[1,0] ...
-                from .components.arrays import element_index, elements, shape_of
                 for idx in elements(shape_of(decl, comp, name)):
                     units[full + element_index(idx)] = units[full]
                     descriptions[full + element_index(idx)] = descriptions[full]
     return units, descriptions
 
 
-# -- the Dymola / OpenModelica result file ------------------------------------------------
-def _char_columns(strings) -> np.ndarray:
-    """Strings as a transposed char matrix (one string per column, padded with blanks).
-    A level-4 char is one byte: text is stored as its UTF-8 bytes, as Modelica tools
-    write it (readers decode the bytes as UTF-8)."""
-    strings = [s.encode("utf-8").decode("latin-1") for s in strings]
-    width = max([len(s) for s in strings] + [1])
-    rows = np.full((len(strings), width), " ", dtype="<U1")
-    for i, s in enumerate(strings):
-        rows[i, :len(s)] = list(s)
-    return rows.T.copy()
-
-
-def _mat_layout(res: Result, names):
-    """(entries, data_1, data_2): entries are (name, description, matrix, signed
-    column) with time first; aliases share their original's column."""
-    t = res.t
-    series, constants, entries = [t], [np.array([t[0], t[-1]])], [("time", "Time [s]", 0, 1)]
-    by_key = {}
-    outputs = res.compiled.outputs if res.compiled is not None else None
-    res._prefetch(names)
-    for name, value in res.parameter_values.items():
-        constants.append(np.array([value, value]))
-        entries.append((name, _description(res, name), 1, len(constants)))
-    for name in names:
-        desc = _description(res, name)
-        sign, key = (outputs[name] if outputs is not None else (1.0, name))
-        values = np.asarray(res[name], dtype=float)    # Booleans as 0/1, as Dymola
-        if sign is None:                       # a constant of the model: data_1
-            constants.append(np.array([values[0], values[-1]]))
-            entries.append((name, desc, 1, len(constants)))
-            continue
-        if key not in by_key:                  # store the solver's column once:
-            series.append(sign * values)       # values = sign * column, sign = +-1
-            by_key[key] = len(series)
-        entries.append((name, desc, 2, int(by_key[key] * sign)))
-    return entries, np.array(constants), np.array(series)
-
-
-def _description(res, name) -> str:
-    """"description [unit]"; a Boolean's or Integer's with Dymola's type mark
-    ``[:#(type=Boolean)]``, which its readers use to restore the type."""
-    text, unit = res.descriptions.get(name, ""), res.units.get(name, "")
-    text = f"{text} [{unit}]" if unit else text
-    kind = res.value_types.get(name)
-    return f"{text} [:#(type={kind})]".lstrip() if kind else text
-
-
-def write_mat(res: Result, path, names=None) -> None:
-    """Write ``res`` as a Dymola/OpenModelica result file (module docstring); ``names``:
-    the variables (default: all)."""
-    from scipy.io import savemat
-    names = res.names if names is None else list(names)
-    if not len(res.t):
-        raise ValueError("write_mat: the result has no points")
-    entries, data_1, data_2 = _mat_layout(res, names)
-    info = np.array([[m, c, 0, -1 if m != 1 else 0] for _, _, m, c in entries],
-                    dtype=np.int32)
-    info[0] = (0, 1, 0, -1)                     # time: the abscissa of every matrix
-    aclass = np.array([list(s.ljust(11)) for s in ("Atrajectory", "1.1", "", "binTrans")],
-                      dtype="<U1")
-    savemat(path, {"Aclass": aclass,
-                   "name": _char_columns([e[0] for e in entries]),
-                   "description": _char_columns([e[1] for e in entries]),
-                   "dataInfo": info.T.copy(),
-                   "data_1": data_1,
-                   "data_2": data_2},
-            format="4", oned_as="row")
-
-
 # -- HDF5 ------------------------------------------------------------------------------
-def _h5py():
-    try:
-        import h5py
-    except ImportError as err:
-        raise ImportError("saving and loading results needs h5py: "
-                          "pip install 'acausal[io]'") from err
-    return h5py
-
-
-def save_result(res: Result, path) -> None:
-    """Everything :func:`load_result` needs, in one HDF5 file: a result of a compiled
-    model in :mod:`acausal.results_store`'s layout (one row per series, written a block
-    of points at a time, read one variable at a time); a loaded one as it holds it."""
-    if res.compiled is not None:
-        from .results_store import write
-        write(res, path)
-        return
-    h5py = _h5py()
-    names = res.names
-    values = np.column_stack([res[n] for n in names]) if names else \
-        np.zeros((len(res.t), 0))
-    text = h5py.string_dtype()
-    with h5py.File(path, "w") as fh:
-        fh.attrs["format"], fh.attrs["version"] = _FORMAT, _VERSION
-        fh.create_dataset("time", data=res.t)
-        fh.create_dataset("values", data=values)
-        fh.create_dataset("names", data=np.array(names, dtype=object), dtype=text)
-        fh.create_dataset("units", data=np.array([res.units.get(n, "") for n in names],
-                                                 dtype=object), dtype=text)
-        fh.create_dataset("descriptions", dtype=text, data=np.array(
-            [res.descriptions.get(n, "") for n in names], dtype=object))
-        fh.create_dataset("types", dtype=text, data=np.array(       # Real, Boolean, Integer
-            [res.value_types.get(n, "Real") for n in names], dtype=object))
-        fh.create_dataset("parameter_names", dtype=text,
-                          data=np.array(res.parameter_names, dtype=object))
-        # the named parameters only (a model with delays keeps its delayed values after them)
-        fh.create_dataset("parameter_values",
-                          data=np.asarray(res.parameters, float)[:len(res.parameter_names)])
-        fh.attrs["states"] = json.dumps(res.states)
-        fh.attrs["events"] = json.dumps([e.as_dict() for e in res.events])
-        fh.attrs["state_switches"] = json.dumps([e.as_dict() for e in res.state_switches])
-        fh.attrs["parameter_units"] = json.dumps(
-            {n: res.units.get(n, "") for n in res.parameter_names})
-        fh.attrs["parameter_descriptions"] = json.dumps(
-            {n: res.descriptions.get(n, "") for n in res.parameter_names})
-        fh.attrs["stats"] = json.dumps(res.stats, default=_jsonable)
-        fh.attrs["success"] = bool(res.success)
-        fh.attrs["message"] = str(res.message)
-
-
-def _jsonable(x):
-    if isinstance(x, np.generic):
-        return x.item()
-    return str(x)
-
-
 def _integer_keys(stats: dict) -> dict:
     """JSON made the integer keys of nested counts (BDF orders) strings: undo that."""
     return {k: ({int(a) if a.lstrip("-").isdigit() else a: b for a, b in v.items()}
@@ -212,18 +95,26 @@ def _event(d) -> Event:
                  d["reinits"])
 
 
+def _result(parts: dict) -> Result:
+    """The result of a file's parts (:func:`acausal.results_store.read`'s, or version 1's
+    read here): its events as :class:`Event` records."""
+    parts = dict(parts, stats=_integer_keys(parts["stats"]),
+                 events=[_event(d) for d in parts["events"]],
+                 state_switches=[_event(d) for d in parts["state_switches"]])
+    return Result.from_table(parts.pop("t"), parts.pop("table"), **parts)
+
+
 def load_result(path) -> Result:
     """A :class:`~acausal.Result` from a file written by ``Result.save``: ``res[name]``,
     ``res.t``, ``to_pandas``, ``plot`` ... work without the model (``res.compiled`` is
     None)."""
     h5py = _h5py()
     with h5py.File(path, "r") as fh:
-        if fh.attrs.get("format") != _FORMAT:
+        if fh.attrs.get("format") != FORMAT:
             raise ValueError(f"{path}: not a result saved by acausal (Result.save)")
         version = int(fh.attrs.get("version", 1))
     if version >= 2:
-        from .results_store import read
-        return read(path)
+        return _result(read(path))
     with h5py.File(path, "r") as fh:
         t = fh["time"][()]
         values = fh["values"][()]
@@ -234,57 +125,111 @@ def load_result(path) -> Result:
         pnames = _strings(fh["parameter_names"])
         units.update(json.loads(fh.attrs["parameter_units"]))
         descriptions.update(json.loads(fh.attrs["parameter_descriptions"]))
-        res = Result.from_table(
-            t, {n: values[:, k] for k, n in enumerate(names)},
-            stats=_integer_keys(json.loads(fh.attrs["stats"])),
-            events=[_event(d) for d in json.loads(fh.attrs["events"])],
+        return _result(dict(
+            t=t, table={n: values[:, k] for k, n in enumerate(names)},
+            stats=json.loads(fh.attrs["stats"]), events=json.loads(fh.attrs["events"]),
             success=bool(fh.attrs["success"]), message=str(fh.attrs["message"]),
             parameters=fh["parameter_values"][()], parameter_names=pnames, units=units,
             descriptions=descriptions, _states=json.loads(fh.attrs["states"]),
             value_types={n: k for n, k in types.items() if k != "Real"},
-            state_switches=[_event(d) for d in json.loads(fh.attrs["state_switches"])])
-    return res
+            state_switches=json.loads(fh.attrs["state_switches"])))
 
 
-# -- plots -------------------------------------------------------------------------------
-def plot_result(res: Result, names, ax=None, path=None, events=True, subplots=False):
-    """See :meth:`acausal.Result.plot`."""
-    try:
-        import matplotlib
-        if path is not None and ax is None:
-            matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError as err:
-        raise ImportError("Result.plot needs matplotlib: pip install 'acausal[plot]'") from err
-    groups = {}
-    for n in names:
-        groups.setdefault(res.units.get(n, ""), []).append(n)
-    if subplots and len(groups) > 1:
-        if ax is not None:
-            raise ValueError("Result.plot: give ax or subplots=True, not both")
-        fig, axes = plt.subplots(len(groups), 1, sharex=True,
-                                 figsize=(7, 2.2 + 1.6 * len(groups)))
-        axes = list(np.atleast_1d(axes))
-    else:
-        if ax is None:
-            _, ax = plt.subplots(figsize=(7, 4))
-        axes = [ax] + [ax.twinx() for _ in list(groups)[1:]]
-        for k, extra in enumerate(axes[2:], start=1):
-            extra.spines["right"].set_position(("axes", 1.0 + 0.14 * k))
-    colors = plt.rcParams["axes.prop_cycle"].by_key().get("color", ["C0"])
-    lines = []
-    for k, ((unit, members), a) in enumerate(zip(groups.items(), axes)):
-        for n in members:
-            lines += a.plot(res.t, res[n], label=n, color=colors[len(lines) % len(colors)])
-        label = ", ".join(members) if len(members) <= 3 else f"{len(members)} variables"
-        a.set_ylabel(f"{label} [{unit or '1'}]")
-    if events:
-        for a in (axes if subplots else axes[:1]):
-            for te in res.event_times:
-                a.axvline(te, color="0.6", lw=0.7, ls="--", zorder=0)
-    axes[-1 if subplots else 0].set_xlabel("time [s]")
-    axes[0].legend(lines, [ln.get_label() for ln in lines], loc="best", fontsize="small")
-    axes[0].grid(True, alpha=0.3)
-    if path is not None:
-        axes[0].figure.savefig(path, dpi=120, bbox_inches="tight")
-    return axes[0] if len(axes) == 1 else axes
+# -- what a run keeps ----------------------------------------------------------------------
+class _Held:
+    """The driver's sink of a run held in memory: its points in blocks of arrays (one
+    row of the solver's unknowns a point, no derivatives): some 8 bytes a value, where
+    a list of a point's arrays cost 100 bytes more for each, twice."""
+
+    def __init__(self):
+        self.t, self.z, self.index, self.values = [], [], [], []
+
+    def add(self, t, z, index, values, snapshots) -> None:
+        self.t.append(np.asarray(t, dtype=float))
+        self.z.append(np.asarray(z, dtype=float).reshape(len(t), -1))
+        self.index += list(index)
+        self.values += list(values)
+
+    def points(self, n):
+        """(t, z, index, values) of every point, as arrays."""
+        if not self.t:
+            return np.zeros(0), np.zeros((0, n)), [], []
+        t = np.concatenate(self.t)
+        self.t = []
+        z = np.concatenate(self.z) if len(self.z) > 1 else self.z[0]
+        self.z = []
+        return t, z, self.index, self.values
+
+
+class Keeping:
+    """What a run keeps (``simulate``'s ``outputs=`` and ``store=``): every output in
+    memory (the default), the outputs asked for (``names``; the states' values are
+    kept too, from which they are computed), or those in a file written as the run
+    goes (``writer``, the driver's sink; the result returned reads the file).  A run
+    held in memory keeps its points in blocks as it goes (:class:`_Held`)."""
+
+    def __init__(self, names=None, writer=None):
+        self.names, self.writer = names, writer
+        self.held = _Held() if writer is None else None
+
+    @classmethod
+    def make(cls, compiled, outputs=None, store=None) -> "Keeping":
+        names = None
+        if outputs is not None:
+            if isinstance(outputs, str) or not all(isinstance(n, str) for n in outputs):
+                raise InvalidArgument(f"simulate: outputs must be a list of variable "
+                                      f"names, got {outputs!r}")
+            names = list(dict.fromkeys(x for n in outputs for x in _resolve(compiled, n)))
+        writer = None
+        if store is not None:
+            folder = os.path.dirname(os.path.abspath(os.fspath(store)))
+            if not os.path.isdir(folder):
+                raise InvalidArgument(f"simulate: store={os.fspath(store)!r}: the "
+                                      f"directory {folder} does not exist")
+            writer = ResultWriter(store, compiled, names)
+        return cls(names, writer)
+
+    @property
+    def sink(self):
+        return self.writer if self.writer is not None else self.held
+
+    def result(self, compiled, t, z, stats, events, success, message, discrete=(),
+               index=(), switches=(), delayed=()):
+        """The run's Result: in memory (its outputs restricted to ``names``), or read
+        from the file the writer finishes now."""
+        if self.writer is None:
+            if self.held.t:                # the points the driver handed over as it went
+                t, z, index, delayed = self.held.points(compiled.n)
+            res = Result(compiled, t, z, stats, events, success, message, discrete, index,
+                         state_switches=switches, delay_values=delayed)
+            if self.names is not None:
+                res._keep(self.names)
+            return res
+        self.writer.add(t, z, index, delayed, discrete)     # points not streamed yet
+        meta = compiled.meta
+        self.writer.finish(states=compiled.states, events=events, state_switches=switches,
+                           stats=stats.as_dict() if hasattr(stats, "as_dict")
+                           else dict(stats or {}), success=success, message=message,
+                           parameter_names=compiled.param_names, parameters=compiled.p,
+                           units=meta.get("units", {}),
+                           descriptions=meta.get("descriptions", {}))
+        return _result(read(self.writer.path))
+
+    def abandon(self) -> None:
+        if self.writer is not None:
+            self.writer.close()
+
+
+def _resolve(compiled, name) -> list:
+    """The output names ``name`` stands for: itself, a signal port's value, or the
+    elements of an array; InvalidArgument (with "did you mean") otherwise."""
+    outputs = compiled.outputs
+    if name in outputs:
+        return [name]
+    if f"{name}.signal" in outputs:
+        return [f"{name}.signal"]
+    array = _array_elements(name, outputs)
+    if array is not None:
+        return list(array[1])
+    raise InvalidArgument(f"simulate: outputs: the model has no variable {name!r}"
+                          f"{suggestion(name, outputs)}")

@@ -30,7 +30,9 @@ from collections.abc import Mapping
 
 import numpy as np
 
-__all__ = ["ResultWriter", "Keeping", "read", "write", "BLOCK", "VERSION"]
+from .runtime.outputs import evaluate, expand_points
+
+__all__ = ["ResultWriter", "read", "write", "BLOCK", "VERSION"]
 
 FORMAT, VERSION = "acausal-result", 2
 BLOCK = 8192          # points per chunk of a series, and per block a writer computes
@@ -135,7 +137,6 @@ class ResultWriter:
                 None if parts[0][3] is None else np.vstack([p[3] for p in parts]))
 
     def _write(self, count) -> None:
-        from .runtime.outputs import evaluate
         t, z, m, delayed = self._take(count)
         lo, hi = self.n, self.n + len(t)
         self.time.resize((hi,))
@@ -205,115 +206,9 @@ class ResultWriter:
             self.file = None
 
 
-class _Held:
-    """The driver's sink of a run held in memory: its points in blocks of arrays (one
-    row of the solver's unknowns a point, no derivatives): some 8 bytes a value, where
-    a list of a point's arrays cost 100 bytes more for each, twice."""
-
-    def __init__(self):
-        self.t, self.z, self.index, self.values = [], [], [], []
-
-    def add(self, t, z, index, values, snapshots) -> None:
-        self.t.append(np.asarray(t, dtype=float))
-        self.z.append(np.asarray(z, dtype=float).reshape(len(t), -1))
-        self.index += list(index)
-        self.values += list(values)
-
-    def points(self, n):
-        """(t, z, index, values) of every point, as arrays."""
-        if not self.t:
-            return np.zeros(0), np.zeros((0, n)), [], []
-        t = np.concatenate(self.t)
-        self.t = []
-        z = np.concatenate(self.z) if len(self.z) > 1 else self.z[0]
-        self.z = []
-        return t, z, self.index, self.values
-
-
-class Keeping:
-    """What a run keeps (``simulate``'s ``outputs=`` and ``store=``): every output in
-    memory (the default), the outputs asked for (``names``; the states' values are
-    kept too, from which they are computed), or those in a file written as the run
-    goes (``writer``, the driver's sink; the result returned reads the file).  A run
-    held in memory keeps its points in blocks as it goes (:class:`_Held`)."""
-
-    def __init__(self, names=None, writer=None):
-        self.names, self.writer = names, writer
-        self.held = _Held() if writer is None else None
-
-    @classmethod
-    def make(cls, compiled, outputs=None, store=None) -> "Keeping":
-        from .errors import InvalidArgument
-        names = None
-        if outputs is not None:
-            if isinstance(outputs, str) or not all(isinstance(n, str) for n in outputs):
-                raise InvalidArgument(f"simulate: outputs must be a list of variable "
-                                      f"names, got {outputs!r}")
-            names = list(dict.fromkeys(x for n in outputs for x in _resolve(compiled, n)))
-        writer = None
-        if store is not None:
-            import os
-            folder = os.path.dirname(os.path.abspath(os.fspath(store)))
-            if not os.path.isdir(folder):
-                raise InvalidArgument(f"simulate: store={os.fspath(store)!r}: the "
-                                      f"directory {folder} does not exist")
-            writer = ResultWriter(store, compiled, names)
-        return cls(names, writer)
-
-    @property
-    def sink(self):
-        return self.writer if self.writer is not None else self.held
-
-    def result(self, compiled, t, z, stats, events, success, message, discrete=(),
-               index=(), switches=(), delayed=()):
-        """The run's Result: in memory (its outputs restricted to ``names``), or read
-        from the file the writer finishes now."""
-        from .result import Result
-        if self.writer is None:
-            if self.held.t:                # the points the driver handed over as it went
-                t, z, index, delayed = self.held.points(compiled.n)
-            res = Result(compiled, t, z, stats, events, success, message, discrete, index,
-                         state_switches=switches, delay_values=delayed)
-            if self.names is not None:
-                res._keep(self.names)
-            return res
-        self.writer.add(t, z, index, delayed, discrete)     # points not streamed yet
-        meta = compiled.meta
-        self.writer.finish(states=compiled.states, events=events, state_switches=switches,
-                           stats=stats.as_dict() if hasattr(stats, "as_dict")
-                           else dict(stats or {}), success=success, message=message,
-                           parameter_names=compiled.param_names, parameters=compiled.p,
-                           units=meta.get("units", {}),
-                           descriptions=meta.get("descriptions", {}))
-        return read(self.writer.path)
-
-    def abandon(self) -> None:
-        if self.writer is not None:
-            self.writer.close()
-
-
-def _resolve(compiled, name) -> list:
-    """The output names ``name`` stands for: itself, a signal port's value, or the
-    elements of an array; InvalidArgument (with "did you mean") otherwise."""
-    from .words import suggestion
-    from .errors import InvalidArgument
-    from .result import _array_elements
-    outputs = compiled.outputs
-    if name in outputs:
-        return [name]
-    if f"{name}.signal" in outputs:
-        return [f"{name}.signal"]
-    array = _array_elements(name, outputs)
-    if array is not None:
-        return list(array[1])
-    raise InvalidArgument(f"simulate: outputs: the model has no variable {name!r}"
-                          f"{suggestion(name, outputs)}")
-
-
 def _columns_of(res, cols, lo, hi) -> list:
     """The outputs ``cols`` of an in-memory result at its points lo:hi, as it reads
     them (a result without recorded modes settles each point's own)."""
-    from .runtime.outputs import expand_points
     y = expand_points(res.compiled, res.t[lo:hi], res._z[lo:hi], res.parameters, (), (),
                 None if res._delayed is None else res._delayed[lo:hi])
     return [y[:, k] for k in cols]
@@ -378,15 +273,11 @@ def _strings(ds) -> list:
     return [s.decode() if isinstance(s, bytes) else str(s) for s in ds[()]]
 
 
-def read(path):
-    """A :class:`~acausal.Result` of a version-2 file; its variables are read when
-    first asked for."""
-    from .result import Event, Result
+def read(path) -> dict:
+    """The parts of a version-2 file, as :meth:`acausal.Result.from_table` takes them
+    (events as dicts; ``table`` reads a variable when it is first asked for):
+    :func:`acausal.results_io.load_result` makes the result."""
     h5py = _h5py()
-
-    def event(d):
-        return Event(d["time"], d["kind"], d["relations"], d["changes"], d["whens"],
-                     d["reinits"])
     with h5py.File(path, "r") as fh:
         t = fh["time"][()]
         names = _strings(fh["names"])
@@ -398,14 +289,11 @@ def read(path):
         pnames = _strings(fh["parameter_names"])
         units.update(json.loads(fh.attrs["parameter_units"]))
         descriptions.update(json.loads(fh.attrs["parameter_descriptions"]))
-        stats = json.loads(fh.attrs["stats"])
-        stats = {k: ({int(a) if a.lstrip("-").isdigit() else a: b for a, b in v.items()}
-                     if isinstance(v, dict) else v) for k, v in stats.items()}
-        return Result.from_table(
-            t, table, stats=stats,
-            events=[event(d) for d in json.loads(fh.attrs["events"])],
+        return dict(
+            t=t, table=table, stats=json.loads(fh.attrs["stats"]),
+            events=json.loads(fh.attrs["events"]),
             success=bool(fh.attrs["success"]), message=str(fh.attrs["message"]),
             parameters=fh["parameter_values"][()], parameter_names=pnames, units=units,
             descriptions=descriptions, _states=json.loads(fh.attrs["states"]),
             value_types={n: k for n, k in kinds.items() if k != "Real"},
-            state_switches=[event(d) for d in json.loads(fh.attrs["state_switches"])])
+            state_switches=json.loads(fh.attrs["state_switches"]))

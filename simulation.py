@@ -149,7 +149,7 @@ def simulate(model, t_end: float, *, t_start: float = 0.0, rtol: float = 1e-6,
         if parameters:
             compiled.set_parameters(parameters)
         compiled.drive_inputs(inputs)
-        from .results_store import Keeping
+        from .results_io import Keeping
         keeping = Keeping.make(compiled, outputs, store)
         return _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
                     raise_on_failure, progress, step_loop, nonfinite, keeping,
@@ -165,9 +165,9 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
          raise_on_failure, progress, step_loop, nonfinite="stop", keeping=None,
          error_test=None) -> Result:
     """One run of a compiled model at its current parameter values (``keeping``: what
-    it keeps, :class:`acausal.results_store.Keeping`)."""
+    it keeps, :class:`acausal.results_io.Keeping`)."""
     if keeping is None:
-        from .results_store import Keeping
+        from .results_io import Keeping
         keeping = Keeping()
     y0, yp0 = compiled.initialize(t_start)
     from .runtime.clocked import has_discrete_events, run_between_events
@@ -263,7 +263,7 @@ def _singular_start(compiled, t_start) -> str | None:
 def _result(compiled, out, success, message, marks=(0, 0, ""), keeping=None) -> Result:
     events, switches = _event_records(compiled, out, marks)
     if keeping is None:
-        from .results_store import Keeping
+        from .results_io import Keeping
         keeping = Keeping()
     return keeping.result(compiled, out.t, out.y, out.stats, events, success, message,
                           out.discrete_states, out.discrete_index, switches,
