@@ -12,6 +12,8 @@
 #ifndef ACAUSAL_FMU_H
 #define ACAUSAL_FMU_H
 
+#include <stddef.h>
+
 typedef int (*ac_fn)(double, const double *, const double *, const double *, double *,
                      double *);
 
@@ -97,11 +99,10 @@ typedef struct {
     long steps, rejected, events;
 } ac_state;
 
+#define ZERO_RTOL 1e-10                     /* a relation's zero tolerance, relative */
+
 int ac_alloc(ac_state *s, const ac_model *md);
 void ac_free(ac_state *s);
-int ac_solve_algebraic(ac_state *s);
-int ac_derivatives(ac_state *s);
-int ac_oriented(ac_state *s, double *r);
 int ac_initialize(ac_state *s);
 int ac_event(ac_state *s, int *states_changed);
 void ac_next_time_event(ac_state *s);
@@ -117,11 +118,27 @@ int ac_has_equations(const ac_model *md);
 int ac_update_equations(ac_state *s);
 int ac_fire(ac_state *s, const double *before, int round_);
 int ac_discrete_iteration(ac_state *s, const double *before, int initial);
-int ac_settle_all(ac_state *s, int with_rates);          /* engine.c */
-int ac_settle_contradicted(ac_state *s);
 double ac_tick(const ac_state *s, int c);
 double ac_tick_tol(double t);
+
+/* modes.c: Newton on a square system, the algebraic unknowns, the relations */
+typedef struct {
+    int n;                 /* unknowns */
+    const int *cols;       /* z index of each unknown */
+    int initial;           /* 1: rows [G; kept initial rows] over all z */
+} ac_system;
+
+void *ac_zalloc(int n, size_t size);        /* calloc of at least one element */
 int ac_lu(double *A, int n, int *piv);
 void ac_lu_solve(const double *A, int n, const int *piv, double *b);
+int ac_newton(ac_state *s, const ac_system *sys);
+int ac_solve_algebraic(ac_state *s);
+int ac_derivatives(ac_state *s);
+int ac_items(const ac_model *md);
+void ac_values(ac_state *s, double t, double *v);
+double ac_rel_tol(ac_state *s, int k);
+int ac_oriented(ac_state *s, double *r);
+int ac_settle_all(ac_state *s, int with_rates);
+int ac_settle_contradicted(ac_state *s);
 
 #endif

@@ -152,7 +152,7 @@ def build_binary(cc, src, binary, size) -> None:
     model_flags = (["-O0"] + FLAGS[1:]) if size > LARGE else FLAGS
     with tempfile.TemporaryDirectory() as tmp:
         objects, procs = [], []
-        for f in ("model.c", "engine.c", "discrete.c", "cosim.c", "fmu.c"):
+        for f in ("model.c", "modes.c", "engine.c", "discrete.c", "cosim.c", "fmu.c"):
             obj = os.path.join(tmp, f[:-2] + ".o")
             flags = model_flags if f == "model.c" else FLAGS
             procs.append((f, subprocess.Popen([cc, *flags, "-I", src, "-c", "-o", obj,

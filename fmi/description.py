@@ -85,7 +85,7 @@ def model_description(*, model_name, identifier, guid, fmi_type, variables, n_in
              "canNotUseMemoryManagementFunctions": "true"}
     if fmi_type == "ModelExchange":
         # completedIntegratorStepNotNeeded is false: fmi2CompletedIntegratorStep releases
-        # the indicators of items armed at zero (engine.c, ac_release)
+        # the indicators of items armed at zero (modes.c, ac_release)
         kind = ET.SubElement(root, "ModelExchange", attrs)
     else:
         kind = ET.SubElement(root, "CoSimulation", {

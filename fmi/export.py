@@ -5,8 +5,8 @@ What goes into the FMU (FMI 2.0, sec. 2.3 "FMU distribution"):
 * ``modelDescription.xml`` (:mod:`.description`), the GUID a hash of the C sources;
 * ``sources/``: ``model.c`` (the generated C of the model, :mod:`acausal.compiler.backends.cbackend`,
   and its data: sizes, the Jacobian patterns, the relations, the variables), the engine
-  of this package (``acausal_fmu.h``, ``engine.c``, ``discrete.c``, ``cosim.c``,
-  ``fmu.c``) and the FMI
+  of this package (``acausal_fmu.h``, ``modes.c``, ``engine.c``, ``discrete.c``,
+  ``cosim.c``, ``fmu.c``) and the FMI
   headers that fmpy ships;
 * ``binaries/<platform>/<modelIdentifier>.so`` compiled from them with the system C
   compiler (``-O2 -fPIC -ffp-contract=off -shared``, every symbol but the FMI functions
@@ -14,7 +14,7 @@ What goes into the FMU (FMI 2.0, sec. 2.3 "FMU distribution"):
   of source at ``-O0``, as the C backend does).
 
 The FMU presents the compiled model's index-1 form as an ODE in its states
-x = z[state_index]; the other solver unknowns are solved inside by Newton (engine.c).
+x = z[state_index]; the other solver unknowns are solved inside by Newton (modes.c).
 Parameters and inputs are set through FMI at any time (the model is evaluated again);
 the start values that are initial conditions (a state's ``start``, a ``fixed=True``
 start) are FMI start values of their variables, set before initialization.  A variable
@@ -53,7 +53,7 @@ __all__ = ["export_fmu", "FMI_TYPES"]
 FMI_TYPES = ("ModelExchange", "CoSimulation")
 _SHORT = {"me": "ModelExchange", "cs": "CoSimulation", "modelexchange": "ModelExchange",
           "cosimulation": "CoSimulation"}
-ENGINE = ("acausal_fmu.h", "engine.c", "discrete.c", "cosim.c", "fmu.c")
+ENGINE = ("acausal_fmu.h", "modes.c", "engine.c", "discrete.c", "cosim.c", "fmu.c")
 HEADERS = ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h")
 AC_PARAM, AC_EXPAND, AC_CONST, AC_DERIV, AC_PAFFINE = 0, 1, 2, 3, 4   # acausal_fmu.h
 DEFAULT_RTOL = 1e-6
@@ -111,7 +111,8 @@ def export_fmu(model, path, fmi_type: str = "ModelExchange", *, model_name: str 
         model_name=name, identifier=identifier, guid=guid, fmi_type=kind,
         variables=variables, n_indicators=layout["n_indicators"],
         description=_summary(model) if ports is not None else "",
-        default=default, sources=["model.c", "engine.c", "discrete.c", "cosim.c", "fmu.c"])
+        default=default,
+        sources=["model.c", "modes.c", "engine.c", "discrete.c", "cosim.c", "fmu.c"])
     with tempfile.TemporaryDirectory() as tmp:
         src = os.path.join(tmp, "sources")
         os.makedirs(src)
