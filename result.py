@@ -12,7 +12,6 @@ import csv
 
 import numpy as np
 
-from .components.arrays import array_of_name
 from .result_export import plot_result, save_result, write_mat
 from .runtime.outputs import evaluate, expand_points, pointwise
 from .words import listed, shortened, suggestion
@@ -90,6 +89,8 @@ def _component_of(text: str) -> str:
 
 def _array_elements(name: str, known):
     """(shape, element names) of the array variable ``name`` or ``der(name)``, or None."""
+    # the modelling language (30 ms to import): a result read from a file needs none of it
+    from .components.arrays import array_of_name
     if name.startswith("der(") and name.endswith(")"):
         found = array_of_name(name[4:-1], {n[4:-1] for n in known
                                            if n.startswith("der(") and n.endswith(")")})

@@ -41,8 +41,6 @@ import os
 
 import numpy as np
 
-from .components.arrays import element_index, elements, shape_of
-from .components.declarations import Parameter
 from .errors import InvalidArgument
 from .result import Event, Result, _array_elements
 from .result_export import FORMAT, _h5py, plot_result, save_result, write_mat
@@ -59,6 +57,9 @@ def declared_attributes(model) -> tuple[dict, dict]:
     component tree ``model``; a declaration without a unit maps to "".  The dotted names
     are made here from the tree (as the compiler names them), so the tree need not have
     been bound by a compile in this process."""
+    # the modelling language (30 ms to import): loading a result file needs none of it
+    from .components.arrays import element_index, elements, shape_of
+    from .components.declarations import Parameter
     units, descriptions = {}, {}
     stack = [("", model)]
     while stack:

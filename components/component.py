@@ -36,16 +36,15 @@ from contextlib import contextmanager
 from typing import TYPE_CHECKING, Iterable
 
 from . import inheritance
+from .arrays import check_array_value, parameter_array, shape_of
 from .conditional import Conditional, check_conditionals, make_conditionals
 from .declarations import (COMPILING, Parameter, Variable, check_parameter_value,
                            check_structural_value, declaration_doc, is_symbolic,
                            parameter_signature, ref, shown_value)
 from .declared import class_declarations, class_structurals, constructor_arguments
-from .arrays import check_array_value, parameter_array, shape_of
 from .equationlist import Connection
 from .validation import validate_modifications
-from ..errors import (InvalidConnection, InvalidEquation, InvalidHierarchy, InvalidValue,
-                      ModelError, NotInModel)
+from ..errors import InvalidConnection, InvalidHierarchy, InvalidValue, ModelError, NotInModel
 
 if TYPE_CHECKING:
     import sympy

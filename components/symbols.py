@@ -19,7 +19,7 @@ from . import logic as _logic
 from .arrays import array_equations
 from .ifexpr import unfolded_condition
 from .operators import (_NON_FINITE, _NON_FINITE_SET, Pre, Sample, _invalid, _text, delay, der,
-                        has_atom_in, no_event, pre, sample, sympify_value, time)
+                        has_atom_in, no_event, sample, sympify_value, time)
 from .printing import text
 from .realsymbol import SYMBOLS
 
