@@ -11,7 +11,7 @@ import json
 
 import numpy as np
 
-from .results_store import write
+from .results_store import h5py_module, write
 
 __all__ = ["write_mat", "save_result", "plot_result", "FORMAT", "VERSION_1"]
 
@@ -92,15 +92,6 @@ def write_mat(res, path, names=None) -> None:
 
 
 # -- HDF5 ------------------------------------------------------------------------------
-def _h5py():
-    try:
-        import h5py
-    except ImportError as err:
-        raise ImportError("saving and loading results needs h5py: "
-                          "pip install 'acausal[io]'") from err
-    return h5py
-
-
 def save_result(res, path) -> None:
     """Everything :func:`load_result` needs, in one HDF5 file: a result of a compiled
     model in :mod:`acausal.results_store`'s layout (one row per series, written a block
@@ -108,7 +99,7 @@ def save_result(res, path) -> None:
     if res.compiled is not None:
         write(res, path)
         return
-    h5py = _h5py()
+    h5py = h5py_module()
     names = res.names
     values = np.column_stack([res[n] for n in names]) if names else \
         np.zeros((len(res.t), 0))

@@ -43,8 +43,8 @@ import numpy as np
 
 from .errors import InvalidArgument
 from .result import Event, Result, _array_elements
-from .result_export import FORMAT, _h5py, plot_result, save_result, write_mat
-from .results_store import ResultWriter, read
+from .result_export import FORMAT, plot_result, save_result, write_mat
+from .results_store import ResultWriter, h5py_module, read
 from .words import suggestion
 
 __all__ = ["declared_attributes", "write_mat", "save_result", "load_result", "plot_result",
@@ -109,7 +109,7 @@ def load_result(path) -> Result:
     """A :class:`~acausal.Result` from a file written by ``Result.save``: ``res[name]``,
     ``res.t``, ``to_pandas``, ``plot`` ... work without the model (``res.compiled`` is
     None)."""
-    h5py = _h5py()
+    h5py = h5py_module()
     with h5py.File(path, "r") as fh:
         if fh.attrs.get("format") != FORMAT:
             raise ValueError(f"{path}: not a result saved by acausal (Result.save)")

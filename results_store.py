@@ -32,13 +32,14 @@ import numpy as np
 
 from .runtime.outputs import evaluate, expand_points
 
-__all__ = ["ResultWriter", "read", "write", "BLOCK", "VERSION"]
+__all__ = ["ResultWriter", "read", "write", "h5py_module", "BLOCK", "VERSION"]
 
 FORMAT, VERSION = "acausal-result", 2
 BLOCK = 8192          # points per chunk of a series, and per block a writer computes
 
 
-def _h5py():
+def h5py_module():
+    """h5py (the ``io`` extra), or an ImportError that says how to install it."""
     try:
         import h5py
     except ImportError as err:
@@ -53,7 +54,7 @@ class ResultWriter:
     the outputs to keep (default: all)."""
 
     def __init__(self, path, compiled, names=None):
-        h5py = _h5py()
+        h5py = h5py_module()
         self.path, self.compiled = str(path), compiled
         names = sorted(compiled.outputs) if names is None else list(names)
         self.names = names
@@ -182,7 +183,7 @@ class ResultWriter:
             if self._held:
                 self._write(self._held)
             fh = self.file
-            text = _h5py().string_dtype()
+            text = h5py_module().string_dtype()
             fh.create_dataset("parameter_names", dtype=text,
                               data=np.array(parameter_names, dtype=object))
             fh.create_dataset("parameter_values",
@@ -252,7 +253,7 @@ class _Series(Mapping):
             if r < 0:
                 out = np.full(self.n, c)
             else:
-                with _h5py().File(self.path, "r") as fh:
+                with h5py_module().File(self.path, "r") as fh:
                     out = fh["series"][r, :]
                 if s != 1.0:
                     out = s * out
@@ -277,7 +278,7 @@ def read(path) -> dict:
     """The parts of a version-2 file, as :meth:`acausal.Result.from_table` takes them
     (events as dicts; ``table`` reads a variable when it is first asked for):
     :func:`acausal.results_io.load_result` makes the result."""
-    h5py = _h5py()
+    h5py = h5py_module()
     with h5py.File(path, "r") as fh:
         t = fh["time"][()]
         names = _strings(fh["names"])
