@@ -72,8 +72,10 @@ firing thyristor's voltage at rtol 1e-12 (a gain of 5e4 on a current that switch
 nanoseconds) held the steps at 1e-14 s, order 1, with every other attempt failing on
 it and no step failing outright, until the step budget ran out.  The driver answers as
 to a stiff restart's failure (:mod:`acausal.solvers.recovery`): after an event, the
-algebraic components are judged through the states from there on; otherwise the steps
-go on as they were.  A healthy run never comes near the count.
+algebraic components are judged through the states from there on, where the steps are
+below a millionth of the time scale; otherwise the steps go on as they were (a valve
+whose compensator pressure needs steps of 2e-6 of the time scale reaches the count and
+keeps its test).
 
 A problem that changes its formulation between steps without changing the meaning of y
 (dynamic state selection: another choice of which derivatives are linked) keeps the
