@@ -61,6 +61,22 @@ algebraic unknown with a high gain on a state is then only as accurate as that g
 times the state's tolerance (measured in ``benchmarks/README.md``).  The driver takes
 the caller's choice, else the problem's (``problem.error_test``, contract item 6).
 
+A step whose attempts keep failing on the algebraic unknowns alone -- the largest
+weighted error or Newton correction an algebraic component's, the differential ones
+passing by themselves -- is counted: after :data:`MAX_CRAWL` such failed attempts in a
+row (any failure that involves the states ends the count, as does a restart) the next
+step raises :class:`StepFailure` of kind ``"crawl"`` before it is tried.  Such a run is
+not failing, it is crawling: at rtol 1e-11 an algebraic unknown that the states
+determine through a gain of 1e6 carries their round-off above its tolerance, and a
+firing thyristor's voltage at rtol 1e-12 (a gain of 5e4 on a current that switches in
+nanoseconds) held the steps at 1e-14 s, order 1, with every other attempt failing on
+it and no step failing outright, until the step budget ran out.  The driver answers as
+to a stiff restart's failure (:mod:`acausal.solvers.recovery`): after an event, the
+algebraic components are judged through the states from there on, where the steps are
+below a millionth of the time scale; otherwise the steps go on as they were (a valve
+whose compensator pressure needs steps of 2e-6 of the time scale reaches the count and
+keeps its test).
+
 A problem that changes its formulation between steps without changing the meaning of y
 (dynamic state selection: another choice of which derivatives are linked) keeps the
 history, order and step: :meth:`BDF.reformulate` re-reads the masks and forces a new
@@ -79,7 +95,7 @@ from .first_step import initial_step, probed_step
 from .linalg import LinearSolver, SingularMatrixError, make_linear_solver
 from .stald import StabilityLimitDetector
 
-__all__ = ["BDF", "StepFailure", "MAX_ORDER", "ERROR_TESTS"]
+__all__ = ["BDF", "StepFailure", "MAX_ORDER", "MAX_CRAWL", "ERROR_TESTS"]
 
 MAX_ORDER = 5
 ERROR_TESTS = ("all", "states")   # what the local error test covers (module docstring)
@@ -87,6 +103,7 @@ _EPS = np.finfo(float).eps
 _MAXNEF = 10         # error-test failures per step before giving up (IDA maxnef)
 _MAXNCF = 10         # Newton failures per step before giving up (IDA maxncf)
 _MAXSING = 3         # singular iteration matrices per step before giving up
+MAX_CRAWL = 1000     # failed attempts on algebraic unknowns alone in a row (module docstring)
 # alpha_s = -sum_{j=1..k} 1/j, the fixed leading coefficient (BCP sec. 5.2)
 _ALPHAS = [0.0] + [-sum(1.0 / j for j in range(1, k + 1)) for k in range(1, MAX_ORDER + 2)]
 
@@ -218,6 +235,7 @@ class BDF:
         self.phase, self.ns, self.nst = 0, 0, 0
         self.ss = 20.0
         self.force_setup = True
+        self.crawl = 0     # failed attempts on algebraic unknowns alone, none on states
         self._last_fail = self._last_err = None
         # forced steps since the restart (solvers/recovery.py), the last one's size
         self.forced, self.forced_ok, self.forced_h = 0, False, 0.0
@@ -351,6 +369,12 @@ class BDF:
             self.kk = 1
         ncf = nef = nsing = 0
         saved_t = self.tn
+        if self.crawl >= MAX_CRAWL:
+            self.crawl = 0
+            raise StepFailure("crawl", f"steps failed on algebraic unknowns alone "
+                              f"{MAX_CRAWL} times in a row before "
+                              f"t={saved_t:.17g} (h={self.hh:.3g})", saved_t, self.hh,
+                              self._last_fail)
         self._last_fail = None
         self._update_weights()
         while True:
@@ -396,6 +420,7 @@ class BDF:
                 st.newton_failures += 1
                 ncf += 1
                 self._last_fail = exc.weighted
+                self._count_crawl(exc.weighted, 1.0)
                 self.phase = 1
                 if ncf >= _MAXNCF:
                     raise StepFailure("newton", f"corrector failed to converge {ncf} "
@@ -416,6 +441,7 @@ class BDF:
             st.error_test_failures += 1
             nef += 1
             self._last_fail = ee * self.ewt_err
+            self._count_crawl(self._last_fail, ck)
             self.phase = 1
             if nef >= _MAXNEF:
                 raise StepFailure("error_test", f"error test failed {nef} times at "
@@ -445,6 +471,17 @@ class BDF:
                 self.kk = knew if nef == 2 else 1
                 self._shrink(rr)
         self._complete_step(ee, err_k, err_km1, knew, yppred)
+
+    def _count_crawl(self, weighted, ck) -> None:
+        """Count a failed attempt that is the algebraic unknowns' alone (the largest
+        weighted component is algebraic and the differential ones pass by themselves);
+        any other failure ends the count."""
+        alone = weighted is not None and self.alg.any()
+        if alone:
+            a = np.abs(weighted)
+            alone = bool(np.all(np.isfinite(a)) and self.alg[int(np.argmax(a))]
+                         and ck * self._wrms(np.where(self.alg, 0.0, a), 1.0) <= 1.0)
+        self.crawl = self.crawl + 1 if alone else 0
 
     def _shrink(self, rr: float) -> None:
         self.hh *= rr

@@ -22,7 +22,7 @@
 #include "cbdf.h"
 
 enum { R_BUDGET = 0, R_FULL = 1, R_SPECIAL = 2, R_FAIL = 3 };
-enum { F_NONE, F_ERRTEST, F_NEWTON, F_STEPSIZE, F_SINGULAR, F_NONFINITE };
+enum { F_NONE, F_ERRTEST, F_NEWTON, F_STEPSIZE, F_SINGULAR, F_NONFINITE, F_CRAWL };
 
 #define MAXORD 5
 #define EPCON 0.33
@@ -373,11 +373,33 @@ static void complete_step(ctx_t *c, double err_k, double err_km1, int64_t knew) 
   s->has_last = 1;
 }
 
+/* count a failed attempt that is the algebraic unknowns' alone (bdf.py's _count_crawl):
+   the largest weighted component is algebraic and the differential ones pass alone */
+static void count_crawl(ctx_t *c, const double *wt, double ck) {
+  cbdf_state *s = c->s; int64_t n = c->n;
+  const double *alg = s->alg_mask;
+  int64_t top = -1; double big = -1.0, sum = 0.0; int alone = s->any_algebraic != 0;
+  for (int64_t i = 0; alone && i < n; ++i) {
+    double a = fabs(wt[i]);
+    if (!isfinite(a)) alone = 0;
+    else {
+      if (a > big) { big = a; top = i; }
+      if (alg[i] == 0.0) sum += a * a;
+    }
+  }
+  alone = alone && top >= 0 && alg[top] != 0.0 && ck * sqrt(sum / n) <= 1.0;
+  s->crawl = alone ? s->crawl + 1 : 0;
+}
+
 /* one accepted step: 0, or a failure kind (F_...) */
 static int step(ctx_t *c) {
   cbdf_state *s = c->s; int64_t n = c->n;
   int ncf = 0, nef = 0, nsing = 0;
   double saved_t = s->tn;
+  if (s->crawl >= s->max_crawl) {
+    s->crawl = 0; s->fail_t = saved_t; s->fail_h = s->hh;
+    return F_CRAWL;
+  }
   s->has_fail = 0;
   update_weights(c);
   double ck, err_k, err_km1; int64_t knew;
@@ -417,6 +439,7 @@ static int step(ctx_t *c) {
     if (k == -1) {
       restore(c, saved_t);
       s->n_newton_fails++; ncf++; s->phase = 1;
+      if (s->has_fail) count_crawl(c, s->weighted, 1.0); else s->crawl = 0;
       if (ncf >= MAXNCF) {
         s->fail_t = saved_t; s->fail_h = s->hh;
         return F_NEWTON;
@@ -455,6 +478,7 @@ static int step(ctx_t *c) {
     double *wt = s->weighted;
     for (int64_t j = 0; j < n; ++j) wt[j] = c->ee[j] * w[j];
     s->has_fail = 1; s->phase = 1;
+    count_crawl(c, wt, ck);
     if (nef >= MAXNEF) {
       s->fail_t = saved_t; s->fail_h = s->hh;
       return F_ERRTEST;

@@ -57,6 +57,8 @@ typedef struct cbdf_state {
   int64_t force_setup;             /* 1: form a new iteration matrix at the next step */
   int64_t kmax;                    /* the highest order allowed now */
   int64_t max_order;               /* the highest order allowed in this run */
+  int64_t crawl;                   /* failed attempts on algebraic unknowns alone in a row */
+  int64_t max_crawl;               /* that many end the step with F_CRAWL (bdf.py) */
   /* -- a run of the loop: set by Python before cbdf_run -------------------------------- */
   int64_t mode;                    /* 0: a compiled model's functions, 1: callbacks */
   int64_t budget;                  /* steps allowed before returning */
@@ -92,6 +94,7 @@ typedef struct cbdf_state {
   const double *atol;              /* n absolute tolerances */
   const double *ss_mask;           /* n: 0 for a self-scaled unknown, else 1 */
   const double *err_mask;          /* n: 0 for an unknown left out of the error test */
+  const double *alg_mask;          /* n: 1 for an algebraic unknown, else 0 */
   double *scratch;                 /* dense n x n (not with the sparse LU) + 13 n */
   double *lu;                      /* n x n: the dense LU */
   int64_t *piv;                    /* n: the dense LU's pivot rows */

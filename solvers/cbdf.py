@@ -55,7 +55,7 @@ import ctypes
 import numpy as np
 
 from . import cbdf_sparse as sparse_lu
-from .bdf import _ALPHAS, BDF, MAX_ORDER, StepFailure
+from .bdf import _ALPHAS, BDF, MAX_CRAWL, MAX_ORDER, StepFailure
 from .cbdf_callbacks import Callbacks, problem_callbacks
 from .cbdf_dyn import bind as bind_dynamic
 from .cbdf_layout import CbdfState
@@ -72,7 +72,8 @@ CAPACITY = 512           # output points per return to Python (fewer above MAX_D
 
 R_BUDGET, R_FULL, R_SPECIAL, R_FAIL = range(4)     # what cbdf_run returns (cbdf.c)
 F_SINGULAR, F_NONFINITE = 4, 5                     # two of its failure kinds
-_KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singular"}
+_KINDS = {1: "error_test", 2: "newton", 3: "step_size", 4: "singular", 5: "singular",
+          6: "crawl"}
 
 
 def _loop_model(problem):
@@ -262,7 +263,7 @@ class CompiledBDF(BDF):
 
     # ------------------------------------------------------------------ state transfer
     _SCALARS = ("tn", "t_prev", "t_stop", "hh", "hused", "cj", "cjold", "cjlast",
-                "cjratio", "ss", "kk", "kused", "phase", "ns", "nst", "kmax")
+                "cjratio", "ss", "kk", "kused", "phase", "ns", "nst", "kmax", "crawl")
     _COEFFICIENTS = ("psi", "alpha", "beta", "sigma", "gamma")
     _COUNTERS = ("n_residuals", "n_jacobians", "n_lu", "n_newton", "n_error_fails",
                  "n_newton_fails", "n_steps")
@@ -275,6 +276,7 @@ class CompiledBDF(BDF):
         for name in self._COEFFICIENTS:
             getattr(st, name)[:MAX_ORDER + 2] = getattr(self, name)
         st.force_setup, st.max_order = bool(self.force_setup), self.max_order
+        st.max_crawl = MAX_CRAWL
         for name in self._COUNTERS:
             setattr(st, name, 0)
         st.orders[:] = [0] * len(st.orders)
@@ -308,6 +310,7 @@ class CompiledBDF(BDF):
         self._set("atol", self.atol)
         self._set("ss_mask", np.where(self.self_scaled, 0.0, 1.0))
         self._set("err_mask", np.ones(self.n) if self.err_mask is None else self.err_mask)
+        self._set("alg_mask", np.where(self.alg, 1.0, 0.0))
         self.st.any_algebraic = bool(self.alg.any())
         self.st.any_self_scaled = bool(self.self_scaled.any())
         self.st.has_last = 0
@@ -318,6 +321,7 @@ class CompiledBDF(BDF):
         :meth:`run`)."""
         super().reformulate()
         self._set("ss_mask", np.where(self.self_scaled, 0.0, 1.0))
+        self._set("alg_mask", np.where(self.alg, 1.0, 0.0))
         self.st.any_algebraic = bool(self.alg.any())
         self.st.any_self_scaled = bool(self.self_scaled.any())
 
@@ -431,6 +435,10 @@ class CompiledBDF(BDF):
             if weighted is None and st.has_last:
                 weighted = self._keep["last_err"].copy()
             return StepFailure("step_size", f"step size {h:.3g} underflow at t={t:.17g}",
+                               t, h, weighted)
+        if kind == "crawl":
+            return StepFailure("crawl", f"steps failed on algebraic unknowns alone "
+                               f"{MAX_CRAWL} times in a row before t={t:.17g} (h={h:.3g})",
                                t, h, weighted)
         if kind == "newton":
             return StepFailure("newton", f"corrector failed to converge 10 times at "

@@ -333,6 +333,8 @@ class _Run(EventHandling):
         BDF only restarted)."""
         if relax(self, s, exc):
             return None
+        if exc.kind == "crawl":
+            return None      # no recovery applies: the steps go on as they were
         if passage(self, s, exc):
             return self._accepted(s)
         return False

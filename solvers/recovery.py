@@ -11,7 +11,12 @@ tolerance is tight, neither of them a property of the solution:
   bring under a tolerance of 1e-11.  :func:`relax` takes the algebraic components out of
   the error test (they are judged through the states that determine them, as the
   ``self_scaled`` ones of contract item 6 are, and as IDA's ``suppressalg`` option does)
-  and restarts at order 1 from the last accepted point;
+  and restarts at order 1 from the last accepted point.  It also answers a run that does
+  not fail but crawls on such an unknown (the BDF's ``"crawl"``, :mod:`.bdf`) at steps
+  below :data:`PASSAGE_SPAN` of the time scale (a pressure-compensated valve whose
+  compensator pressure, with a high gain on the states, holds the steps at 2e-6 of the
+  time scale near zero flow needs them: taken out of the test it lets a relation on it
+  chatter);
 * **a transient faster than the time resolution**: after a switch closes across charged
   capacitors through ``Ron = 1e-9`` the charge moves in ~1e-15 s, while at t = 2e-4 the
   smallest step double precision can represent is ~1e-19 s, and the first step an error
@@ -43,11 +48,14 @@ PASSAGE_SPAN = 1e-6     # and none longer than this fraction of max(|t|, the int
 def relax(run, s, exc: StepFailure) -> bool:
     """Take the algebraic components out of the error test and restart (module
     docstring), where the step failed at a small step size after an event and the
-    largest weighted error is an algebraic component's; False where that does not apply
+    largest weighted error is an algebraic component's, or where the steps crawl on
+    algebraic components alone (kind ``"crawl"``); False where that does not apply
     (before any event a failing algebraic component says the structure the compiler
     found does not hold there, which the run must say, not hide)."""
-    if exc.kind not in ("step_size", "error_test") or not run.event_times:
+    if exc.kind not in ("step_size", "error_test", "crawl") or not run.event_times:
         return False     # only a mode an event switched to: not a structure that fails
+    if exc.kind == "crawl" and exc.h > PASSAGE_SPAN * max(abs(exc.t), run.span):
+        return False     # steps the time scale resolves: the unknowns need them
     alg = np.asarray(s.alg, bool)
     free = alg & ~np.asarray(s.self_scaled, bool)
     if not free.any():

@@ -215,14 +215,6 @@ def opening_switch():
     return ac.compile(OpeningSwitch())
 
 
-# Ron = Goff = 1e-6 at rtol 1e-11: after the opening the steps crawl (h ~ 3e-14 s,
-# Newton failures at order 1) until the step budget runs out at t = 4.000014e-3; the
-# switch's curve parameter s = (i_L - I) / Goff carries the round-off of i_L times 1e6,
-# above its tolerance, and no step fails outright, so the recovery never starts.
-_CRAWL = pytest.mark.xfail(strict=True, reason="steps crawl after the opening at "
-                           "Ron = Goff = 1e-6, rtol 1e-11 (maximum number of steps)")
-
-
 @pytest.mark.parametrize("step_loop", STEP_LOOPS)
 @pytest.mark.parametrize("ron, rtol", [(r, t) for r in RONS for t in RTOLS
                                        if (r, t) != (1e-6, 1e-11)])
@@ -231,9 +223,16 @@ def test_opening_switch_with_current_source_matches_the_modes(opening_switch, ro
     _check_opening_switch(opening_switch, ron, rtol, step_loop)
 
 
-@_CRAWL
-def test_opening_switch_at_ron_1e_6_and_rtol_1e_11(opening_switch):
-    _check_opening_switch(opening_switch, 1e-6, 1e-11, "c")
+@pytest.mark.parametrize("step_loop", STEP_LOOPS)
+def test_a_crawl_on_an_algebraic_unknown_at_round_off_is_relaxed(opening_switch,
+                                                                   step_loop):
+    """Ron = Goff = 1e-6 at rtol 1e-11: after the opening the switch's curve parameter
+    s = (i_L - I) / Goff carries the round-off of i_L times 1e6, above its tolerance;
+    no step fails outright, the steps crawled (h ~ 3e-14 s, order 1) until the step
+    budget ran out at t = 4.000014e-3.  A thousand attempts in a row failing on the
+    algebraic unknowns alone take them out of the error test (solvers/recovery.py)."""
+    res = _check_opening_switch(opening_switch, 1e-6, 1e-11, step_loop)
+    assert res.stats["relaxed_components"] > 0
 
 
 def _check_opening_switch(opening_switch, ron, rtol, step_loop):
@@ -248,3 +247,4 @@ def _check_opening_switch(opening_switch, ron, rtol, step_loop):
     late = SW_TIMES > T_OPEN + 1e-6
     assert np.allclose(res["sw.i"][late], want[late] - I_STEP, rtol=0,
                        atol=100 * rtol * I_STEP)
+    return res
