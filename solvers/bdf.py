@@ -61,21 +61,13 @@ algebraic unknown with a high gain on a state is then only as accurate as that g
 times the state's tolerance (measured in ``benchmarks/README.md``).  The driver takes
 the caller's choice, else the problem's (``problem.error_test``, contract item 6).
 
-A step whose attempts keep failing on the algebraic unknowns alone -- the largest
-weighted error or Newton correction an algebraic component's, the differential ones
-passing by themselves -- is counted: after :data:`MAX_CRAWL` such failed attempts in a
-row (any failure that involves the states ends the count, as does a restart) the next
-step raises :class:`StepFailure` of kind ``"crawl"`` before it is tried.  Such a run is
-not failing, it is crawling: at rtol 1e-11 an algebraic unknown that the states
-determine through a gain of 1e6 carries their round-off above its tolerance, and a
-firing thyristor's voltage at rtol 1e-12 (a gain of 5e4 on a current that switches in
-nanoseconds) held the steps at 1e-14 s, order 1, with every other attempt failing on
-it and no step failing outright, until the step budget ran out.  The driver answers as
-to a stiff restart's failure (:mod:`acausal.solvers.recovery`): after an event, the
-algebraic components are judged through the states from there on, where the steps are
-below a millionth of the time scale; otherwise the steps go on as they were (a valve
-whose compensator pressure needs steps of 2e-6 of the time scale reaches the count and
-keeps its test).
+Failed attempts on the algebraic unknowns alone (the largest weighted error or Newton
+correction an algebraic component's, the differential ones passing by themselves) are
+counted; any other failure and a restart end the count.  After :data:`MAX_CRAWL` in a
+row the next step raises :class:`StepFailure` of kind ``"crawl"`` before it is tried:
+the run is not failing but crawling (a firing thyristor's voltage at rtol 1e-12 held
+the steps at 1e-14 s, order 1, until the step budget ran out), and the driver answers
+as :mod:`acausal.solvers.recovery` says.
 
 A problem that changes its formulation between steps without changing the meaning of y
 (dynamic state selection: another choice of which derivatives are linked) keeps the
