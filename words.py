@@ -18,9 +18,14 @@ ITEMS = 8           # names of a list in a message
 
 
 def shortened(text, limit: int = TEXT) -> str:
-    """``text`` as one line of at most ``limit`` characters (cut with "...")."""
+    """``text`` as one line of at most ``limit`` characters (cut with "..."); a trailing
+    ``[component]`` tag, which says where the text comes from, is kept."""
     text = " ".join(str(text).split())
-    return text if len(text) <= limit else text[:max(limit - 3, 1)].rstrip() + "..."
+    if len(text) <= limit:
+        return text
+    k = text.rfind(" [")
+    tag = text[k:] if text.endswith("]") and 0 < k and len(text) - k <= limit // 2 else ""
+    return text[:max(limit - 3 - len(tag), 1)].rstrip() + "..." + tag
 
 
 def listed(items, n: int = ITEMS, limit: int = TEXT) -> str:

@@ -47,6 +47,7 @@ from ..solvers.linalg import SingularMatrixError
 from ..solvers.newton import damped_newton
 from .initial import algebraic_system, consistent_derivatives
 from ..errors import InitializationFailed, InvalidValue
+from ..words import shortened
 
 __all__ = ["WhenClauses", "iterate_event", "discrete_iteration"]
 
@@ -471,16 +472,16 @@ def _solve_live(model, t, z, decided) -> np.ndarray:
     if bad.any():
         raise InitializationFailed(
             f"event at t = {t:.10g}: no consistent discrete state; contradicted: "
-            + "; ".join(disc.describe(k) for k in np.flatnonzero(bad)[:5]), t)
+            + "; ".join(shortened(disc.describe(k)) for k in np.flatnonzero(bad)[:5]), t)
     return z
 
 
 def _names(model, mask) -> list:
-    return [model.discrete.describe(k) for k in np.flatnonzero(mask)[:5]]
+    return [shortened(model.discrete.describe(k)) for k in np.flatnonzero(mask)[:5]]
 
 
 def _unsettled(model, t, seen) -> InitializationFailed:
     flips = np.flatnonzero(np.any(np.diff(np.array(seen), axis=0) != 0, axis=0))
     return InitializationFailed(
         f"event iteration at t = {t:.10g} did not settle after {_ROUNDS} rounds: "
-        + "; ".join(model.discrete.describe(k) for k in flips[:5]), t)
+        + "; ".join(shortened(model.discrete.describe(k)) for k in flips[:5]), t)

@@ -48,6 +48,7 @@ from ..solvers.newton import damped_newton
 from ..solvers.linalg import DENSE_MAX, LinearSolver, SingularMatrixError, assemble
 from .diagnostics import DOMAIN_ERRORS, failing_statement
 from ..errors import InitializationFailed
+from ..words import shortened
 from .indeterminate import minimum_norm_newton, null_variables
 from .initparams import augmented, check_found, reset_free
 from .redundant import check_dropped, choose_rows
@@ -135,7 +136,7 @@ def initialize(model, t0: float):
     raise InitializationFailed(
         f"initialization at t = {t0}: the relations do not settle (each solution "
         "contradicts the values it was computed with): "
-        + "; ".join(model.discrete.describe(k) for k in flipping[:5]), t0)
+        + "; ".join(shortened(model.discrete.describe(k)) for k in flipping[:5]), t0)
 
 
 def _fresh_start(model, t0, z) -> None:

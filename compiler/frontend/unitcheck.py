@@ -33,6 +33,7 @@ from ...components.symbols import Equation, der, no_event
 from ...components.symbols import Pre as pre
 from ...components.units import DIMENSIONLESS, MODES, UnitCheck, dimension_text, parse_unit
 from ...errors import UnitError, UnitWarning
+from ...words import TEXT, shortened
 
 __all__ = ["check_units", "complain", "UnitCheck", "MODES"]
 
@@ -151,7 +152,8 @@ def _one_dimension(terms, walker) -> bool:
 
 
 def _message(eq, m: _Mismatch) -> str:
-    return f"equation '{eq.text}' in {eq.where}: {m.describe()}"
+    return (f"equation '{shortened(eq.text)}' in {eq.where}: "
+            f"{shortened(m.describe(), 2 * TEXT)}")
 
 
 def _check_binding(p, walker, dims, result) -> None:
