@@ -339,7 +339,20 @@ def _solve_general(residual, x):
             if c.is_Number and r0.is_Add:
                 return sp.Mul(-1 / c, r0, evaluate=False) if c != -1 else r0
             return -r0 / c
-    return -residual.xreplace({x: 0}) / c
+    return -_at_zero(residual, x) / c
+
+
+def _at_zero(expr, x):
+    """``expr`` at x = 0 outside its relations: a relation is frozen between events
+    (its value is the discrete state's, as :func:`partial` differentiates it), so
+    ``z = if z + s > 0 then -1 else 1`` solves to itself, with the relation reading z,
+    not to a relation ``s > 0`` of another model."""
+    frozen = {r: sp.Dummy() for r in expr.atoms(sp.core.relational.Relational)
+              if x in _symbols(r)}
+    if not frozen:
+        return expr.xreplace({x: 0})
+    back = {d: r for r, d in frozen.items()}
+    return expr.xreplace(frozen).xreplace({x: 0}).xreplace(back)
 
 
 @lru_cache(maxsize=200_000)
