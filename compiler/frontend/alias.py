@@ -287,6 +287,8 @@ def _alias_pattern(residual: sp.Expr, info, params: frozenset = frozenset()):
         ca = partial(residual, a)
         if not ca.is_number or ca == 0:
             return None
+        if any(a in symbols_of(r) for r in residual.atoms(sp.core.relational.Relational)):
+            return None    # a relation reads a: a = if a > p then .. (not a constant)
         rest = residual.xreplace({a: 0})
         return "const", a, None, -rest / ca
     if others or len(syms) != 2 or not residual.is_Add or len(residual.args) != 2:

@@ -57,3 +57,24 @@ def test_shortened_keeps_the_component_tag():
     out = shortened(text)
     assert len(out) <= TEXT and out.endswith("...  [valve (Valve)]".replace("  ", " "))
     assert out.startswith("v = a0 + a1")
+
+
+class SelfConstant(ac.Component):
+    """z = if z > p then 2 else 0.5 with p = 0.25: z = 0.5 contradicts its relation, so
+    z = 2 is the only solution; as an equation of one variable and parameters it was
+    once taken for the constant z = (2 if 0 > p else 0.5)."""
+
+    p = ac.Parameter(0.25)
+    x = ac.Variable(start=0.0, fixed=True)
+    z = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), self.z),
+                ac.Eq(self.z, ac.if_else(self.z > self.p, 2.0, 0.5))]
+
+
+def test_an_equation_of_one_variable_whose_relation_reads_it_is_not_a_constant():
+    res = ac.simulate(SelfConstant(), t_end=1.0, n_points=11)
+    assert res.success, res.message
+    assert np.allclose(res["z"], 2.0, rtol=0, atol=1e-12)
+    assert np.allclose(res["x"], 2.0 * res.t, rtol=1e-9, atol=1e-12)
