@@ -125,7 +125,29 @@ def depth(expr) -> int:
     remembered per expression (the passes ask it of the same ones many times)."""
     if expr.is_Atom:
         return 0
+    shallow = _shallow_depth(expr, 3)
+    if shallow is not None:          # most terms of a model (k*x*y, -x, R*(T - T_ref))
+        return shallow
     d = {}
     for node in postorder([expr]):
         d[node] = 1 + max((d[a] for a in node.args), default=-1)
     return d[expr]
+
+
+def _shallow_depth(expr, levels: int):
+    """``depth(expr)`` when it is at most ``levels`` and no node has more than 8
+    arguments, else None: a short recursion over the top of the tree (at most 584
+    nodes), cheaper than the walk of the DAG for a small expression."""
+    if expr.is_Atom:
+        return 0
+    args = expr.args
+    if levels == 0 or len(args) > 8:
+        return None
+    most = -1
+    for a in args:
+        d = _shallow_depth(a, levels - 1)
+        if d is None:
+            return None
+        if d > most:
+            most = d
+    return most + 1
