@@ -222,7 +222,9 @@ def _value_types(flat) -> dict:
 
 
 def _type_names(flat, helds) -> list:
-    types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables}
+    held = {h.name for h in helds}
+    types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables
+             if v.name in held}
     return [TYPE_NAMES[types.get(h.name, float)] for h in helds]
 
 
