@@ -79,6 +79,8 @@ class CoefficientValues:
 
 def is_number(value) -> bool:
     """Whether float(value) works (a parameter's value is a number, not an expression)."""
+    if isinstance(value, sp.Expr) and not value.is_number:
+        return False           # free symbols: what float() would find out the slow way
     try:
         float(value)
         return True
