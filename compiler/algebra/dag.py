@@ -13,7 +13,8 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-__all__ = ["postorder", "transform", "xreplace", "dag_size", "tree_size", "depth", "DEEP"]
+__all__ = ["postorder", "transform", "xreplace", "dag_size", "tree_size", "tree_reaches",
+           "depth", "DEEP"]
 
 
 def postorder(roots, children=None):
@@ -91,6 +92,18 @@ def tree_size(root) -> int:
     for node in postorder([root]):
         count[node] = 1 + sum(count[a] for a in node.args)
     return count[root]
+
+
+def tree_reaches(root, n: int) -> bool:
+    """``tree_size(root) >= n``, by a count of the tree's nodes that stops at ``n``: the
+    walk of a small expression costs its few nodes, that of a large DAG ``n`` at most."""
+    count, stack = 0, [root]
+    while stack:
+        count += 1
+        if count >= n:
+            return True
+        stack.extend(stack.pop().args)
+    return False
 
 
 def xreplace(expr, mapping: dict):
