@@ -448,6 +448,8 @@ def reinit_targets_are_states(flat) -> None:
     wherever index reduction could otherwise put the states (the motor side of a gear)."""
     targets = {act.variable for w in flat.whens for act in w.actions
                if isinstance(act, Reinit)}
+    if not targets:
+        return
     for k, v in enumerate(flat.variables):
         if v.symbol in targets:
             if v.attrs.state_select == "never":
