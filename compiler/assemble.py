@@ -222,7 +222,9 @@ def _value_types(flat) -> dict:
 
 
 def _type_names(flat, helds) -> list:
-    types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables}
+    held = {h.name for h in helds}
+    types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables
+             if v.name in held}
     return [TYPE_NAMES[types.get(h.name, float)] for h in helds]
 
 
@@ -423,15 +425,26 @@ def _derived_bounds(parameters, psyms) -> list:
     tunable ones (``Resistor(R=ac.ref("R"))``): tuning those must respect its bounds, as
     compiling with the same values does."""
     tunable = set(psyms)
+    by_symbol = {q.symbol: q for q in parameters}
     derived = {}
     for q in parameters:
         if (q.min is None and q.max is None) or is_number(q.value):
             continue
         value = sp.sympify(q.value)
+        if value in tunable and _within(by_symbol.get(value), q):
+            continue          # a copy of a parameter whose own range is checked: implied
         if value.free_symbols and value.free_symbols <= tunable:
             derived[q.name] = (q, value)
     funcs = dict(parameter_functions({n: v for n, (_, v) in derived.items()}, psyms))
     return [(n, q.min, q.max, funcs[n]) for n, (q, _) in derived.items()]
+
+
+def _within(p, q) -> bool:
+    """Whether parameter ``p``'s range lies within ``q``'s (a value ``p`` may take, ``q``
+    may take: ``T = T_ref``, both at least 0)."""
+    return p is not None and (
+        (q.min is None or (p.min is not None and p.min >= q.min))
+        and (q.max is None or (p.max is not None and p.max <= q.max)))
 
 
 def _initial_rows(system, reduced, reduction, caus):

@@ -112,8 +112,18 @@ def choose_initial_rows(model_code, init_code, n_res, n_mandatory, n_states, n_z
         i_adj = [a + [n_z + j for j in cols] for a, cols in zip(i_adj, free.i_cols)]
         r2l = list(r2l) + [-1] * n_free
     needed = n_states + n_free
-    chosen, redundant = [], []
-    for k in range(init_code.n_rows):
+    chosen, redundant, start = [], [], 0
+    if 0 < n_mandatory <= needed and min(l2r, default=0) >= 0:
+        # the usual case, every mandatory row kept, found by one maximum matching from
+        # the model's: a set of rows matched whole is what the one-by-one search below
+        # keeps (the matchable sets of rows are a matroid), and that search costs a walk
+        # through the matched graph per row
+        whole = _match(adj + i_adj[:n_mandatory], len(r2l),
+                       l2r + [-1] * n_mandatory, list(r2l))
+        if min(whole[0]) >= 0:
+            adj += i_adj[:n_mandatory]
+            (l2r, r2l), chosen, start = whole, list(range(n_mandatory)), n_mandatory
+    for k in range(start, init_code.n_rows):
         if len(chosen) == needed and k >= n_mandatory:
             break
         adj.append(i_adj[k])

@@ -13,7 +13,8 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-__all__ = ["postorder", "transform", "xreplace", "dag_size", "tree_size", "depth", "DEEP"]
+__all__ = ["postorder", "transform", "xreplace", "dag_size", "tree_size", "tree_reaches",
+           "depth", "DEEP"]
 
 
 def postorder(roots, children=None):
@@ -93,6 +94,18 @@ def tree_size(root) -> int:
     return count[root]
 
 
+def tree_reaches(root, n: int) -> bool:
+    """``tree_size(root) >= n``, by a count of the tree's nodes that stops at ``n``: the
+    walk of a small expression costs its few nodes, that of a large DAG ``n`` at most."""
+    count, stack = 0, [root]
+    while stack:
+        count += 1
+        if count >= n:
+            return True
+        stack.extend(stack.pop().args)
+    return False
+
+
 def xreplace(expr, mapping: dict):
     """``expr.xreplace(mapping)`` -- the same expression: a node found in ``mapping`` is
     replaced, a node whose arguments changed is rebuilt by ``func(*args)`` -- over the
@@ -125,7 +138,29 @@ def depth(expr) -> int:
     remembered per expression (the passes ask it of the same ones many times)."""
     if expr.is_Atom:
         return 0
+    shallow = _shallow_depth(expr, 3)
+    if shallow is not None:          # most terms of a model (k*x*y, -x, R*(T - T_ref))
+        return shallow
     d = {}
     for node in postorder([expr]):
         d[node] = 1 + max((d[a] for a in node.args), default=-1)
     return d[expr]
+
+
+def _shallow_depth(expr, levels: int):
+    """``depth(expr)`` when it is at most ``levels`` and no node has more than 8
+    arguments, else None: a short recursion over the top of the tree (at most 584
+    nodes), cheaper than the walk of the DAG for a small expression."""
+    if expr.is_Atom:
+        return 0
+    args = expr.args
+    if levels == 0 or len(args) > 8:
+        return None
+    most = -1
+    for a in args:
+        d = _shallow_depth(a, levels - 1)
+        if d is None:
+            return None
+        if d > most:
+            most = d
+    return most + 1

@@ -18,7 +18,7 @@ from .dag import DEEP, depth, postorder
 from .substitution import Fallback, assemble_sum
 
 __all__ = ["partial", "plain_coefficient", "solve_linear", "simple_partials", "terms_with",
-           "symbol_nodes", "dag_partial", "forget_partials"]
+           "symbol_nodes", "flat_symbols", "dag_partial", "forget_partials"]
 
 _CHECK = os.environ.get("ACAUSAL_CHECK_FASTSUBS", "") not in ("", "0")
 _CANONICAL = cmp_to_key(sp.Basic.compare)     # the order of a sum's or product's arguments
@@ -219,6 +219,9 @@ def _symbols(e) -> frozenset:
     the partials of a model ask it of the same subexpressions many times)."""
     if e.is_Symbol:
         return frozenset((e,))
+    out = flat_symbols(e)
+    if out is not None:
+        return frozenset(out)
     out, stack, seen = set(), list(e.args), set()
     while stack:            # iterative: a deeply nested expression must not recurse
         node = stack.pop()
@@ -366,11 +369,26 @@ def terms_with(r: sp.Expr) -> dict:
     return out
 
 
+def flat_symbols(e) -> set | None:
+    """The symbols among e's arguments when all of them are atoms (most terms of a
+    model: ``-R*i``, ``k*x``), found without the walk; None otherwise."""
+    out = set()
+    for a in e.args:
+        if a.is_Symbol:
+            out.add(a)
+        elif not a.is_Atom:
+            return None
+    return out
+
+
 def symbol_nodes(e: sp.Basic) -> set:
     """``e.atoms(Symbol)``: every Symbol node of the tree, bound ones included (what
     ``has`` finds)."""
     if e.is_Symbol:
         return {e}
+    out = flat_symbols(e)
+    if out is not None:
+        return out
     out, stack, seen = set(), [e], set()
     while stack:
         node = stack.pop()

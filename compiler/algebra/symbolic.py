@@ -22,7 +22,7 @@ import sympy as sp
 from ...components.realsymbol import SYMBOLS
 from ...components.symbols import der, time
 from .dag import depth
-from .derivative import forget_partials, partial, symbol_nodes, terms_with
+from .derivative import flat_symbols, forget_partials, partial, symbol_nodes, terms_with
 from .substitution import forget_negated, negated, sort_args
 from ..structure.graph import (LINEAR_CONST, LINEAR_PARAM, LINEAR_VAR, NONLINEAR, PREFER,
                                STATE_SELECT, UNASSIGNED, Names, Structure, state_tie_break)
@@ -299,6 +299,10 @@ def symbols_of(expr: sp.Basic) -> frozenset:
     itself."""
     if expr.is_Symbol:
         return frozenset((expr,))
+    if type(expr) not in _BINDING:
+        out = flat_symbols(expr)
+        if out is not None:
+            return frozenset(out)
     out, stack, seen = set(), [expr], set()
     while stack:
         e = stack.pop()

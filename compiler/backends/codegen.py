@@ -33,7 +33,7 @@ import sympy as sp
 from ...components.ifexpr import IfExpr
 from ...components.realsymbol import SYMBOLS
 from ...components.symbols import no_event, time
-from ..algebra.dag import transform, tree_size, xreplace
+from ..algebra.dag import transform, tree_reaches, xreplace
 from ..algebra.derivative import partial as _partial
 from ..algebra.derivative import simple_partials
 from ..algebra.symbolic import symbols_of
@@ -208,7 +208,7 @@ def _canonical_order(order, written, origin, new, eventful):
     always numbered them, where they are small enough to print; the modes renamed in the
     expressions accordingly.  (The walk finds them children first, which is as
     deterministic; printing a huge relation is what the order by text would cost.)"""
-    if not order or any(tree_size(r) > _SORTED_UP_TO for r in order):
+    if not order or any(tree_reaches(r, _SORTED_UP_TO + 1) for r in order):
         return order, written, origin
     perm = sorted(range(len(order)), key=lambda k: sp.srepr(order[k]))
     if perm == list(range(len(order))):

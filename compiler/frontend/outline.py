@@ -35,7 +35,7 @@ import math
 import sympy as sp
 
 from ...components.symbols import Equation
-from ..algebra.dag import postorder, tree_size
+from ..algebra.dag import postorder, tree_reaches, tree_size
 
 __all__ = ["outline_expressions", "definition_of", "OUTLINE_FROM", "LOCAL", "SHARED",
            "INTERMEDIATE"]
@@ -53,7 +53,7 @@ def outline_expressions(flat) -> int:
     from .flatten import FlatEquation, FlatVariable
     big = [k for k, eq in enumerate(flat.equations)
            if eq.terms is None and not eq.residual.is_Atom
-           and tree_size(eq.residual) >= OUTLINE_FROM]
+           and tree_reaches(eq.residual, OUTLINE_FROM)]
     if not big:
         return 0
     # der(x) is a node over x: a subexpression varies when a variable or time is in it

@@ -96,9 +96,13 @@ def declare_discrete_variables(flat) -> list:
     its left, becomes a clause that is evaluated at every event (``When.equation``):
     y is held between events and takes expr, relations in it switching at located
     events, as Modelica's event iteration evaluates the discrete equations."""
+    discrete = {v.symbol: v for v in flat.variables if v.attrs.discrete or _typed(v)}
+    if discrete:
+        _clauses_of_equations(flat, discrete)
+    if not discrete and not flat.whens:
+        return []                      # most models: nothing to check, nothing held
     by_symbol = {v.symbol: v for v in flat.variables}
     params = {p.symbol for p in flat.parameters}
-    _clauses_of_equations(flat, by_symbol)
     assigned = {}
     for w in flat.whens:
         read = sorted(q.name for q in (w.clock.free_symbols if w.clock is not None else ())
@@ -119,9 +123,7 @@ def declare_discrete_variables(flat) -> list:
             _check_target(act, v, w, params, assigned)
             assigned[v.symbol] = w
     helds = []
-    for v in flat.variables:
-        if not (v.attrs.discrete or _typed(v)):
-            continue
+    for v in discrete.values():
         if v.symbol in flat.derivatives:
             raise DiscreteVariableError(
                 f"der({v.name}) in {v.where}: '{_local(v)}' is a discrete variable, "
@@ -154,7 +156,8 @@ def declare_discrete_variables(flat) -> list:
 
 def _clauses_of_equations(flat, by_symbol) -> None:
     """The equations ``y = expr`` of Boolean and Integer variables y become clauses
-    evaluated at every event (in place: taken out of ``flat.equations``)."""
+    evaluated at every event (in place: taken out of ``flat.equations``); ``by_symbol``
+    holds the model's discrete variables at least."""
     kept = []
     for eq in flat.equations:
         v = by_symbol.get(eq.defines) if eq.kind == "equation" else None
@@ -245,7 +248,7 @@ def pre_after_aliases(reduced, aliases, helds) -> None:
     if helds:
         _pre_of_discrete_aliases(reduced, aliases, helds)
     for eq in reduced.equations:
-        if eq.residual.has(pre):
+        if not eq.is_plain() and eq.residual.has(pre):
             _pre_of_continuous(eq.residual, f"the equation '{eq.text}' in {eq.where}")
     for w in reduced.whens:
         if w.condition.has(pre):
@@ -445,6 +448,8 @@ def reinit_targets_are_states(flat) -> None:
     wherever index reduction could otherwise put the states (the motor side of a gear)."""
     targets = {act.variable for w in flat.whens for act in w.actions
                if isinstance(act, Reinit)}
+    if not targets:
+        return
     for k, v in enumerate(flat.variables):
         if v.symbol in targets:
             if v.attrs.state_select == "never":

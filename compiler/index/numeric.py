@@ -30,8 +30,7 @@ class CoefficientValues:
         # values of its own symbols (discrete values and time 0, variables their start
         # value, parameters their value, in that order of precedence)
         self.system = system
-        self._parameters = {p.symbol: float(p.value) for p in parameters
-                            if is_number(p.value)}
+        self._parameters = {p.symbol: p for p in parameters}    # a value when asked
         self._discretes = {d.symbol for d in discretes}
         self._subs = {}
         self._cache = {}
@@ -70,8 +69,8 @@ class CoefficientValues:
             info = self.system.var_info.get(q)
             start = info.attrs.start if info is not None else None
             x = float(start) if start is not None else 0.0
-        elif q in self._parameters:
-            x = self._parameters[q]
+        elif q in self._parameters and is_number(self._parameters[q].value):
+            x = float(self._parameters[q].value)
         else:
             x = None
         out = self._subs[q] = sp.Float(x) if x is not None else None
@@ -80,6 +79,8 @@ class CoefficientValues:
 
 def is_number(value) -> bool:
     """Whether float(value) works (a parameter's value is a number, not an expression)."""
+    if isinstance(value, sp.Expr) and not value.is_number:
+        return False           # free symbols: what float() would find out the slow way
     try:
         float(value)
         return True

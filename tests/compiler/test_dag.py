@@ -8,7 +8,8 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.compiler.algebra.dag import dag_size, transform, tree_size, xreplace
+from acausal.compiler.algebra.dag import (dag_size, depth, transform, tree_reaches,
+                                         tree_size, xreplace)
 
 
 def test_an_unchanged_argument_reaches_its_parent_as_the_object_it_holds():
@@ -38,6 +39,25 @@ def test_xreplace_and_sizes_agree_with_sympy():
     assert xreplace(e, {d: D}) == e.xreplace({d: D})
     assert tree_size(e) == sum(1 for _ in sp.preorder_traversal(e))
     assert dag_size([e]) == len(set(sp.preorder_traversal(e)))
+
+
+def _tree_depth(e) -> int:
+    return 0 if not e.args else 1 + max(_tree_depth(a) for a in e.args)
+
+
+def test_the_bounded_walks_agree_with_sympys_tree():
+    """tree_reaches(e, n) is whether sympy's preorder traversal has n nodes, and depth
+    (a short recursion for small expressions, a DAG walk for others) the tree's depth,
+    on expressions sharing a subexpression at every level."""
+    x, y = sp.symbols("x y", real=True)
+    cases, u = [x, -x, 2 * x * y, x * y - 3, sp.Add(*sp.symbols("a:12"))], x
+    for k in range(6):
+        u = sp.sin(u) * u + y ** (k + 2)
+        cases.append(u)
+    for e in cases:
+        n = sum(1 for _ in sp.preorder_traversal(e))
+        assert [tree_reaches(e, m) for m in (1, n - 1, n, n + 1)] == [True, True, True, False]
+        assert depth(e) == _tree_depth(e)
 
 
 def _law(x, y, t, steps, sin, cos):

@@ -130,6 +130,27 @@ def test_tuning_respects_the_bounds_of_the_parameters_bound_to_it():
     assert abs(res["inner.x"][-1] - math.exp(-2.0)) <= 1e-6 * math.exp(-2.0)
 
 
+class WrappedBounded(ac.Component):
+    """A bounded parameter bound into a part's parameter of a wider range (k >= 0)."""
+
+    R = ac.Parameter(1.0, min=0.5)
+    inner = Decay(k=ac.ref("R"))
+
+
+def test_a_copy_of_a_parameter_within_the_bounds_is_checked_by_its_own():
+    """inner.k = R with R >= 0.5 and k >= 0: every R that passes its own range gives a
+    valid k, so the compile keeps no check of k for tuning (meta "derived_bounds"), and
+    tuning R still refuses what its range refuses and runs what it accepts."""
+    compiled = ac.compile(WrappedBounded(), cache=False)
+    assert compiled.meta["derived_bounds"] == []
+    assert [n for n, *_ in ac.compile(Wrapped(), cache=False).meta["derived_bounds"]] \
+        == ["inner.k"]
+    with pytest.raises(InvalidValue, match=r"parameter 'R' = -1.0 is outside its range"):
+        compiled.set_parameters({"R": -1.0})
+    res = ac.simulate(compiled, t_end=1.0, rtol=1e-9, parameters={"R": 2.0})
+    assert abs(res["inner.x"][-1] - math.exp(-2.0)) <= 1e-6 * math.exp(-2.0)
+
+
 def test_a_start_value_outside_a_functions_domain_names_the_equation():
     with pytest.raises(ac.InitializationFailed) as err:
         ac.simulate(SqrtOfStart(), t_end=1.0)
