@@ -257,6 +257,26 @@ def test_thyristor_blocks_fires_holds_and_turns_off():
     assert np.allclose(ia[off], -50.0 / (10.0 + Roff), rtol=1e-4)
 
 
+def _gate_voltage(iGK, VGT=0.7, IGT=5e-3, knee=0.65):
+    """The gate law of both branches: the branch whose relation the result satisfies."""
+    low = VGT / IGT * iGK
+    return np.where(low < knee, low, knee**2 / VGT + iGK * (VGT - knee) / IGT)
+
+
+def test_thyristor_gate_above_its_knee():
+    """The gate law vGK = if vGK < 0.65 V then VGT/IGT iGK else 0.65^2/VGT + iGK (VGT -
+    0.65)/IGT, solved for vGK, keeps its relation on vGK: 10 mA gives 0.7036 V (the low
+    branch's 1.4 V contradicts it; with the relation read at vGK = 0 it was taken)."""
+    t = np.linspace(0.0, 20e-6, 201)
+    res = ac.simulate(ThyristorCircuit(), t_end=20e-6, rtol=1e-8, t_eval=t)
+    assert res.success, res.message
+    iGK, vGK = res["thy.iGK"], res["thy.vGK"]
+    pulse = (t > 1.5e-6) & (t < 5.5e-6)
+    assert np.allclose(iGK[pulse], 0.01, rtol=1e-9)
+    assert np.allclose(vGK[pulse], 0.65**2 / 0.7 + 0.01 * 0.05 / 5e-3, rtol=1e-9)
+    assert np.max(np.abs(vGK - _gate_voltage(iGK))) < 1e-9
+
+
 class TriacCircuit(ac.Component):
     """A triac in series with 10 Ohm on a 30 V, 5 kHz sine, fired by 5 mA gate pulses
     at the start of every half period."""
