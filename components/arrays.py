@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import itertools
 import operator
-from dataclasses import fields, replace
+from dataclasses import replace
 
 import numpy as np
 
@@ -345,11 +345,7 @@ class ArrayAttributes(VariableAttributes):
     def modified(self, mod) -> "ArrayAttributes":
         """A number or array sets start; a dict any attributes (each scalar or array)."""
         if isinstance(mod, dict):
-            unknown = set(mod) - {f.name for f in fields(self)}
-            if unknown:
-                raise TypeError(f"unknown variable attribute(s) {sorted(unknown)}; "
-                                f"allowed: {sorted(f.name for f in fields(self))}")
-            return replace(self, **mod).checked()
+            return self.with_attributes(mod)
         if isinstance(mod, (str, set, dict)) or mod is None:
             raise ValueError(f"a modification of an array variable is its start value (a "
                              f"number or an array) or a dict of its attributes, not {mod!r}")

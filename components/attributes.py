@@ -49,15 +49,20 @@ class VariableAttributes:
         """A checked copy with a modification applied: a number sets start, a dict any
         attribute.  Raises ValueError (bad value) or TypeError (unknown attribute)."""
         if isinstance(mod, dict):
-            unknown = set(mod) - {f.name for f in fields(self)}
-            if unknown:
-                raise TypeError(f"unknown variable attribute(s) {sorted(unknown)}; "
-                                f"allowed: {sorted(f.name for f in fields(self))}")
-            return replace(self, **mod).checked()
+            return self.with_attributes(mod)
         if isinstance(mod, (str, list, tuple, set)) or mod is None:
             raise ValueError(f"a modification of a variable is a number (its start value) "
                              f"or a dict of its attributes, not {mod!r}")
         return replace(self, start=mod).checked()
+
+    def with_attributes(self, mod: dict) -> "VariableAttributes":
+        """A checked copy with the attributes of ``mod`` set (TypeError naming the
+        unknown ones)."""
+        unknown = set(mod) - {f.name for f in fields(self)}
+        if unknown:
+            raise TypeError(f"unknown variable attribute(s) {sorted(unknown)}; "
+                            f"allowed: {sorted(f.name for f in fields(self))}")
+        return replace(self, **mod).checked()
 
     def checked(self) -> "VariableAttributes":
         """A copy with numbers as floats, or ValueError naming the bad attribute.
