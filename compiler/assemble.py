@@ -30,7 +30,9 @@ from .modelcode import (DelayCode, DynamicSets, InitialCode, InputCode, ModelCod
 from .report import EquationNames
 from .structure.causalize import causalize, full_form
 from .structure.graph import LINEAR_CONST, UNASSIGNED
-from ..errors import ModelError
+from ..components.operators import no_event
+from ..errors import InvalidEquation, ModelError
+from ..words import shortened
 
 __all__ = ["assemble", "model_code", "choose_initial_rows", "delay_code", "feeds_back"]
 
@@ -70,6 +72,8 @@ def model_code(system, reduction, caus, reduced, flat, aliases, report, discrete
     z_syms = [syms[v] for v in caus.z]
     assigned = [(syms[v], solve_linear(system.equations[e].residual, syms[v]))
                 for v, e in caus.assignments]
+    for (x, expr), (v, e) in zip(assigned, caus.assignments):
+        _check_live_self_reference(system, e, x, expr)
     rows = [system.equations[e].residual for e in caus.residual_eqs]
     n_res = len(rows)
     s = reduction.structure
@@ -226,6 +230,21 @@ def _type_names(flat, helds) -> list:
     types = {v.name: getattr(v.attrs, "type", float) for v in flat.variables
              if v.name in held}
     return [TYPE_NAMES[types.get(h.name, float)] for h in helds]
+
+
+def _check_live_self_reference(system, e, x, expr) -> None:
+    """An assignment may read its own variable only in a frozen relation (its value the
+    discrete state's); one inside ``no_event`` is evaluated live, so the equation is a
+    loop of itself with a jump, not an assignment: refused, naming it (its value was
+    read before it was computed, so the run depended on what ran before)."""
+    if x not in symbols_of(expr):
+        return
+    if any(x in symbols_of(n) for n in expr.atoms(no_event)):
+        raise InvalidEquation(
+            f"{shortened(system.equations[e].name(system))}: solved for {x}, it reads "
+            f"{x} in a relation inside no_event(), evaluated without events, so the "
+            f"equation jumps on its own solution; write the relation with events (without "
+            f"no_event) or give {x} a dynamics of its own")
 
 
 def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced,

@@ -78,3 +78,25 @@ def test_an_equation_of_one_variable_whose_relation_reads_it_is_not_a_constant()
     assert res.success, res.message
     assert np.allclose(res["z"], 2.0, rtol=0, atol=1e-12)
     assert np.allclose(res["x"], 2.0 * res.t, rtol=1e-9, atol=1e-12)
+
+
+class SelfNoEvent(ac.Component):
+    """z = no_event(if z > 1 then 2 x else x): the relation is evaluated live, so z is
+    not an assignment but a loop of one equation with a jump (two solutions for
+    1/2 < x <= 1); solved as an assignment it read z before computing it, and a second
+    run of the same compiled model started on the branch the first one ended on."""
+
+    x = ac.Variable(start=0.0, fixed=True)
+    z = ac.Variable()
+
+    def equations(self):
+        return [ac.Eq(ac.der(self.x), 1),
+                ac.Eq(self.z, ac.no_event(ac.if_else(self.z > 1, 2 * self.x, self.x)))]
+
+
+def test_a_live_relation_on_the_variable_solved_for_is_refused_naming_it():
+    with pytest.raises(ac.InvalidEquation) as info:
+        ac.compile(SelfNoEvent(), cache=False)
+    text = str(info.value)
+    assert "no_event" in text and "solved for z" in text and "(SelfNoEvent)" in text
+    assert len(text) < 4 * TEXT
