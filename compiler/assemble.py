@@ -243,8 +243,8 @@ def _check_live_self_reference(system, e, x, expr) -> None:
         raise InvalidEquation(
             f"{shortened(system.equations[e].name(system))}: solved for {x}, it reads "
             f"{x} in a relation inside no_event(), evaluated without events, so the "
-            f"equation jumps on its own solution; write the relation with events (without "
-            f"no_event) or give {x} a dynamics of its own")
+            f"equation jumps on its own solution; write the relation without no_event "
+            f"(frozen between events, switched at them)")
 
 
 def _relation_text(rel, k, origin, system, caus, assigned, init_text, reduced,
