@@ -239,7 +239,24 @@ def _run(compiled, t_start, t_end, rtol, atol, t_eval, max_step, max_order,
         message = (f"{message}; at {missed} requested output time(s) the algebraic "
                    "unknowns without an error bound are interpolated, not solved")
         warnings.warn(f"simulate: {message}", RuntimeWarning, stacklevel=3)
+    relaxed = _relaxed(out.stats)
+    if relaxed:
+        message = f"{message}; {relaxed}"
+        warnings.warn(f"simulate: {relaxed}", RuntimeWarning, stacklevel=3)
     return _result(compiled, out, out.success, message, marks, keeping)
+
+
+def _relaxed(stats) -> str:
+    """What the run says when a restart was recovered by taking algebraic unknowns out of
+    the error test (:mod:`acausal.solvers.recovery`): from then on their accuracy is the
+    states' tolerance times their gain on the states, not their own tolerance."""
+    names = getattr(stats, "relaxed_names", None)
+    if not names:
+        return ""
+    from .words import listed
+    return (f"from t = {stats.relaxed_at:.6g} the algebraic unknown(s) {listed(names)} "
+            "were left out of the error test (steps at round-off after an event): their "
+            "accuracy from there on follows the states' tolerance through the equations")
 
 
 def _input_values(compiled, t):

@@ -8,7 +8,9 @@ Magherini, *Test Set for IVP Solvers*, release 2.4, Bari) -- is compiled once an
 at each tolerance (atol = rtol, as the test set's drivers run them).  Printed per run:
 
 * ``scd``: the test set's significant correct digits at the end point against its
-  reference solution, over the components its drivers measure (``tests/bari/testset.py``);
+  reference solution, over the components its drivers measure, and ``mescd``, the mixed
+  error digits its R drivers print (a component small beside atol/rtol judged by its
+  absolute error; both in ``tests/bari/testset.py``);
 * ``steps`` (accepted) and ``s`` (seconds of the simulation, the compile not included;
   the compile time is printed once per problem);
 * the same for SUNDIALS IDA (scikit-sundae, the ``ida`` extra) on the residual acausal
@@ -32,23 +34,23 @@ import warnings
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 
 from acausal.tests.bari.ida import ida_available, run_ida  # noqa: E402
-from acausal.tests.bari.testset import (PROBLEMS, compile_problem, problem,  # noqa: E402
-                                        scd, solve)
+from acausal.tests.bari.testset import (PROBLEMS, compile_problem, mescd,  # noqa: E402
+                                        problem, scd, solve)
 
 RTOLS = (1e-6, 1e-8, 1e-10)
 
 
-def _cell(ok, digits, steps, seconds, message="") -> str:
+def _cell(ok, digits, mixed, steps, seconds, message="") -> str:
     if not ok:
-        return f"{'fails: ' + message[:40]:>28}"
-    return f"{digits:6.2f} {steps:8d} {seconds:8.2f}s"
+        return f"{'fails: ' + message[:40]:>35}"
+    return f"{digits:6.2f} {mixed:6.2f} {steps:8d} {seconds:8.2f}s"
 
 
 def run(names, rtols, with_ida: bool) -> None:
     ida = with_ida and ida_available()
-    head = f"{'problem':10} {'rtol':>7} | {'acausal: scd    steps        s':>28}"
+    head = f"{'problem':10} {'rtol':>7} | {'acausal: scd  mescd    steps        s':>35}"
     if ida:
-        head += f" | {'IDA: scd    steps        s':>28}"
+        head += f" | {'IDA: scd  mescd    steps        s':>35}"
     print(head)
     print("-" * len(head))
     for name in names:
@@ -61,15 +63,18 @@ def run(names, rtols, with_ida: bool) -> None:
               + (", states chosen while it runs" if compiled.dynamic is not None else ""))
         for rtol in rtols:
             if rtol not in prob.bench_rtols:
-                print(f"{'':10} {rtol:7.0e} | {'not run (see the module docstring)':>28}")
+                print(f"{'':10} {rtol:7.0e} | {'not run (see the module docstring)':>35}")
                 continue
             r = solve(compiled, prob, rtol)
-            line = f"{'':10} {rtol:7.0e} | {_cell(r.success, r.scd, r.steps, r.seconds, r.message)}"
+            mixed = mescd(r.values, prob, rtol) if r.success else 0.0
+            line = (f"{'':10} {rtol:7.0e} | "
+                    + _cell(r.success, r.scd, mixed, r.steps, r.seconds, r.message))
             if ida:
                 ok, values, steps, seconds, msg = run_ida(compiled, prob.t_end, rtol,
                                                           list(prob.reference))
-                line += " | " + _cell(ok, scd(values, prob) if ok else 0.0, steps, seconds,
-                                      msg)
+                line += " | " + (_cell(ok, scd(values, prob), mescd(values, prob, rtol),
+                                       steps, seconds) if ok else
+                                 _cell(ok, 0.0, 0.0, steps, seconds, msg))
             print(line, flush=True)
 
 

@@ -246,6 +246,8 @@ class SolverStats:
     interpolated_outputs: int = 0   # output times whose item-17 solve failed
     relaxed_components: int = 0     # algebraic components the driver took out of the
                                     # error test to recover a step (solvers/recovery.py)
+    relaxed_at: float = None        # the time it first did, and the components' names
+    relaxed_names: list = field(default_factory=list)
     forced_steps: int = 0           # steps accepted without the error test (the same)
     error_test: str = ""            # what the error test covered: "all" or "states"
 

@@ -65,8 +65,12 @@ def relax(run, s, exc: StepFailure) -> bool:
         w = np.nan_to_num(np.abs(np.asarray(w, float)), nan=np.inf)
         if w.size != alg.size or not w.any() or not alg[int(np.argmax(w))]:
             return False
+    new = free if s.relaxed is None else free & ~s.relaxed
     s.relax(free)
     run.stats.relaxed_components = int(np.count_nonzero(s.relaxed))
+    if run.stats.relaxed_at is None:
+        run.stats.relaxed_at = float(s.t)
+    run.stats.relaxed_names += [run.problem.names[i] for i in np.flatnonzero(new)]
     s.restart(s.t, s.y, s.yp, t_stop=run._next_stop(s.t), probe=True)
     run._arm_roots(s.t, s.y, s.yp)
     return True

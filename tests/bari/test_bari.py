@@ -92,3 +92,19 @@ def test_transamp_fixed_node_voltages_are_checked_and_the_redundant_ones_named()
     # initialization's Newton tolerance (relative to the supply voltage, 6 V)
     from .problems.transamp import U0
     np.testing.assert_allclose(res["U"][0], U0, rtol=0, atol=1e-9 * 6.0)
+
+
+def test_the_two_measures_of_digits_as_the_test_set_defines_them():
+    """scd (relative error) and the R drivers' mescd (``printpr``: the error over
+    atol/rtol + |yref|) on values whose errors are set by hand: a component of 1e-4 off
+    by 1e-7 has 3 relative digits, and 6 mixed ones at atol = rtol."""
+    from .testset import BariProblem, mescd, scd
+    prob = BariProblem("HAND", "hand", None, 1.0, {"a": 1e-4, "b": 2.0, "c": 0.0}, index=0,
+                       scd_names=["a", "b", "c"])
+    values = {"a": 1e-4 + 1e-7, "b": 2.0 + 2e-6, "c": 5e-8}
+    assert scd(values, prob) == pytest.approx(3.0, abs=1e-9)      # a: 1e-3 (c: no ref)
+    # b: 2e-6 / 3 = 6.7e-7 is the worst mixed error at atol = rtol
+    assert mescd(values, prob, 1e-8) == pytest.approx(-np.log10(2e-6 / 3.0), abs=1e-9)
+    # atol 100 x rtol: c's 5e-8 / 100 and a's 1e-7 / 100 are small; b's 2e-6 / 102 worst
+    assert mescd(values, prob, 1e-8, 1e-6) == pytest.approx(-np.log10(2e-6 / 102.0),
+                                                           abs=1e-9)

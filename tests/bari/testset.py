@@ -22,7 +22,15 @@ Accuracy is the test set's *significant correct digits* at the end point,
 
 over the components the test set uses (its drivers' ``SKIPI``: the positions only for
 the index-3 mechanisms ANDREWS and CRANK (R driver) and FEKETE, the output nodes of
-NAND and the two-bit adder, all but y9 of the charge pump) whose reference is not zero.
+NAND and the two-bit adder, all but y9 of the charge pump) whose reference is not zero;
+and beside it the *mixed error* significant correct digits that the test set's R
+drivers print for a run at ``rtol``, ``atol`` (deTestSet, ``printpr`` in
+``pkg/deTestSet/R/functions.R``; ``ex_crank.R``),
+
+    mescd = -log10( max_i |y_i - yref_i| / (atol/rtol + |yref_i|) ),
+
+over the same components: a component small beside ``atol/rtol`` is judged by its
+absolute error, as the tolerance asked for it.
 """
 from __future__ import annotations
 
@@ -32,7 +40,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["BariProblem", "PROBLEMS", "problem", "scd", "solve", "Run"]
+__all__ = ["BariProblem", "PROBLEMS", "problem", "scd", "mescd", "solve", "Run"]
 
 # the modules under problems/, in the test set's order of DAE problems
 _MODULES = ("chemakzo", "andrews", "caraxis", "crank", "fekete", "pump", "transamp",
@@ -96,6 +104,15 @@ def scd(values: dict, prob: BariProblem) -> float:
     errs = [abs(values[k] - prob.reference[k]) / abs(prob.reference[k])
             for k in prob.scd_names if prob.reference[k] != 0.0]
     worst = max(errs)
+    return float("inf") if worst == 0.0 else float(-np.log10(worst))
+
+
+def mescd(values: dict, prob: BariProblem, rtol: float, atol: float = None) -> float:
+    """The test set's mixed-error significant correct digits of ``values`` for a run at
+    ``rtol`` and ``atol`` (default ``rtol``, as its drivers run)."""
+    ratio = 1.0 if atol is None else atol / rtol
+    worst = max(abs(values[k] - prob.reference[k]) / (ratio + abs(prob.reference[k]))
+                for k in prob.scd_names)
     return float("inf") if worst == 0.0 else float(-np.log10(worst))
 
 
