@@ -13,9 +13,12 @@ and memory linear in the DAG, whatever the tree and the depth
 (:mod:`acausal.compiler.frontend.outline`, :mod:`acausal.compiler.algebra.dag`).
 
 Each size is compiled in a fresh Python process (``cache=False``, the unit check off: it
-reads the same DAG), which reports the time to build the expression of plain sympy symbols (sympy's own
-constructors: what the model's ``equations()`` costs its user, inside ``flatten``), the
-compile's wall time (that included), the slowest passes (``report.timings``), its peak resident memory and the
+reads the same DAG; the library cache an empty directory of its own, so the C compiler
+runs every time), which reports the time to build the expression of plain sympy symbols
+(sympy's own constructors: what the model's ``equations()`` costs its user, inside
+``flatten``), the compile's wall time (that included), the C compiler's (``cc s``: its
+units compiled side by side, partly while the compile goes on) and the generated
+source's size, the slowest passes (``report.timings``), its peak resident memory and the
 DAG's size, the tree's (as a power of ten) and the depth.  Between successive sizes the
 growth exponents of the compile time and of the memory above the interpreter's are
 
@@ -34,6 +37,7 @@ import math
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 __all__ = ["inline", "InlineLaw", "measure_once", "main"]
@@ -102,9 +106,11 @@ def measure_once(steps: int, simulate: bool) -> dict:
     total = time.perf_counter() - t0
     rss = (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0 if resource
            else float("nan"))
+    from acausal.native import build as native_build
     row = {"steps": steps, **shape, "build": build, "compile": total,
            "timings": dict(compiled.report.timings), "rss_mb": rss, "rss0_mb": rss0,
-           "equations": compiled.report.counts["flatten"]["equations"]}
+           "equations": compiled.report.counts["flatten"]["equations"],
+           "cc": dict(native_build.last_build)}
     if simulate:
         res = ac.simulate(compiled, t_end=1.0)
         row["x_end"] = float(res["x"][-1]) if res.success else res.message
@@ -115,7 +121,10 @@ def _child(steps: int, simulate: bool) -> dict:
     cmd = [sys.executable, os.path.abspath(__file__), "--child", str(steps)]
     if simulate:
         cmd.append("--simulate")
-    out = subprocess.run(cmd, capture_output=True, text=True, check=False)
+    with tempfile.TemporaryDirectory(prefix="acausal-bench-cache-") as cache:
+        # no library built by an earlier run: the C compiler's time is measured
+        out = subprocess.run(cmd, capture_output=True, text=True, check=False,
+                             env=dict(os.environ, ACAUSAL_CACHE=cache))
     if out.returncode != 0:
         raise RuntimeError(f"InlineLaw({steps}) failed:\n{out.stderr[-3000:]}")
     return json.loads(out.stdout.strip().splitlines()[-1])
@@ -135,14 +144,18 @@ def _passes(*rows) -> list:
 
 def _table(rows: list) -> str:
     head = (f"{'steps':>7} {'DAG':>8} {'tree':>8} {'depth':>7} {'build s':>8} "
-            f"{'compile s':>9} {'us/node':>8} {'RSS MB':>7}  slowest passes (s)")
+            f"{'compile s':>9} {'us/node':>8} {'cc s':>6} {'C MB':>6} {'RSS MB':>7}"
+            "  slowest passes (s)")
     lines = [head]
     prev = None
     for r in rows:
         slow = sorted(r["timings"].items(), key=lambda kv: -kv[1])[:4]
         lines.append(f"{r['steps']:>7} {r['dag']:>8} {'1e%d' % round(r['log10_tree']):>8} "
                      f"{r['depth']:>7} {r['build']:>8.2f} {r['compile']:>9.2f} "
-                     f"{1e6 * r['compile'] / r['dag']:>8.0f} {r['rss_mb']:>7.0f}  "
+                     f"{1e6 * r['compile'] / r['dag']:>8.0f} "
+                     f"{r['cc'].get('compile_s', float('nan')):>6.1f} "
+                     f"{r['cc'].get('characters', float('nan')) / 1e6:>6.1f} "
+                     f"{r['rss_mb']:>7.0f}  "
                      + ", ".join(f"{k} {v:.2f}" for k, v in slow))
         if "x_end" in r:
             lines[-1] += f"  x(1) = {r['x_end']}"
