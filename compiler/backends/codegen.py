@@ -519,19 +519,19 @@ def _grad(aliases, b, j):
 def combinations(em, entries, targets, cols, grad_ref, aliases=None) -> list:
     """``target = sum of partial * gradient`` for each entry of one group (one row, one
     assigned variable; both targets use this); a partial used by several entries of the
-    group is named once."""
+    group is named once, and so is a subexpression several partials share."""
     uses = {}
     for terms in entries:
         for d, _ in terms:
             uses[d] = uses.get(d, 0) + 1
-    lines, named = [], {}
+    lines = []
+    partials = list(uses)
+    named = dict(zip(partials, em.expressions(partials, lines,
+                                              [uses[d] > 1 for d in partials])))
     for n, (terms, target, j) in enumerate(zip(entries, targets, cols)):
         parts = []
         for d, src in terms:
-            c = named.get(d)
-            if c is None:
-                c = em.expression(d, lines, temp=uses[d] > 1)
-                named[d] = c
+            c = named[d]
             g = "1.0" if src is None else grad_ref(src, j)
             if g == "1.0" or c == "1.0":
                 parts.append(c if g == "1.0" else g)

@@ -74,6 +74,19 @@ class Emitter:
             return self._temp(text, lines)
         return text
 
+    def expressions(self, exprs, lines, temps) -> list:
+        """The texts of ``exprs``, their temporaries appended to lines: a subexpression
+        that two of them contain (the cos(u) of several partial derivatives of sin(u))
+        is computed once, as one within an expression is; ``temps[k]``: name the k-th
+        whole expression too (it is used more than once)."""
+        shared, names, texts = _shared(*exprs), {}, []
+        for expr, temp in zip(exprs, temps):
+            text = self._print(expr, shared, names, lines)
+            if temp and not _plain(text):
+                text = self._temp(text, lines)
+            texts.append(text)
+        return texts
+
     def join_sum(self, parts) -> str:
         return self._add(parts) if len(parts) > 1 else parts[0]
 
@@ -328,10 +341,11 @@ def _factors(mul) -> list:
     return [f.base if f.is_Pow and f.exp.is_Number and f.exp < 0 else f for f in mul.args]
 
 
-def _shared(root) -> set:
-    """Non-atomic nodes reached more than once outside if-expression branches."""
+def _shared(*roots) -> set:
+    """Non-atomic nodes reached more than once from ``roots`` outside if-expression
+    branches."""
     seen, shared = set(), set()
-    stack = [root]
+    stack = list(roots)
     while stack:
         node = stack.pop()
         if node.is_Atom:
