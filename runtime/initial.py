@@ -305,7 +305,8 @@ def reinitialize(model, t: float, z: np.ndarray, zp=None, *, rtol=1e-6, atol=1e-
     z = np.array(z, dtype=float)
     alg, F, J = algebraic_system(model, t, z)
     if alg.size:
-        atol_v = atol * model.nominal[alg]
+        # atol: one number, or one per unknown (simulate(atol={name: value}))
+        atol_v = (atol[alg] if np.ndim(atol) else atol) * model.nominal[alg]
 
         def weights(za):
             # on the iterate's own scale: an unknown that the event takes from 0 to
