@@ -116,10 +116,11 @@ def test_pump_conserves_its_charges_as_far_as_their_tolerance_asks():
     of the transistor's charges y3, y5 (dummy derivatives), so the sums drift by the
     charges' error per step: at the test set's tolerance for charges (1e-6 of the
     others', 1e-14 at rtol 1e-8, against charges of 1e-13 to 1e-12) 1.6e-13 after ten
-    periods, 0.40 V in y8 = y4 / C_D (mescd 0.40 in ``benchmarks/bari.py``).  With an
-    absolute tolerance per unknown of 1e-20 on the charge states -- which the events'
-    reinitializations must take as an array (they raised a numpy broadcast error) --
-    the sums stay within 1e-16 of zero and y7, y8 end within 1e-4 V of the reference."""
+    periods (1.1 % of the charges' scale, 1.4e-11), 0.40 V in y8 = y4 / C_D (1.1 % of
+    its 36 V; mescd 0.40 in ``benchmarks/bari.py``).  With an absolute tolerance per
+    unknown of 1e-20 on the charge states -- which the events' reinitializations must
+    take as an array (they raised a numpy broadcast error) -- the sums stay within
+    1.5e-6 of the charges' scale and y7, y8 end within 1.5e-6 of y8's amplitude."""
     import acausal as ac
     prob = problem("PUMP")
     with warnings.catch_warnings():
@@ -127,7 +128,9 @@ def test_pump_conserves_its_charges_as_far_as_their_tolerance_asks():
         res = ac.simulate(_compiled("PUMP"), t_end=prob.t_end, rtol=1e-8,
                           atol={"y2": 1e-20, "y4": 1e-20})
     assert res.success, res.message
-    assert np.max(np.abs(res["y2"] + res["y3"])) < 1e-16
-    assert np.max(np.abs(res["y4"] + res["y5"])) < 1e-16
-    assert abs(res["y7"][-1] - prob.reference["y7"]) < 1e-4
-    assert abs(res["y8"][-1] - prob.reference["y8"]) < 1e-4
+    charge = max(np.max(np.abs(res["y3"])), np.max(np.abs(res["y5"])))
+    assert np.max(np.abs(res["y2"] + res["y3"])) < 1e-5 * charge
+    assert np.max(np.abs(res["y4"] + res["y5"])) < 1e-5 * charge
+    volts = np.max(np.abs(res["y8"]))
+    assert abs(res["y7"][-1] - prob.reference["y7"]) < 1e-5 * volts
+    assert abs(res["y8"][-1] - prob.reference["y8"]) < 1e-5 * volts
