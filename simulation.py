@@ -464,21 +464,14 @@ def _absolute_tolerance(compiled, atol, rtol):
         if name in index:
             out[index[name]] = x
             continue
-        from .words import suggestion
+        from .words import listed, suggestion
         if name in compiled.outputs:
             raise InvalidArgument(
                 f"simulate: atol[{name!r}]: {name} is computed from the unknowns the "
-                f"integrator controls, which are {_listed(compiled.names)}")
+                f"integrator controls, which are {listed(compiled.names)}")
         raise InvalidArgument(f"simulate: atol[{name!r}]: the model has no variable "
                               f"{name!r}{suggestion(name, compiled.outputs)}")
     return out
-
-
-def _listed(names, n=8) -> str:
-    """``a, b, c and 5 more``: a list of names of bounded length."""
-    names = list(names)
-    head = ", ".join(names[:n])
-    return head + (f" and {len(names) - n} more" if len(names) > n else "")
 
 
 def _output_times(t_eval, n_points, t_start, t_end):
